@@ -1,0 +1,91 @@
+// The patch atlas on the device: one geometry image per level, the
+// connectivity tables, and the kernels that refine, reduce and evaluate it.
+#pragma once
+
+#include "atlas/atlas_topology.h"
+#include "atlas/patch_layout.h"
+#include "cl/runtime.h"
+#include "core/vec.h"
+#include "mesh/base_mesh.h"
+
+#include <array>   // for std::array
+#include <memory>  // for std::shared_ptr, std::unique_ptr
+#include <string>  // for std::string
+#include <vector>  // for std::vector
+
+namespace meshpaint {
+
+//! How atlas layers are stored on the device. Same kernels, two access paths.
+enum class AtlasStorage
+{
+  Buffer, //!< linear float4 buffers, 2D indexing: the fast path on CPUs
+  Image   //!< image2d_t RGBA float: for devices with texture units
+};
+
+//! Default for a device: images on GPUs that support them, buffers otherwise.
+//! MESHPAINT_STORAGE=buffer|image overrides it.
+AtlasStorage default_storage(const DeviceInfo& device);
+//! \throw InputError for anything but "buffer" or "image".
+AtlasStorage parse_storage(const std::string& name);
+const char* storage_name(AtlasStorage storage);
+
+//! Device memory an atlas up to `level` needs, checked before allocating.
+struct MemoryPlan
+{
+  LevelLayout finest;
+  std::size_t largest_allocation = 0; //!< bytes, one layer of the finest level
+  std::size_t total = 0;              //!< bytes, all levels plus limit layers
+};
+MemoryPlan plan_memory(const AtlasTopology& topology, int level);
+
+class Atlas
+{
+public:
+  //! Builds the first Catmull-Clark step of `mesh` (OpenSubdiv), the patch
+  //! tables, and device storage for levels 1..max_level, with level 1 filled.
+  //! \throw ResourceError when max_level does not fit the device, naming the
+  //! largest level that does.
+  Atlas(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int max_level,
+        AtlasStorage storage);
+  ~Atlas();
+  Atlas(const Atlas&) = delete;
+  Atlas& operator=(const Atlas&) = delete;
+
+  int max_level() const { return max_level_; }
+  AtlasStorage storage() const { return storage_; }
+  const AtlasTopology& topology() const { return topology_; }
+  LevelLayout layout(int level) const;
+  Runtime& runtime() { return *runtime_; }
+
+  //! Catmull-Clark kernels: each level l+1 from level l, for from <= l < to.
+  void subdivide(int from_level, int to_level);
+  //! Gaussian reduction kernels: each level l-1 from level l, to <= l-1 < from.
+  void reduce(int from_level, int to_level);
+  //! Limit positions and normals of the surface at max_level.
+  void compute_limit();
+  //! Waits for every queued kernel.
+  void finish();
+
+  //! Positions of every texel of `level` (atlas order; unused tiles zero).
+  std::vector<Float4> read_positions(int level);
+  void write_positions(int level, const std::vector<Float4>& texels);
+  std::vector<Float4> read_limit_positions();
+  std::vector<Float4> read_limit_normals();
+
+private:
+  struct Layer;
+  struct Kernels;
+  std::vector<Float4> read_layer(const Layer& layer, const LevelLayout& l);
+  void write_layer(Layer& layer, const LevelLayout& l, const std::vector<Float4>& texels);
+  Layer make_layer(const LevelLayout& l, bool filled_from_host, const void* data);
+
+  std::shared_ptr<Runtime> runtime_;
+  AtlasStorage storage_;
+  int max_level_;
+  AtlasTopology topology_;
+  std::vector<Layer> levels_;  // index l - 1
+  std::unique_ptr<Layer> limit_positions_, limit_normals_;
+  std::unique_ptr<Kernels> kernels_;
+};
+
+} // namespace meshpaint

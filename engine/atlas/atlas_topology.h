@@ -1,0 +1,32 @@
+// Connectivity of the patch atlas: after the first Catmull-Clark step every
+// face is a quad, and each quad is one patch. Patch p is level-1 face p.
+#pragma once
+
+#include "atlas_types.h" // for PatchEdge, CornerRing, CornerSlot
+
+#include <opensubdiv/far/topologyLevel.h> // for Far::TopologyLevel
+
+#include <array>  // for std::array
+#include <vector> // for std::vector
+
+namespace meshpaint {
+
+struct AtlasTopology
+{
+  int patch_count = 0;
+  std::vector<std::array<int, 4>> patch_corners; //!< #patches, level-1 vertex per corner
+  std::vector<std::array<int, 4>> patch_sides;   //!< #patches, level-1 edge per side
+  std::vector<PatchEdge> edges;                  //!< #level-1 edges
+  std::vector<CornerRing> rings;                 //!< #level-1 vertices
+  std::vector<CornerSlot> slots;                 //!< sum of ring counts
+
+  //! Vertices of the welded level-l surface (each stored copy counted once).
+  std::size_t unique_vertices(int level) const;
+};
+
+//! Builds the tables from OpenSubdiv's level-1 topology.
+//! \throw InputError when an edge has more than two faces, the two faces of
+//! an edge disagree on orientation, or a vertex's faces form several fans.
+AtlasTopology build_atlas_topology(const OpenSubdiv::Far::TopologyLevel& level1);
+
+} // namespace meshpaint

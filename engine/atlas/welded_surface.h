@@ -1,0 +1,31 @@
+// The atlas as an ordinary quad mesh: each stored copy of a patch-side or
+// patch-corner vertex merged into one vertex.
+#pragma once
+
+#include "atlas/atlas_topology.h"
+#include "atlas/patch_layout.h"
+#include "core/vec.h"
+
+#include <array>  // for std::array
+#include <vector> // for std::vector
+
+namespace meshpaint {
+
+struct WeldedSurface
+{
+  int level = 1;
+  std::vector<Vec3> points;              //!< #vertices
+  std::vector<Vec3> normals;             //!< #vertices, or empty
+  std::vector<std::array<int, 4>> quads; //!< #patches * n^2, counter-clockwise
+};
+
+//! Welded vertex of every texel of the level's atlas, -1 in unused tiles.
+//! Order: level-1 vertices, then patch-side texels edge by edge, then patch
+//! interiors patch by patch.
+std::vector<int> weld_map(const AtlasTopology& topology, const LevelLayout& layout);
+
+//! Gathers texels into the welded surface; `normals` may be null.
+WeldedSurface weld(const AtlasTopology& topology, const LevelLayout& layout,
+                   const std::vector<Float4>& positions, const std::vector<Float4>* normals);
+
+} // namespace meshpaint

@@ -1,0 +1,10 @@
+// What the engine knows about particular OpenCL implementations.
+#pragma once
+
+namespace meshpaint {
+
+//! Settings that must be in place before the first OpenCL call. PoCL: keep
+//! compiled kernels in its cache; anything the user set wins.
+void apply_runtime_quirks();
+
+} // namespace meshpaint

@@ -1,0 +1,140 @@
+#include "cl/runtime.h"
+
+#include "cl/quirks.h"
+#include "core/errors.h"
+
+#include <algorithm> // for std::search
+#include <cctype>    // for std::tolower
+#include <cstdio>    // for std::snprintf
+#include <cstdlib>   // for std::getenv
+
+namespace meshpaint {
+namespace {
+
+const char* const kNoPlatform =
+  "no OpenCL platform found: install PoCL for the CPU (apt-get install pocl-opencl-icd) "
+  "or a GPU vendor's OpenCL driver";
+
+struct Found
+{
+  cl::Device device;
+  DeviceInfo info;
+};
+
+std::string lower(std::string s)
+{
+  for (char& c : s)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::vector<Found> enumerate()
+{
+  apply_runtime_quirks();
+  std::vector<cl::Platform> platforms;
+  try {
+    cl::Platform::get(&platforms);
+  } catch (const cl::Error&) {
+    throw DeviceError(kNoPlatform);
+  }
+  if (platforms.empty())
+    throw DeviceError(kNoPlatform);
+
+  std::vector<Found> found;
+  for (std::size_t p = 0; p < platforms.size(); ++p) {
+    std::vector<cl::Device> devices;
+    try {
+      platforms[p].getDevices(CL_DEVICE_TYPE_ALL, &devices);
+    } catch (const cl::Error&) {
+      continue; // a platform without devices
+    }
+    for (std::size_t d = 0; d < devices.size(); ++d) {
+      const cl::Device& dev = devices[d];
+      DeviceInfo info;
+      info.platform_index = static_cast<int>(p);
+      info.device_index = static_cast<int>(d);
+      info.platform = platforms[p].getInfo<CL_PLATFORM_NAME>();
+      info.name = dev.getInfo<CL_DEVICE_NAME>();
+      info.version = dev.getInfo<CL_DEVICE_VERSION>();
+      info.gpu = (dev.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_GPU) != 0;
+      info.images = dev.getInfo<CL_DEVICE_IMAGE_SUPPORT>() == CL_TRUE;
+      info.global_memory = dev.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>();
+      info.max_allocation = dev.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
+      if (info.images) {
+        info.image_max_width = dev.getInfo<CL_DEVICE_IMAGE2D_MAX_WIDTH>();
+        info.image_max_height = dev.getInfo<CL_DEVICE_IMAGE2D_MAX_HEIGHT>();
+      }
+      found.push_back({dev, info});
+    }
+  }
+  if (found.empty())
+    throw DeviceError("no OpenCL device found on any platform: install PoCL for the CPU "
+                      "(apt-get install pocl-opencl-icd) or a GPU vendor's OpenCL driver");
+  return found;
+}
+
+const Found& choose(const std::vector<Found>& found, const std::string& selector)
+{
+  const std::string sel = lower(selector);
+  if (sel.empty() || sel == "gpu" || sel == "cpu") {
+    const bool want_gpu = sel != "cpu";
+    for (const Found& f : found)
+      if (f.info.gpu == want_gpu)
+        return f;
+    if (sel.empty())
+      return found.front();
+    throw DeviceError("no OpenCL " + sel + " device found (see `meshpaint devices`)");
+  }
+  int p = -1, d = -1;
+  char tail = 0;
+  if (std::sscanf(sel.c_str(), "%d:%d%c", &p, &d, &tail) == 2) {
+    for (const Found& f : found)
+      if (f.info.platform_index == p && f.info.device_index == d)
+        return f;
+    throw DeviceError("no OpenCL device " + selector + " (see `meshpaint devices`)");
+  }
+  for (const Found& f : found)
+    if (lower(f.info.name).find(sel) != std::string::npos ||
+        lower(f.info.platform).find(sel) != std::string::npos)
+      return f;
+  throw DeviceError("no OpenCL device matches '" + selector + "' (see `meshpaint devices`)");
+}
+
+} // namespace
+
+std::string DeviceInfo::summary() const
+{
+  char mem[32];
+  std::snprintf(mem, sizeof mem, "%.1f GiB", static_cast<double>(global_memory) / (1u << 30));
+  return name + " (" + platform + ", " + (gpu ? "GPU" : "CPU") + ", " + mem + ")";
+}
+
+Runtime::Runtime(const cl::Device& device, const DeviceInfo& info)
+  : device_(device), context_(device), queue_(context_, device_), info_(info)
+{
+}
+
+std::shared_ptr<Runtime> Runtime::open(const std::string& selector)
+{
+  std::string sel = selector;
+  if (sel.empty())
+    if (const char* env = std::getenv("MESHPAINT_DEVICE"))
+      sel = env;
+  const std::vector<Found> found = enumerate();
+  const Found& f = choose(found, sel);
+  try {
+    return std::shared_ptr<Runtime>(new Runtime(f.device, f.info));
+  } catch (const cl::Error& e) {
+    throw DeviceError("cannot open OpenCL device " + f.info.name + ": " + describe(e));
+  }
+}
+
+std::vector<DeviceInfo> Runtime::list_devices()
+{
+  std::vector<DeviceInfo> out;
+  for (const Found& f : enumerate())
+    out.push_back(f.info);
+  return out;
+}
+
+} // namespace meshpaint

@@ -1,0 +1,61 @@
+// OpenCL platform, device, context and queue: the engine's view of the
+// compute device.
+#pragma once
+
+#include "cl/opencl.h"
+
+#include <memory> // for std::shared_ptr
+#include <string> // for std::string
+#include <vector> // for std::vector
+
+namespace meshpaint {
+
+//! What the engine needs to know about a device.
+struct DeviceInfo
+{
+  int platform_index = 0;
+  int device_index = 0;
+  std::string platform;
+  std::string name;
+  std::string version;
+  bool gpu = false;
+  bool images = false;               //!< image2d_t supported
+  std::uint64_t global_memory = 0;   //!< bytes
+  std::uint64_t max_allocation = 0;  //!< bytes in one buffer or image
+  std::size_t image_max_width = 0;   //!< texels
+  std::size_t image_max_height = 0;  //!< texels
+
+  //! "pthread-skylake (Portable Computing Language, CPU, 23.4 GiB)"
+  std::string summary() const;
+};
+
+//! A device with its context and in-order queue.
+class Runtime
+{
+public:
+  //! Opens the device named by `selector`, or by MESHPAINT_DEVICE when it is
+  //! empty: "gpu", "cpu", "P:D" (platform and device index, see
+  //! `meshpaint devices`) or part of a device name. Default: the first GPU,
+  //! else the first CPU device.
+  //! \throw DeviceError when there is no platform or no matching device.
+  static std::shared_ptr<Runtime> open(const std::string& selector = "");
+
+  //! Every device of every platform.
+  //! \throw DeviceError when there is no OpenCL platform.
+  static std::vector<DeviceInfo> list_devices();
+
+  const cl::Context& context() const { return context_; }
+  const cl::Device& device() const { return device_; }
+  cl::CommandQueue& queue() { return queue_; }
+  const DeviceInfo& info() const { return info_; }
+
+private:
+  Runtime(const cl::Device& device, const DeviceInfo& info);
+
+  cl::Device device_;
+  cl::Context context_;
+  cl::CommandQueue queue_;
+  DeviceInfo info_;
+};
+
+} // namespace meshpaint

@@ -1,0 +1,15 @@
+// Human-readable numbers for messages and tables.
+#pragma once
+
+#include <cstddef> // for std::size_t
+#include <string>  // for std::string
+
+namespace meshpaint {
+
+//! "1.5 GiB", "320 MiB", "12 KiB", "512 B".
+std::string format_bytes(std::size_t bytes);
+
+//! Fixed-point with `digits` decimals.
+std::string format_fixed(double value, int digits);
+
+} // namespace meshpaint

@@ -1,0 +1,282 @@
+#include "mesh/base_mesh.h"
+
+#include "core/errors.h"
+#include "mesh/openmesh_types.h"
+
+#include <OpenMesh/Core/IO/IOManager.hh>          // for OpenMesh::IO::IOManager
+#include <OpenMesh/Core/IO/importer/ImporterT.hh> // for OpenMesh::IO::ImporterT
+#include <OpenMesh/Core/System/omstream.hh>       // for omerr, omlog, omout
+
+#include <algorithm>  // for std::transform, std::min, std::max
+#include <cmath>      // for std::isfinite, std::sqrt
+#include <filesystem> // for std::filesystem
+#include <map>        // for std::map
+#include <numeric>    // for std::iota
+#include <sstream>    // for std::ostringstream
+
+namespace meshpaint {
+namespace {
+
+//! OpenMesh's importer, counting what it repairs and stopping at faces that
+//! name vertices the file does not have (OpenMesh would drop them silently).
+class CheckedImporter : public OpenMesh::IO::ImporterT<PolyMesh>
+{
+public:
+  explicit CheckedImporter(PolyMesh& mesh) : ImporterT<PolyMesh>(mesh), mesh_(mesh) {}
+
+  OpenMesh::FaceHandle add_face(const VHandles& indices) override
+  {
+    const std::size_t face = faces_++;
+    for (const OpenMesh::VertexHandle vh : indices)
+      if (!mesh_.is_valid_handle(vh)) {
+        if (problem_.empty())
+          problem_ = "face " + std::to_string(face) + " names vertex " +
+                     std::to_string(vh.idx()) + ", but there are only " +
+                     std::to_string(mesh_.n_vertices()) + " vertices";
+        return OpenMesh::FaceHandle();
+      }
+    bool repeated = indices.size() < 3;
+    for (std::size_t a = 0; a < indices.size() && !repeated; ++a)
+      for (std::size_t b = a + 1; b < indices.size(); ++b)
+        repeated = repeated || indices[a] == indices[b];
+    if (repeated) {
+      ++report.degenerate_faces_dropped;
+      return OpenMesh::FaceHandle();
+    }
+    const std::size_t before = mesh_.n_vertices();
+    const OpenMesh::FaceHandle fh = ImporterT<PolyMesh>::add_face(indices);
+    if (mesh_.n_vertices() != before)
+      ++report.nonmanifold_faces_detached; // OpenMesh gave the face its own vertices
+    return fh;
+  }
+
+  ImportReport report;
+  std::string problem_;
+
+private:
+  PolyMesh& mesh_;
+  std::size_t faces_ = 0;
+};
+
+//! Silences OpenMesh's own console messages while it runs; our errors say it.
+class QuietOpenMesh
+{
+public:
+  QuietOpenMesh()
+  {
+    omerr().disable();
+    omlog().disable();
+    omout().disable();
+  }
+  ~QuietOpenMesh()
+  {
+    omerr().enable();
+    omlog().enable();
+    omout().enable();
+  }
+};
+
+std::string vertex_text(const Vec3& p)
+{
+  std::ostringstream s;
+  s << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
+  return s.str();
+}
+
+//! Union-find over the corners around one vertex.
+struct Fans
+{
+  std::vector<int> parent;
+  int find(int a) { return parent[a] == a ? a : parent[a] = find(parent[a]); }
+  void join(int a, int b) { parent[find(a)] = find(b); }
+};
+
+//! Gives every extra surface sheet that meets at a vertex its own copy of it.
+void split_nonmanifold_vertices(BaseMesh& mesh)
+{
+  const std::size_t nv = mesh.points.size();
+  std::vector<std::vector<std::pair<int, int>>> corners(nv); // (face, corner)
+  for (std::size_t f = 0; f < mesh.face_sizes.size(); ++f)
+    for (int k = 0; k < mesh.face_sizes[f]; ++k)
+      corners[mesh.face_vertices[mesh.face_offsets[f] + k]].push_back({int(f), k});
+
+  for (std::size_t v = 0; v < nv; ++v) {
+    const auto& cs = corners[v];
+    if (cs.size() < 2)
+      continue;
+    Fans fans{std::vector<int>(cs.size())};
+    std::iota(fans.parent.begin(), fans.parent.end(), 0);
+    std::map<int, int> by_neighbour; // neighbour vertex -> a corner using that edge
+    for (std::size_t c = 0; c < cs.size(); ++c) {
+      const int f = cs[c].first, k = cs[c].second, n = mesh.face_sizes[f];
+      const int* fv = &mesh.face_vertices[mesh.face_offsets[f]];
+      for (const int w : {fv[(k + 1) % n], fv[(k + n - 1) % n]}) {
+        const auto [it, fresh] = by_neighbour.emplace(w, int(c));
+        if (!fresh)
+          fans.join(int(c), it->second);
+      }
+    }
+    std::map<int, int> copy_of_root;
+    for (std::size_t c = 0; c < cs.size(); ++c) {
+      const int root = fans.find(int(c));
+      if (copy_of_root.empty())
+        copy_of_root[root] = int(v);
+      auto it = copy_of_root.find(root);
+      if (it == copy_of_root.end()) {
+        it = copy_of_root.emplace(root, int(mesh.points.size())).first;
+        mesh.points.push_back(mesh.points[v]);
+        ++mesh.report.nonmanifold_vertices_split;
+      }
+      mesh.face_vertices[mesh.face_offsets[cs[c].first] + cs[c].second] = it->second;
+    }
+  }
+}
+
+//! Takes the faces out of OpenMesh, checks coordinates, drops unused vertices
+//! and splits non-manifold ones.
+BaseMesh finish(const PolyMesh& om, const ImportReport& report, const std::string& name,
+                const std::string& where)
+{
+  BaseMesh mesh;
+  mesh.name = name;
+  mesh.report = report;
+  if (om.n_faces() == 0)
+    throw InputError(where + "has no faces");
+
+  std::vector<int> remap(om.n_vertices(), -1);
+  for (const auto fh : om.faces())
+    for (const auto vh : om.fv_range(fh))
+      remap[vh.idx()] = 0;
+  for (std::size_t v = 0; v < om.n_vertices(); ++v) {
+    const auto& p = om.point(PolyMesh::VertexHandle(int(v)));
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      throw InputError(where + "vertex " + std::to_string(v) + " has a non-finite coordinate " +
+                       vertex_text({p[0], p[1], p[2]}));
+    if (remap[v] < 0) {
+      ++mesh.report.isolated_vertices_removed;
+      continue;
+    }
+    remap[v] = int(mesh.points.size());
+    mesh.points.push_back({p[0], p[1], p[2]});
+  }
+  mesh.face_offsets.push_back(0);
+  for (const auto fh : om.faces()) {
+    int n = 0;
+    for (const auto vh : om.fv_range(fh)) {
+      mesh.face_vertices.push_back(remap[vh.idx()]);
+      ++n;
+    }
+    mesh.face_sizes.push_back(n);
+    mesh.face_offsets.push_back(int(mesh.face_vertices.size()));
+  }
+  split_nonmanifold_vertices(mesh);
+  return mesh;
+}
+
+std::string lower_extension(const std::string& path)
+{
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+} // namespace
+
+bool ImportReport::changed() const
+{
+  return degenerate_faces_dropped || nonmanifold_faces_detached || nonmanifold_vertices_split ||
+         isolated_vertices_removed;
+}
+
+std::vector<std::string> ImportReport::lines() const
+{
+  std::vector<std::string> out;
+  if (degenerate_faces_dropped)
+    out.push_back("dropped " + std::to_string(degenerate_faces_dropped) +
+                  " degenerate faces (a vertex named twice, or fewer than 3 vertices)");
+  if (nonmanifold_faces_detached)
+    out.push_back("detached " + std::to_string(nonmanifold_faces_detached) +
+                  " faces on non-manifold edges (given their own vertices)");
+  if (nonmanifold_vertices_split)
+    out.push_back("split " + std::to_string(nonmanifold_vertices_split) +
+                  " non-manifold vertices (one copy per extra surface sheet)");
+  if (isolated_vertices_removed)
+    out.push_back("removed " + std::to_string(isolated_vertices_removed) +
+                  " isolated vertices (used by no face)");
+  return out;
+}
+
+double BaseMesh::diagonal() const
+{
+  Vec3 lo = points.front(), hi = points.front();
+  for (const Vec3& p : points)
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], p[a]);
+      hi[a] = std::max(hi[a], p[a]);
+    }
+  double d2 = 0;
+  for (int a = 0; a < 3; ++a)
+    d2 += double(hi[a] - lo[a]) * double(hi[a] - lo[a]);
+  return std::sqrt(d2);
+}
+
+const std::vector<std::string>& readable_mesh_extensions()
+{
+  static const std::vector<std::string> exts = {".obj", ".off", ".ply", ".stl"};
+  return exts;
+}
+
+BaseMesh make_base_mesh(std::vector<Vec3> points, const std::vector<std::vector<int>>& faces,
+                        const std::string& name)
+{
+  if (points.empty() || faces.empty())
+    throw InputError(name + ": has no faces");
+  PolyMesh om;
+  CheckedImporter importer(om);
+  QuietOpenMesh quiet;
+  for (const Vec3& p : points)
+    importer.add_vertex(PolyMesh::Point(p[0], p[1], p[2]));
+  for (const auto& f : faces) {
+    CheckedImporter::VHandles vh;
+    for (const int i : f)
+      vh.push_back(PolyMesh::VertexHandle(i));
+    importer.add_face(vh);
+    if (!importer.problem_.empty())
+      throw InputError(name + ": " + importer.problem_);
+  }
+  return finish(om, importer.report, name, name + ": ");
+}
+
+BaseMesh load_mesh(const std::string& path)
+{
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(path, ec))
+    throw IOError("cannot open '" + path + "': no such file");
+  if (!fs::is_regular_file(path, ec))
+    throw IOError("cannot read '" + path + "': not a regular file");
+  const std::string ext = lower_extension(path);
+  const auto& exts = readable_mesh_extensions();
+  if (std::find(exts.begin(), exts.end(), ext) == exts.end())
+    throw InputError("cannot read '" + path + "': unknown mesh format '" + ext +
+                     "' (readable: .obj .off .ply .stl)");
+  if (fs::file_size(path, ec) == 0)
+    throw InputError("'" + path + "' is empty");
+
+  PolyMesh om;
+  CheckedImporter importer(om);
+  OpenMesh::IO::Options options;
+  bool ok = false;
+  {
+    QuietOpenMesh quiet;
+    ok = OpenMesh::IO::IOManager().read(path, importer, options);
+  }
+  const std::string where = "'" + path + "': ";
+  if (!importer.problem_.empty())
+    throw InputError(where + importer.problem_);
+  if (!ok)
+    throw InputError(where + "not a readable " + ext.substr(1) + " file (truncated or malformed)");
+  return finish(om, importer.report, fs::path(path).stem().string(), where);
+}
+
+} // namespace meshpaint

@@ -1,0 +1,42 @@
+#include "mesh/surface_io.h"
+
+#include "core/atomic_file.h"
+#include "core/errors.h"
+#include "mesh/openmesh_types.h"
+
+#include <OpenMesh/Core/IO/MeshIO.hh> // for OpenMesh::IO::write_mesh
+
+#include <filesystem> // for std::filesystem::path
+
+namespace meshpaint {
+
+void write_surface(const WeldedSurface& s, const std::string& path)
+{
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext != ".obj" && ext != ".ply")
+    throw InputError("cannot write '" + path + "': unknown format '" + ext + "' (.obj, .ply, .vtp)");
+  PolyMesh mesh;
+  const bool normals = !s.normals.empty();
+  if (normals)
+    mesh.request_vertex_normals();
+  mesh.reserve(s.points.size(), 2 * s.quads.size(), s.quads.size());
+  for (std::size_t v = 0; v < s.points.size(); ++v) {
+    const auto vh = mesh.add_vertex(PolyMesh::Point(s.points[v][0], s.points[v][1], s.points[v][2]));
+    if (normals)
+      mesh.set_normal(vh, PolyMesh::Normal(s.normals[v][0], s.normals[v][1], s.normals[v][2]));
+  }
+  for (const auto& q : s.quads)
+    mesh.add_face({PolyMesh::VertexHandle(q[0]), PolyMesh::VertexHandle(q[1]),
+                   PolyMesh::VertexHandle(q[2]), PolyMesh::VertexHandle(q[3])});
+  OpenMesh::IO::Options options;
+  if (normals)
+    options += OpenMesh::IO::Options::VertexNormal;
+  if (ext == ".ply")
+    options += OpenMesh::IO::Options::Binary;
+  write_atomically(path, [&](const std::string& tmp) {
+    if (!OpenMesh::IO::write_mesh(mesh, tmp, options))
+      throw IOError("cannot write '" + path + "'");
+  });
+}
+
+} // namespace meshpaint

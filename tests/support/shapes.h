@@ -1,0 +1,37 @@
+// Small meshes made in code for the tests, each exercising one case of the
+// Catmull-Clark rules.
+#pragma once
+
+#include "mesh/base_mesh.h"
+
+#include <string> // for std::string
+#include <vector> // for std::vector
+
+namespace meshpaint::test {
+
+BaseMesh tetrahedron();
+BaseMesh cube();
+//! Closed: triangles, quads and pentagons together (a pentagonal prism with
+//! one side split into two triangles).
+BaseMesh mixed_polygons();
+//! Closed genus-2 surface: a plate of 3x5 unit cubes with two cells removed.
+BaseMesh genus_two();
+//! Open 3x3 quad grid: boundary curves and four sharp one-face corners.
+BaseMesh open_grid();
+//! Open triangle fan of 5 triangles around a boundary vertex (a boundary
+//! vertex with more than two faces) plus a quad.
+BaseMesh open_fan();
+//! Pyramid over a 12-gon: an apex of valence 12 and a 12-sided face.
+BaseMesh high_valence();
+//! Two cubes that do not touch: several components.
+BaseMesh two_components();
+
+//! Every shape above, by name.
+std::vector<std::string> shape_names();
+BaseMesh shape(const std::string& name);
+
+//! Path of a scan fetched by the set-up script (data/scans/NAME), or "" when
+//! it is not there.
+std::string scan_path(const std::string& file);
+
+} // namespace meshpaint::test
