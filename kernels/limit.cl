@@ -19,57 +19,53 @@ inline void limit_regular(const float4 *q, float4 *pos, float4 *nrm)
   *nrm = (float4)(normalize(cross(du.xyz, dv.xyz)), 0.0f);
 }
 
-/* Range: the atlas; texels strictly inside each patch. */
-__kernel void limit_interior(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int n, int tiles_x,
-                             int patches, int width)
+/* Range: (tile, tile * patches); texels strictly inside patches. */
+__kernel void limit_interior(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, int patches)
 {
-  const int tile = n + 1;
-  const int x = get_global_id(0), y = get_global_id(1);
-  const int tx = x / tile, ty = y / tile;
-  const int i = x - tx * tile, j = y - ty * tile;
-  if (i == 0 || j == 0 || i == n || j == n || tx >= tiles_x || ty * tiles_x + tx >= patches)
+  int p;
+  int2 ij;
+  if (!interior_texel(g, patches, &p, &ij))
     return;
   float4 q[9];
   for (int b = -1; b <= 1; ++b)
     for (int a = -1; a <= 1; ++a)
-      q[3 * (b + 1) + a + 1] = ATLAS_LOAD(src, width, (int2)(x + a, y + b));
-  float4 p, nv;
-  limit_regular(q, &p, &nv);
-  ATLAS_STORE(pos, width, (int2)(x, y), p);
-  ATLAS_STORE(nrm, width, (int2)(x, y), nv);
+      q[3 * (b + 1) + a + 1] = ATLAS_LOAD(src, g, p, ij + (int2)(a, b));
+  float4 pv, nv;
+  limit_regular(q, &pv, &nv);
+  ATLAS_STORE(pos, g, p, ij, pv);
+  ATLAS_STORE(nrm, g, p, ij, nv);
 }
 
 /* Range: (n - 1, #edges); texels on patch sides, corners excluded. */
 __kernel void limit_edges(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, __global const PatchEdge *edges,
-                          int edge_count, int n, int tiles_x, int width)
+                          int edge_count, int2 g)
 {
   const int t = get_global_id(0) + 1, k = get_global_id(1);
-  if (k >= edge_count || t >= n)
+  if (k >= edge_count || t >= g.x - 1)
     return;
   const PatchEdge e = edges[k];
   float4 q[9];
   const int lo = e.patch[1] >= 0 ? -1 : 0;
   for (int b = lo; b <= 1; ++b)
     for (int a = -1; a <= 1; ++a)
-      q[3 * (b + 1) + a + 1] = EDGE_LOAD(src, width, e, t + a, b, n, tiles_x);
-  float4 p, nv;
+      q[3 * (b + 1) + a + 1] = EDGE_LOAD(src, g, e, t + a, b);
+  float4 pv, nv;
   if (lo < 0) {
-    limit_regular(q, &p, &nv);
+    limit_regular(q, &pv, &nv);
   } else {
     /* Mesh boundary: the crease curve's limit and a B-spline cross tangent. */
     const float4 s0 = (q[3] + 4.0f * q[4] + q[5]) * (1.0f / 6.0f);
     const float4 s1 = (q[6] + 4.0f * q[7] + q[8]) * (1.0f / 6.0f);
-    p = s0;
+    pv = s0;
     nv = (float4)(normalize(cross(((q[5] - q[3]) * 0.5f).xyz, (s1 - s0).xyz)), 0.0f);
   }
-  EDGE_STORE(pos, width, e, t, n, tiles_x, p);
-  EDGE_STORE(nrm, width, e, t, n, tiles_x, nv);
+  EDGE_STORE(pos, g, e, t, pv);
+  EDGE_STORE(nrm, g, e, t, nv);
 }
 
 /* Range: #rings; every copy of each patch corner. */
 __kernel void limit_corners(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, __global const CornerRing *rings,
-                            __global const CornerSlot *slots, int ring_count, int n, int tiles_x,
-                            int width)
+                            __global const CornerSlot *slots, int ring_count, int2 g)
 {
   const int k = get_global_id(0);
   if (k >= ring_count)
@@ -77,24 +73,23 @@ __kernel void limit_corners(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, __global
   const CornerRing ring = rings[k];
   const int m = ring.count;
   const CornerSlot first = slots[ring.first], last = slots[ring.first + m - 1];
-  const float4 v = ATLAS_LOAD(src, width, corner_atlas(first, 0, 0, n, tiles_x));
+  const float4 v = CORNER_LOAD(src, g, first, 0, 0);
   float4 p, t1, t2;
   if (ring.boundary && m == 1) {
     p = v;
-    t1 = ATLAS_LOAD(src, width, corner_atlas(first, 1, 0, n, tiles_x)) - v;
-    t2 = ATLAS_LOAD(src, width, corner_atlas(first, 0, 1, n, tiles_x)) - v;
+    t1 = CORNER_LOAD(src, g, first, 1, 0) - v;
+    t2 = CORNER_LOAD(src, g, first, 0, 1) - v;
   } else if (ring.boundary) {
     /* Edges E_0..E_m around the vertex, face i between E_i and E_i+1. */
-    const float4 e0 = ATLAS_LOAD(src, width, corner_atlas(first, 1, 0, n, tiles_x));
-    const float4 em = ATLAS_LOAD(src, width, corner_atlas(last, 0, 1, n, tiles_x));
+    const float4 e0 = CORNER_LOAD(src, g, first, 1, 0);
+    const float4 em = CORNER_LOAD(src, g, last, 0, 1);
     p = (4.0f * v + e0 + em) * (1.0f / 6.0f);
     t1 = (e0 - em) * 0.5f;
     if (m == 2) {
       const CornerSlot s1 = slots[ring.first + 1];
-      const float4 e1 = ATLAS_LOAD(src, width, corner_atlas(s1, 1, 0, n, tiles_x));
-      const float4 d0 = ATLAS_LOAD(src, width, corner_atlas(first, 1, 1, n, tiles_x));
-      const float4 d1 = ATLAS_LOAD(src, width, corner_atlas(s1, 1, 1, n, tiles_x));
-      t2 = (-4.0f * v - e0 + 4.0f * e1 - em + d0 + d1) * (1.0f / 6.0f);
+      t2 = (-4.0f * v - e0 + 4.0f * CORNER_LOAD(src, g, s1, 1, 0) - em + CORNER_LOAD(src, g, first, 1, 1) +
+            CORNER_LOAD(src, g, s1, 1, 1)) *
+           (1.0f / 6.0f);
     } else {
       const float theta = M_PI_F / (float)m;
       const float c = cos(theta), s = sin(theta);
@@ -105,8 +100,8 @@ __kernel void limit_corners(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, __global
         const CornerSlot si = slots[ring.first + i];
         const float sin_i = sin(i * theta), sin_i1 = sin((i + 1) * theta);
         if (i > 0)
-          t2 += (4.0f * sin_i) * ATLAS_LOAD(src, width, corner_atlas(si, 1, 0, n, tiles_x));
-        t2 += (sin_i + sin_i1) * ATLAS_LOAD(src, width, corner_atlas(si, 1, 1, n, tiles_x));
+          t2 += (4.0f * sin_i) * CORNER_LOAD(src, g, si, 1, 0);
+        t2 += (sin_i + sin_i1) * CORNER_LOAD(src, g, si, 1, 1);
       }
       t2 *= denom;
     }
@@ -120,8 +115,8 @@ __kernel void limit_corners(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, __global
     t2 = (float4)(0.0f);
     for (int i = 0; i < m; ++i) {
       const CornerSlot si = slots[ring.first + i];
-      const float4 ei = ATLAS_LOAD(src, width, corner_atlas(si, 1, 0, n, tiles_x));
-      const float4 di = ATLAS_LOAD(src, width, corner_atlas(si, 1, 1, n, tiles_x));
+      const float4 ei = CORNER_LOAD(src, g, si, 1, 0);
+      const float4 di = CORNER_LOAD(src, g, si, 1, 1);
       const float cp = cos((i - 1) * theta), ci = cos(i * theta), cn = cos((i + 1) * theta);
       es += ei;
       ds += di;
@@ -132,8 +127,7 @@ __kernel void limit_corners(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, __global
   }
   const float4 nv = (float4)(normalize(cross(t1.xyz, t2.xyz)), 0.0f);
   for (int i = 0; i < m; ++i) {
-    const int2 xy = corner_atlas(slots[ring.first + i], 0, 0, n, tiles_x);
-    ATLAS_STORE(pos, width, xy, p);
-    ATLAS_STORE(nrm, width, xy, nv);
+    CORNER_STORE(pos, g, slots[ring.first + i], p);
+    CORNER_STORE(nrm, g, slots[ring.first + i], nv);
   }
 }

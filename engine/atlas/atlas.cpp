@@ -11,22 +11,40 @@
 namespace meshpaint {
 namespace {
 
-// Work-group shapes: rows of texels for the atlas-wide kernels, runs of
+// Work-group shapes: a few whole tiles for the atlas-wide kernels, runs of
 // edges or rings for the table-driven ones.
-constexpr std::size_t kGroupX = 32, kGroupY = 4, kGroup1D = 64;
-const cl::NDRange kLocal2D(kGroupX, kGroupY), kLocalEdges(1, kGroup1D), kLocal1D(kGroup1D);
+constexpr std::size_t kGroupTexels = 256, kGroup1D = 64;
+const cl::NDRange kLocalEdges(1, kGroup1D), kLocal1D(kGroup1D);
 
 std::size_t round_up(std::size_t x, std::size_t m) { return (x + m - 1) / m * m; }
 
-cl::NDRange range2d(const LevelLayout& l)
+//! (tile, tile * patches) work items, a texel each.
+std::pair<cl::NDRange, cl::NDRange> range_tiles(const LevelLayout& l)
 {
-  return cl::NDRange(round_up(l.width, kGroupX), round_up(l.height, kGroupY));
+  const std::size_t tile = std::size_t(l.tile);
+  if (tile > kGroupTexels)
+    return {cl::NDRange(tile, tile * l.patches), cl::NullRange};
+  const std::size_t rows = std::max<std::size_t>(1, kGroupTexels / tile);
+  return {cl::NDRange(tile, round_up(tile * l.patches, rows)), cl::NDRange(tile, rows)};
 }
 cl::NDRange range_edges(int positions, int edges)
 {
   return cl::NDRange(positions, round_up(edges, kGroup1D));
 }
 cl::NDRange range1d(int items) { return cl::NDRange(round_up(items, kGroup1D)); }
+
+//! The (tile, tiles_x) pair the kernels take to address a level.
+cl_int2 grid(const LevelLayout& l) { return cl_int2{{l.tile, l.tiles_x}}; }
+
+//! Calls f(patch-major index, atlas-image index) for the first texel of every
+//! tile row.
+template <typename F>
+void for_each_tile_row(const LevelLayout& l, F&& f)
+{
+  for (int p = 0; p < l.patches; ++p)
+    for (int j = 0; j < l.tile; ++j)
+      f(l.index(p, 0, j), std::size_t((p / l.tiles_x) * l.tile + j) * l.width + (p % l.tiles_x) * l.tile);
+}
 
 //! Sets the kernel's arguments in order and enqueues it.
 template <typename... Args>
@@ -61,13 +79,18 @@ AtlasStorage default_storage(const DeviceInfo& device)
   return device.gpu && device.images ? AtlasStorage::Image : AtlasStorage::Buffer;
 }
 
-MemoryPlan plan_memory(const AtlasTopology& topology, int level)
+std::size_t layer_bytes(const LevelLayout& l, AtlasStorage storage)
+{
+  return 16 * (storage == AtlasStorage::Image ? l.image_texels() : l.texels());
+}
+
+MemoryPlan plan_memory(const AtlasTopology& topology, int level, AtlasStorage storage)
 {
   MemoryPlan plan;
   for (int l = 1; l <= level; ++l)
-    plan.total += level_layout(topology.patch_count, l).layer_bytes();
+    plan.total += layer_bytes(level_layout(topology.patch_count, l), storage);
   plan.finest = level_layout(topology.patch_count, level);
-  plan.largest_allocation = plan.finest.layer_bytes();
+  plan.largest_allocation = layer_bytes(plan.finest, storage);
   plan.total += 2 * plan.largest_allocation; // limit positions and normals
   plan.total += topology.edges.size() * sizeof(PatchEdge) +
                 topology.rings.size() * sizeof(CornerRing) +
@@ -96,19 +119,16 @@ struct Atlas::Kernels
   cl::Buffer edges, rings, slots;
 };
 
-namespace {
-
-//! Why `level` does not fit `device`, or an empty string when it does.
-std::string misfit(const AtlasTopology& topo, int level, const DeviceInfo& device, AtlasStorage storage)
+std::string fit_problem(const AtlasTopology& topo, int level, const DeviceInfo& device, AtlasStorage storage)
 {
-  const MemoryPlan plan = plan_memory(topo, level);
+  const MemoryPlan plan = plan_memory(topo, level, storage);
   const LevelLayout& l = plan.finest;
   if (storage == AtlasStorage::Image &&
       (std::size_t(l.width) > device.image_max_width || std::size_t(l.height) > device.image_max_height))
     return "an atlas of " + std::to_string(l.width) + "x" + std::to_string(l.height) +
            " texels, larger than the device's largest image (" +
            std::to_string(device.image_max_width) + "x" + std::to_string(device.image_max_height) + ")";
-  if (l.texels() >= (std::size_t(1) << 31))
+  if (std::max(l.texels(), l.image_texels()) >= (std::size_t(1) << 31))
     return std::to_string(l.texels()) + " texels, more than 2^31 (32-bit texel indices)";
   if (plan.largest_allocation > device.max_allocation)
     return format_bytes(plan.largest_allocation) + " in one layer, more than the device's largest "
@@ -119,7 +139,20 @@ std::string misfit(const AtlasTopology& topo, int level, const DeviceInfo& devic
   return "";
 }
 
-} // namespace
+AtlasTopology atlas_topology_of(const BaseMesh& mesh)
+{
+  auto refiner = make_refiner(mesh);
+  refine_uniform(*refiner, 1, true);
+  return build_atlas_topology(refiner->GetLevel(1));
+}
+
+int largest_fitting_level(const AtlasTopology& topology, const DeviceInfo& device, AtlasStorage storage)
+{
+  int fits = 0;
+  while (fits < kMaxLevel && fit_problem(topology, fits + 1, device, storage).empty())
+    ++fits;
+  return fits;
+}
 
 Atlas::Atlas(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int max_level,
              AtlasStorage storage)
@@ -136,10 +169,8 @@ Atlas::Atlas(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int max_lev
   refine_uniform(*refiner, 1, true); // full topology: edges and vertex rings
   topology_ = build_atlas_topology(refiner->GetLevel(1));
 
-  if (const std::string why = misfit(topology_, max_level, device, storage_); !why.empty()) {
-    int fits = 0;
-    for (int l = 1; l < max_level && misfit(topology_, l, device, storage_).empty(); ++l)
-      fits = l;
+  if (const std::string why = fit_problem(topology_, max_level, device, storage_); !why.empty()) {
+    const int fits = largest_fitting_level(topology_, device, storage_);
     throw ResourceError("level " + std::to_string(max_level) + " of '" + mesh.name + "' needs " +
                         why + "; " +
                         (fits ? "the largest level that fits is " + std::to_string(fits)
@@ -151,17 +182,16 @@ Atlas::Atlas(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int max_lev
   const LevelLayout l1 = layout(1);
   std::vector<Float4> texels(l1.texels(), Float4{0.f, 0.f, 0.f, 0.f});
   static const int corner_xy[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  for (int p = 0; p < topology_.patch_count; ++p) {
-    const int ox = (p % l1.tiles_x) * l1.tile, oy = (p / l1.tiles_x) * l1.tile;
+  for (int p = 0; p < topology_.patch_count; ++p)
     for (int c = 0; c < 4; ++c) {
       const Vec3& v = level1[topology_.patch_corners[p][c]];
-      texels[std::size_t(oy + corner_xy[c][1]) * l1.width + ox + corner_xy[c][0]] = {v[0], v[1], v[2], 0.f};
+      texels[l1.index(p, corner_xy[c][0], corner_xy[c][1])] = {v[0], v[1], v[2], 0.f};
     }
-  }
 
   try {
     for (int l = 1; l <= max_level_; ++l)
-      levels_.push_back(make_layer(layout(l), l == 1, l == 1 ? texels.data() : nullptr));
+      levels_.push_back(make_layer(layout(l)));
+    write_layer(levels_[0], l1, texels);
 
     kernels_ = std::make_unique<Kernels>();
     Kernels& k = *kernels_;
@@ -196,21 +226,19 @@ Atlas::~Atlas() = default;
 
 LevelLayout Atlas::layout(int level) const { return level_layout(topology_.patch_count, level); }
 
-Atlas::Layer Atlas::make_layer(const LevelLayout& l, bool filled_from_host, const void* data)
+Atlas::Layer Atlas::make_layer(const LevelLayout& l)
 {
+  // Zero-filled, so texels of unused image tiles are defined.
   Layer layer;
-  const cl_mem_flags flags = CL_MEM_READ_WRITE | (filled_from_host ? CL_MEM_COPY_HOST_PTR : 0);
-  void* host = const_cast<void*>(data);
+  const cl_float4 zero{{0.f, 0.f, 0.f, 0.f}};
   if (storage_ == AtlasStorage::Image) {
-    layer.image = cl::Image2D(runtime_->context(), flags, cl::ImageFormat(CL_RGBA, CL_FLOAT),
-                              l.width, l.height, 0, host);
-    if (!filled_from_host)
-      runtime_->queue().enqueueFillImage(layer.image, cl_float4{{0.f, 0.f, 0.f, 0.f}}, {0, 0, 0},
-                                         {std::size_t(l.width), std::size_t(l.height), 1});
+    layer.image = cl::Image2D(runtime_->context(), CL_MEM_READ_WRITE, cl::ImageFormat(CL_RGBA, CL_FLOAT),
+                              l.width, l.height);
+    runtime_->queue().enqueueFillImage(layer.image, zero, {0, 0, 0},
+                                       {std::size_t(l.width), std::size_t(l.height), 1});
   } else {
-    layer.buffer = cl::Buffer(runtime_->context(), flags, l.layer_bytes(), host);
-    if (!filled_from_host)
-      runtime_->queue().enqueueFillBuffer(layer.buffer, cl_float4{{0.f, 0.f, 0.f, 0.f}}, 0, l.layer_bytes());
+    layer.buffer = cl::Buffer(runtime_->context(), CL_MEM_READ_WRITE, layer_bytes(l, storage_));
+    runtime_->queue().enqueueFillBuffer(layer.buffer, zero, 0, layer_bytes(l, storage_));
   }
   return layer;
 }
@@ -227,11 +255,12 @@ void Atlas::subdivide(int from_level, int to_level)
   for (int l = from_level; l < to_level; ++l) {
     const LevelLayout s = layout(l), d = layout(l + 1);
     const cl::Memory &in = levels_[l - 1].mem(), &out = levels_[l].mem();
-    launch(q, k.subdivide_interior, range2d(d), kLocal2D, in, out, s.n, s.tiles_x, patches, s.width, d.width);
+    const auto tiles = range_tiles(d);
+    launch(q, k.subdivide_interior, tiles.first, tiles.second, in, out, grid(s), grid(d), patches);
     launch(q, k.subdivide_edges, range_edges(2 * s.n - 1, edges), kLocalEdges, in, out, k.edges, edges,
-           s.n, s.tiles_x, s.width, d.width);
-    launch(q, k.subdivide_corners, range1d(rings), kLocal1D, in, out, k.rings, k.slots, rings, s.n,
-           s.tiles_x, s.width, d.width);
+           grid(s), grid(d));
+    launch(q, k.subdivide_corners, range1d(rings), kLocal1D, in, out, k.rings, k.slots, rings, grid(s),
+           grid(d));
   }
 }
 
@@ -247,12 +276,13 @@ void Atlas::reduce(int from_level, int to_level)
   for (int l = from_level; l > to_level; --l) {
     const LevelLayout s = layout(l), d = layout(l - 1);
     const cl::Memory &in = levels_[l - 1].mem(), &out = levels_[l - 2].mem();
-    launch(q, k.reduce_interior, range2d(d), kLocal2D, in, out, d.n, d.tiles_x, patches, s.width, d.width);
+    const auto tiles = range_tiles(d);
+    launch(q, k.reduce_interior, tiles.first, tiles.second, in, out, grid(s), grid(d), patches);
     if (d.n > 1)
-      launch(q, k.reduce_edges, range_edges(d.n - 1, edges), kLocalEdges, in, out, k.edges, edges, d.n,
-             d.tiles_x, s.width, d.width);
-    launch(q, k.reduce_corners, range1d(rings), kLocal1D, in, out, k.rings, k.slots, rings, d.n,
-           d.tiles_x, s.width, d.width);
+      launch(q, k.reduce_edges, range_edges(d.n - 1, edges), kLocalEdges, in, out, k.edges, edges, grid(s),
+             grid(d));
+    launch(q, k.reduce_corners, range1d(rings), kLocal1D, in, out, k.rings, k.slots, rings, grid(s),
+           grid(d));
   }
 }
 
@@ -260,21 +290,19 @@ void Atlas::compute_limit()
 {
   const LevelLayout l = layout(max_level_);
   if (!limit_positions_) {
-    limit_positions_ = std::make_unique<Layer>(make_layer(l, false, nullptr));
-    limit_normals_ = std::make_unique<Layer>(make_layer(l, false, nullptr));
+    limit_positions_ = std::make_unique<Layer>(make_layer(l));
+    limit_normals_ = std::make_unique<Layer>(make_layer(l));
   }
   Kernels& k = *kernels_;
   cl::CommandQueue& q = runtime_->queue();
   const int edges = int(topology_.edges.size()), rings = int(topology_.rings.size());
   const cl::Memory &in = levels_[max_level_ - 1].mem(), &pos = limit_positions_->mem(),
                    &nrm = limit_normals_->mem();
-  launch(q, k.limit_interior, range2d(l), kLocal2D, in, pos, nrm, l.n, l.tiles_x, topology_.patch_count,
-         l.width);
+  const auto tiles = range_tiles(l);
+  launch(q, k.limit_interior, tiles.first, tiles.second, in, pos, nrm, grid(l), topology_.patch_count);
   if (l.n > 1)
-    launch(q, k.limit_edges, range_edges(l.n - 1, edges), kLocalEdges, in, pos, nrm, k.edges, edges, l.n,
-           l.tiles_x, l.width);
-  launch(q, k.limit_corners, range1d(rings), kLocal1D, in, pos, nrm, k.rings, k.slots, rings, l.n,
-         l.tiles_x, l.width);
+    launch(q, k.limit_edges, range_edges(l.n - 1, edges), kLocalEdges, in, pos, nrm, k.edges, edges, grid(l));
+  launch(q, k.limit_corners, range1d(rings), kLocal1D, in, pos, nrm, k.rings, k.slots, rings, grid(l));
 }
 
 void Atlas::finish() { runtime_->queue().finish(); }
@@ -282,11 +310,16 @@ void Atlas::finish() { runtime_->queue().finish(); }
 std::vector<Float4> Atlas::read_layer(const Layer& layer, const LevelLayout& l)
 {
   std::vector<Float4> out(l.texels());
-  if (storage_ == AtlasStorage::Image)
+  if (storage_ == AtlasStorage::Image) {
+    std::vector<Float4> image(l.image_texels());
     runtime_->queue().enqueueReadImage(layer.image, CL_TRUE, {0, 0, 0},
-                                       {std::size_t(l.width), std::size_t(l.height), 1}, 0, 0, out.data());
-  else
-    runtime_->queue().enqueueReadBuffer(layer.buffer, CL_TRUE, 0, l.layer_bytes(), out.data());
+                                       {std::size_t(l.width), std::size_t(l.height), 1}, 0, 0, image.data());
+    for_each_tile_row(l, [&](std::size_t at, std::size_t in_image) {
+      std::copy_n(&image[in_image], l.tile, &out[at]);
+    });
+  } else {
+    runtime_->queue().enqueueReadBuffer(layer.buffer, CL_TRUE, 0, layer_bytes(l, storage_), out.data());
+  }
   return out;
 }
 
@@ -295,11 +328,16 @@ void Atlas::write_layer(Layer& layer, const LevelLayout& l, const std::vector<Fl
   if (texels.size() != l.texels())
     throw InputError("level " + std::to_string(l.level) + " holds " + std::to_string(l.texels()) +
                      " texels, not " + std::to_string(texels.size()));
-  if (storage_ == AtlasStorage::Image)
+  if (storage_ == AtlasStorage::Image) {
+    std::vector<Float4> image(l.image_texels(), Float4{0.f, 0.f, 0.f, 0.f});
+    for_each_tile_row(l, [&](std::size_t at, std::size_t in_image) {
+      std::copy_n(&texels[at], l.tile, &image[in_image]);
+    });
     runtime_->queue().enqueueWriteImage(layer.image, CL_TRUE, {0, 0, 0},
-                                        {std::size_t(l.width), std::size_t(l.height), 1}, 0, 0, texels.data());
-  else
-    runtime_->queue().enqueueWriteBuffer(layer.buffer, CL_TRUE, 0, l.layer_bytes(), texels.data());
+                                        {std::size_t(l.width), std::size_t(l.height), 1}, 0, 0, image.data());
+  } else {
+    runtime_->queue().enqueueWriteBuffer(layer.buffer, CL_TRUE, 0, layer_bytes(l, storage_), texels.data());
+  }
 }
 
 std::vector<Float4> Atlas::read_positions(int level)

@@ -36,7 +36,20 @@ struct MemoryPlan
   std::size_t largest_allocation = 0; //!< bytes, one layer of the finest level
   std::size_t total = 0;              //!< bytes, all levels plus limit layers
 };
-MemoryPlan plan_memory(const AtlasTopology& topology, int level);
+MemoryPlan plan_memory(const AtlasTopology& topology, int level, AtlasStorage storage);
+//! Bytes of one float4 layer of a level in the given storage.
+std::size_t layer_bytes(const LevelLayout& layout, AtlasStorage storage);
+
+//! Why an atlas up to `level` does not fit the device (image size, largest
+//! allocation, total memory, 32-bit texel indices), or "" when it fits.
+std::string fit_problem(const AtlasTopology& topology, int level, const DeviceInfo& device,
+                        AtlasStorage storage);
+//! Highest level that fits, 0 when none does.
+int largest_fitting_level(const AtlasTopology& topology, const DeviceInfo& device, AtlasStorage storage);
+
+//! The patch tables of a mesh without a device: one Catmull-Clark step
+//! through OpenSubdiv.
+AtlasTopology atlas_topology_of(const BaseMesh& mesh);
 
 class Atlas
 {
@@ -66,7 +79,7 @@ public:
   //! Waits for every queued kernel.
   void finish();
 
-  //! Positions of every texel of `level` (atlas order; unused tiles zero).
+  //! Positions of every texel of `level`, patch-major (LevelLayout::index).
   std::vector<Float4> read_positions(int level);
   void write_positions(int level, const std::vector<Float4>& texels);
   std::vector<Float4> read_limit_positions();
@@ -77,7 +90,7 @@ private:
   struct Kernels;
   std::vector<Float4> read_layer(const Layer& layer, const LevelLayout& l);
   void write_layer(Layer& layer, const LevelLayout& l, const std::vector<Float4>& texels);
-  Layer make_layer(const LevelLayout& l, bool filled_from_host, const void* data);
+  Layer make_layer(const LevelLayout& l);
 
   std::shared_ptr<Runtime> runtime_;
   AtlasStorage storage_;

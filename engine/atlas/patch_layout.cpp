@@ -8,6 +8,7 @@ LevelLayout level_layout(int patches, int level)
 {
   LevelLayout l;
   l.level = level;
+  l.patches = patches;
   l.n = 1 << (level - 1);
   l.tile = l.n + 1;
   l.tiles_x = int(std::ceil(std::sqrt(double(patches))));

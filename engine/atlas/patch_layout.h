@@ -1,4 +1,4 @@
-// Where each patch's tile lies in the atlas of a level, and what it costs.
+// The size of each level of the atlas, and where tiles lie in it.
 #pragma once
 
 #include <cstddef> // for std::size_t
@@ -8,11 +8,15 @@ namespace meshpaint {
 //! Highest level the engine accepts at all (the device usually stops earlier).
 constexpr int kMaxLevel = 12;
 
-//! Tiles of (n+1) x (n+1) texels, n = 2^(level-1), tiles_x per row. Every
-//! level uses the same tile grid, so patch p sits in the same tile cell.
+//! One tile of (n+1) x (n+1) texels per patch, n = 2^(level-1).
+//! Host-side arrays and device buffers hold the tiles patch after patch
+//! (texel (p, i, j) at (p * tile + j) * tile + i). Device images and exported
+//! texture maps lay the tiles row-major in a width x height atlas, tiles_x
+//! tiles per row; every level uses the same tile grid.
 struct LevelLayout
 {
   int level = 1;
+  int patches = 0;
   int n = 1;
   int tile = 2;
   int tiles_x = 1;
@@ -20,9 +24,14 @@ struct LevelLayout
   int width = 2;
   int height = 2;
 
-  std::size_t texels() const { return std::size_t(width) * std::size_t(height); }
-  //! One float4 layer (positions, normals, ...).
-  std::size_t layer_bytes() const { return texels() * 16; }
+  //! Texels in patch-major order (host arrays, device buffers).
+  std::size_t texels() const { return std::size_t(patches) * std::size_t(tile) * std::size_t(tile); }
+  std::size_t index(int patch, int i, int j) const
+  {
+    return (std::size_t(patch) * std::size_t(tile) + std::size_t(j)) * std::size_t(tile) + std::size_t(i);
+  }
+  //! Texels of the atlas image, unused tiles included.
+  std::size_t image_texels() const { return std::size_t(width) * std::size_t(height); }
 };
 
 //! Layout of `level` (>= 1) for `patches` patches, tiles as square as possible.

@@ -9,7 +9,6 @@ std::vector<int> weld_map(const AtlasTopology& topo, const LevelLayout& l)
   const int interior_base = edge_base + int(topo.edges.size()) * inner;
   std::vector<int> map(l.texels(), -1);
   for (int p = 0; p < topo.patch_count; ++p) {
-    const int ox = (p % l.tiles_x) * l.tile, oy = (p / l.tiles_x) * l.tile;
     for (int j = 0; j <= n; ++j)
       for (int i = 0; i <= n; ++i) {
         int id;
@@ -28,7 +27,7 @@ std::vector<int> weld_map(const AtlasTopology& topo, const LevelLayout& l)
         } else {
           id = interior_base + p * inner * inner + (j - 1) * inner + (i - 1);
         }
-        map[std::size_t(oy + j) * l.width + ox + i] = id;
+        map[l.index(p, i, j)] = id;
       }
   }
   return map;
@@ -52,14 +51,32 @@ WeldedSurface weld(const AtlasTopology& topo, const LevelLayout& l, const std::v
   }
   s.quads.reserve(std::size_t(topo.patch_count) * l.n * l.n);
   for (int p = 0; p < topo.patch_count; ++p) {
-    const std::size_t o = std::size_t((p / l.tiles_x) * l.tile) * l.width + (p % l.tiles_x) * l.tile;
     for (int j = 0; j < l.n; ++j)
-      for (int i = 0; i < l.n; ++i) {
-        const std::size_t a = o + std::size_t(j) * l.width + i;
-        s.quads.push_back({map[a], map[a + 1], map[a + l.width + 1], map[a + l.width]});
-      }
+      for (int i = 0; i < l.n; ++i)
+        s.quads.push_back({map[l.index(p, i, j)], map[l.index(p, i + 1, j)], map[l.index(p, i + 1, j + 1)],
+                           map[l.index(p, i, j + 1)]});
   }
   return s;
+}
+
+} // namespace meshpaint
+
+#include "atlas/atlas.h"
+#include "core/errors.h"
+
+namespace meshpaint {
+
+WeldedSurface level_surface(Atlas& atlas, int level, bool limit)
+{
+  if (limit && level != atlas.max_level())
+    throw InputError("limit surfaces come from the atlas's finest level (" +
+                     std::to_string(atlas.max_level()) + ")");
+  const LevelLayout layout = atlas.layout(level);
+  if (!limit)
+    return weld(atlas.topology(), layout, atlas.read_positions(level), nullptr);
+  atlas.compute_limit();
+  const std::vector<Float4> normals = atlas.read_limit_normals();
+  return weld(atlas.topology(), layout, atlas.read_limit_positions(), &normals);
 }
 
 } // namespace meshpaint

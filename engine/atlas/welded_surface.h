@@ -19,7 +19,7 @@ struct WeldedSurface
   std::vector<std::array<int, 4>> quads; //!< #patches * n^2, counter-clockwise
 };
 
-//! Welded vertex of every texel of the level's atlas, -1 in unused tiles.
+//! Welded vertex of every texel of the level (patch-major order).
 //! Order: level-1 vertices, then patch-side texels edge by edge, then patch
 //! interiors patch by patch.
 std::vector<int> weld_map(const AtlasTopology& topology, const LevelLayout& layout);
@@ -27,5 +27,15 @@ std::vector<int> weld_map(const AtlasTopology& topology, const LevelLayout& layo
 //! Gathers texels into the welded surface; `normals` may be null.
 WeldedSurface weld(const AtlasTopology& topology, const LevelLayout& layout,
                    const std::vector<Float4>& positions, const std::vector<Float4>* normals);
+
+} // namespace meshpaint
+
+namespace meshpaint {
+
+class Atlas;
+
+//! The atlas's level (after subdivide()) as a welded surface; with `limit`,
+//! limit positions and normals of the atlas's finest level instead.
+WeldedSurface level_surface(Atlas& atlas, int level, bool limit);
 
 } // namespace meshpaint

@@ -2,6 +2,8 @@
 
 #include "core/errors.h"
 
+#include <opensubdiv/far/error.h>                  // for Far::SetErrorCallback
+
 #include <opensubdiv/far/primvarRefiner.h>         // for Far::PrimvarRefiner
 #include <opensubdiv/far/topologyDescriptor.h>     // for Far::TopologyDescriptor
 #include <opensubdiv/far/topologyRefinerFactory.h> // for Far::TopologyRefinerFactory
@@ -22,6 +24,13 @@ struct Point
   }
 };
 
+thread_local std::string far_message;
+
+//! OpenSubdiv reports through callbacks that print by default; keep the
+//! message for our own error instead.
+void keep_error(Far::ErrorType, const char* message) { far_message = message; }
+void keep_warning(const char* message) { far_message = message; }
+
 } // namespace
 
 std::unique_ptr<Far::TopologyRefiner> make_refiner(const BaseMesh& mesh)
@@ -36,11 +45,15 @@ std::unique_ptr<Far::TopologyRefiner> make_refiner(const BaseMesh& mesh)
   desc.numVertsPerFace = mesh.face_sizes.data();
   desc.vertIndicesPerFace = mesh.face_vertices.data();
 
+  Far::SetErrorCallback(keep_error);
+  Far::SetWarningCallback(keep_warning);
+  far_message.clear();
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
   std::unique_ptr<Far::TopologyRefiner> refiner(
     Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, options)));
   if (!refiner)
-    throw InputError(mesh.name + ": OpenSubdiv rejects the mesh topology");
+    throw InputError(mesh.name + ": OpenSubdiv rejects the mesh topology" +
+                     (far_message.empty() ? std::string() : ": " + far_message));
   return refiner;
 }
 

@@ -122,14 +122,12 @@ std::vector<int> opensubdiv_vertex_order(const BaseMesh& mesh, const AtlasTopolo
   const auto& last = refiner->GetLevel(level);
   std::vector<int> order(topo.unique_vertices(level), -1);
   for (int p = 0; p < topo.patch_count; ++p) {
-    const std::size_t o = std::size_t((p / layout.tiles_x) * layout.tile) * layout.width +
-                          (p % layout.tiles_x) * layout.tile;
     for (int cj = 0; cj < n; ++cj)
       for (int ci = 0; ci < n; ++ci) {
         const Cell c = cells[(std::size_t(p) * n + cj) * n + ci];
         const auto fv = last.GetFaceVertices(c.face);
         for (int k = 0; k < 4; ++k) {
-          const int id = weld[o + std::size_t(cj + dxy[k][1]) * layout.width + ci + dxy[k][0]];
+          const int id = weld[layout.index(p, ci + dxy[k][0], cj + dxy[k][1])];
           const int osd = fv[(k + c.rot) % 4];
           if (order[id] >= 0 && order[id] != osd)
             throw std::logic_error("welded vertex " + std::to_string(id) + " is two Far vertices");

@@ -1,0 +1,88 @@
+#include "SurfaceConversion.h"
+
+#include "core/atomic_file.h" // for meshpaint::write_atomically
+#include "core/errors.h"      // for meshpaint::IOError
+
+#include <vtkCellArray.h>          // for vtkCellArray
+#include <vtkFloatArray.h>         // for vtkFloatArray
+#include <vtkIdTypeArray.h>        // for vtkIdTypeArray
+#include <vtkPointData.h>          // for vtkPointData
+#include <vtkPoints.h>             // for vtkPoints
+#include <vtkPolyData.h>           // for vtkPolyData
+#include <vtkXMLPolyDataWriter.h>  // for vtkXMLPolyDataWriter
+
+namespace meshpaint {
+namespace {
+
+vtkSmartPointer<vtkFloatArray> vec3_array(const std::vector<Vec3>& v, const char* name)
+{
+  auto a = vtkSmartPointer<vtkFloatArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(3);
+  a->SetNumberOfTuples(vtkIdType(v.size()));
+  std::copy(&v[0][0], &v[0][0] + 3 * v.size(), a->GetPointer(0));
+  return a;
+}
+
+} // namespace
+
+vtkSmartPointer<vtkPolyData> to_polydata(const WeldedSurface& s)
+{
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  if (!s.points.empty())
+    points->SetData(vec3_array(s.points, "Points"));
+  poly->SetPoints(points);
+
+  auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
+  auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
+  offsets->SetNumberOfValues(vtkIdType(s.quads.size() + 1));
+  connectivity->SetNumberOfValues(vtkIdType(4 * s.quads.size()));
+  for (std::size_t q = 0; q <= s.quads.size(); ++q)
+    offsets->SetValue(vtkIdType(q), vtkIdType(4 * q));
+  for (std::size_t q = 0; q < s.quads.size(); ++q)
+    for (int k = 0; k < 4; ++k)
+      connectivity->SetValue(vtkIdType(4 * q + k), s.quads[q][k]);
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->SetData(offsets, connectivity);
+  poly->SetPolys(cells);
+
+  if (!s.normals.empty())
+    poly->GetPointData()->SetNormals(vec3_array(s.normals, "Normals"));
+  return poly;
+}
+
+BaseMesh to_base_mesh(vtkPolyData* poly, const std::string& name)
+{
+  std::vector<Vec3> points;
+  std::vector<std::vector<int>> faces;
+  if (poly && poly->GetPoints())
+    for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i) {
+      double p[3];
+      poly->GetPoint(i, p);
+      points.push_back({float(p[0]), float(p[1]), float(p[2])});
+    }
+  if (poly && poly->GetPolys()) {
+    vtkCellArray* polys = poly->GetPolys();
+    vtkIdType npts;
+    const vtkIdType* ids;
+    for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
+      faces.emplace_back(ids, ids + npts);
+  }
+  return make_base_mesh(std::move(points), faces, name);
+}
+
+void write_vtp(vtkPolyData* poly, const std::string& path)
+{
+  write_atomically(path, [&](const std::string& tmp) {
+    auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+    writer->SetFileName(tmp.c_str());
+    writer->SetInputData(poly);
+    writer->SetDataModeToAppended();
+    writer->SetCompressorTypeToZLib();
+    if (!writer->Write())
+      throw IOError("cannot write '" + path + "'");
+  });
+}
+
+} // namespace meshpaint

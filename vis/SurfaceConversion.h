@@ -1,0 +1,30 @@
+// Moving surfaces between the engine and VTK.
+#ifndef SurfaceConversion_h
+#define SurfaceConversion_h
+
+#include "meshpaintVisModule.h" // for MESHPAINTVIS_EXPORT
+
+#include "atlas/welded_surface.h" // for meshpaint::WeldedSurface
+#include "mesh/base_mesh.h"       // for meshpaint::BaseMesh
+
+#include <vtkPolyData.h>     // for vtkPolyData
+#include <vtkSmartPointer.h> // for vtkSmartPointer
+
+#include <string> // for std::string
+
+namespace meshpaint {
+
+//! Quads as cells, normals (when present) as the point array "Normals".
+MESHPAINTVIS_EXPORT vtkSmartPointer<vtkPolyData> to_polydata(const WeldedSurface& surface);
+
+//! The polygons of `poly` (other cells ignored) as a checked base mesh.
+//! \throw InputError as make_base_mesh does.
+MESHPAINTVIS_EXPORT BaseMesh to_base_mesh(vtkPolyData* poly, const std::string& name);
+
+//! Writes .vtp (XML, binary, compressed) atomically.
+//! \throw IOError when writing fails.
+MESHPAINTVIS_EXPORT void write_vtp(vtkPolyData* poly, const std::string& path);
+
+} // namespace meshpaint
+
+#endif

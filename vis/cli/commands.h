@@ -1,0 +1,32 @@
+// The `meshpaint` commands and what they share.
+#pragma once
+
+#include "args.h"
+
+#include "cl/runtime.h"
+#include "mesh/base_mesh.h"
+
+#include <memory> // for std::shared_ptr
+#include <string> // for std::string
+#include <vector> // for std::vector
+
+namespace meshpaint::cli {
+
+using Argv = std::vector<std::string>;
+
+int info_command(const Argv& argv);
+int subdivide_command(const Argv& argv);
+int bench_command(const Argv& argv);
+int demo_command(const Argv& argv);
+int devices_command(const Argv& argv);
+
+//! The device named by --device (or MESHPAINT_DEVICE, or the default).
+std::shared_ptr<Runtime> open_device(const Args& args);
+
+//! Loads a mesh and reports on stderr what import repaired.
+BaseMesh load_reported(const std::string& path);
+
+//! Where the set-up script puts the scans (data/scans in the source tree).
+std::string scans_dir();
+
+} // namespace meshpaint::cli

@@ -1,0 +1,86 @@
+#include "commands.h"
+#include "table.h"
+
+#include "atlas/atlas.h"
+#include "core/errors.h"
+#include "core/format.h"
+#include "mesh/mesh_stats.h"
+
+#include <iostream> // for std::cout
+
+namespace meshpaint::cli {
+namespace {
+
+std::string histogram(const std::map<int, std::size_t>& h, const std::map<int, std::string>& names)
+{
+  std::string out;
+  for (const auto& [k, count] : h) {
+    const auto it = names.find(k);
+    out += (out.empty() ? "" : ", ") + grouped(count) + " " +
+           (it != names.end() ? it->second : std::to_string(k) + "-gons");
+  }
+  return out;
+}
+
+} // namespace
+
+int info_command(const Argv& argv)
+{
+  Args args("info", argv, {}, {"--device", "--storage"});
+  args.expect_positionals(1, 1, "MESH");
+  const std::string path = args.positionals()[0];
+  const BaseMesh mesh = load_reported(path);
+  const MeshStats s = compute_stats(mesh);
+  std::ostream& os = std::cout;
+
+  os << "mesh         " << path << "\n";
+  os << "counts       " << grouped(s.vertices) << " vertices, " << grouped(s.edges) << " edges, "
+     << grouped(s.faces) << " faces (" << histogram(s.faces_by_size, {{3, "triangles"}, {4, "quads"}}) << ")\n";
+  os << "topology     " << s.components << (s.components == 1 ? " component" : " components") << ", genus "
+     << s.genus << ", Euler characteristic " << s.euler_characteristic << "\n";
+  os << "boundaries   " << s.boundary_loops << " loops, " << grouped(s.boundary_edges) << " edges\n";
+  std::size_t vsum = 0;
+  for (const auto& [v, count] : s.valences)
+    vsum += std::size_t(v) * count;
+  os << "valences     min " << s.valences.begin()->first << ", max " << s.valences.rbegin()->first
+     << ", mean " << format_fixed(double(vsum) / double(s.vertices), 2) << "\n";
+  os << "bounds       (" << s.bbox_min[0] << ", " << s.bbox_min[1] << ", " << s.bbox_min[2] << ") - ("
+     << s.bbox_max[0] << ", " << s.bbox_max[1] << ", " << s.bbox_max[2] << "), diagonal "
+     << mesh.diagonal() << "\n";
+  const auto repairs = mesh.report.lines();
+  os << "import       " << (repairs.empty() ? "no repairs" : "") << "\n";
+  for (const std::string& r : repairs)
+    os << "             " << r << "\n";
+
+  const AtlasTopology topo = atlas_topology_of(mesh);
+  os << "atlas        " << grouped(topo.patch_count) << " patches (quads after the first Catmull-Clark step), "
+     << grouped(topo.rings.size()) << " corner rings, " << grouped(topo.edges.size()) << " patch edges\n";
+
+  std::shared_ptr<Runtime> runtime;
+  std::string no_device;
+  try {
+    runtime = open_device(args);
+  } catch (const DeviceError& e) {
+    no_device = e.what();
+  }
+  const AtlasStorage storage = args.has("--storage") ? parse_storage(args.value("--storage"))
+                               : runtime ? default_storage(runtime->info()) : AtlasStorage::Buffer;
+  os << "device       " << (runtime ? runtime->info().summary() + ", " + storage_name(storage) + " storage"
+                                    : "none: " + no_device) << "\n\n";
+
+  Table table({"level", "patch", "atlas texels", "vertices", "faces", "layer", "atlas 1..L", "fits"});
+  const int top = runtime ? std::min(kMaxLevel, largest_fitting_level(topo, runtime->info(), storage) + 1) : 6;
+  for (int l = 1; l <= std::max(top, 1); ++l) {
+    const MemoryPlan plan = plan_memory(topo, l, storage);
+    const LevelLayout& lay = plan.finest;
+    table.add({std::to_string(l), std::to_string(lay.tile) + "x" + std::to_string(lay.tile),
+               std::to_string(lay.width) + "x" + std::to_string(lay.height), grouped(topo.unique_vertices(l)),
+               grouped(std::size_t(topo.patch_count) * lay.n * lay.n), format_bytes(layer_bytes(lay, storage)),
+               format_bytes(plan.total),
+               runtime ? (fit_problem(topo, l, runtime->info(), storage).empty() ? "yes" : "no") : "?"});
+  }
+  table.print(os);
+  return 0;
+}
+
+} // namespace meshpaint::cli

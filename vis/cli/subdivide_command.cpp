@@ -1,0 +1,66 @@
+#include "commands.h"
+
+#include "SurfaceConversion.h"
+
+#include "atlas/atlas.h"
+#include "atlas/welded_surface.h"
+#include "core/errors.h"
+#include "core/format.h"
+#include "core/timer.h"
+#include "mesh/surface_io.h"
+
+#include <filesystem> // for std::filesystem::path
+#include <iostream>   // for std::cerr
+
+namespace meshpaint::cli {
+
+//! Writes OBJ or PLY through OpenMesh, VTP through VTK.
+void write_any(const WeldedSurface& surface, const std::string& path)
+{
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".vtp")
+    write_vtp(to_polydata(surface), path);
+  else
+    write_surface(surface, path);
+}
+
+int subdivide_command(const Argv& argv)
+{
+  Args args("subdivide", argv, {"--limit", "--quiet"}, {"--level", "-o", "--device", "--storage"});
+  args.expect_positionals(1, 1, "MESH --level L [--limit] -o OUT.{obj,ply,vtp}");
+  if (!args.has("--level"))
+    throw InputError("--level is required (1.." + std::to_string(kMaxLevel) + ")");
+  const int level = args.integer("--level", 1, 1, kMaxLevel);
+  const std::string out = args.value("-o");
+  if (out.empty())
+    throw InputError("-o OUT.{obj,ply,vtp} is required");
+  const std::string ext = std::filesystem::path(out).extension().string();
+  if (ext != ".obj" && ext != ".ply" && ext != ".vtp")
+    throw InputError("cannot write '" + out + "': unknown format '" + ext + "' (.obj, .ply, .vtp)");
+
+  Timer t;
+  const BaseMesh mesh = load_reported(args.positionals()[0]);
+  const double load_ms = t.ms();
+  auto runtime = open_device(args);
+  t.restart();
+  Atlas atlas(runtime, mesh, level,
+              args.has("--storage") ? parse_storage(args.value("--storage")) : default_storage(runtime->info()));
+  const double setup_ms = t.ms();
+  t.restart();
+  atlas.subdivide(1, level);
+  atlas.finish();
+  const double kernel_ms = t.ms();
+  t.restart();
+  const WeldedSurface surface = level_surface(atlas, level, args.flag("--limit"));
+  const double read_ms = t.ms();
+  t.restart();
+  write_any(surface, out);
+  if (!args.flag("--quiet"))
+    std::cerr << "meshpaint subdivide: " << out << ": level " << level << ", " << surface.points.size()
+              << " vertices, " << surface.quads.size() << " quads; load " << format_fixed(load_ms, 1)
+              << " ms, atlas " << format_fixed(setup_ms, 1) << " ms, kernels " << format_fixed(kernel_ms, 1)
+              << " ms, read " << format_fixed(read_ms, 1) << " ms, write " << format_fixed(t.ms(), 1) << " ms\n";
+  return 0;
+}
+
+} // namespace meshpaint::cli
