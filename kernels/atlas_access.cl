@@ -32,39 +32,66 @@ inline int2 tile_origin(int patch, int2 g)
   return (int2)((patch % g.y) * g.x, (patch / g.y) * g.x);
 }
 
-/* Patch-local texel at position t along side `side` and depth d inside it
- * (d = 0 is the side itself). The map is a rotation, so (t, d) frames keep the
- * patch's orientation. */
-inline int2 side_texel(int side, int t, int d, int n)
+/* A patch seen from one of its sides or corners: texel (t, d) is
+ * o + t * dt + d * dd, t running along the side (or the corner's outgoing
+ * side) and d inwards. Sides and corners are numbered 0..3 counter-clockwise
+ * from the patch's first corner; every frame is a rotation of the patch's
+ * own, so it keeps the orientation. Branch-free: the tables replace a switch
+ * per texel, which the CPU vectoriser handles badly. */
+typedef struct {
+  int patch;
+  int2 o, dt, dd;
+} Frame;
+
+__constant int2 kCornerUnit[4] = {(int2)(0, 0), (int2)(1, 0), (int2)(1, 1), (int2)(0, 1)};
+__constant int2 kSideDir[4] = {(int2)(1, 0), (int2)(0, 1), (int2)(-1, 0), (int2)(0, -1)};
+
+inline Frame side_frame(int patch, int side, int n)
 {
-  switch (side & 3) {
-  case 0: return (int2)(t, d);
-  case 1: return (int2)(n - d, t);
-  case 2: return (int2)(n - t, n - d);
-  default: return (int2)(d, n - t);
-  }
+  Frame f;
+  f.patch = patch;
+  f.o = kCornerUnit[side & 3] * n;
+  f.dt = kSideDir[side & 3];
+  f.dd = kSideDir[(side + 1) & 3];
+  return f;
 }
 
-/* Texel (t, d) of an edge's side frame, where d < 0 reaches into the
- * neighbouring patch: position t of this side is n - t of the other. */
-#define EDGE_LOAD(src, g, e, t, d)                                                          \
-  ((d) >= 0 ? ATLAS_LOAD(src, g, (e).patch[0], side_texel((e).side[0], (t), (d), (g).x - 1)) \
-            : ATLAS_LOAD(src, g, (e).patch[1], side_texel((e).side[1], (g).x - 1 - (t), -(d), (g).x - 1)))
+/* The patch across an edge in the other patch's (t, d) terms: position t of
+ * this side is n - t of that one, and d < 0 reaches -d texels into it. */
+inline Frame across_frame(int patch, int side, int n)
+{
+  Frame f;
+  f.patch = patch;
+  f.o = kCornerUnit[(side + 1) & 3] * n;
+  f.dt = -kSideDir[side & 3];
+  f.dd = -kSideDir[(side + 1) & 3];
+  return f;
+}
 
-/* Writes one edge texel to both patches that store it. */
-#define EDGE_STORE(dst, g, e, t, v)                                                         \
-  do {                                                                                      \
-    ATLAS_STORE(dst, g, (e).patch[0], side_texel((e).side[0], (t), 0, (g).x - 1), (v));     \
-    if ((e).patch[1] >= 0)                                                                  \
-      ATLAS_STORE(dst, g, (e).patch[1], side_texel((e).side[1], (g).x - 1 - (t), 0, (g).x - 1), (v)); \
+#define FRAME_LOAD(a, g, f, t, d) ATLAS_LOAD(a, g, (f).patch, (f).o + (t) * (f).dt + (d) * (f).dd)
+#define FRAME_STORE(a, g, f, t, d, v) ATLAS_STORE(a, g, (f).patch, (f).o + (t) * (f).dt + (d) * (f).dd, v)
+
+/* Declares the frames of an edge's two patches (fp, fq) for reading grid g. */
+#define EDGE_FRAMES(e, g)                                                   \
+  const Frame fp = side_frame((e).patch[0], (e).side[0], (g).x - 1);        \
+  const Frame fq = across_frame(max((e).patch[1], 0), (e).side[1], (g).x - 1)
+
+/* Texel (t, d) around the edge: d >= 0 in the first patch, d < 0 across. */
+#define EDGE_LOAD(src, g, t, d) ((d) >= 0 ? FRAME_LOAD(src, g, fp, t, d) : FRAME_LOAD(src, g, fq, t, d))
+
+/* Writes one edge texel to both patches that store it, in grid g (which may
+ * be another level than the frames were declared for). */
+#define EDGE_STORE(dst, g, e, t, v)                                                    \
+  do {                                                                                 \
+    FRAME_STORE(dst, g, side_frame((e).patch[0], (e).side[0], (g).x - 1), t, 0, v);    \
+    if ((e).patch[1] >= 0)                                                             \
+      FRAME_STORE(dst, g, across_frame((e).patch[1], (e).side[1], (g).x - 1), t, 0, v); \
   } while (0)
 
 /* Texel (a, b) seen from a ring slot's corner: a along the slot's outgoing
  * side, b along its incoming side. */
-#define CORNER_LOAD(src, g, slot, a, b) \
-  ATLAS_LOAD(src, g, (slot).patch, side_texel((slot).corner, (a), (b), (g).x - 1))
-#define CORNER_STORE(dst, g, slot, v) \
-  ATLAS_STORE(dst, g, (slot).patch, side_texel((slot).corner, 0, 0, (g).x - 1), (v))
+#define CORNER_LOAD(src, g, slot, a, b) FRAME_LOAD(src, g, side_frame((slot).patch, (slot).corner, (g).x - 1), a, b)
+#define CORNER_STORE(dst, g, slot, v) FRAME_STORE(dst, g, side_frame((slot).patch, (slot).corner, (g).x - 1), 0, 0, v)
 
 /* Patch and texel of a work item of an atlas-wide kernel, whose range is
  * (tile, tile * patches): returns 0 for texels on a patch side or corner and

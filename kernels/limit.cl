@@ -44,11 +44,12 @@ __kernel void limit_edges(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, __global c
   if (k >= edge_count || t >= g.x - 1)
     return;
   const PatchEdge e = edges[k];
+  EDGE_FRAMES(e, g);
   float4 q[9];
   const int lo = e.patch[1] >= 0 ? -1 : 0;
   for (int b = lo; b <= 1; ++b)
     for (int a = -1; a <= 1; ++a)
-      q[3 * (b + 1) + a + 1] = EDGE_LOAD(src, g, e, t + a, b);
+      q[3 * (b + 1) + a + 1] = EDGE_LOAD(src, g, t + a, b);
   float4 pv, nv;
   if (lo < 0) {
     limit_regular(q, &pv, &nv);

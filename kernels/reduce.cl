@@ -33,12 +33,13 @@ __kernel void reduce_edges(ATLAS_IN src, ATLAS_OUT dst, __global const PatchEdge
   if (k >= edge_count || t >= dg.x - 1)
     return;
   const PatchEdge e = edges[k];
+  EDGE_FRAMES(e, sg);
   const int lo = e.patch[1] >= 0 ? -2 : 0, hi = e.patch[1] >= 0 ? 2 : 0;
   float4 acc = (float4)(0.0f);
   for (int b = lo; b <= hi; ++b) {
     float4 row = (float4)(0.0f);
     for (int a = -2; a <= 2; ++a)
-      row += BINOMIAL5(a) * EDGE_LOAD(src, sg, e, 2 * t + a, b);
+      row += BINOMIAL5(a) * EDGE_LOAD(src, sg, 2 * t + a, b);
     acc += (lo < 0 ? BINOMIAL5(b) : 1.0f) * row;
   }
   EDGE_STORE(dst, dg, e, t, acc);

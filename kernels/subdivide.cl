@@ -33,27 +33,45 @@ __kernel void subdivide_interior(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, 
   ATLAS_STORE(dst, dg, p, ij, v);
 }
 
-/* Range: (2 n_src - 1, #edges); texels on patch sides, corners excluded. */
+/* Range: #edges; texels on patch sides, corners excluded, each work item
+ * walking one side so that its frames and rows are set up once. */
 __kernel void subdivide_edges(ATLAS_IN src, ATLAS_OUT dst, __global const PatchEdge *edges,
                               int edge_count, int2 sg, int2 dg)
 {
-  const int t = get_global_id(0) + 1, k = get_global_id(1);
-  const int n_src = sg.x - 1;
-  if (k >= edge_count || t >= 2 * n_src)
+  const int k = get_global_id(0);
+  if (k >= edge_count)
     return;
+  const int n_src = sg.x - 1;
   const PatchEdge e = edges[k];
-  const int c = (t + 1) >> 1, t0 = c - 1, t2 = min(c + 1, n_src);
-  const float3 w = refine_weights(t);
-#define ROW(d)                                   \
-  (w.x * EDGE_LOAD(src, sg, e, t0, d) +          \
-   w.y * EDGE_LOAD(src, sg, e, c, d) +           \
-   w.z * EDGE_LOAD(src, sg, e, t2, d))
-  float4 v = ROW(0);
-  /* A mesh-boundary side refines as a cubic B-spline curve on its own. */
-  if (e.patch[1] >= 0)
-    v = 0.125f * ROW(1) + 0.75f * v + 0.125f * ROW(-1);
-#undef ROW
-  EDGE_STORE(dst, dg, e, t, v);
+  EDGE_FRAMES(e, sg);
+  const int interior = e.patch[1] >= 0;
+  /* Old samples along the side: the side row and the rows on either side. */
+  float4 prev_row = EDGE_LOAD(src, sg, 0, 0), prev_in = EDGE_LOAD(src, sg, 0, 1);
+  float4 prev_out = interior ? EDGE_LOAD(src, sg, 0, -1) : prev_row;
+  float4 cur_row = EDGE_LOAD(src, sg, 1, 0), cur_in = EDGE_LOAD(src, sg, 1, 1);
+  float4 cur_out = interior ? EDGE_LOAD(src, sg, 1, -1) : cur_row;
+  for (int c = 1; c <= n_src; ++c) {
+    /* Edge point between old samples c-1 and c, then vertex point at c. */
+    const float4 across_mid = 0.75f * (prev_row + cur_row) + 0.125f * ((prev_in + cur_in) + (prev_out + cur_out));
+    const float4 mid = interior ? 0.5f * across_mid : 0.5f * (prev_row + cur_row);
+    EDGE_STORE(dst, dg, e, 2 * c - 1, mid);
+    if (c == n_src)
+      break;
+    const float4 next_row = EDGE_LOAD(src, sg, c + 1, 0), next_in = EDGE_LOAD(src, sg, c + 1, 1);
+    const float4 next_out = interior ? EDGE_LOAD(src, sg, c + 1, -1) : next_row;
+    float4 v;
+    if (interior) {
+      const float4 row = 0.125f * (prev_row + next_row) + 0.75f * cur_row;
+      const float4 in = 0.125f * (prev_in + next_in) + 0.75f * cur_in;
+      const float4 out = 0.125f * (prev_out + next_out) + 0.75f * cur_out;
+      v = 0.125f * (in + out) + 0.75f * row;
+    } else {
+      v = 0.125f * (prev_row + next_row) + 0.75f * cur_row;
+    }
+    EDGE_STORE(dst, dg, e, 2 * c, v);
+    prev_row = cur_row; prev_in = cur_in; prev_out = cur_out;
+    cur_row = next_row; cur_in = next_in; cur_out = next_out;
+  }
 }
 
 /* Range: #rings; patch corners, i.e. the level-1 vertices and their copies. */

@@ -98,8 +98,9 @@ TEST_P(OpenSubdivOracle, LevelAndLimitMatch)
 
   const WeldedSurface ours = weld(atlas.topology(), layout, texels, nullptr);
   const WeldedSurface limit = weld(atlas.topology(), layout, limit_pos, &limit_nrm);
-  const ReferenceLevel ref = opensubdiv_level(mesh, c.level, true);
-  const std::vector<int> order = opensubdiv_vertex_order(mesh, atlas.topology(), c.level);
+  // The atlas works on the mesh with faces in spatial order; so does the oracle.
+  const ReferenceLevel ref = opensubdiv_level(atlas.base_mesh(), c.level, true);
+  const std::vector<int> order = opensubdiv_vertex_order(atlas.base_mesh(), atlas.topology(), c.level);
   ASSERT_EQ(ours.points.size(), ref.points.size()) << "vertex count differs from OpenSubdiv's";
 
   double worst_pos = 0, worst_limit = 0, worst_angle = 0;

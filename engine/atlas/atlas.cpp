@@ -4,6 +4,7 @@
 #include "core/errors.h"
 #include "core/format.h"
 #include "mesh/far_refiner.h"
+#include "mesh/spatial_order.h"
 
 #include <algorithm> // for std::max
 #include <cstdlib>   // for std::getenv
@@ -165,7 +166,8 @@ Atlas::Atlas(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int max_lev
   if (storage_ == AtlasStorage::Image && !device.images)
     throw DeviceError(device.name + " has no image support; use --storage buffer");
 
-  auto refiner = make_refiner(mesh);
+  base_ = spatially_ordered(mesh, &base_face_order_);
+  auto refiner = make_refiner(base_);
   refine_uniform(*refiner, 1, true); // full topology: edges and vertex rings
   topology_ = build_atlas_topology(refiner->GetLevel(1));
 
@@ -178,7 +180,7 @@ Atlas::Atlas(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int max_lev
   }
 
   // Level 1: the first Catmull-Clark step, one 2x2 tile per quad.
-  const std::vector<Vec3> level1 = interpolate_levels(*refiner, mesh.points)[1];
+  const std::vector<Vec3> level1 = interpolate_levels(*refiner, base_.points)[1];
   const LevelLayout l1 = layout(1);
   std::vector<Float4> texels(l1.texels(), Float4{0.f, 0.f, 0.f, 0.f});
   static const int corner_xy[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
@@ -257,8 +259,7 @@ void Atlas::subdivide(int from_level, int to_level)
     const cl::Memory &in = levels_[l - 1].mem(), &out = levels_[l].mem();
     const auto tiles = range_tiles(d);
     launch(q, k.subdivide_interior, tiles.first, tiles.second, in, out, grid(s), grid(d), patches);
-    launch(q, k.subdivide_edges, range_edges(2 * s.n - 1, edges), kLocalEdges, in, out, k.edges, edges,
-           grid(s), grid(d));
+    launch(q, k.subdivide_edges, range1d(edges), kLocal1D, in, out, k.edges, edges, grid(s), grid(d));
     launch(q, k.subdivide_corners, range1d(rings), kLocal1D, in, out, k.rings, k.slots, rings, grid(s),
            grid(d));
   }

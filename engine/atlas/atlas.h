@@ -56,6 +56,9 @@ class Atlas
 public:
   //! Builds the first Catmull-Clark step of `mesh` (OpenSubdiv), the patch
   //! tables, and device storage for levels 1..max_level, with level 1 filled.
+  //! The atlas works on `mesh` with its faces in spatial order (see
+  //! spatially_ordered()); base_mesh() is that reordered mesh, whose face k
+  //! is input face base_face_order()[k].
   //! \throw ResourceError when max_level does not fit the device, naming the
   //! largest level that does.
   Atlas(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int max_level,
@@ -67,6 +70,8 @@ public:
   int max_level() const { return max_level_; }
   AtlasStorage storage() const { return storage_; }
   const AtlasTopology& topology() const { return topology_; }
+  const BaseMesh& base_mesh() const { return base_; }
+  const std::vector<int>& base_face_order() const { return base_face_order_; }
   LevelLayout layout(int level) const;
   Runtime& runtime() { return *runtime_; }
 
@@ -95,6 +100,8 @@ private:
   std::shared_ptr<Runtime> runtime_;
   AtlasStorage storage_;
   int max_level_;
+  BaseMesh base_;
+  std::vector<int> base_face_order_;
   AtlasTopology topology_;
   std::vector<Layer> levels_;  // index l - 1
   std::unique_ptr<Layer> limit_positions_, limit_normals_;

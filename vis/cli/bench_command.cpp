@@ -53,18 +53,20 @@ int bench_subdivide(const Args& args)
     atlas.finish();
   });
 
-  StencilPeer peer(mesh, level);
+  // OpenSubdiv gets the same spatially ordered mesh the atlas works on.
+  const BaseMesh& base = atlas.base_mesh();
+  StencilPeer peer(base, level);
   const std::vector<double> osd = time_repeats(repeats, [&] { peer.evaluate(); });
 
   // Far::PrimvarRefiner, level by level: OpenSubdiv's other CPU path.
-  auto refiner = make_refiner(mesh);
+  auto refiner = make_refiner(base);
   refine_uniform(*refiner, level, false);
   const std::vector<double> primvar =
-    time_repeats(std::max(1, repeats / 3), [&] { interpolate_levels(*refiner, mesh.points); });
+    time_repeats(std::max(1, repeats / 3), [&] { interpolate_levels(*refiner, base.points); });
 
   // Both must have computed the same surface, or the timings mean nothing.
   const WeldedSurface ours = level_surface(atlas, level, false);
-  const std::vector<int> order = opensubdiv_vertex_order(mesh, atlas.topology(), level);
+  const std::vector<int> order = opensubdiv_vertex_order(base, atlas.topology(), level);
   const std::vector<Vec3> theirs = peer.result();
   double worst = 0;
   for (std::size_t v = 0; v < ours.points.size(); ++v) {
