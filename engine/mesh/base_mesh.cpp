@@ -1,6 +1,7 @@
 #include "mesh/base_mesh.h"
 
 #include "core/errors.h"
+#include "mesh/file_census.h"
 #include "mesh/openmesh_types.h"
 
 #include <OpenMesh/Core/IO/IOManager.hh>          // for OpenMesh::IO::IOManager
@@ -49,6 +50,8 @@ public:
       ++report.nonmanifold_faces_detached; // OpenMesh gave the face its own vertices
     return fh;
   }
+
+  std::size_t faces_seen() const { return faces_; }
 
   ImportReport report;
   std::string problem_;
@@ -184,25 +187,28 @@ std::string lower_extension(const std::string& path)
 
 bool ImportReport::changed() const
 {
-  return degenerate_faces_dropped || nonmanifold_faces_detached || nonmanifold_vertices_split ||
-         isolated_vertices_removed;
+  return faces_skipped_by_reader || degenerate_faces_dropped || nonmanifold_faces_detached ||
+         nonmanifold_vertices_split || isolated_vertices_removed;
 }
 
 std::vector<std::string> ImportReport::lines() const
 {
   std::vector<std::string> out;
+  if (faces_skipped_by_reader)
+    out.push_back("dropped " + std::to_string(faces_skipped_by_reader) +
+                  " faces the file lists but the reader could not use (repeated or missing vertices)");
   if (degenerate_faces_dropped)
     out.push_back("dropped " + std::to_string(degenerate_faces_dropped) +
                   " degenerate faces (a vertex named twice, or fewer than 3 vertices)");
   if (nonmanifold_faces_detached)
     out.push_back("detached " + std::to_string(nonmanifold_faces_detached) +
-                  " faces on non-manifold edges (given their own vertices)");
+                  " faces that do not join their neighbours (an edge with more than two faces, or "
+                  "faces of opposite orientation); each keeps its own copies of its vertices");
   if (nonmanifold_vertices_split)
     out.push_back("split " + std::to_string(nonmanifold_vertices_split) +
                   " non-manifold vertices (one copy per extra surface sheet)");
   if (isolated_vertices_removed)
-    out.push_back("removed " + std::to_string(isolated_vertices_removed) +
-                  " isolated vertices (used by no face)");
+    out.push_back("removed " + std::to_string(isolated_vertices_removed) + " vertices used by no face");
   return out;
 }
 
@@ -263,6 +269,14 @@ BaseMesh load_mesh(const std::string& path)
   if (fs::file_size(path, ec) == 0)
     throw InputError("'" + path + "' is empty");
 
+  const std::string where = "'" + path + "': ";
+  // OpenMesh's text readers skip a vertex written as "nan" or "inf"; say so
+  // rather than let the faces after it name the wrong vertices.
+  const FileCensus census = take_census(path, ext);
+  if (census.nonfinite_line >= 0)
+    throw InputError(where + "line " + std::to_string(census.nonfinite_line) + ": non-finite coordinate '" +
+                     census.nonfinite_token + "'");
+
   PolyMesh om;
   CheckedImporter importer(om);
   OpenMesh::IO::Options options;
@@ -271,12 +285,14 @@ BaseMesh load_mesh(const std::string& path)
     QuietOpenMesh quiet;
     ok = OpenMesh::IO::IOManager().read(path, importer, options);
   }
-  const std::string where = "'" + path + "': ";
   if (!importer.problem_.empty())
     throw InputError(where + importer.problem_);
   if (!ok)
     throw InputError(where + "not a readable " + ext.substr(1) + " file (truncated or malformed)");
-  return finish(om, importer.report, fs::path(path).stem().string(), where);
+  ImportReport report = importer.report;
+  if (census.declared_faces > long(importer.faces_seen()))
+    report.faces_skipped_by_reader = std::size_t(census.declared_faces) - importer.faces_seen();
+  return finish(om, report, fs::path(path).stem().string(), where);
 }
 
 } // namespace meshpaint

@@ -48,9 +48,9 @@ int info_command(const Argv& argv)
      << s.bbox_max[0] << ", " << s.bbox_max[1] << ", " << s.bbox_max[2] << "), diagonal "
      << mesh.diagonal() << "\n";
   const auto repairs = mesh.report.lines();
-  os << "import       " << (repairs.empty() ? "no repairs" : "") << "\n";
-  for (const std::string& r : repairs)
-    os << "             " << r << "\n";
+  os << "import       " << (repairs.empty() ? "no repairs" : repairs.front()) << "\n";
+  for (std::size_t r = 1; r < repairs.size(); ++r)
+    os << "             " << repairs[r] << "\n";
 
   const AtlasTopology topo = atlas_topology_of(mesh);
   os << "atlas        " << grouped(topo.patch_count) << " patches (quads after the first Catmull-Clark step), "

@@ -1,0 +1,20 @@
+// A quick look at a mesh file before OpenMesh parses it: what OpenMesh's
+// readers would otherwise skip without a word (text coordinates "nan" or
+// "inf", faces a reader leaves out).
+#pragma once
+
+#include <string> // for std::string
+
+namespace meshpaint {
+
+struct FileCensus
+{
+  long declared_faces = -1;    //!< faces the file says or shows it has; -1 unknown
+  long nonfinite_line = -1;    //!< first text line with a "nan"/"inf" number, 1-based
+  std::string nonfinite_token; //!< that number as written
+};
+
+//! Scans OBJ, OFF and ASCII PLY/STL text, or the header of binary PLY/STL.
+FileCensus take_census(const std::string& path, const std::string& lower_extension);
+
+} // namespace meshpaint

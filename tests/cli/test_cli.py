@@ -1,0 +1,166 @@
+"""The meshpaint command line: bad input, outputs, and what they contain.
+
+Run by CTest with MESHPAINT_BIN (the executable) and MESHPAINT_SOURCE_DIR set.
+"""
+import json
+import os
+import re
+import subprocess
+
+import pytest
+import vtk  # Debian's python3-vtk9; read our outputs with VTK itself
+
+BIN = os.environ["MESHPAINT_BIN"]
+SOURCE = os.environ["MESHPAINT_SOURCE_DIR"]
+BAD = os.path.join(SOURCE, "tests", "bad_input")
+SCANS = os.path.join(SOURCE, "data", "scans")
+
+CUBE_OBJ = """v 0 0 0
+v 1 0 0
+v 1 1 0
+v 0 1 0
+v 0 0 1
+v 1 0 1
+v 1 1 1
+v 0 1 1
+f 1 4 3 2
+f 5 6 7 8
+f 1 2 6 5
+f 2 3 7 6
+f 3 4 8 7
+f 4 1 5 8
+"""
+
+
+def run(*args):
+    return subprocess.run([BIN, *args], capture_output=True, text=True, timeout=600)
+
+
+def load_cases():
+    with open(os.path.join(BAD, "cases.json")) as f:
+        return json.load(f)["cases"]
+
+
+@pytest.mark.parametrize("case", load_cases(), ids=lambda c: " ".join(c["args"][:2]) + " " + os.path.basename(c["args"][-1]))
+def test_bad_input_gives_one_line_and_exit_2(case, tmp_path):
+    args = [a.format(dir=BAD, scans=SCANS, tmp=tmp_path) for a in case["args"]]
+    r = run(*args)
+    lines = r.stderr.strip().splitlines()
+    assert r.returncode == 2, r.stderr
+    assert len(lines) == 1, r.stderr
+    assert re.search(case["message"], lines[0]), lines[0]
+    assert lines[0].startswith("meshpaint "), lines[0]
+
+
+def test_unknown_device_is_a_device_error(tmp_path):
+    r = run("info", os.path.join(SCANS, "bunny00.off"), "--device", "no-such-device")
+    # info still reports the mesh and says there is no such device
+    assert r.returncode == 0
+    assert "no OpenCL device matches 'no-such-device'" in r.stdout
+    r = run("subdivide", os.path.join(SCANS, "bunny00.off"), "--level", "2", "--device", "no-such-device",
+            "-o", str(tmp_path / "x.obj"))
+    assert r.returncode == 3
+    assert len(r.stderr.strip().splitlines()) == 1
+    assert not (tmp_path / "x.obj").exists()
+
+
+@pytest.fixture
+def cube(tmp_path):
+    path = tmp_path / "cube.obj"
+    path.write_text(CUBE_OBJ)
+    return path
+
+
+def read_polydata(path):
+    reader = {".vtp": vtk.vtkXMLPolyDataReader, ".ply": vtk.vtkPLYReader, ".obj": vtk.vtkOBJReader}[path.suffix]()
+    reader.SetFileName(str(path))
+    reader.Update()
+    return reader.GetOutput()
+
+
+@pytest.mark.parametrize("ext", [".obj", ".ply", ".vtp"])
+def test_subdivide_writes_welded_quads(cube, tmp_path, ext):
+    out = tmp_path / ("cube2" + ext)
+    r = run("subdivide", str(cube), "--level", "2", "-o", str(out), "--quiet")
+    assert r.returncode == 0, r.stderr
+    poly = read_polydata(out)
+    # OpenSubdiv's counts for a cube at level 2: 98 vertices, 96 quads.
+    assert poly.GetNumberOfPoints() == 98
+    assert poly.GetNumberOfCells() == 96
+    assert all(poly.GetCell(i).GetNumberOfPoints() == 4 for i in range(poly.GetNumberOfCells()))
+
+
+def test_subdivide_limit_writes_unit_normals(cube, tmp_path):
+    out = tmp_path / "cube3.vtp"
+    r = run("subdivide", str(cube), "--level", "3", "--limit", "-o", str(out))
+    assert r.returncode == 0, r.stderr
+    poly = read_polydata(out)
+    normals = poly.GetPointData().GetArray("Normals")
+    assert normals is not None and normals.GetNumberOfComponents() == 3
+    assert poly.GetNumberOfPoints() == 386
+    center = (0.5, 0.5, 0.5)
+    for i in range(poly.GetNumberOfPoints()):
+        n = normals.GetTuple3(i)
+        p = poly.GetPoint(i)
+        assert abs(sum(c * c for c in n) - 1.0) < 1e-5
+        # a convex closed surface: normals point away from the centre
+        assert sum(n[k] * (p[k] - center[k]) for k in range(3)) > 0
+
+
+def test_failed_subdivide_leaves_existing_output_untouched(cube, tmp_path):
+    out = tmp_path / "keep.obj"
+    out.write_text("precious\n")
+    r = run("subdivide", str(cube), "--level", "13", "-o", str(out))
+    assert r.returncode == 2
+    assert out.read_text() == "precious\n"
+    assert [p.name for p in tmp_path.iterdir()] == sorted(["cube.obj", "keep.obj"]) or \
+        sorted(p.name for p in tmp_path.iterdir()) == ["cube.obj", "keep.obj"]
+
+
+def test_info_reports_topology(tmp_path):
+    # An open box (cube without its top): one boundary loop, genus 0.
+    lines = CUBE_OBJ.strip().splitlines()
+    path = tmp_path / "box.obj"
+    path.write_text("\n".join(l for l in lines if l != "f 5 6 7 8") + "\n")
+    r = run("info", str(path))
+    assert r.returncode == 0, r.stderr
+    assert "8 vertices, 12 edges, 5 faces (5 quads)" in r.stdout
+    assert "1 component, genus 0" in r.stdout
+    assert "boundaries   1 loops, 4 edges" in r.stdout
+    assert re.search(r"^\s+3\s+5x5\s", r.stdout, re.M)
+
+
+def test_info_reports_repairs(tmp_path):
+    # Three faces on one edge, and a face naming a vertex twice.
+    path = tmp_path / "fin.obj"
+    path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 2 2 2\n"
+                    "f 1 2 3\nf 2 1 4\nf 1 2 5\nf 1 3 3\n")
+    r = run("info", str(path))
+    assert r.returncode == 0, r.stderr
+    assert re.search(r"dropped 1 (degenerate faces|faces the file lists but the reader could not use)", r.stderr)
+    assert "detached 1 faces that do not join their neighbours" in r.stderr
+    assert re.search(r"removed [12] vertices used by no face", r.stderr)
+
+
+def test_bench_json_line(tmp_path, cube):
+    r = run("bench", "subdivide", str(cube), "--level", "3", "--json", "--repeats", "3")
+    assert r.returncode == 0, r.stderr
+    result = json.loads(r.stdout.strip().splitlines()[-1])
+    for key in ("engine_ms", "opensubdiv_ms", "vertices", "ratio", "max_deviation"):
+        assert key in result
+    assert result["vertices"] == 386
+    assert result["max_deviation"] <= 1e-5
+
+
+def test_demo_writes_its_surface(tmp_path):
+    r = run("demo", "--level", "2", "-o", str(tmp_path / "demo"))
+    assert r.returncode == 0, r.stderr
+    out = tmp_path / "demo" / "bunny00_level2_limit.vtp"
+    assert out.exists()
+    assert read_polydata(out).GetNumberOfPoints() == 904898
+
+
+def test_devices_lists_the_default(tmp_path):
+    r = run("devices")
+    assert r.returncode == 0, r.stderr
+    assert "*" in r.stdout

@@ -1,0 +1,129 @@
+// Base-mesh import: every format, polygons of any size, and what the
+// checks and repairs do.
+
+#include "core/errors.h"
+#include "mesh/base_mesh.h"
+#include "mesh/mesh_stats.h"
+#include "mesh/openmesh_types.h"
+#include "support/shapes.h"
+
+#include <OpenMesh/Core/IO/MeshIO.hh> // for OpenMesh::IO::write_mesh
+
+#include <gtest/gtest.h>
+
+#include <filesystem> // for std::filesystem
+#include <fstream>    // for std::ofstream
+
+namespace meshpaint {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path temp_dir()
+{
+  const fs::path dir = fs::temp_directory_path() / ("meshpaint-import-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+//! Writes a base mesh through OpenMesh, the way a user's file would look.
+std::string write_with_openmesh(const BaseMesh& mesh, const std::string& file)
+{
+  PolyMesh om;
+  for (const Vec3& p : mesh.points)
+    om.add_vertex(PolyMesh::Point(p[0], p[1], p[2]));
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    std::vector<PolyMesh::VertexHandle> vh;
+    for (int k = 0; k < mesh.face_sizes[f]; ++k)
+      vh.emplace_back(mesh.face_vertices[mesh.face_offsets[f] + k]);
+    om.add_face(vh);
+  }
+  const std::string path = (temp_dir() / file).string();
+  EXPECT_TRUE(OpenMesh::IO::write_mesh(om, path)) << path;
+  return path;
+}
+
+std::string write_text(const std::string& file, const std::string& text)
+{
+  const std::string path = (temp_dir() / file).string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(MeshImport, PolygonFormatsKeepEveryFace)
+{
+  for (const std::string ext : {".obj", ".off", ".ply"}) {
+    const BaseMesh src = test::mixed_polygons();
+    const BaseMesh back = load_mesh(write_with_openmesh(src, "mixed" + ext));
+    EXPECT_EQ(back.vertex_count(), src.vertex_count()) << ext;
+    ASSERT_EQ(back.face_count(), src.face_count()) << ext;
+    EXPECT_EQ(back.face_sizes, src.face_sizes) << ext;
+    EXPECT_FALSE(back.report.changed()) << ext;
+  }
+}
+
+TEST(MeshImport, StlTriangles)
+{
+  const BaseMesh src = test::tetrahedron();
+  const BaseMesh back = load_mesh(write_with_openmesh(src, "tet.stl"));
+  EXPECT_EQ(back.vertex_count(), 4u); // STL repeats corners; the reader merges them
+  EXPECT_EQ(back.face_count(), 4u);
+}
+
+TEST(MeshImport, StatsOfTestShapes)
+{
+  const MeshStats genus2 = compute_stats(test::genus_two());
+  EXPECT_EQ(genus2.genus, 2);
+  EXPECT_EQ(genus2.components, 1u);
+  EXPECT_EQ(genus2.boundary_loops, 0u);
+  const MeshStats grid = compute_stats(test::open_grid());
+  EXPECT_EQ(grid.boundary_loops, 1u);
+  EXPECT_EQ(grid.boundary_edges, 12u);
+  EXPECT_EQ(grid.genus, 0);
+  const MeshStats two = compute_stats(test::two_components());
+  EXPECT_EQ(two.components, 2u);
+  EXPECT_EQ(two.euler_characteristic, 4);
+  const MeshStats apex = compute_stats(test::high_valence());
+  EXPECT_EQ(apex.valences.rbegin()->first, 12);
+  EXPECT_EQ(apex.faces_by_size.at(12), 1u);
+}
+
+TEST(MeshImport, RepairsAreCounted)
+{
+  // A bowtie: two triangles sharing only vertex 0.
+  const BaseMesh bowtie = make_base_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}},
+                                         {{0, 1, 2}, {0, 3, 4}}, "bowtie");
+  EXPECT_EQ(bowtie.report.nonmanifold_vertices_split, 1u);
+  EXPECT_EQ(bowtie.vertex_count(), 6u);
+
+  // Three faces on one edge, a repeated vertex, an unused vertex.
+  const BaseMesh fin = make_base_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {5, 5, 5}},
+                                      {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}, {0, 2, 2}}, "fin");
+  EXPECT_EQ(fin.report.degenerate_faces_dropped, 1u);
+  EXPECT_EQ(fin.report.nonmanifold_faces_detached, 1u);
+  EXPECT_GE(fin.report.isolated_vertices_removed, 1u);
+  EXPECT_EQ(fin.face_count(), 3u);
+  EXPECT_EQ(fin.report.lines().size(), 3u);
+}
+
+TEST(MeshImport, BadInputNamesTheProblem)
+{
+  EXPECT_THROW(load_mesh("/nonexistent/mesh.off"), IOError);
+  EXPECT_THROW(load_mesh(write_text("x.abc", "v 0 0 0\n")), InputError);
+  try {
+    load_mesh(write_text("gap.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"));
+    FAIL() << "accepted a face naming a missing vertex";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("face 0 names vertex 7"), std::string::npos) << e.what();
+  }
+  try {
+    make_base_mesh({{0, 0, 0}, {1, 0, 0}, {0, std::nanf(""), 0}}, {{0, 1, 2}}, "nan");
+    FAIL() << "accepted a NaN coordinate";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("vertex 2 has a non-finite coordinate"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(make_base_mesh({{0, 0, 0}}, {}, "empty"), InputError);
+}
+
+} // namespace
+} // namespace meshpaint

@@ -1,0 +1,97 @@
+// The Gaussian reduction kernels (the paper's subsampling operator).
+
+#include "atlas/atlas.h"
+#include "atlas/welded_surface.h"
+#include "support/runtime.h"
+#include "support/shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>   // for std::fabs
+#include <cstring> // for std::memcmp
+
+namespace meshpaint {
+namespace {
+
+//! A flat, evenly spaced 4x4 grid of quads: an affine control net.
+BaseMesh flat_grid()
+{
+  std::vector<Vec3> pts;
+  for (int y = 0; y <= 4; ++y)
+    for (int x = 0; x <= 4; ++x)
+      pts.push_back({float(x), float(y), 0.f});
+  std::vector<std::vector<int>> faces;
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x)
+      faces.push_back({y * 5 + x, y * 5 + x + 1, (y + 1) * 5 + x + 1, (y + 1) * 5 + x});
+  return make_base_mesh(pts, faces, "flat_grid");
+}
+
+double max_difference(const std::vector<Float4>& a, const std::vector<Float4>& b)
+{
+  double worst = 0;
+  for (std::size_t t = 0; t < a.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      worst = std::max(worst, double(std::fabs(a[t][k] - b[t][k])));
+  return worst;
+}
+
+// Subdivision keeps an affine net affine and the binomial filter reproduces
+// affine data, so reducing level l+1 must give back level l everywhere:
+// inside patches, on patch sides, on the boundary curves and at corners.
+TEST(Reduction, InvertsSubdivisionOnAffineData)
+{
+  Atlas atlas(test::runtime(), flat_grid(), 5, AtlasStorage::Buffer);
+  atlas.subdivide(1, 5);
+  std::vector<std::vector<Float4>> subdivided;
+  for (int l = 1; l <= 5; ++l)
+    subdivided.push_back(atlas.read_positions(l));
+  atlas.reduce(5, 1);
+  for (int l = 1; l < 5; ++l)
+    EXPECT_LE(max_difference(atlas.read_positions(l), subdivided[l - 1]), 1e-5) << "level " << l;
+}
+
+class ReductionOnShapes : public testing::TestWithParam<std::string>
+{
+};
+
+// Weights sum to one everywhere (interior, patch sides, extraordinary,
+// boundary and sharp corners): a surface collapsed to one point stays there.
+TEST_P(ReductionOnShapes, WeightsSumToOne)
+{
+  Atlas atlas(test::runtime(), test::shape(GetParam()), 4, AtlasStorage::Buffer);
+  const Float4 c{0.25f, -3.5f, 7.0f, 0.f};
+  atlas.write_positions(4, std::vector<Float4>(atlas.layout(4).texels(), c));
+  atlas.reduce(4, 1);
+  for (int l = 1; l < 4; ++l)
+    EXPECT_LE(max_difference(atlas.read_positions(l), std::vector<Float4>(atlas.layout(l).texels(), c)), 1e-5)
+      << "level " << l;
+}
+
+// Every stored copy of a patch-side or corner vertex stays identical, and the
+// reduced surface stays close to the one subdivision made (a smoothing, not a
+// different shape).
+TEST_P(ReductionOnShapes, CopiesStayIdenticalAndShapeStaysClose)
+{
+  const BaseMesh mesh = test::shape(GetParam());
+  Atlas atlas(test::runtime(), mesh, 4, AtlasStorage::Buffer);
+  atlas.subdivide(1, 4);
+  const auto before = atlas.read_positions(2);
+  atlas.reduce(4, 2);
+  const auto after = atlas.read_positions(2);
+  const LevelLayout layout = atlas.layout(2);
+  const std::vector<int> map = weld_map(atlas.topology(), layout);
+  std::vector<long> first(atlas.topology().unique_vertices(2), -1);
+  for (std::size_t t = 0; t < map.size(); ++t) {
+    if (first[map[t]] < 0)
+      first[map[t]] = long(t);
+    else
+      ASSERT_EQ(std::memcmp(&after[t], &after[first[map[t]]], sizeof(Float4)), 0) << "texel " << t;
+  }
+  EXPECT_LE(max_difference(before, after), 0.1 * mesh.diagonal());
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, ReductionOnShapes, testing::ValuesIn(test::shape_names()));
+
+} // namespace
+} // namespace meshpaint
