@@ -5,13 +5,20 @@
 
 namespace meshpaint {
 
-cl::Program build_program(Runtime& runtime, const std::vector<std::string>& files,
-                          const std::string& options)
+cl::Program build_program(Runtime& runtime, const std::vector<std::string>& embedded, const std::string& options)
+{
+  std::vector<SourceFile> files;
+  for (const std::string& name : embedded)
+    files.push_back({name, kernel_source(name)});
+  return build_program(runtime, files, options);
+}
+
+cl::Program build_program(Runtime& runtime, const std::vector<SourceFile>& files, const std::string& options)
 {
   std::string source, names;
-  for (const std::string& file : files) {
-    source += "#line 1 \"" + file + "\"\n" + kernel_source(file) + "\n";
-    names += (names.empty() ? "" : ", ") + file;
+  for (const SourceFile& file : files) {
+    source += "#line 1 \"" + file.name + "\"\n" + file.text + "\n";
+    names += (names.empty() ? "" : ", ") + file.name;
   }
   cl::Program program;
   try {

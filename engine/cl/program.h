@@ -8,10 +8,19 @@
 
 namespace meshpaint {
 
-//! Builds one program from embedded files, concatenated in order, each
+//! One kernel source file: its name (for messages) and its text.
+struct SourceFile
+{
+  std::string name;
+  std::string text;
+};
+
+//! Builds one program from source files, concatenated in order, each
 //! preceded by a #line directive so compiler messages name the file.
 //! \throw DeviceError carrying the file names and the full build log.
-cl::Program build_program(Runtime& runtime, const std::vector<std::string>& files,
-                          const std::string& options);
+cl::Program build_program(Runtime& runtime, const std::vector<SourceFile>& files, const std::string& options);
+
+//! The same from files embedded at build time (kernels/).
+cl::Program build_program(Runtime& runtime, const std::vector<std::string>& embedded, const std::string& options);
 
 } // namespace meshpaint

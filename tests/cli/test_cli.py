@@ -164,3 +164,13 @@ def test_devices_lists_the_default(tmp_path):
     r = run("devices")
     assert r.returncode == 0, r.stderr
     assert "*" in r.stdout
+
+
+def test_no_opencl_platform_says_how_to_install_pocl(cube, tmp_path):
+    env = dict(os.environ, OCL_ICD_VENDORS=str(tmp_path / "no-vendors"))
+    r = subprocess.run([BIN, "subdivide", str(cube), "--level", "2", "-o", str(tmp_path / "x.obj")],
+                       capture_output=True, text=True, env=env, timeout=60)
+    assert r.returncode == 3
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1, r.stderr
+    assert "no OpenCL platform found: install PoCL" in lines[0]

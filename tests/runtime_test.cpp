@@ -1,0 +1,49 @@
+// The OpenCL runtime: device choice and kernel builds.
+
+#include "cl/program.h"
+#include "core/errors.h"
+#include "support/runtime.h"
+
+#include <gtest/gtest.h>
+
+namespace meshpaint {
+namespace {
+
+TEST(Runtime, BuildFailureCarriesFileAndLog)
+{
+  const std::vector<SourceFile> files = {
+    {"good.cl", "__kernel void ok(__global float* x) { x[0] = 1.0f; }\n"},
+    {"broken.cl", "__kernel void bad(__global float* x) {\n  x[0] = undeclared_name;\n}\n"}};
+  try {
+    build_program(*test::runtime(), files, "-cl-std=CL1.2");
+    FAIL() << "a kernel with an undeclared name built";
+  } catch (const DeviceError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("kernel build failed for good.cl, broken.cl"), std::string::npos) << what;
+    EXPECT_NE(what.find("broken.cl:2"), std::string::npos) << "the log should point at the line: " << what;
+    EXPECT_NE(what.find("undeclared_name"), std::string::npos) << what;
+  }
+}
+
+TEST(Runtime, EmbeddedKernelsBuild)
+{
+  EXPECT_NO_THROW(build_program(*test::runtime(),
+                                std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "subdivide.cl"},
+                                "-cl-std=CL1.2"));
+  EXPECT_THROW(build_program(*test::runtime(), std::vector<std::string>{"missing.cl"}, ""), DeviceError);
+}
+
+TEST(Runtime, DeviceSelectors)
+{
+  const auto devices = Runtime::list_devices();
+  ASSERT_FALSE(devices.empty());
+  const DeviceInfo& d = devices.front();
+  EXPECT_EQ(Runtime::open(std::to_string(d.platform_index) + ":" + std::to_string(d.device_index))->info().name,
+            d.name);
+  EXPECT_EQ(Runtime::open(d.name.substr(0, 5))->info().name.substr(0, 5), d.name.substr(0, 5));
+  EXPECT_THROW(Runtime::open("9:9"), DeviceError);
+  EXPECT_THROW(Runtime::open("no-such-device-anywhere"), DeviceError);
+}
+
+} // namespace
+} // namespace meshpaint
