@@ -3,7 +3,6 @@
 #include "vtkCatmullClarkAtlasFilter.h"
 
 #include <vtkCellArray.h>  // for vtkCellArray
-#include <vtkCubeSource.h> // for vtkCubeSource
 #include <vtkDataArray.h>  // for vtkDataArray
 #include <vtkNew.h>        // for vtkNew
 #include <vtkPointData.h>  // for vtkPointData

@@ -29,15 +29,7 @@ fs::path temp_dir()
 //! Writes a base mesh through OpenMesh, the way a user's file would look.
 std::string write_with_openmesh(const BaseMesh& mesh, const std::string& file)
 {
-  PolyMesh om;
-  for (const Vec3& p : mesh.points)
-    om.add_vertex(PolyMesh::Point(p[0], p[1], p[2]));
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    std::vector<PolyMesh::VertexHandle> vh;
-    for (int k = 0; k < mesh.face_sizes[f]; ++k)
-      vh.emplace_back(mesh.face_vertices[mesh.face_offsets[f] + k]);
-    om.add_face(vh);
-  }
+  const PolyMesh om = to_openmesh(mesh);
   const std::string path = (temp_dir() / file).string();
   EXPECT_TRUE(OpenMesh::IO::write_mesh(om, path)) << path;
   return path;

@@ -3,7 +3,7 @@
 // on the Stanford bunny.
 
 #include "atlas/atlas.h"
-#include "atlas/welded_surface.h"
+#include "atlas/weld.h"
 #include "reference/opensubdiv_reference.h"
 #include "support/runtime.h"
 #include "support/shapes.h"

@@ -1,7 +1,7 @@
 // The Gaussian reduction kernels (the paper's subsampling operator).
 
 #include "atlas/atlas.h"
-#include "atlas/welded_surface.h"
+#include "atlas/weld.h"
 #include "support/runtime.h"
 #include "support/shapes.h"
 

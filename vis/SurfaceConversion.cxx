@@ -79,6 +79,7 @@ void write_vtp(vtkPolyData* poly, const std::string& path)
     writer->SetFileName(tmp.c_str());
     writer->SetInputData(poly);
     writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff();
     writer->SetCompressorTypeToZLib();
     if (!writer->Write())
       throw IOError("cannot write '" + path + "'");

@@ -4,7 +4,7 @@
 
 #include "meshpaintVisModule.h" // for MESHPAINTVIS_EXPORT
 
-#include "atlas/welded_surface.h" // for meshpaint::WeldedSurface
+#include "atlas/weld.h" // for meshpaint::WeldedSurface
 #include "mesh/base_mesh.h"       // for meshpaint::BaseMesh
 
 #include <vtkPolyData.h>     // for vtkPolyData
@@ -21,7 +21,7 @@ MESHPAINTVIS_EXPORT vtkSmartPointer<vtkPolyData> to_polydata(const WeldedSurface
 //! \throw InputError as make_base_mesh does.
 MESHPAINTVIS_EXPORT BaseMesh to_base_mesh(vtkPolyData* poly, const std::string& name);
 
-//! Writes .vtp (XML, binary, compressed) atomically.
+//! Writes .vtp (XML, appended raw binary, zlib-compressed) atomically.
 //! \throw IOError when writing fails.
 MESHPAINTVIS_EXPORT void write_vtp(vtkPolyData* poly, const std::string& path);
 

@@ -164,7 +164,7 @@ Atlas::Atlas(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int max_lev
                      std::to_string(kMaxLevel) + ")");
   const DeviceInfo& device = runtime_->info();
   if (storage_ == AtlasStorage::Image && !device.images)
-    throw DeviceError(device.name + " has no image support; use --storage buffer");
+    throw DeviceError(device.name + " has no image support; use buffer storage");
 
   base_ = spatially_ordered(mesh, &base_face_order_);
   auto refiner = make_refiner(base_);
@@ -262,6 +262,8 @@ void Atlas::subdivide(int from_level, int to_level)
   cl::CommandQueue& q = runtime_->queue();
   const int edges = int(topology_.edges.size()), rings = int(topology_.rings.size());
   const int patches = topology_.patch_count;
+  if (to_level == max_level_ && from_level < to_level)
+    limit_current_ = false;
   for (int l = from_level; l < to_level; ++l) {
     const LevelLayout s = layout(l), d = layout(l + 1);
     const cl::Memory &in = levels_[l - 1].mem(), &out = levels_[l].mem();
@@ -312,6 +314,7 @@ void Atlas::compute_limit()
   if (l.n > 1)
     launch(q, k.limit_edges, range_edges(l.n - 1, edges), kLocalEdges, in, pos, nrm, k.edges, edges, grid(l));
   launch(q, k.limit_corners, range1d(rings), kLocal1D, in, pos, nrm, k.rings, k.slots, rings, grid(l));
+  limit_current_ = true;
 }
 
 void Atlas::finish() { runtime_->queue().finish(); }
@@ -363,18 +366,20 @@ void Atlas::write_positions(int level, const std::vector<Float4>& texels)
     throw InputError("no level " + std::to_string(level) + " in this atlas (1.." +
                      std::to_string(max_level_) + ")");
   write_layer(levels_[level - 1], layout(level), texels);
+  if (level == max_level_)
+    limit_current_ = false;
 }
 
 std::vector<Float4> Atlas::read_limit_positions()
 {
-  if (!limit_positions_)
+  if (!limit_current_)
     compute_limit();
   return read_layer(*limit_positions_, layout(max_level_));
 }
 
 std::vector<Float4> Atlas::read_limit_normals()
 {
-  if (!limit_normals_)
+  if (!limit_current_)
     compute_limit();
   return read_layer(*limit_normals_, layout(max_level_));
 }

@@ -87,6 +87,7 @@ public:
   //! Positions of every texel of `level`, patch-major (LevelLayout::index).
   std::vector<Float4> read_positions(int level);
   void write_positions(int level, const std::vector<Float4>& texels);
+  //! The limit layers, recomputed first if the finest level changed since.
   std::vector<Float4> read_limit_positions();
   std::vector<Float4> read_limit_normals();
 
@@ -105,6 +106,7 @@ private:
   AtlasTopology topology_;
   std::vector<Layer> levels_;  // index l - 1
   std::unique_ptr<Layer> limit_positions_, limit_normals_;
+  bool limit_current_ = false; // limit layers match the finest level
   std::unique_ptr<Kernels> kernels_;
 };
 

@@ -10,9 +10,9 @@ constexpr int kMaxLevel = 12;
 
 //! One tile of (n+1) x (n+1) texels per patch, n = 2^(level-1).
 //! Host-side arrays and device buffers hold the tiles patch after patch
-//! (texel (p, i, j) at (p * tile + j) * tile + i). Device images and exported
-//! texture maps lay the tiles row-major in a width x height atlas, tiles_x
-//! tiles per row; every level uses the same tile grid.
+//! (texel (p, i, j) at (p * tile + j) * tile + i). Device images lay the
+//! tiles row-major in a width x height atlas, tiles_x tiles per row; every
+//! level uses the same tile grid.
 struct LevelLayout
 {
   int level = 1;

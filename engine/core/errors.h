@@ -1,5 +1,5 @@
-// Exception types of the engine. The command line turns each into one line
-// and an exit code (docs/cli.md); Python raises them as exceptions.
+// Exception types of the engine. The command line turns each into a message
+// and an exit code (docs/cli.md).
 #pragma once
 
 #include <stdexcept> // for std::invalid_argument, std::runtime_error

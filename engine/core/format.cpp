@@ -1,6 +1,8 @@
 #include "core/format.h"
 
-#include <cstdio> // for std::snprintf
+#include <cctype>     // for std::tolower
+#include <cstdio>     // for std::snprintf
+#include <filesystem> // for std::filesystem::path
 
 namespace meshpaint {
 
@@ -23,6 +25,32 @@ std::string format_fixed(double value, int digits)
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", digits, value);
   return buf;
+}
+
+std::string lower_extension(const std::string& path)
+{
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext)
+    c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+std::string json_string(const std::string& s)
+{
+  std::string out = "\"";
+  for (const char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
 }
 
 } // namespace meshpaint

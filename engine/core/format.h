@@ -12,4 +12,10 @@ std::string format_bytes(std::size_t bytes);
 //! Fixed-point with `digits` decimals.
 std::string format_fixed(double value, int digits);
 
+//! ".obj" for "Mesh.OBJ": the extension, lower case, with its dot.
+std::string lower_extension(const std::string& path);
+
+//! `s` as a JSON string literal, quotes included.
+std::string json_string(const std::string& s);
+
 } // namespace meshpaint

@@ -1,6 +1,7 @@
 #include "mesh/base_mesh.h"
 
 #include "core/errors.h"
+#include "core/format.h"
 #include "mesh/file_census.h"
 #include "mesh/openmesh_types.h"
 
@@ -176,12 +177,6 @@ BaseMesh finish(const PolyMesh& om, const ImportReport& report, const std::strin
   return mesh;
 }
 
-std::string lower_extension(const std::string& path)
-{
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
 
 } // namespace
 
@@ -293,6 +288,22 @@ BaseMesh load_mesh(const std::string& path)
   if (census.declared_faces > long(importer.faces_seen()))
     report.faces_skipped_by_reader = std::size_t(census.declared_faces) - importer.faces_seen();
   return finish(om, report, fs::path(path).stem().string(), where);
+}
+
+PolyMesh to_openmesh(const BaseMesh& base)
+{
+  PolyMesh mesh;
+  mesh.reserve(base.vertex_count(), base.face_vertices.size(), base.face_count());
+  for (const Vec3& p : base.points)
+    mesh.add_vertex(PolyMesh::Point(p[0], p[1], p[2]));
+  std::vector<PolyMesh::VertexHandle> vh;
+  for (std::size_t f = 0; f < base.face_count(); ++f) {
+    vh.clear();
+    for (int k = 0; k < base.face_sizes[f]; ++k)
+      vh.emplace_back(base.face_vertices[base.face_offsets[f] + k]);
+    mesh.add_face(vh);
+  }
+  return mesh;
 }
 
 } // namespace meshpaint

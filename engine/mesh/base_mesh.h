@@ -19,7 +19,7 @@ struct ImportReport
   std::size_t isolated_vertices_removed = 0;   //!< vertices used by no face
 
   bool changed() const;
-  //! One line per repair, e.g. "dropped 3 faces that name a vertex twice".
+  //! One line per repair, e.g. "removed 2 vertices used by no face".
   std::vector<std::string> lines() const;
 };
 
@@ -43,8 +43,9 @@ struct BaseMesh
 
 //! Builds a base mesh from points and faces, checking and repairing as
 //! load_mesh does.
-//! \throw InputError naming the first problem (empty, non-finite coordinate,
-//! index out of range, face with fewer than three vertices).
+//! Faces with fewer than three distinct vertices are dropped and counted.
+//! \throw InputError naming the first problem (no faces, non-finite
+//! coordinate, index out of range).
 BaseMesh make_base_mesh(std::vector<Vec3> points, const std::vector<std::vector<int>>& faces,
                         const std::string& name = "mesh");
 

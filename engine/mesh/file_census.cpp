@@ -1,6 +1,7 @@
 #include "mesh/file_census.h"
 
-#include <cctype>  // for std::tolower, std::isspace
+#include <cctype>  // for std::tolower
+#include <cstdint> // for std::uint32_t
 #include <cstring> // for std::memcpy
 #include <fstream> // for std::ifstream
 #include <sstream> // for std::istringstream

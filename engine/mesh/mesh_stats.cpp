@@ -9,15 +9,7 @@ namespace meshpaint {
 
 MeshStats compute_stats(const BaseMesh& base)
 {
-  PolyMesh mesh;
-  for (const Vec3& p : base.points)
-    mesh.add_vertex(PolyMesh::Point(p[0], p[1], p[2]));
-  for (std::size_t f = 0; f < base.face_count(); ++f) {
-    std::vector<PolyMesh::VertexHandle> vh;
-    for (int k = 0; k < base.face_sizes[f]; ++k)
-      vh.emplace_back(base.face_vertices[base.face_offsets[f] + k]);
-    mesh.add_face(vh);
-  }
+  PolyMesh mesh = to_openmesh(base); // circulators need a mutable mesh
 
   MeshStats s;
   s.vertices = mesh.n_vertices();

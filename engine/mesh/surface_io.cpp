@@ -2,6 +2,7 @@
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "core/format.h"
 #include "mesh/openmesh_types.h"
 
 #include <OpenMesh/Core/IO/MeshIO.hh> // for OpenMesh::IO::write_mesh
@@ -12,9 +13,9 @@ namespace meshpaint {
 
 void write_surface(const WeldedSurface& s, const std::string& path)
 {
-  const std::string ext = std::filesystem::path(path).extension().string();
+  const std::string ext = lower_extension(path);
   if (ext != ".obj" && ext != ".ply")
-    throw InputError("cannot write '" + path + "': unknown format '" + ext + "' (.obj, .ply, .vtp)");
+    throw InputError("cannot write '" + path + "': OpenMesh output is .obj or .ply, not '" + ext + "'");
   PolyMesh mesh;
   const bool normals = !s.normals.empty();
   if (normals)

@@ -1,7 +1,7 @@
 // Writing surfaces through OpenMesh.
 #pragma once
 
-#include "atlas/welded_surface.h"
+#include "mesh/welded_surface.h"
 
 #include <string> // for std::string
 

@@ -1,7 +1,7 @@
 #include "reference/opensubdiv_reference.h"
 
 #include "atlas/patch_layout.h"
-#include "atlas/welded_surface.h"
+#include "atlas/weld.h"
 #include "mesh/far_refiner.h"
 
 #include <opensubdiv/far/primvarRefiner.h>    // for Far::PrimvarRefiner

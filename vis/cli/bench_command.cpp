@@ -5,7 +5,7 @@
 #include "table.h"
 
 #include "atlas/atlas.h"
-#include "atlas/welded_surface.h"
+#include "atlas/weld.h"
 #include "core/errors.h"
 #include "core/format.h"
 #include "core/timer.h"
@@ -93,8 +93,8 @@ int bench_subdivide(const Args& args)
   const auto gbps = [](std::size_t bytes, double ms) { return double(bytes) / (ms * 1e6); };
 
   if (json) {
-    std::cout << "{\"mesh\":\"" << path << "\",\"level\":" << level << ",\"vertices\":" << verts
-              << ",\"texels\":" << texels << ",\"device\":\"" << runtime->info().name << "\",\"storage\":\""
+    std::cout << "{\"mesh\":" << json_string(path) << ",\"level\":" << level << ",\"vertices\":" << verts
+              << ",\"texels\":" << texels << ",\"device\":" << json_string(runtime->info().name) << ",\"storage\":\""
               << storage_name(storage) << "\",\"repeats\":" << repeats << ",\"engine_ms\":" << e_ms
               << ",\"engine_min_ms\":" << min_of(engine) << ",\"opensubdiv_ms\":" << o_ms
               << ",\"opensubdiv_min_ms\":" << min_of(osd) << ",\"primvar_ms\":" << p_ms

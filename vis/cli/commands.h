@@ -5,6 +5,7 @@
 
 #include "cl/runtime.h"
 #include "mesh/base_mesh.h"
+#include "mesh/welded_surface.h"
 
 #include <memory> // for std::shared_ptr
 #include <string> // for std::string
@@ -28,5 +29,10 @@ BaseMesh load_reported(const std::string& path);
 
 //! Where the set-up script puts the scans (data/scans in the source tree).
 std::string scans_dir();
+
+//! \throw InputError unless the path ends in .obj, .ply or .vtp (any case).
+void check_surface_format(const std::string& path);
+//! Writes OBJ or PLY through OpenMesh, VTP through VTK; atomically.
+void write_any(const WeldedSurface& surface, const std::string& path);
 
 } // namespace meshpaint::cli

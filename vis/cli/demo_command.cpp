@@ -5,7 +5,8 @@
 #include "SurfaceConversion.h"
 
 #include "atlas/atlas.h"
-#include "atlas/welded_surface.h"
+#include "atlas/weld.h"
+#include "core/errors.h"
 #include "core/format.h"
 #include "core/timer.h"
 #include "mesh/surface_io.h"
@@ -15,8 +16,6 @@
 
 namespace meshpaint::cli {
 
-void write_any(const WeldedSurface& surface, const std::string& path);
-
 int demo_command(const Argv& argv)
 {
   Args args("demo", argv, {}, {"--level", "-o", "--device", "--storage"});
@@ -24,7 +23,10 @@ int demo_command(const Argv& argv)
   const std::string path = args.positionals().empty() ? scans_dir() + "/bunny00.off" : args.positionals()[0];
   const int level = args.integer("--level", 3, 1, kMaxLevel);
   const std::string dir = args.value("-o", "meshpaint-demo");
-  std::filesystem::create_directories(dir);
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec)
+    throw IOError("cannot create '" + dir + "': " + ec.message());
 
   std::ostream& os = std::cout;
   Timer t;
@@ -45,13 +47,9 @@ int demo_command(const Argv& argv)
   atlas.finish();
   os << "subdivide  levels 1->" << level << " on the device: " << format_fixed(t.ms(), 1) << " ms\n";
   t.restart();
-  atlas.compute_limit();
-  atlas.finish();
-  os << "limit      positions and normals: " << format_fixed(t.ms(), 1) << " ms\n";
-  t.restart();
   const WeldedSurface surface = level_surface(atlas, level, true);
-  os << "weld       " << surface.points.size() << " vertices, " << surface.quads.size() << " quads: "
-     << format_fixed(t.ms(), 1) << " ms\n";
+  os << "limit      positions and normals, read back and welded: " << surface.points.size() << " vertices, "
+     << surface.quads.size() << " quads: " << format_fixed(t.ms(), 1) << " ms\n";
   t.restart();
   const std::string out = dir + "/" + mesh.name + "_level" + std::to_string(level) + "_limit.vtp";
   write_any(surface, out);

@@ -1,5 +1,6 @@
 // meshpaint: the command line. Each command lives in its own file; this one
-// dispatches and turns every error into one line and an exit code:
+// dispatches and turns every error into one line (a kernel build failure adds
+// the compiler's log below it) and an exit code:
 // 2 for bad input, files, and requests that do not fit the device;
 // 3 for device failures (no OpenCL platform, kernel build, OpenCL call).
 
@@ -15,18 +16,41 @@ namespace {
 const char* const kUsage = R"(usage: meshpaint COMMAND [ARGS]
 
 commands:
-  demo [MESH] [--level L] [-o DIR]    subdivide a bundled scan, write results, print timings
+  demo [MESH] [--level L] [-o DIR]    subdivide the bunny scan (or MESH), write its limit
+                                      surface as DIR/NAME_levelL_limit.vtp, print timings
   info MESH                           counts, genus, boundaries, valences, atlas per level
-  subdivide MESH --level L [--limit] -o OUT.{obj,ply,vtp}
+  subdivide MESH --level L [--limit] [--quiet] -o OUT.{obj,ply,vtp}
                                       the level-L surface (welded quads); --limit: limit
                                       positions and point array Normals
-  bench subdivide MESH --level L [--json] [--repeats N]
-                                      kernels against OpenSubdiv's CpuEvaluator
+  bench subdivide MESH [--level L] [--json] [--repeats N]
+                                      kernels against OpenSubdiv's CpuEvaluator (level 3)
   devices                             the OpenCL devices (for --device / MESHPAINT_DEVICE)
   help                                this text
 
-common options: --device SEL (gpu, cpu, P:D or part of a name), --storage buffer|image
+options of demo, info, subdivide and bench: --device SEL (gpu, cpu, P:D or part of a
+name), --storage buffer|image
 )";
+
+//! 2: the user's input or the device's limits; 3: the device; 1: a defect.
+int exit_code(const std::exception& e)
+{
+  using namespace meshpaint;
+  if (dynamic_cast<const InputError*>(&e) || dynamic_cast<const IOError*>(&e) ||
+      dynamic_cast<const ResourceError*>(&e) || dynamic_cast<const std::bad_alloc*>(&e))
+    return 2;
+  if (dynamic_cast<const DeviceError*>(&e) || dynamic_cast<const cl::Error*>(&e))
+    return 3;
+  return 1;
+}
+
+std::string message(const std::exception& e, int code)
+{
+  if (const auto* cl_error = dynamic_cast<const cl::Error*>(&e))
+    return "OpenCL error: " + meshpaint::describe(*cl_error);
+  if (dynamic_cast<const std::bad_alloc*>(&e))
+    return "out of host memory";
+  return code == 1 ? std::string("internal error: ") + e.what() : std::string(e.what());
+}
 
 } // namespace
 
@@ -48,26 +72,9 @@ int main(int argc, char** argv)
     if (it == commands.end())
       throw InputError("unknown command '" + command + "' (see meshpaint help)");
     return it->second(rest);
-  } catch (const InputError& e) {
-    std::cerr << "meshpaint " << command << ": " << e.what() << "\n";
-    return 2;
-  } catch (const IOError& e) {
-    std::cerr << "meshpaint " << command << ": " << e.what() << "\n";
-    return 2;
-  } catch (const ResourceError& e) {
-    std::cerr << "meshpaint " << command << ": " << e.what() << "\n";
-    return 2;
-  } catch (const DeviceError& e) {
-    std::cerr << "meshpaint " << command << ": " << e.what() << "\n";
-    return 3;
-  } catch (const cl::Error& e) {
-    std::cerr << "meshpaint " << command << ": OpenCL error: " << describe(e) << "\n";
-    return 3;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "meshpaint " << command << ": out of host memory\n";
-    return 2;
   } catch (const std::exception& e) {
-    std::cerr << "meshpaint " << command << ": internal error: " << e.what() << "\n";
-    return 1;
+    const int code = exit_code(e);
+    std::cerr << "meshpaint " << command << ": " << message(e, code) << "\n";
+    return code;
   }
 }

@@ -3,7 +3,7 @@
 #include "SurfaceConversion.h"
 
 #include "atlas/atlas.h"
-#include "atlas/welded_surface.h"
+#include "atlas/weld.h"
 #include "core/errors.h"
 #include "core/format.h"
 #include "core/timer.h"
@@ -14,11 +14,17 @@
 
 namespace meshpaint::cli {
 
-//! Writes OBJ or PLY through OpenMesh, VTP through VTK.
+void check_surface_format(const std::string& path)
+{
+  const std::string ext = lower_extension(path);
+  if (ext != ".obj" && ext != ".ply" && ext != ".vtp")
+    throw InputError("cannot write '" + path + "': unknown format '" + ext + "' (.obj, .ply, .vtp)");
+}
+
 void write_any(const WeldedSurface& surface, const std::string& path)
 {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  if (ext == ".vtp")
+  check_surface_format(path);
+  if (lower_extension(path) == ".vtp")
     write_vtp(to_polydata(surface), path);
   else
     write_surface(surface, path);
@@ -34,9 +40,7 @@ int subdivide_command(const Argv& argv)
   const std::string out = args.value("-o");
   if (out.empty())
     throw InputError("-o OUT.{obj,ply,vtp} is required");
-  const std::string ext = std::filesystem::path(out).extension().string();
-  if (ext != ".obj" && ext != ".ply" && ext != ".vtp")
-    throw InputError("cannot write '" + out + "': unknown format '" + ext + "' (.obj, .ply, .vtp)");
+  check_surface_format(out);
 
   Timer t;
   const BaseMesh mesh = load_reported(args.positionals()[0]);

@@ -4,20 +4,11 @@
 
 #include "atlas/atlas_topology.h"
 #include "atlas/patch_layout.h"
-#include "core/vec.h"
+#include "mesh/welded_surface.h"
 
-#include <array>  // for std::array
 #include <vector> // for std::vector
 
 namespace meshpaint {
-
-struct WeldedSurface
-{
-  int level = 1;
-  std::vector<Vec3> points;              //!< #vertices
-  std::vector<Vec3> normals;             //!< #vertices, or empty
-  std::vector<std::array<int, 4>> quads; //!< #patches * n^2, counter-clockwise
-};
 
 //! Welded vertex of every texel of the level (patch-major order).
 //! Order: level-1 vertices, then patch-side texels edge by edge, then patch
@@ -27,10 +18,6 @@ std::vector<int> weld_map(const AtlasTopology& topology, const LevelLayout& layo
 //! Gathers texels into the welded surface; `normals` may be null.
 WeldedSurface weld(const AtlasTopology& topology, const LevelLayout& layout,
                    const std::vector<Float4>& positions, const std::vector<Float4>* normals);
-
-} // namespace meshpaint
-
-namespace meshpaint {
 
 class Atlas;
 

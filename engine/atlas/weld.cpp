@@ -1,4 +1,7 @@
-#include "atlas/welded_surface.h"
+#include "atlas/weld.h"
+
+#include "atlas/atlas.h"
+#include "core/errors.h"
 
 namespace meshpaint {
 
@@ -17,7 +20,7 @@ std::vector<int> weld_map(const AtlasTopology& topo, const LevelLayout& l)
           const int corner = lo_j ? (lo_i ? 0 : 1) : (hi_i ? 2 : 3);
           id = topo.patch_corners[p][corner];
         } else if (lo_i || hi_i || lo_j || hi_j) {
-          // Position t along side s, as side_texel() in atlas_access.cl maps it.
+          // Position t along side s, as side_frame() in atlas_access.cl runs it.
           const int side = lo_j ? 0 : hi_i ? 1 : hi_j ? 2 : 3;
           const int t = side == 0 ? i : side == 1 ? j : side == 2 ? n - i : n - j;
           const int e = topo.patch_sides[p][side];
@@ -61,9 +64,6 @@ WeldedSurface weld(const AtlasTopology& topo, const LevelLayout& l, const std::v
 
 } // namespace meshpaint
 
-#include "atlas/atlas.h"
-#include "core/errors.h"
-
 namespace meshpaint {
 
 WeldedSurface level_surface(Atlas& atlas, int level, bool limit)
@@ -74,7 +74,6 @@ WeldedSurface level_surface(Atlas& atlas, int level, bool limit)
   const LevelLayout layout = atlas.layout(level);
   if (!limit)
     return weld(atlas.topology(), layout, atlas.read_positions(level), nullptr);
-  atlas.compute_limit();
   const std::vector<Float4> normals = atlas.read_limit_normals();
   return weld(atlas.topology(), layout, atlas.read_limit_positions(), &normals);
 }
