@@ -38,6 +38,53 @@ typedef struct {
   mp_int corner;
 } CornerSlot;
 
+/* Brush falloff profiles, over d / radius in [0, 1]. */
+#define FALLOFF_CONSTANT 0
+#define FALLOFF_LINEAR 1
+#define FALLOFF_SMOOTHSTEP 2
+#define FALLOFF_GAUSSIAN 3
+
+/* The paint equation's ops: surface = lerp(surface, paint OP surface, a). */
+#define PAINT_OP_COPY 0
+#define PAINT_OP_OVER 1
+#define PAINT_OP_MAX 2
+#define PAINT_OP_ADD 3
+#define PAINT_OP_SUBTRACT 4
+
+/* Paint channels: diffuse and specular are rgb layers; the material layer
+ * holds (roughness, displacement, label, mask). */
+#define CHANNEL_DIFFUSE 0
+#define CHANNEL_SPECULAR 1
+#define CHANNEL_ROUGHNESS 2
+#define CHANNEL_DISPLACEMENT 3
+#define CHANNEL_LABEL 4
+#define CHANNEL_MASK 5
+#define CHANNEL_COUNT 6
+
+/* One brush dab. value[c] holds channel c's paint (rgb for diffuse and
+ * specular, x for the others); alpha[c] its alpha, 0 leaving it untouched.
+ * Floats and ints only, so both sides agree on the layout. */
+typedef struct {
+  float centre[4];                /* xyz: world position of the brush centre */
+  float radius;                   /* world units */
+  float strength;                 /* scales every alpha */
+  mp_int falloff;                 /* FALLOFF_* */
+  mp_int op;                      /* PAINT_OP_* */
+  float value[CHANNEL_COUNT][4];
+  float alpha[CHANNEL_COUNT];
+  mp_int pad[2];
+} BrushDab;
+
+/* What the culling kernel reports for a patch that reaches into the brush:
+ * the patch, its closest texel, and the closest distance over each side. */
+typedef struct {
+  mp_int patch;
+  mp_int closest_texel;           /* patch-major index within the tile */
+  float distance;                 /* closest texel to the centre */
+  float side_distance[4];
+  mp_int pad;
+} CullRecord;
+
 #ifndef __OPENCL_VERSION__
 } /* namespace meshpaint */
 #endif

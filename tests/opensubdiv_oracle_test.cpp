@@ -22,6 +22,8 @@ struct Case
   int level;
 };
 
+void PrintTo(const Case& c, std::ostream* os) { *os << c.shape << " at level " << c.level; }
+
 std::string case_name(const testing::TestParamInfo<Case>& info)
 {
   return info.param.shape + "_level" + std::to_string(info.param.level);

@@ -6,6 +6,7 @@
 #include <vtkCellArray.h>          // for vtkCellArray
 #include <vtkFloatArray.h>         // for vtkFloatArray
 #include <vtkIdTypeArray.h>        // for vtkIdTypeArray
+#include <vtkIntArray.h>           // for vtkIntArray
 #include <vtkPointData.h>          // for vtkPointData
 #include <vtkPoints.h>             // for vtkPoints
 #include <vtkPolyData.h>           // for vtkPolyData
@@ -49,6 +50,28 @@ vtkSmartPointer<vtkPolyData> to_polydata(const WeldedSurface& s)
 
   if (!s.normals.empty())
     poly->GetPointData()->SetNormals(vec3_array(s.normals, "Normals"));
+  return poly;
+}
+
+vtkSmartPointer<vtkPolyData> to_polydata(const PaintedSurface& s)
+{
+  vtkSmartPointer<vtkPolyData> poly = to_polydata(s.surface);
+  vtkPointData* pd = poly->GetPointData();
+  pd->AddArray(vec3_array(s.diffuse, "diffuse"));
+  pd->AddArray(vec3_array(s.specular, "specular"));
+  for (const auto& [values, name] : {std::pair{&s.roughness, "roughness"}, std::pair{&s.displacement, "displacement"},
+                                     std::pair{&s.mask, "mask"}}) {
+    auto a = vtkSmartPointer<vtkFloatArray>::New();
+    a->SetName(name);
+    a->SetNumberOfValues(vtkIdType(values->size()));
+    std::copy(values->begin(), values->end(), a->GetPointer(0));
+    pd->AddArray(a);
+  }
+  auto label = vtkSmartPointer<vtkIntArray>::New();
+  label->SetName("label");
+  label->SetNumberOfValues(vtkIdType(s.label.size()));
+  std::copy(s.label.begin(), s.label.end(), label->GetPointer(0));
+  pd->AddArray(label);
   return poly;
 }
 

@@ -4,7 +4,8 @@
 
 #include "meshpaintVisModule.h" // for MESHPAINTVIS_EXPORT
 
-#include "atlas/weld.h" // for meshpaint::WeldedSurface
+#include "mesh/welded_surface.h" // for meshpaint::WeldedSurface
+#include "paint/paint_surface.h" // for meshpaint::PaintedSurface
 #include "mesh/base_mesh.h"       // for meshpaint::BaseMesh
 
 #include <vtkPolyData.h>     // for vtkPolyData
@@ -16,6 +17,10 @@ namespace meshpaint {
 
 //! Quads as cells, normals (when present) as the point array "Normals".
 MESHPAINTVIS_EXPORT vtkSmartPointer<vtkPolyData> to_polydata(const WeldedSurface& surface);
+
+//! The painted surface with point arrays diffuse, specular (3 components),
+//! roughness, displacement, mask (floats), label (int) and Normals.
+MESHPAINTVIS_EXPORT vtkSmartPointer<vtkPolyData> to_polydata(const PaintedSurface& surface);
 
 //! The polygons of `poly` (other cells ignored) as a checked base mesh.
 //! \throw InputError as make_base_mesh does.

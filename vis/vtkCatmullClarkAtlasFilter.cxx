@@ -3,6 +3,7 @@
 #include "SurfaceConversion.h" // for meshpaint::to_base_mesh, to_polydata
 
 #include "atlas/atlas.h" // for meshpaint::Atlas
+#include "atlas/weld.h"  // for meshpaint::level_surface
 
 #include <vtkInformation.h>       // for vtkInformation
 #include <vtkInformationVector.h> // for vtkInformationVector

@@ -370,6 +370,13 @@ void Atlas::write_positions(int level, const std::vector<Float4>& texels)
     limit_current_ = false;
 }
 
+const cl::Memory& Atlas::limit_positions_layer()
+{
+  if (!limit_current_)
+    compute_limit();
+  return limit_positions_->mem();
+}
+
 std::vector<Float4> Atlas::read_limit_positions()
 {
   if (!limit_current_)

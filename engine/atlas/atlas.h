@@ -88,6 +88,9 @@ public:
   std::vector<Float4> read_positions(int level);
   void write_positions(int level, const std::vector<Float4>& texels);
   //! The limit layers, recomputed first if the finest level changed since.
+  //! The device layer is for kernels of other families (brush.cl), which
+  //! address it with the same storage macros.
+  const cl::Memory& limit_positions_layer();
   std::vector<Float4> read_limit_positions();
   std::vector<Float4> read_limit_normals();
 

@@ -24,10 +24,13 @@ commands:
                                       positions and point array Normals
   bench subdivide MESH [--level L] [--json] [--repeats N]
                                       kernels against OpenSubdiv's CpuEvaluator (level 3)
+  paint MESH --strokes S.json [--level L] [--quiet] -o OUTDIR
+                                      apply a stroke script (docs/strokes.md); writes
+                                      OUTDIR/surface.vtp with the paint channels
   devices                             the OpenCL devices (for --device / MESHPAINT_DEVICE)
   help                                this text
 
-options of demo, info, subdivide and bench: --device SEL (gpu, cpu, P:D or part of a
+options of demo, info, subdivide, paint and bench: --device SEL (gpu, cpu, P:D or part of a
 name), --storage buffer|image
 )";
 
@@ -62,7 +65,7 @@ int main(int argc, char** argv)
   const Argv rest(argv + std::min(argc, 2), argv + argc);
   static const std::map<std::string, int (*)(const Argv&)> commands = {
     {"info", info_command},   {"subdivide", subdivide_command}, {"bench", bench_command},
-    {"demo", demo_command},   {"devices", devices_command}};
+    {"demo", demo_command},   {"devices", devices_command}, {"paint", paint_command}};
   try {
     if (command == "help" || command == "--help" || command == "-h") {
       std::cout << kUsage;

@@ -1,0 +1,89 @@
+// A surface to paint on: the atlas at the painting level, its limit surface,
+// the paint channels, and the brush pipeline that changes them.
+#pragma once
+
+#include "atlas/atlas.h"
+#include "mesh/welded_surface.h"
+#include "paint/stroke.h"
+
+#include <memory> // for std::unique_ptr
+#include <vector> // for std::vector
+
+namespace meshpaint {
+
+//! The channels as host arrays, patch-major (LevelLayout::index).
+struct PaintChannels
+{
+  std::vector<Float4> diffuse;  //!< rgb
+  std::vector<Float4> specular; //!< rgb
+  std::vector<Float4> material; //!< (roughness, displacement, label, mask)
+};
+
+//! The welded limit surface with its channels per vertex; points are
+//! displaced along the normal by the displacement channel (P = P0 + h N).
+struct PaintedSurface
+{
+  WeldedSurface surface;
+  std::vector<Vec3> diffuse, specular;
+  std::vector<float> roughness, displacement, mask;
+  std::vector<int> label;
+};
+
+//! What one stroke did.
+struct StrokeReport
+{
+  std::size_t dabs = 0;            //!< dab positions along the stroke (mirrored ones included)
+  std::size_t dabs_applied = 0;    //!< those on the surface
+  std::size_t patches_touched = 0; //!< summed over dabs
+  bool left_surface = false;       //!< the stroke ended where it left the surface
+  double ms = 0;                   //!< wall time, device work included
+};
+
+//! Default material of unpainted surface.
+struct BaseMaterial
+{
+  Float4 diffuse{0.8f, 0.8f, 0.8f, 1.f};
+  Float4 specular{0.04f, 0.04f, 0.04f, 1.f};
+  float roughness = 0.5f;
+};
+
+class PaintSurface
+{
+public:
+  //! Subdivides `mesh` to `level` on the device and computes its limit
+  //! surface, patch bounds and default channels.
+  PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int level, AtlasStorage storage,
+               const BaseMaterial& material = BaseMaterial());
+  ~PaintSurface();
+  PaintSurface(const PaintSurface&) = delete;
+  PaintSurface& operator=(const PaintSurface&) = delete;
+
+  Atlas& atlas() { return *atlas_; }
+  int level() const { return level_; }
+
+  //! Runs the stroke's dabs in order. A dab whose centre has no surface
+  //! within its radius ends the stroke (left_surface).
+  StrokeReport apply(const Stroke& stroke);
+
+  //! The patches one dab at `point` would touch: those connected to the
+  //! closest surface point along the surface within `radius`, sorted. Empty
+  //! when no surface is within the radius. `centre` receives the snapped
+  //! centre.
+  std::vector<int> brush_patches(const Vec3& point, float radius, Vec3* centre = nullptr);
+
+  PaintChannels read_channels();
+  PaintedSurface painted_surface();
+
+private:
+  struct Device;
+  struct Cull;
+  std::vector<Cull> cull(const Vec3& centre, float radius);
+  void paint(const std::vector<int>& patches, const BrushDab& dab);
+
+  std::unique_ptr<Atlas> atlas_;
+  int level_;
+  std::vector<Float4> positions_; // limit positions, patch-major (host copy for snapping)
+  std::unique_ptr<Device> device_;
+};
+
+} // namespace meshpaint

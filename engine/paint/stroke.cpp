@@ -1,0 +1,281 @@
+#include "paint/stroke.h"
+
+#include "core/errors.h"
+
+#include <nlohmann/json.hpp> // for nlohmann::json
+
+#include <cmath>   // for std::isfinite, std::sqrt
+#include <fstream> // for std::ifstream
+#include <map>     // for std::map
+#include <set>     // for std::set
+#include <sstream> // for std::ostringstream
+
+namespace meshpaint {
+namespace {
+
+using nlohmann::json;
+
+//! Reads one stroke, with errors that name it and the key.
+class StrokeReader
+{
+public:
+  StrokeReader(const json& j, std::size_t index) : j_(j), where_("stroke " + std::to_string(index) + ": ") {}
+
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const
+  {
+    throw InputError(where_ + "\"" + key + "\" " + what);
+  }
+
+  bool has(const std::string& key) const { return j_.contains(key); }
+
+  double number(const std::string& key, double fallback, double min, double max) const
+  {
+    if (!has(key))
+      return fallback;
+    const json& v = j_.at(key);
+    if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < min || v.get<double>() > max)
+      fail(key, "must be a number from " + text(min) + " to " + text(max));
+    return v.get<double>();
+  }
+
+  std::string word(const std::string& key, const std::string& fallback,
+                   const std::vector<std::string>& allowed) const
+  {
+    if (!has(key))
+      return fallback;
+    const json& v = j_.at(key);
+    if (v.is_string())
+      for (const std::string& a : allowed)
+        if (v.get<std::string>() == a)
+          return a;
+    std::string list;
+    for (const std::string& a : allowed)
+      list += (list.empty() ? "" : ", ") + a;
+    fail(key, "must be one of " + list);
+  }
+
+  std::vector<Vec3> points(const std::string& key) const
+  {
+    std::vector<Vec3> out;
+    const json& v = j_.at(key);
+    if (!v.is_array())
+      fail(key, "must be a list of [x, y, z] points");
+    for (const json& p : v) {
+      if (!p.is_array() || p.size() != 3)
+        fail(key, "must be a list of [x, y, z] points");
+      Vec3 q;
+      for (int k = 0; k < 3; ++k) {
+        if (!p[k].is_number() || !std::isfinite(p[k].get<double>()))
+          fail(key, "must hold finite numbers");
+        q[k] = p[k].get<float>();
+      }
+      out.push_back(q);
+    }
+    return out;
+  }
+
+  const json& at(const std::string& key) const { return j_.at(key); }
+  const std::string& where() const { return where_; }
+
+  static std::string text(double v)
+  {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+  }
+
+private:
+  const json& j_;
+  std::string where_;
+};
+
+const std::map<std::string, int> kChannels = {{"diffuse", CHANNEL_DIFFUSE},   {"specular", CHANNEL_SPECULAR},
+                                              {"roughness", CHANNEL_ROUGHNESS}, {"displacement", CHANNEL_DISPLACEMENT},
+                                              {"label", CHANNEL_LABEL},         {"mask", CHANNEL_MASK}};
+
+//! "channels": {"diffuse": [r, g, b] or [r, g, b, coverage], "roughness": v, "label": id, ...}
+//! "alphas": {"diffuse": a, ...} (default 1 for every channel given)
+void read_channels(const StrokeReader& r, Stroke& s)
+{
+  if (!r.has("channels"))
+    return;
+  const json& ch = r.at("channels");
+  if (!ch.is_object())
+    r.fail("channels", "must be an object such as {\"diffuse\": [1, 0, 0]}");
+  for (const auto& [name, v] : ch.items()) {
+    const auto it = kChannels.find(name);
+    if (it == kChannels.end())
+      r.fail("channels", "has an unknown channel \"" + name +
+                           "\" (diffuse, specular, roughness, displacement, label, mask)");
+    const int c = it->second;
+    Float4 value{0.f, 0.f, 0.f, 1.f};
+    if (c == CHANNEL_DIFFUSE || c == CHANNEL_SPECULAR) {
+      if (!v.is_array() || (v.size() != 3 && v.size() != 4))
+        r.fail("channels", "\"" + name + "\" must be [r, g, b] or [r, g, b, coverage]");
+      for (std::size_t k = 0; k < v.size(); ++k) {
+        if (!v[k].is_number() || v[k].get<double>() < 0 || v[k].get<double>() > 1)
+          r.fail("channels", "\"" + name + "\" components must be numbers from 0 to 1");
+        value[k] = v[k].get<float>();
+      }
+    } else if (c == CHANNEL_LABEL) {
+      if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() > (1 << 24))
+        r.fail("channels", "\"label\" must be an integer class id from 0 to 16777216");
+      value = {v.get<float>(), v.get<float>(), v.get<float>(), 1.f};
+    } else {
+      const bool bounded = c != CHANNEL_DISPLACEMENT;
+      if (!v.is_number() || !std::isfinite(v.get<double>()) || (bounded && (v.get<double>() < 0 || v.get<double>() > 1)))
+        r.fail("channels", "\"" + name + "\" must be a number" + (bounded ? " from 0 to 1" : ""));
+      value = {v.get<float>(), v.get<float>(), v.get<float>(), 1.f};
+    }
+    s.value[c] = value;
+    s.alpha[c] = 1.f;
+  }
+  if (r.has("alphas")) {
+    const json& al = r.at("alphas");
+    if (!al.is_object())
+      r.fail("alphas", "must be an object such as {\"diffuse\": 0.5}");
+    for (const auto& [name, v] : al.items()) {
+      const auto it = kChannels.find(name);
+      if (it == kChannels.end() || !ch.contains(name))
+        r.fail("alphas", "names \"" + name + "\", which \"channels\" does not paint");
+      if (!v.is_number() || v.get<double>() < 0 || v.get<double>() > 1)
+        r.fail("alphas", "\"" + name + "\" must be a number from 0 to 1");
+      s.alpha[it->second] = v.get<float>();
+    }
+  }
+}
+
+Stroke read_stroke(const json& j, std::size_t index)
+{
+  if (!j.is_object())
+    throw InputError("stroke " + std::to_string(index) + ": must be an object");
+  static const std::set<std::string> known = {"tool",    "points",   "radius", "strength", "falloff",
+                                              "spacing", "op",       "channels", "alphas", "pressure",
+                                              "mirror"};
+  const StrokeReader r(j, index);
+  for (const auto& item : j.items())
+    if (!known.count(item.key()))
+      r.fail(item.key(), "is not a stroke key (tool, points, radius, strength, falloff, spacing, op, "
+                         "channels, alphas, pressure, mirror)");
+  Stroke s;
+  const std::string tool = r.word("tool", "paint", {"paint", "label", "wash"});
+  s.tool = tool == "label" ? Tool::Label : tool == "wash" ? Tool::Wash : Tool::Paint;
+  s.strength = float(r.number("strength", 1.0, 0.0, 1.0));
+  const std::string falloff = r.word("falloff", "smoothstep", {"constant", "linear", "smoothstep", "gaussian"});
+  s.falloff = falloff == "constant" ? FALLOFF_CONSTANT : falloff == "linear" ? FALLOFF_LINEAR
+              : falloff == "gaussian" ? FALLOFF_GAUSSIAN : FALLOFF_SMOOTHSTEP;
+  const std::string op = r.word("op", "copy", {"copy", "over", "max", "add", "subtract"});
+  s.op = op == "over" ? PAINT_OP_OVER : op == "max" ? PAINT_OP_MAX : op == "add" ? PAINT_OP_ADD
+         : op == "subtract" ? PAINT_OP_SUBTRACT : PAINT_OP_COPY;
+  s.spacing = float(r.number("spacing", 0.25, 0.01, 100.0));
+  if (r.has("mirror"))
+    s.mirror_axis = r.word("mirror", "x", {"x", "y", "z"})[0] - 'x';
+  read_channels(r, s);
+
+  if (s.tool == Tool::Wash) {
+    for (const char* key : {"points", "radius", "pressure", "mirror", "spacing", "falloff"})
+      if (r.has(key))
+        r.fail(key, "has no meaning for a wash, which covers everything at once");
+  } else {
+    if (!r.has("points"))
+      r.fail("points", "is required: the path of the stroke as [[x, y, z], ...]");
+    s.points = r.points("points");
+    if (s.points.empty())
+      r.fail("points", "is empty: a stroke needs at least one point");
+    if (!r.has("radius"))
+      r.fail("radius", "is required (world units)");
+    s.radius = float(r.number("radius", 0.0, 1e-30, 1e30));
+    if (r.has("pressure")) {
+      const json& p = r.at("pressure");
+      if (!p.is_array() || p.size() != s.points.size())
+        r.fail("pressure", "must be a list of numbers, one per point");
+      for (const json& v : p) {
+        if (!v.is_number() || v.get<double>() < 0 || v.get<double>() > 1)
+          r.fail("pressure", "values must be numbers from 0 to 1");
+        s.pressure.push_back(v.get<float>());
+      }
+    }
+  }
+  if (s.tool == Tool::Label) {
+    if (!r.has("channels") || r.at("channels").size() != 1 || !r.at("channels").contains("label"))
+      r.fail("channels", "of a label stroke must be exactly {\"label\": id}");
+  } else if (!r.has("channels")) {
+    r.fail("channels", "is required: what to paint, e.g. {\"diffuse\": [1, 0, 0]}");
+  }
+  return s;
+}
+
+} // namespace
+
+StrokeScript parse_stroke_script(const std::string& text)
+{
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::parse_error& e) {
+    // e.what() reads "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
+    const std::string what = e.what();
+    const std::size_t at = what.find("parse error");
+    throw InputError("stroke script is not valid JSON: " + (at == std::string::npos ? what : what.substr(at)));
+  }
+  if (!j.is_object())
+    throw InputError("stroke script must be a JSON object {\"strokes\": [...]}");
+  for (const auto& item : j.items())
+    if (item.key() != "level" && item.key() != "strokes")
+      throw InputError("stroke script: \"" + item.key() + "\" is not a script key (level, strokes)");
+  StrokeScript script;
+  if (j.contains("level")) {
+    if (!j["level"].is_number_integer() || j["level"].get<long long>() < 1 || j["level"].get<long long>() > 12)
+      throw InputError("stroke script: \"level\" must be an integer from 1 to 12");
+    script.level = j["level"].get<int>();
+  }
+  if (!j.contains("strokes") || !j["strokes"].is_array())
+    throw InputError("stroke script: \"strokes\" must be a list of strokes");
+  for (std::size_t k = 0; k < j["strokes"].size(); ++k)
+    script.strokes.push_back(read_stroke(j["strokes"][k], k));
+  return script;
+}
+
+StrokeScript load_stroke_script(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw IOError("cannot open stroke script '" + path + "'");
+  std::ostringstream text;
+  text << in.rdbuf();
+  try {
+    return parse_stroke_script(text.str());
+  } catch (const InputError& e) {
+    throw InputError("'" + path + "': " + e.what());
+  }
+}
+
+std::vector<DabSample> stroke_samples(const Stroke& s)
+{
+  const auto pressure_at = [&](std::size_t k) { return s.pressure.empty() ? 1.f : s.pressure[k]; };
+  // Spacing follows the pressure-scaled radius; never below a tiny step.
+  const auto step = [&](float pressure) { return s.spacing * s.radius * std::max(pressure, 0.05f); };
+  std::vector<DabSample> out{{s.points[0], pressure_at(0)}};
+  float since = 0.f; // path length since the last dab
+  for (std::size_t k = 1; k < s.points.size(); ++k) {
+    const Vec3 &a = s.points[k - 1], &b = s.points[k];
+    const float len = std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
+                                (b[2] - a[2]) * (b[2] - a[2]));
+    float at = 0.f; // along this segment
+    while (true) {
+      const float u = len > 0.f ? at / len : 0.f;
+      const float need = step(pressure_at(k - 1) * (1.f - u) + pressure_at(k) * u) - since;
+      if (at + need > len) {
+        since += len - at;
+        break;
+      }
+      at += need;
+      since = 0.f;
+      const float t = at / len, p = pressure_at(k - 1) * (1.f - t) + pressure_at(k) * t;
+      out.push_back({{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])}, p});
+    }
+  }
+  return out;
+}
+
+} // namespace meshpaint

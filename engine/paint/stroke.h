@@ -1,0 +1,61 @@
+// Strokes: what the user asked the brush to do, as the stroke script says it.
+#pragma once
+
+#include "atlas_types.h" // for CHANNEL_COUNT, FALLOFF_*, PAINT_OP_*
+#include "core/vec.h"
+
+#include <array>  // for std::array
+#include <string> // for std::string
+#include <vector> // for std::vector
+
+namespace meshpaint {
+
+enum class Tool
+{
+  Paint, //!< the paint equation on the chosen channels
+  Label, //!< paint one class id into the label channel
+  Wash   //!< the paint equation everywhere at once, no brush
+};
+
+struct Stroke
+{
+  Tool tool = Tool::Paint;
+  std::vector<Vec3> points;             //!< the path, world coordinates
+  std::vector<float> pressure;          //!< per point, scales radius and strength; empty: 1
+  float radius = 0.f;                   //!< world units
+  float strength = 1.f;                 //!< 0..1
+  int falloff = FALLOFF_SMOOTHSTEP;     //!< FALLOFF_*
+  float spacing = 0.25f;                //!< dab spacing as a fraction of the radius
+  int op = PAINT_OP_COPY;               //!< PAINT_OP_*
+  std::array<Float4, CHANNEL_COUNT> value{};  //!< per channel: rgb or x, and coverage in w
+  std::array<float, CHANNEL_COUNT> alpha{};   //!< 0: channel untouched
+  int mirror_axis = -1;                 //!< 0, 1, 2 for x, y, z; -1 none
+};
+
+//! A stroke script: an optional atlas level and the strokes in order.
+struct StrokeScript
+{
+  int level = -1; //!< -1: not given
+  std::vector<Stroke> strokes;
+};
+
+//! Parses and checks a stroke script (docs/strokes.md). Nothing is returned
+//! unless every stroke is valid.
+//! \throw InputError naming the stroke (0-based) and key, e.g.
+//! "stroke 2: \"radius\" must be a positive number".
+StrokeScript parse_stroke_script(const std::string& json_text);
+
+//! Reads and parses a stroke script file.
+//! \throw IOError when the file cannot be read; InputError as above.
+StrokeScript load_stroke_script(const std::string& path);
+
+//! Centres of the dabs of a stroke along its path, every spacing * radius
+//! (pressure-scaled), the first point always included; with their pressure.
+struct DabSample
+{
+  Vec3 centre;
+  float pressure;
+};
+std::vector<DabSample> stroke_samples(const Stroke& stroke);
+
+} // namespace meshpaint

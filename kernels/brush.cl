@@ -1,0 +1,143 @@
+/* The brush pipeline of one dab (Ritschel et al. Sec. 5; Hanrahan and
+ * Haeberli's paint equation). Positions: the limit surface of the atlas's
+ * finest level, in either storage. Paint channels: float4 buffers, patch-major
+ * (texel (p, i, j) at (p * tile + j) * tile + i), in both storage modes,
+ * because a dab reads and writes them in place.
+ *   diffuse, specular: rgb (w unused)
+ *   material:          (roughness, displacement, label, mask) */
+
+#define CHANNEL_INDEX(tile, p, ij) (((p) * (tile) + (ij).y) * (tile) + (ij).x)
+
+/* Range: #patches. Bounding sphere (centre xyz, radius w) of each patch. */
+__kernel void patch_bounds(ATLAS_IN pos, int2 g, int patches, __global float4 *bounds)
+{
+  const int p = get_global_id(0);
+  if (p >= patches)
+    return;
+  float3 lo = (float3)(INFINITY), hi = (float3)(-INFINITY);
+  for (int j = 0; j < g.x; ++j)
+    for (int i = 0; i < g.x; ++i) {
+      const float3 x = ATLAS_LOAD(pos, g, p, (int2)(i, j)).xyz;
+      lo = fmin(lo, x);
+      hi = fmax(hi, x);
+    }
+  const float3 c = 0.5f * (lo + hi);
+  float r = 0.0f;
+  for (int j = 0; j < g.x; ++j)
+    for (int i = 0; i < g.x; ++i)
+      r = fmax(r, distance(ATLAS_LOAD(pos, g, p, (int2)(i, j)).xyz, c));
+  bounds[p] = (float4)(c, r);
+}
+
+/* Range: #patches. Appends a record for each patch with a texel within
+ * `radius` of `centre`: its closest texel and the closest distance over each
+ * of its sides, from which the host finds the patches connected to the
+ * centre along the surface. Patches whose bounding sphere misses the ball
+ * cost one test. `count` may pass `capacity`; the host then grows the
+ * record buffer and runs again. */
+__kernel void brush_cull(ATLAS_IN pos, int2 g, int patches, __global const float4 *bounds, float4 centre,
+                         float radius, __global CullRecord *records, __global int *count, int capacity)
+{
+  const int p = get_global_id(0);
+  if (p >= patches)
+    return;
+  const float4 b = bounds[p];
+  if (distance(b.xyz, centre.xyz) - b.w > radius)
+    return;
+  const int n = g.x - 1;
+  float best = INFINITY, side[4] = {INFINITY, INFINITY, INFINITY, INFINITY};
+  int best_texel = 0;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const float d = distance(ATLAS_LOAD(pos, g, p, (int2)(i, j)).xyz, centre.xyz);
+      if (d < best) {
+        best = d;
+        best_texel = j * g.x + i;
+      }
+      if (j == 0) side[0] = fmin(side[0], d);
+      if (i == n) side[1] = fmin(side[1], d);
+      if (j == n) side[2] = fmin(side[2], d);
+      if (i == 0) side[3] = fmin(side[3], d);
+    }
+  if (best > radius)
+    return;
+  const int k = atomic_inc(count);
+  if (k >= capacity)
+    return;
+  CullRecord r;
+  r.patch = p;
+  r.closest_texel = best_texel;
+  r.distance = best;
+  for (int s = 0; s < 4; ++s)
+    r.side_distance[s] = side[s];
+  r.pad = 0;
+  records[k] = r;
+}
+
+/* Brush profile at t = distance / radius in [0, 1]. */
+inline float falloff_weight(int falloff, float t)
+{
+  switch (falloff) {
+  case FALLOFF_LINEAR: return 1.0f - t;
+  case FALLOFF_SMOOTHSTEP: return 1.0f - t * t * (3.0f - 2.0f * t);
+  case FALLOFF_GAUSSIAN: return exp(-4.5f * t * t); /* 3 sigma at the rim */
+  default: return 1.0f;
+  }
+}
+
+/* paint OP surface, per component. */
+inline float4 paint_op(int op, float4 paint, float coverage, float4 surface)
+{
+  switch (op) {
+  case PAINT_OP_OVER: return paint * coverage + surface * (1.0f - coverage);
+  case PAINT_OP_MAX: return fmax(paint, surface);
+  case PAINT_OP_ADD: return surface + paint;
+  case PAINT_OP_SUBTRACT: return surface - paint;
+  default: return paint;
+  }
+}
+
+/* surface = lerp(surface, paint OP surface, a): the paint equation. */
+inline float4 paint_blend(__global const BrushDab *dab, int c, float4 surface, float a)
+{
+  const float4 paint = vload4(0, dab->value[c]);
+  return mix(surface, paint_op(dab->op, paint, paint.w, surface), a);
+}
+
+/* Range: (tile, tile * #active). Every texel of the active patches, all
+ * stored copies included, so copies stay identical. */
+__kernel void paint_dab(ATLAS_IN pos, int2 g, __global const int *active, int active_count,
+                        __global const BrushDab *dab, __global float4 *diffuse, __global float4 *specular,
+                        __global float4 *material)
+{
+  const int i = get_global_id(0), y = get_global_id(1);
+  const int a = y / g.x, j = y - a * g.x;
+  if (a >= active_count)
+    return;
+  const int p = active[a];
+  const int2 ij = (int2)(i, j);
+  const float3 x = ATLAS_LOAD(pos, g, p, ij).xyz;
+  const float t = distance(x, vload3(0, dab->centre)) / dab->radius;
+  if (!(t <= 1.0f))
+    return;
+  const int k = CHANNEL_INDEX(g.x, p, ij);
+  float4 m = material[k];
+  const float w = falloff_weight(dab->falloff, t) * dab->strength * (1.0f - m.w);
+  if (dab->alpha[CHANNEL_DIFFUSE] > 0.0f)
+    diffuse[k] = clamp(paint_blend(dab, CHANNEL_DIFFUSE, diffuse[k], w * dab->alpha[CHANNEL_DIFFUSE]), 0.0f, 1.0f);
+  if (dab->alpha[CHANNEL_SPECULAR] > 0.0f)
+    specular[k] = clamp(paint_blend(dab, CHANNEL_SPECULAR, specular[k], w * dab->alpha[CHANNEL_SPECULAR]), 0.0f, 1.0f);
+  if (dab->alpha[CHANNEL_ROUGHNESS] > 0.0f)
+    m.x = clamp(paint_blend(dab, CHANNEL_ROUGHNESS, (float4)(m.x), w * dab->alpha[CHANNEL_ROUGHNESS]).x, 0.0f, 1.0f);
+  if (dab->alpha[CHANNEL_DISPLACEMENT] > 0.0f)
+    m.y = paint_blend(dab, CHANNEL_DISPLACEMENT, (float4)(m.y), w * dab->alpha[CHANNEL_DISPLACEMENT]).x;
+  /* Labels are class ids: they are set, never blended. */
+  if (dab->alpha[CHANNEL_LABEL] > 0.0f && w * dab->alpha[CHANNEL_LABEL] >= 0.5f)
+    m.z = dab->value[CHANNEL_LABEL][0];
+  /* The mask protects the other channels, so it is painted without itself. */
+  if (dab->alpha[CHANNEL_MASK] > 0.0f) {
+    const float wm = falloff_weight(dab->falloff, t) * dab->strength * dab->alpha[CHANNEL_MASK];
+    m.w = clamp(paint_blend(dab, CHANNEL_MASK, (float4)(m.w), wm).x, 0.0f, 1.0f);
+  }
+  material[k] = m;
+}

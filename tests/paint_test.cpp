@@ -1,0 +1,304 @@
+// The brush pipeline and the paint equation.
+
+#include "atlas/weld.h"
+#include "core/errors.h"
+#include "paint/paint_surface.h"
+#include "support/runtime.h"
+#include "support/shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>   // for std::sqrt
+#include <cstring> // for std::memcmp
+
+namespace meshpaint {
+namespace {
+
+//! A flat square of 6x6 unit quads in the z = 0 plane.
+BaseMesh flat_square()
+{
+  std::vector<Vec3> pts;
+  for (int y = 0; y <= 6; ++y)
+    for (int x = 0; x <= 6; ++x)
+      pts.push_back({float(x), float(y), 0.f});
+  std::vector<std::vector<int>> faces;
+  for (int y = 0; y < 6; ++y)
+    for (int x = 0; x < 6; ++x)
+      faces.push_back({y * 7 + x, y * 7 + x + 1, (y + 1) * 7 + x + 1, (y + 1) * 7 + x});
+  return make_base_mesh(pts, faces, "flat_square");
+}
+
+//! A closed plate 4 x 4 x 0.1: top and bottom are near in space, far along the surface.
+BaseMesh thin_plate()
+{
+  std::vector<Vec3> pts;
+  for (float z : {0.f, 0.1f})
+    for (int y = 0; y <= 4; ++y)
+      for (int x = 0; x <= 4; ++x)
+        pts.push_back({float(x), float(y), z});
+  std::vector<std::vector<int>> faces;
+  const auto v = [](int x, int y, int top) { return top * 25 + y * 5 + x; };
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x) {
+      faces.push_back({v(x, y, 1), v(x + 1, y, 1), v(x + 1, y + 1, 1), v(x, y + 1, 1)});
+      faces.push_back({v(x, y, 0), v(x, y + 1, 0), v(x + 1, y + 1, 0), v(x + 1, y, 0)});
+    }
+  for (int k = 0; k < 4; ++k) {
+    faces.push_back({v(k, 0, 0), v(k + 1, 0, 0), v(k + 1, 0, 1), v(k, 0, 1)});
+    faces.push_back({v(k + 1, 4, 0), v(k, 4, 0), v(k, 4, 1), v(k + 1, 4, 1)});
+    faces.push_back({v(0, k + 1, 0), v(0, k, 0), v(0, k, 1), v(0, k + 1, 1)});
+    faces.push_back({v(4, k, 0), v(4, k + 1, 0), v(4, k + 1, 1), v(4, k, 1)});
+  }
+  return make_base_mesh(pts, faces, "thin_plate");
+}
+
+Stroke dab_at(const Vec3& point, float radius, int falloff = FALLOFF_CONSTANT)
+{
+  Stroke s;
+  s.points = {point};
+  s.radius = radius;
+  s.falloff = falloff;
+  return s;
+}
+
+Stroke paint_diffuse(Stroke s, Float4 colour)
+{
+  s.value[CHANNEL_DIFFUSE] = colour;
+  s.alpha[CHANNEL_DIFFUSE] = 1.f;
+  return s;
+}
+
+double distance(const Float4& a, const Vec3& b)
+{
+  return std::sqrt(double(a[0] - b[0]) * (a[0] - b[0]) + double(a[1] - b[1]) * (a[1] - b[1]) +
+                   double(a[2] - b[2]) * (a[2] - b[2]));
+}
+
+TEST(Paint, CopyWithConstantFalloffPaintsExactlyTheDisc)
+{
+  PaintSurface surface(test::runtime(), flat_square(), 4, AtlasStorage::Buffer);
+  const Vec3 centre{3.0f, 3.0f, 0.f};
+  const float radius = 1.3f;
+  const StrokeReport r = surface.apply(paint_diffuse(dab_at(centre, radius), {1.f, 0.f, 0.f, 1.f}));
+  EXPECT_EQ(r.dabs_applied, 1u);
+  const auto pos = surface.atlas().read_limit_positions();
+  const auto ch = surface.read_channels();
+  std::size_t inside = 0;
+  for (std::size_t t = 0; t < pos.size(); ++t) {
+    const bool in = distance(pos[t], centre) <= radius;
+    inside += in;
+    const Float4 expect = in ? Float4{1.f, 0.f, 0.f, 1.f} : Float4{0.8f, 0.8f, 0.8f, 1.f};
+    for (int k = 0; k < 3; ++k)
+      ASSERT_EQ(ch.diffuse[t][k], expect[k]) << "texel " << t << " at distance " << distance(pos[t], centre);
+  }
+  EXPECT_GT(inside, 100u);
+}
+
+TEST(Paint, DoesNotBleedThroughTheAir)
+{
+  // The brush on the top of a plate 0.1 thick with radius 0.5 reaches the
+  // bottom in space, but along the surface only across the rim, 2 away.
+  PaintSurface surface(test::runtime(), thin_plate(), 4, AtlasStorage::Buffer);
+  surface.apply(paint_diffuse(dab_at({2.f, 2.f, 0.1f}, 0.5f), {0.f, 0.f, 1.f, 1.f}));
+  const auto pos = surface.atlas().read_limit_positions();
+  const auto ch = surface.read_channels();
+  std::size_t top = 0, bottom = 0;
+  for (std::size_t t = 0; t < pos.size(); ++t) {
+    const bool painted = ch.diffuse[t][2] == 1.f && ch.diffuse[t][0] == 0.f;
+    if (painted && pos[t][2] > 0.05f)
+      ++top;
+    if (painted && pos[t][2] < 0.05f)
+      ++bottom;
+  }
+  EXPECT_GT(top, 50u);
+  EXPECT_EQ(bottom, 0u) << "paint reached the far side of the plate";
+}
+
+TEST(Paint, FalloffsShapeTheWeight)
+{
+  for (int falloff : {FALLOFF_LINEAR, FALLOFF_SMOOTHSTEP, FALLOFF_GAUSSIAN}) {
+    PaintSurface surface(test::runtime(), flat_square(), 4, AtlasStorage::Buffer);
+    Stroke s = dab_at({3.f, 3.f, 0.f}, 2.f, falloff);
+    s.value[CHANNEL_ROUGHNESS] = {1.f, 1.f, 1.f, 1.f};
+    s.alpha[CHANNEL_ROUGHNESS] = 1.f;
+    surface.apply(s);
+    const auto pos = surface.atlas().read_limit_positions();
+    const auto ch = surface.read_channels();
+    for (std::size_t t = 0; t < pos.size(); ++t) {
+      const double u = distance(pos[t], {3.f, 3.f, 0.f}) / 2.0;
+      if (u > 1)
+        continue;
+      const double w = falloff == FALLOFF_LINEAR ? 1 - u
+                       : falloff == FALLOFF_SMOOTHSTEP ? 1 - u * u * (3 - 2 * u)
+                                                       : std::exp(-4.5 * u * u);
+      ASSERT_NEAR(ch.material[t][0], 0.5 + 0.5 * w, 1e-5) << "falloff " << falloff << " at " << u;
+    }
+  }
+}
+
+TEST(Paint, OpsOfThePaintEquation)
+{
+  struct Case
+  {
+    int op;
+    float paint, coverage, expect; // surface roughness starts at 0.5
+  };
+  for (const Case c : {Case{PAINT_OP_COPY, 0.2f, 1.f, 0.2f}, Case{PAINT_OP_OVER, 1.0f, 0.25f, 0.625f},
+                       Case{PAINT_OP_MAX, 0.2f, 1.f, 0.5f}, Case{PAINT_OP_MAX, 0.7f, 1.f, 0.7f},
+                       Case{PAINT_OP_ADD, 0.25f, 1.f, 0.75f}, Case{PAINT_OP_SUBTRACT, 0.25f, 1.f, 0.25f}}) {
+    PaintSurface surface(test::runtime(), flat_square(), 3, AtlasStorage::Buffer);
+    Stroke s = dab_at({3.f, 3.f, 0.f}, 0.5f);
+    s.op = c.op;
+    s.value[CHANNEL_ROUGHNESS] = {c.paint, c.paint, c.paint, c.coverage};
+    s.alpha[CHANNEL_ROUGHNESS] = 1.f;
+    surface.apply(s);
+    const auto pos = surface.atlas().read_limit_positions();
+    const auto ch = surface.read_channels();
+    for (std::size_t t = 0; t < pos.size(); ++t)
+      if (distance(pos[t], {3.f, 3.f, 0.f}) < 0.4)
+        ASSERT_NEAR(ch.material[t][0], c.expect, 1e-6) << "op " << c.op << " paint " << c.paint;
+  }
+}
+
+TEST(Paint, AlphaAndStrengthScaleTheBlend)
+{
+  PaintSurface surface(test::runtime(), flat_square(), 3, AtlasStorage::Buffer);
+  Stroke s = paint_diffuse(dab_at({3.f, 3.f, 0.f}, 0.5f), {0.f, 0.f, 0.f, 1.f});
+  s.alpha[CHANNEL_DIFFUSE] = 0.5f;
+  s.strength = 0.5f;
+  surface.apply(s);
+  const auto pos = surface.atlas().read_limit_positions();
+  const auto ch = surface.read_channels();
+  for (std::size_t t = 0; t < pos.size(); ++t)
+    if (distance(pos[t], {3.f, 3.f, 0.f}) < 0.4)
+      ASSERT_NEAR(ch.diffuse[t][0], 0.8 * 0.75, 1e-6);
+}
+
+TEST(Paint, MaskProtectsAndLabelsAreSet)
+{
+  PaintSurface surface(test::runtime(), flat_square(), 4, AtlasStorage::Buffer);
+  Stroke mask = dab_at({2.f, 3.f, 0.f}, 1.f);
+  mask.value[CHANNEL_MASK] = {1.f, 1.f, 1.f, 1.f};
+  mask.alpha[CHANNEL_MASK] = 1.f;
+  surface.apply(mask);
+  Stroke label = dab_at({3.f, 3.f, 0.f}, 1.5f);
+  label.tool = Tool::Label;
+  label.value[CHANNEL_LABEL] = {7.f, 7.f, 7.f, 1.f};
+  label.alpha[CHANNEL_LABEL] = 1.f;
+  surface.apply(label);
+  const auto pos = surface.atlas().read_limit_positions();
+  const auto ch = surface.read_channels();
+  std::size_t labelled = 0;
+  for (std::size_t t = 0; t < pos.size(); ++t) {
+    const bool masked = distance(pos[t], {2.f, 3.f, 0.f}) <= 1.f;
+    const bool brushed = distance(pos[t], {3.f, 3.f, 0.f}) <= 1.5f;
+    ASSERT_EQ(ch.material[t][3], masked ? 1.f : 0.f);
+    ASSERT_EQ(ch.material[t][2], brushed && !masked ? 7.f : 0.f) << "texel " << t;
+    labelled += brushed && !masked;
+  }
+  EXPECT_GT(labelled, 50u);
+}
+
+TEST(Paint, WashCoversEverything)
+{
+  PaintSurface surface(test::runtime(), test::genus_two(), 3, AtlasStorage::Buffer);
+  Stroke s;
+  s.tool = Tool::Wash;
+  s.value[CHANNEL_SPECULAR] = {0.25f, 0.5f, 0.75f, 1.f};
+  s.alpha[CHANNEL_SPECULAR] = 1.f;
+  surface.apply(s);
+  for (const Float4& v : surface.read_channels().specular)
+    ASSERT_TRUE(v[0] == 0.25f && v[1] == 0.5f && v[2] == 0.75f);
+}
+
+TEST(Paint, StrokeEndsWhereItLeavesTheSurface)
+{
+  PaintSurface surface(test::runtime(), flat_square(), 3, AtlasStorage::Buffer);
+  Stroke s = paint_diffuse(dab_at({1.f, 1.f, 0.f}, 0.3f), {1.f, 1.f, 0.f, 1.f});
+  s.points = {{1.f, 1.f, 0.f}, {1.f, 1.f, 5.f}}; // straight up, away from the plane
+  const StrokeReport r = surface.apply(s);
+  EXPECT_TRUE(r.left_surface);
+  EXPECT_GE(r.dabs_applied, 1u);
+  EXPECT_LT(r.dabs_applied, r.dabs + 1);
+}
+
+TEST(Paint, CopiesOfSharedTexelsStayIdentical)
+{
+  PaintSurface surface(test::runtime(), test::high_valence(), 4, AtlasStorage::Buffer);
+  Stroke s = paint_diffuse(dab_at({0.f, 0.f, 1.0f}, 0.6f, FALLOFF_GAUSSIAN), {0.1f, 0.9f, 0.3f, 1.f});
+  s.points = {{0.f, 0.f, 1.0f}, {0.5f, 0.5f, 0.3f}};
+  surface.apply(s);
+  const auto ch = surface.read_channels();
+  const std::vector<int> map = weld_map(surface.atlas().topology(), surface.atlas().layout(4));
+  std::vector<long> first(surface.atlas().topology().unique_vertices(4), -1);
+  for (std::size_t t = 0; t < map.size(); ++t) {
+    if (first[map[t]] < 0)
+      first[map[t]] = long(t);
+    else
+      ASSERT_EQ(std::memcmp(&ch.diffuse[t], &ch.diffuse[first[map[t]]], sizeof(Float4)), 0);
+  }
+}
+
+TEST(Paint, MirrorPaintsBothSides)
+{
+  PaintSurface surface(test::runtime(), flat_square(), 3, AtlasStorage::Buffer);
+  Stroke s = paint_diffuse(dab_at({1.f, 3.f, 0.f}, 0.4f), {0.f, 1.f, 0.f, 1.f});
+  s.mirror_axis = 0; // the plane x = 3
+  const StrokeReport r = surface.apply(s);
+  EXPECT_EQ(r.dabs_applied, 2u);
+  const PaintedSurface out = surface.painted_surface();
+  bool left = false, right = false;
+  for (std::size_t v = 0; v < out.diffuse.size(); ++v)
+    if (out.diffuse[v][1] == 1.f) {
+      left = left || out.surface.points[v][0] < 3.f;
+      right = right || out.surface.points[v][0] > 3.f;
+    }
+  EXPECT_TRUE(left && right);
+}
+
+TEST(StrokeScript, SamplesFollowSpacingAndPressure)
+{
+  Stroke s = dab_at({0.f, 0.f, 0.f}, 1.f);
+  s.points = {{0.f, 0.f, 0.f}, {2.f, 0.f, 0.f}};
+  s.spacing = 0.5f;
+  const auto samples = stroke_samples(s);
+  ASSERT_EQ(samples.size(), 5u);
+  for (std::size_t k = 0; k < samples.size(); ++k)
+    EXPECT_NEAR(samples[k].centre[0], 0.5 * k, 1e-6);
+  s.pressure = {0.5f, 0.5f};
+  EXPECT_EQ(stroke_samples(s).size(), 9u);
+}
+
+TEST(StrokeScript, ErrorsNameTheStrokeAndKey)
+{
+  const auto message = [](const std::string& json) {
+    try {
+      parse_stroke_script(json);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  const std::string ok = R"({"tool": "paint", "points": [[0,0,0]], "radius": 1, "channels": {"diffuse": [1,0,0]}})";
+  EXPECT_EQ(parse_stroke_script("{\"strokes\": [" + ok + "]}").strokes.size(), 1u);
+  EXPECT_EQ(message("{\"strokes\": [" + ok + ", {\"tool\": \"paint\", \"radius\": -1}]}"),
+            "stroke 1: \"points\" is required: the path of the stroke as [[x, y, z], ...]");
+  EXPECT_EQ(message(R"({"strokes": [{"tool": "paint", "points": [[0,0,0]], "radius": -2, "channels": {"roughness": 1}}]})"),
+            "stroke 0: \"radius\" must be a number from 1e-30 to 1e+30");
+  EXPECT_EQ(message(R"({"strokes": [{"tool": "paint", "points": [[0,0,0]], "radius": 1, "strength": "lots", "channels": {"roughness": 1}}]})"),
+            "stroke 0: \"strength\" must be a number from 0 to 1");
+  EXPECT_EQ(message(R"({"strokes": [{"tool": "spray"}]})"), "stroke 0: \"tool\" must be one of paint, label, wash");
+  EXPECT_EQ(message(R"({"strokes": [{"colour": [1,0,0]}]})").substr(0, 40), "stroke 0: \"colour\" is not a stroke key (");
+  EXPECT_EQ(message(R"({"strokes": [{"points": [[0,0]], "radius": 1}]})"), "stroke 0: \"points\" must be a list of [x, y, z] points");
+  EXPECT_EQ(message(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "channels": {"gloss": 1}}]})").substr(0, 51),
+            "stroke 0: \"channels\" has an unknown channel \"gloss\"");
+  EXPECT_EQ(message(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "channels": {"diffuse": [1,0,0]}, "falloff": "cubic"}]})"),
+            "stroke 0: \"falloff\" must be one of constant, linear, smoothstep, gaussian");
+  EXPECT_EQ(message("{\"strokes\": [" + ok + "], \"lvl\": 3}"), "stroke script: \"lvl\" is not a script key (level, strokes)");
+  EXPECT_EQ(message("{\"strokes\": [").substr(0, 40), "stroke script is not valid JSON: parse e");
+  EXPECT_EQ(message(R"({"strokes": [{"tool": "label", "points": [[0,0,0]], "radius": 1, "channels": {"label": 2.5}}]})"),
+            "stroke 0: \"channels\" \"label\" must be an integer class id from 0 to 16777216");
+}
+
+} // namespace
+} // namespace meshpaint
