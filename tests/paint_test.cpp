@@ -14,19 +14,7 @@
 namespace meshpaint {
 namespace {
 
-//! A flat square of 6x6 unit quads in the z = 0 plane.
-BaseMesh flat_square()
-{
-  std::vector<Vec3> pts;
-  for (int y = 0; y <= 6; ++y)
-    for (int x = 0; x <= 6; ++x)
-      pts.push_back({float(x), float(y), 0.f});
-  std::vector<std::vector<int>> faces;
-  for (int y = 0; y < 6; ++y)
-    for (int x = 0; x < 6; ++x)
-      faces.push_back({y * 7 + x, y * 7 + x + 1, (y + 1) * 7 + x + 1, (y + 1) * 7 + x});
-  return make_base_mesh(pts, faces, "flat_square");
-}
+BaseMesh flat_square() { return test::flat_grid(6); }
 
 //! A closed plate 4 x 4 x 0.1: top and bottom are near in space, far along the surface.
 BaseMesh thin_plate()

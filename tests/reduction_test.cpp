@@ -13,20 +13,6 @@
 namespace meshpaint {
 namespace {
 
-//! A flat, evenly spaced 4x4 grid of quads: an affine control net.
-BaseMesh flat_grid()
-{
-  std::vector<Vec3> pts;
-  for (int y = 0; y <= 4; ++y)
-    for (int x = 0; x <= 4; ++x)
-      pts.push_back({float(x), float(y), 0.f});
-  std::vector<std::vector<int>> faces;
-  for (int y = 0; y < 4; ++y)
-    for (int x = 0; x < 4; ++x)
-      faces.push_back({y * 5 + x, y * 5 + x + 1, (y + 1) * 5 + x + 1, (y + 1) * 5 + x});
-  return make_base_mesh(pts, faces, "flat_grid");
-}
-
 double max_difference(const std::vector<Float4>& a, const std::vector<Float4>& b)
 {
   double worst = 0;
@@ -41,7 +27,7 @@ double max_difference(const std::vector<Float4>& a, const std::vector<Float4>& b
 // inside patches, on patch sides, on the boundary curves and at corners.
 TEST(Reduction, InvertsSubdivisionOnAffineData)
 {
-  Atlas atlas(test::runtime(), flat_grid(), 5, AtlasStorage::Buffer);
+  Atlas atlas(test::runtime(), test::flat_grid(4), 5, AtlasStorage::Buffer);
   atlas.subdivide(1, 5);
   std::vector<std::vector<Float4>> subdivided;
   for (int l = 1; l <= 5; ++l)

@@ -1,5 +1,6 @@
 #include "atlas/atlas.h"
 
+#include "cl/launch.h"
 #include "cl/program.h"
 #include "core/errors.h"
 #include "core/format.h"
@@ -17,8 +18,6 @@ namespace {
 constexpr std::size_t kGroupTexels = 256, kGroup1D = 64;
 const cl::NDRange kLocalEdges(1, kGroup1D), kLocal1D(kGroup1D);
 
-std::size_t round_up(std::size_t x, std::size_t m) { return (x + m - 1) / m * m; }
-
 //! (tile, tile * patches) work items, a texel each.
 std::pair<cl::NDRange, cl::NDRange> range_tiles(const LevelLayout& l)
 {
@@ -34,8 +33,6 @@ cl::NDRange range_edges(int positions, int edges)
 }
 cl::NDRange range1d(int items) { return cl::NDRange(round_up(items, kGroup1D)); }
 
-//! The (tile, tiles_x) pair the kernels take to address a level.
-cl_int2 grid(const LevelLayout& l) { return cl_int2{{l.tile, l.tiles_x}}; }
 
 //! Calls f(patch-major index, atlas-image index) for the first texel of every
 //! tile row.
@@ -47,15 +44,6 @@ void for_each_tile_row(const LevelLayout& l, F&& f)
       f(l.index(p, 0, j), std::size_t((p / l.tiles_x) * l.tile + j) * l.width + (p % l.tiles_x) * l.tile);
 }
 
-//! Sets the kernel's arguments in order and enqueues it.
-template <typename... Args>
-void launch(cl::CommandQueue& q, cl::Kernel& kernel, const cl::NDRange& global, const cl::NDRange& local,
-            const Args&... args)
-{
-  cl_uint index = 0;
-  (kernel.setArg(index++, args), ...);
-  q.enqueueNDRangeKernel(kernel, cl::NullRange, global, local);
-}
 
 } // namespace
 

@@ -37,6 +37,9 @@ struct MemoryPlan
   std::size_t total = 0;              //!< bytes, all levels plus limit layers
 };
 MemoryPlan plan_memory(const AtlasTopology& topology, int level, AtlasStorage storage);
+//! The (tile, tiles_x) pair kernels take to address a level.
+inline cl_int2 grid(const LevelLayout& l) { return cl_int2{{l.tile, l.tiles_x}}; }
+
 //! Bytes of one float4 layer of a level in the given storage.
 std::size_t layer_bytes(const LevelLayout& layout, AtlasStorage storage);
 

@@ -1,6 +1,7 @@
 #include "paint/paint_surface.h"
 
 #include "atlas/weld.h"
+#include "cl/launch.h"
 #include "cl/program.h"
 #include "core/errors.h"
 #include "core/timer.h"
@@ -8,24 +9,12 @@
 #include <algorithm> // for std::sort, std::max
 #include <cmath>     // for std::sqrt
 #include <limits>    // for std::numeric_limits
-#include <unordered_map>
+#include <unordered_map> // for std::unordered_map
 
 namespace meshpaint {
 namespace {
 
 constexpr std::size_t kGroup = 64;
-std::size_t round_up(std::size_t x, std::size_t m) { return (x + m - 1) / m * m; }
-
-template <typename... Args>
-void launch(cl::CommandQueue& q, cl::Kernel& kernel, const cl::NDRange& global, const cl::NDRange& local,
-            const Args&... args)
-{
-  cl_uint index = 0;
-  (kernel.setArg(index++, args), ...);
-  q.enqueueNDRangeKernel(kernel, cl::NullRange, global, local);
-}
-
-cl_int2 grid(const LevelLayout& l) { return cl_int2{{l.tile, l.tiles_x}}; }
 
 } // namespace
 

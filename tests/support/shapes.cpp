@@ -158,6 +158,19 @@ BaseMesh two_components()
   return make_base_mesh(pts, faces, "two_components");
 }
 
+BaseMesh flat_grid(int n)
+{
+  std::vector<Vec3> pts;
+  for (int y = 0; y <= n; ++y)
+    for (int x = 0; x <= n; ++x)
+      pts.push_back({float(x), float(y), 0.f});
+  std::vector<std::vector<int>> faces;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x)
+      faces.push_back({y * (n + 1) + x, y * (n + 1) + x + 1, (y + 1) * (n + 1) + x + 1, (y + 1) * (n + 1) + x});
+  return make_base_mesh(pts, faces, "flat_grid");
+}
+
 std::vector<std::string> shape_names()
 {
   return {"tetrahedron", "cube", "mixed_polygons", "genus_two", "open_grid", "open_fan", "high_valence",

@@ -26,6 +26,10 @@ BaseMesh high_valence();
 //! Two cubes that do not touch: several components.
 BaseMesh two_components();
 
+//! A flat, evenly spaced n x n grid of unit quads in the z = 0 plane (an
+//! affine control net), corner at the origin.
+BaseMesh flat_grid(int n);
+
 //! Every shape above, by name.
 std::vector<std::string> shape_names();
 BaseMesh shape(const std::string& name);
