@@ -174,3 +174,64 @@ def test_no_opencl_platform_says_how_to_install_pocl(cube, tmp_path):
     lines = r.stderr.strip().splitlines()
     assert len(lines) == 1, r.stderr
     assert "no OpenCL platform found: install PoCL" in lines[0]
+
+
+PLANE_OBJ = "".join(f"v {x} {y} 0\n" for y in range(5) for x in range(5)) + "".join(
+    f"f {y * 5 + x + 1} {y * 5 + x + 2} {(y + 1) * 5 + x + 2} {(y + 1) * 5 + x + 1}\n" for y in range(4) for x in range(4))
+
+
+@pytest.fixture
+def plane(tmp_path):
+    path = tmp_path / "plane.obj"
+    path.write_text(PLANE_OBJ)
+    return path
+
+
+def test_paint_writes_channels(plane, tmp_path):
+    script = tmp_path / "s.json"
+    script.write_text(json.dumps({"level": 3, "strokes": [
+        {"tool": "paint", "points": [[1, 1, 0], [3, 1, 0]], "radius": 0.5, "falloff": "constant",
+         "channels": {"diffuse": [1, 0, 0], "roughness": 0.25}},
+        {"tool": "label", "points": [[2, 3, 0]], "radius": 0.6, "channels": {"label": 4}}]}))
+    r = run("paint", str(plane), "--strokes", str(script), "-o", str(tmp_path / "out"), "--quiet")
+    assert r.returncode == 0, r.stderr
+    assert "stroke" in r.stdout
+    poly = read_polydata(tmp_path / "out" / "surface.vtp")
+    pd = poly.GetPointData()
+    for name, comps in (("diffuse", 3), ("specular", 3), ("roughness", 1), ("displacement", 1), ("label", 1),
+                        ("Normals", 3)):
+        assert pd.GetArray(name) is not None and pd.GetArray(name).GetNumberOfComponents() == comps, name
+    red = labelled = 0
+    for i in range(poly.GetNumberOfPoints()):
+        x, y, _ = poly.GetPoint(i)
+        d = pd.GetArray("diffuse").GetTuple3(i)
+        if d == (1.0, 0.0, 0.0):
+            red += 1
+            assert pd.GetArray("roughness").GetValue(i) == 0.25
+        if pd.GetArray("label").GetValue(i) == 4:
+            labelled += 1
+            assert (x - 2) ** 2 + (y - 3) ** 2 <= 0.6 ** 2 + 1e-6
+    assert red > 10 and labelled > 5
+
+
+@pytest.mark.parametrize("stroke,message", [
+    ({"tool": "paint", "points": [[1, 1, 0]], "radius": 0, "channels": {"diffuse": [1, 0, 0]}},
+     r"stroke 1: \"radius\" must be a number"),
+    ({"tool": "smudge", "points": [[1, 1, 0]], "radius": 1}, r"stroke 1: \"tool\" must be one of"),
+    ({"tool": "paint", "points": [[1, 1, 0]], "radius": 1, "channels": {"diffuse": [1, 0, 0]}, "size": 3},
+     r"stroke 1: \"size\" is not a stroke key"),
+    ({"tool": "paint", "points": [], "radius": 1, "channels": {"diffuse": [1, 0, 0]}},
+     r"stroke 1: \"points\" is empty"),
+    ({"tool": "paint", "points": [[1, 1, 0]], "radius": 1, "strength": float("nan"), "channels": {"diffuse": [1, 0, 0]}},
+     r"not valid JSON|\"strength\" must be a number"),
+])
+def test_bad_stroke_scripts_name_stroke_and_key(plane, tmp_path, stroke, message):
+    good = {"tool": "paint", "points": [[1, 1, 0]], "radius": 0.5, "channels": {"diffuse": [0, 1, 0]}}
+    script = tmp_path / "bad.json"
+    script.write_text(json.dumps({"strokes": [good, stroke]}))
+    out = tmp_path / "out"
+    r = run("paint", str(plane), "--strokes", str(script), "-o", str(out))
+    assert r.returncode == 2, r.stderr
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1 and re.search(message, lines[0]), r.stderr
+    assert not out.exists(), "nothing may be written when the script is bad"
