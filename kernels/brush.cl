@@ -141,3 +141,23 @@ __kernel void paint_dab(ATLAS_IN pos, int2 g, __global const int *active, int ac
   }
   material[k] = m;
 }
+
+/* Range: (tile * tile, #list). Copies the listed patches' tiles of a
+ * patch-major layer into a compact buffer starting at `offset` (texels), for
+ * undo. */
+__kernel void gather_tiles(__global const float4 *layer, __global const int *list, int count, int tile_texels,
+                           __global float4 *out, int offset)
+{
+  const int r = get_global_id(0), a = get_global_id(1);
+  if (a < count && r < tile_texels)
+    out[offset + a * tile_texels + r] = layer[list[a] * tile_texels + r];
+}
+
+/* The inverse of gather_tiles. */
+__kernel void scatter_tiles(__global float4 *layer, __global const int *list, int count, int tile_texels,
+                            __global const float4 *in, int offset)
+{
+  const int r = get_global_id(0), a = get_global_id(1);
+  if (a < count && r < tile_texels)
+    layer[list[a] * tile_texels + r] = in[offset + a * tile_texels + r];
+}

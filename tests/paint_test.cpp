@@ -290,3 +290,74 @@ TEST(StrokeScript, ErrorsNameTheStrokeAndKey)
 
 } // namespace
 } // namespace meshpaint
+
+namespace meshpaint {
+namespace {
+
+bool same_bits(const PaintChannels& a, const PaintChannels& b)
+{
+  const auto eq = [](const std::vector<Float4>& x, const std::vector<Float4>& y) {
+    return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(Float4)) == 0;
+  };
+  return eq(a.diffuse, b.diffuse) && eq(a.specular, b.specular) && eq(a.material, b.material);
+}
+
+TEST(Undo, UndoingEverythingGivesBackTheChannelsBitForBit)
+{
+  PaintSurface surface(test::runtime(), test::genus_two(), 4, AtlasStorage::Buffer);
+  const PaintChannels start = surface.read_channels();
+  std::vector<PaintChannels> after;
+  unsigned seed = 12345;
+  const auto next = [&seed] { return (seed = seed * 1103515245u + 12345u) / 65536 % 1000 / 1000.f; };
+  for (int k = 0; k < 8; ++k) {
+    Stroke s;
+    s.points = {{5 * next(), 3 * next(), next()}, {5 * next(), 3 * next(), next()}};
+    s.radius = 0.3f + next();
+    s.falloff = k % 4;
+    s.op = k % 5;
+    s.value[k % CHANNEL_COUNT] = {next(), next(), next(), 1.f};
+    s.alpha[k % CHANNEL_COUNT] = 0.5f + 0.5f * next();
+    if (k % CHANNEL_COUNT == CHANNEL_LABEL)
+      s.tool = Tool::Label, s.value[CHANNEL_LABEL] = {3.f, 3.f, 3.f, 1.f};
+    surface.apply(s);
+    after.push_back(surface.read_channels());
+  }
+  EXPECT_FALSE(same_bits(after.back(), start));
+  const std::size_t depth = surface.undo_log().undo_depth();
+  EXPECT_GE(depth, 6u);
+  for (std::size_t k = depth; k-- > 0;) {
+    ASSERT_TRUE(surface.undo());
+    if (depth == after.size()) // every stroke touched the surface: each undo gives back the state before it
+      EXPECT_TRUE(same_bits(surface.read_channels(), k == 0 ? start : after[k - 1])) << "after undoing stroke " << k;
+  }
+  EXPECT_FALSE(surface.undo());
+  EXPECT_TRUE(same_bits(surface.read_channels(), start));
+  while (surface.redo()) {
+  }
+  EXPECT_TRUE(same_bits(surface.read_channels(), after.back()));
+}
+
+TEST(Undo, BudgetForgetsTheOldestStrokesAndSaysSo)
+{
+  PaintSurface surface(test::runtime(), test::flat_grid(6), 4, AtlasStorage::Buffer);
+  Stroke s = dab_at({3.f, 3.f, 0.f}, 1.f);
+  s.value[CHANNEL_DIFFUSE] = {1.f, 0.f, 0.f, 1.f};
+  s.alpha[CHANNEL_DIFFUSE] = 1.f;
+  surface.apply(s);
+  const std::size_t one = surface.undo_log().bytes();
+  surface.undo_log().set_budget(2 * one + one / 2);
+  for (int k = 0; k < 4; ++k)
+    surface.apply(s);
+  EXPECT_EQ(surface.undo_log().undo_depth(), 2u);
+  const auto notes = surface.undo_log().take_messages();
+  ASSERT_FALSE(notes.empty());
+  EXPECT_NE(notes.front().find("forgot the"), std::string::npos) << notes.front();
+  // A new stroke after undo forgets what could be redone.
+  EXPECT_TRUE(surface.undo());
+  EXPECT_TRUE(surface.undo_log().can_redo());
+  surface.apply(s);
+  EXPECT_FALSE(surface.undo_log().can_redo());
+}
+
+} // namespace
+} // namespace meshpaint

@@ -27,7 +27,7 @@ struct PaintSurface::Cull
 struct PaintSurface::Device
 {
   cl::Program program;
-  cl::Kernel patch_bounds, brush_cull, paint_dab;
+  cl::Kernel patch_bounds, brush_cull, paint_dab, gather_tiles, scatter_tiles;
   cl::Buffer bounds, records, count, active, dab;
   std::size_t record_capacity = 0, active_capacity = 0;
   cl::Buffer diffuse, specular, material;
@@ -48,6 +48,8 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     d.patch_bounds = cl::Kernel(d.program, "patch_bounds");
     d.brush_cull = cl::Kernel(d.program, "brush_cull");
     d.paint_dab = cl::Kernel(d.program, "paint_dab");
+    d.gather_tiles = cl::Kernel(d.program, "gather_tiles");
+    d.scatter_tiles = cl::Kernel(d.program, "scatter_tiles");
     const std::size_t bytes = l.texels() * sizeof(Float4);
     d.diffuse = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
     d.specular = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
@@ -65,6 +67,88 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
   } catch (const cl::Error& e) {
     throw DeviceError("cannot set up painting on " + rt.info().name + ": " + describe(e));
   }
+  in_stroke_.assign(std::size_t(l.patches), 0);
+}
+
+Snapshot PaintSurface::take_snapshot(const std::vector<int>& patches)
+{
+  Snapshot s;
+  s.patches = patches;
+  if (patches.empty())
+    return s;
+  Device& d = *device_;
+  Runtime& rt = atlas_->runtime();
+  const LevelLayout l = atlas_->layout(level_);
+  const std::size_t tile_texels = std::size_t(l.tile) * l.tile, n = patches.size() * tile_texels;
+  cl::Buffer list(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(int) * patches.size(),
+                  const_cast<int*>(patches.data()));
+  cl::Buffer out(rt.context(), CL_MEM_WRITE_ONLY, sizeof(Float4) * n);
+  for (const cl::Buffer* layer : {&d.diffuse, &d.specular, &d.material}) {
+    launch(rt.queue(), d.gather_tiles, cl::NDRange(round_up(tile_texels, 8), patches.size()), cl::NullRange, *layer,
+           list, cl_int(patches.size()), cl_int(tile_texels), out, cl_int(0));
+    s.layers.emplace_back(n);
+    rt.queue().enqueueReadBuffer(out, CL_TRUE, 0, sizeof(Float4) * n, s.layers.back().data());
+  }
+  return s;
+}
+
+void PaintSurface::restore(const Snapshot& s)
+{
+  if (s.patches.empty())
+    return;
+  Device& d = *device_;
+  Runtime& rt = atlas_->runtime();
+  const LevelLayout l = atlas_->layout(level_);
+  const std::size_t tile_texels = std::size_t(l.tile) * l.tile, n = s.patches.size() * tile_texels;
+  cl::Buffer list(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(int) * s.patches.size(),
+                  const_cast<int*>(s.patches.data()));
+  const cl::Buffer* layers[] = {&d.diffuse, &d.specular, &d.material};
+  for (std::size_t k = 0; k < 3; ++k) {
+    cl::Buffer in(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(Float4) * n,
+                  const_cast<Float4*>(s.layers[k].data()));
+    launch(rt.queue(), d.scatter_tiles, cl::NDRange(round_up(tile_texels, 8), s.patches.size()), cl::NullRange,
+           *layers[k], list, cl_int(s.patches.size()), cl_int(tile_texels), in, cl_int(0));
+    rt.queue().finish();
+  }
+}
+
+void PaintSurface::remember(const std::vector<int>& patches)
+{
+  std::vector<int> fresh;
+  for (const int p : patches)
+    if (!in_stroke_[std::size_t(p)]) {
+      in_stroke_[std::size_t(p)] = 1;
+      fresh.push_back(p);
+    }
+  if (fresh.empty())
+    return;
+  Snapshot s = take_snapshot(fresh);
+  stroke_before_.patches.insert(stroke_before_.patches.end(), s.patches.begin(), s.patches.end());
+  stroke_before_.layers.resize(std::max(stroke_before_.layers.size(), s.layers.size()));
+  for (std::size_t k = 0; k < s.layers.size(); ++k)
+    stroke_before_.layers[k].insert(stroke_before_.layers[k].end(), s.layers[k].begin(), s.layers[k].end());
+}
+
+bool PaintSurface::undo()
+{
+  if (!undo_.can_undo())
+    return false;
+  const Snapshot& before = undo_.next_undo();
+  Snapshot now = take_snapshot(before.patches);
+  restore(before);
+  undo_.undone(std::move(now));
+  return true;
+}
+
+bool PaintSurface::redo()
+{
+  if (!undo_.can_redo())
+    return false;
+  const Snapshot& after = undo_.next_redo();
+  Snapshot now = take_snapshot(after.patches);
+  restore(after);
+  undo_.redone(std::move(now));
+  return true;
 }
 
 PaintSurface::~PaintSurface() = default;
@@ -151,6 +235,7 @@ void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
 {
   if (patches.empty())
     return;
+  remember(patches);
   Device& d = *device_;
   Runtime& rt = atlas_->runtime();
   const LevelLayout l = atlas_->layout(level_);
@@ -170,6 +255,28 @@ void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
 }
 
 StrokeReport PaintSurface::apply(const Stroke& stroke)
+{
+  // One undo step per stroke: the tiles its dabs touched, as they were; also
+  // when a dab fails halfway, so that what it changed can be undone.
+  const auto finish_stroke = [this] {
+    for (const int p : stroke_before_.patches)
+      in_stroke_[std::size_t(p)] = 0;
+    if (!stroke_before_.patches.empty())
+      undo_.record(std::move(stroke_before_));
+    stroke_before_ = Snapshot();
+  };
+  StrokeReport report;
+  try {
+    report = apply_dabs(stroke);
+  } catch (...) {
+    finish_stroke();
+    throw;
+  }
+  finish_stroke();
+  return report;
+}
+
+StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
 {
   Timer timer;
   StrokeReport report;

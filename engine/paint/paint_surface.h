@@ -5,6 +5,7 @@
 #include "atlas/atlas.h"
 #include "mesh/welded_surface.h"
 #include "paint/stroke.h"
+#include "paint/undo_log.h"
 
 #include <memory> // for std::unique_ptr
 #include <vector> // for std::vector
@@ -74,16 +75,31 @@ public:
   PaintChannels read_channels();
   PaintedSurface painted_surface();
 
+  //! Undo and redo whole strokes; false when there is nothing to undo
+  //! (redo). Undoing everything gives back the channels bit for bit.
+  bool undo();
+  bool redo();
+  UndoLog& undo_log() { return undo_; }
+
 private:
   struct Device;
   struct Cull;
   std::vector<Cull> cull(const Vec3& centre, float radius);
   void paint(const std::vector<int>& patches, const BrushDab& dab);
+  StrokeReport apply_dabs(const Stroke& stroke);
+  //! The painted layers' tiles of `patches`, from the device.
+  Snapshot take_snapshot(const std::vector<int>& patches);
+  void restore(const Snapshot& snapshot);
+  //! Adds the patches not yet in the stroke's snapshot, before they change.
+  void remember(const std::vector<int>& patches);
 
   std::unique_ptr<Atlas> atlas_;
   int level_;
   std::vector<Float4> positions_; // limit positions, patch-major (host copy for snapping)
   std::unique_ptr<Device> device_;
+  UndoLog undo_;
+  Snapshot stroke_before_;            // the running stroke's snapshot
+  std::vector<char> in_stroke_;       // per patch: already in stroke_before_
 };
 
 } // namespace meshpaint

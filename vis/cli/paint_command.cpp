@@ -52,6 +52,8 @@ int paint_command(const Argv& argv)
     const StrokeReport r = surface.apply(stroke);
     table.add({std::to_string(k), tool_name(stroke.tool), std::to_string(r.dabs), std::to_string(r.dabs_applied),
                grouped(r.patches_touched), format_fixed(r.ms, 2), r.left_surface ? "left the surface" : ""});
+    for (const std::string& note : surface.undo_log().take_messages())
+      std::cerr << "meshpaint paint: " << note << "\n";
     if (!quiet && progress.ms() > 1000.0) {
       std::cerr << "meshpaint paint: stroke " << k + 1 << " of " << script.strokes.size() << "\n";
       progress.restart();
