@@ -93,14 +93,27 @@ inline Frame across_frame(int patch, int side, int n)
 #define CORNER_LOAD(src, g, slot, a, b) FRAME_LOAD(src, g, side_frame((slot).patch, (slot).corner, (g).x - 1), a, b)
 #define CORNER_STORE(dst, g, slot, v) FRAME_STORE(dst, g, side_frame((slot).patch, (slot).corner, (g).x - 1), 0, 0, v)
 
-/* Patch and texel of a work item of an atlas-wide kernel, whose range is
- * (tile, tile * patches): returns 0 for texels on a patch side or corner and
- * for the rounding tail, which the table-driven kernels own. */
-inline int interior_texel(int2 g, int patches, int *p, int2 *ij)
+/* Patch and texel of a work item of a kernel over whole tiles, whose range
+ * is (tile, tile * count): the patch is list[a], or a itself when list is
+ * null (every patch). Returns 0 for the rounding tail. */
+inline int tile_texel(int2 g, __global const int *list, int count, int *p, int2 *ij)
 {
   const int i = get_global_id(0), y = get_global_id(1);
-  *p = y / g.x;
-  const int j = y - *p * g.x;
-  *ij = (int2)(i, j);
-  return i > 0 && j > 0 && i < g.x - 1 && j < g.x - 1 && *p < patches;
+  const int a = y / g.x;
+  *ij = (int2)(i, y - a * g.x);
+  if (a >= count)
+    return 0;
+  *p = list ? list[a] : a;
+  return 1;
 }
+
+/* The same for the texels strictly inside patches: returns 0 for texels on a
+ * patch side or corner, which the table-driven kernels own. */
+inline int interior_texel(int2 g, __global const int *list, int count, int *p, int2 *ij)
+{
+  return tile_texel(g, list, count, p, ij) && (*ij).x > 0 && (*ij).y > 0 && (*ij).x < g.x - 1 &&
+         (*ij).y < g.x - 1;
+}
+
+/* Item k of a table-driven kernel: list[k], or k itself when list is null. */
+#define LISTED(list, k) ((list) ? (list)[k] : (k))

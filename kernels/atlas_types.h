@@ -83,7 +83,14 @@ typedef struct {
   float distance;                 /* closest texel to the centre */
   float side_distance[4];
   mp_int pad;
+  float closest_position[4];      /* that texel on the limit surface */
+  float closest_normal[4];        /* and its limit normal */
 } CullRecord;
+
+/* Geometry tools: how a dab moves control points. */
+#define MOVE_SCULPT 0   /* along the normal at the brush centre */
+#define MOVE_INFLATE 1  /* along each point's own normal */
+#define MOVE_FLATTEN 2  /* towards the plane through the centre */
 
 #ifndef __OPENCL_VERSION__
 } /* namespace meshpaint */

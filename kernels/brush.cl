@@ -8,12 +8,14 @@
 
 #define CHANNEL_INDEX(tile, p, ij) (((p) * (tile) + (ij).y) * (tile) + (ij).x)
 
-/* Range: #patches. Bounding sphere (centre xyz, radius w) of each patch. */
-__kernel void patch_bounds(ATLAS_IN pos, int2 g, int patches, __global float4 *bounds)
+/* Range: count. Bounding sphere (centre xyz, radius w) of the listed
+ * patches (list null: every patch). */
+__kernel void patch_bounds(ATLAS_IN pos, int2 g, __global const int *list, int count, __global float4 *bounds)
 {
-  const int p = get_global_id(0);
-  if (p >= patches)
+  const int k = get_global_id(0);
+  if (k >= count)
     return;
+  const int p = LISTED(list, k);
   float3 lo = (float3)(INFINITY), hi = (float3)(-INFINITY);
   for (int j = 0; j < g.x; ++j)
     for (int i = 0; i < g.x; ++i) {
@@ -35,8 +37,9 @@ __kernel void patch_bounds(ATLAS_IN pos, int2 g, int patches, __global float4 *b
  * centre along the surface. Patches whose bounding sphere misses the ball
  * cost one test. `count` may pass `capacity`; the host then grows the
  * record buffer and runs again. */
-__kernel void brush_cull(ATLAS_IN pos, int2 g, int patches, __global const float4 *bounds, float4 centre,
-                         float radius, __global CullRecord *records, __global int *count, int capacity)
+__kernel void brush_cull(ATLAS_IN pos, ATLAS_IN nrm, int2 g, int patches, __global const float4 *bounds,
+                         float4 centre, float radius, __global CullRecord *records, __global int *count,
+                         int capacity)
 {
   const int p = get_global_id(0);
   if (p >= patches)
@@ -71,6 +74,9 @@ __kernel void brush_cull(ATLAS_IN pos, int2 g, int patches, __global const float
   for (int s = 0; s < 4; ++s)
     r.side_distance[s] = side[s];
   r.pad = 0;
+  const int2 ij = (int2)(best_texel % g.x, best_texel / g.x);
+  vstore4(ATLAS_LOAD(pos, g, p, ij), 0, r.closest_position);
+  vstore4(ATLAS_LOAD(nrm, g, p, ij), 0, r.closest_normal);
   records[k] = r;
 }
 
@@ -140,24 +146,4 @@ __kernel void paint_dab(ATLAS_IN pos, int2 g, __global const int *active, int ac
     m.w = clamp(paint_blend(dab, CHANNEL_MASK, (float4)(m.w), wm).x, 0.0f, 1.0f);
   }
   material[k] = m;
-}
-
-/* Range: (tile * tile, #list). Copies the listed patches' tiles of a
- * patch-major layer into a compact buffer starting at `offset` (texels), for
- * undo. */
-__kernel void gather_tiles(__global const float4 *layer, __global const int *list, int count, int tile_texels,
-                           __global float4 *out, int offset)
-{
-  const int r = get_global_id(0), a = get_global_id(1);
-  if (a < count && r < tile_texels)
-    out[offset + a * tile_texels + r] = layer[list[a] * tile_texels + r];
-}
-
-/* The inverse of gather_tiles. */
-__kernel void scatter_tiles(__global float4 *layer, __global const int *list, int count, int tile_texels,
-                            __global const float4 *in, int offset)
-{
-  const int r = get_global_id(0), a = get_global_id(1);
-  if (a < count && r < tile_texels)
-    layer[list[a] * tile_texels + r] = in[offset + a * tile_texels + r];
 }

@@ -19,12 +19,14 @@ inline void limit_regular(const float4 *q, float4 *pos, float4 *nrm)
   *nrm = (float4)(normalize(cross(du.xyz, dv.xyz)), 0.0f);
 }
 
-/* Range: (tile, tile * patches); texels strictly inside patches. */
-__kernel void limit_interior(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, int patches)
+/* Lists (patches, edges, rings) select what to update; null: everything.
+ * Range: (tile, tile * count); texels strictly inside the patches. */
+__kernel void limit_interior(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, __global const int *list,
+                             int count)
 {
   int p;
   int2 ij;
-  if (!interior_texel(g, patches, &p, &ij))
+  if (!interior_texel(g, list, count, &p, &ij))
     return;
   float4 q[9];
   for (int b = -1; b <= 1; ++b)
@@ -36,14 +38,14 @@ __kernel void limit_interior(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g,
   ATLAS_STORE(nrm, g, p, ij, nv);
 }
 
-/* Range: (n - 1, #edges); texels on patch sides, corners excluded. */
+/* Range: (n - 1, count); texels on patch sides, corners excluded. */
 __kernel void limit_edges(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, __global const PatchEdge *edges,
-                          int edge_count, int2 g)
+                          __global const int *list, int count, int2 g)
 {
   const int t = get_global_id(0) + 1, k = get_global_id(1);
-  if (k >= edge_count || t >= g.x - 1)
+  if (k >= count || t >= g.x - 1)
     return;
-  const PatchEdge e = edges[k];
+  const PatchEdge e = edges[LISTED(list, k)];
   EDGE_FRAMES(e, g);
   float4 q[9];
   const int lo = e.patch[1] >= 0 ? -1 : 0;
@@ -64,14 +66,14 @@ __kernel void limit_edges(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, __global c
   EDGE_STORE(nrm, g, e, t, nv);
 }
 
-/* Range: #rings; every copy of each patch corner. */
+/* Range: count; every copy of each patch corner. */
 __kernel void limit_corners(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, __global const CornerRing *rings,
-                            __global const CornerSlot *slots, int ring_count, int2 g)
+                            __global const CornerSlot *slots, __global const int *list, int count, int2 g)
 {
   const int k = get_global_id(0);
-  if (k >= ring_count)
+  if (k >= count)
     return;
-  const CornerRing ring = rings[k];
+  const CornerRing ring = rings[LISTED(list, k)];
   const int m = ring.count;
   const CornerSlot first = slots[ring.first], last = slots[ring.first + m - 1];
   const float4 v = CORNER_LOAD(src, g, first, 0, 0);

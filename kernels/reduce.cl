@@ -13,7 +13,7 @@ __kernel void reduce_interior(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, int
 {
   int p;
   int2 ij;
-  if (!interior_texel(dg, patches, &p, &ij))
+  if (!interior_texel(dg, 0, patches, &p, &ij))
     return;
   float4 acc = (float4)(0.0f);
   for (int b = -2; b <= 2; ++b) {

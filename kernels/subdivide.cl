@@ -17,7 +17,7 @@ __kernel void subdivide_interior(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, 
 {
   int p;
   int2 ij;
-  if (!interior_texel(dg, patches, &p, &ij))
+  if (!interior_texel(dg, 0, patches, &p, &ij))
     return;
   const int n_src = sg.x - 1;
   const int ci = (ij.x + 1) >> 1, cj = (ij.y + 1) >> 1;

@@ -7,7 +7,7 @@
 #include "mesh/far_refiner.h"
 #include "mesh/spatial_order.h"
 
-#include <algorithm> // for std::max
+#include <algorithm> // for std::max, std::sort, std::unique, std::binary_search
 #include <cstdlib>   // for std::getenv
 
 namespace meshpaint {
@@ -18,15 +18,6 @@ namespace {
 constexpr std::size_t kGroupTexels = 256, kGroup1D = 64;
 const cl::NDRange kLocalEdges(1, kGroup1D), kLocal1D(kGroup1D);
 
-//! (tile, tile * patches) work items, a texel each.
-std::pair<cl::NDRange, cl::NDRange> range_tiles(const LevelLayout& l)
-{
-  const std::size_t tile = std::size_t(l.tile);
-  if (tile > kGroupTexels)
-    return {cl::NDRange(tile, tile * l.patches), cl::NullRange};
-  const std::size_t rows = std::max<std::size_t>(1, kGroupTexels / tile);
-  return {cl::NDRange(tile, round_up(tile * l.patches, rows)), cl::NDRange(tile, rows)};
-}
 cl::NDRange range_edges(int positions, int edges)
 {
   return cl::NDRange(positions, round_up(edges, kGroup1D));
@@ -44,8 +35,16 @@ void for_each_tile_row(const LevelLayout& l, F&& f)
       f(l.index(p, 0, j), std::size_t((p / l.tiles_x) * l.tile + j) * l.width + (p % l.tiles_x) * l.tile);
 }
 
-
 } // namespace
+
+std::pair<cl::NDRange, cl::NDRange> range_tiles(const LevelLayout& l, int count)
+{
+  const std::size_t tile = std::size_t(l.tile);
+  if (tile > kGroupTexels)
+    return {cl::NDRange(tile, tile * std::size_t(count)), cl::NullRange};
+  const std::size_t rows = std::max<std::size_t>(1, kGroupTexels / tile);
+  return {cl::NDRange(tile, round_up(tile * std::size_t(count), rows)), cl::NDRange(tile, rows)};
+}
 
 AtlasStorage parse_storage(const std::string& name)
 {
@@ -208,10 +207,18 @@ Atlas::Atlas(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int max_lev
     // it sweeps the atlas instead of jumping (measured: ~8% faster on the
     // bunny at level 3). Edges stay in OpenSubdiv's order, which measured
     // better than sorting them by patch.
-    std::vector<CornerRing> rings = topology_.rings;
-    std::stable_sort(rings.begin(), rings.end(), [&](const CornerRing& a, const CornerRing& b) {
-      return topology_.slots[a.first].patch < topology_.slots[b.first].patch;
+    std::vector<int> order(topology_.rings.size());
+    for (std::size_t v = 0; v < order.size(); ++v)
+      order[v] = int(v);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+      return topology_.slots[topology_.rings[a].first].patch < topology_.slots[topology_.rings[b].first].patch;
     });
+    std::vector<CornerRing> rings;
+    device_ring_.assign(order.size(), -1);
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      rings.push_back(topology_.rings[order[k]]);
+      device_ring_[order[k]] = int(k);
+    }
     k.edges = upload(topology_.edges);
     k.rings = upload(rings);
     k.slots = upload(topology_.slots);
@@ -255,7 +262,7 @@ void Atlas::subdivide(int from_level, int to_level)
   for (int l = from_level; l < to_level; ++l) {
     const LevelLayout s = layout(l), d = layout(l + 1);
     const cl::Memory &in = levels_[l - 1].mem(), &out = levels_[l].mem();
-    const auto tiles = range_tiles(d);
+    const auto tiles = range_tiles(d, d.patches);
     launch(q, k.subdivide_interior, tiles.first, tiles.second, in, out, grid(s), grid(d), patches);
     launch(q, k.subdivide_edges, range1d(edges), kLocal1D, in, out, k.edges, edges, grid(s), grid(d));
     launch(q, k.subdivide_corners, range1d(rings), kLocal1D, in, out, k.rings, k.slots, rings, grid(s),
@@ -275,7 +282,7 @@ void Atlas::reduce(int from_level, int to_level)
   for (int l = from_level; l > to_level; --l) {
     const LevelLayout s = layout(l), d = layout(l - 1);
     const cl::Memory &in = levels_[l - 1].mem(), &out = levels_[l - 2].mem();
-    const auto tiles = range_tiles(d);
+    const auto tiles = range_tiles(d, d.patches);
     launch(q, k.reduce_interior, tiles.first, tiles.second, in, out, grid(s), grid(d), patches);
     if (d.n > 1)
       launch(q, k.reduce_edges, range_edges(d.n - 1, edges), kLocalEdges, in, out, k.edges, edges, grid(s),
@@ -297,13 +304,103 @@ void Atlas::compute_limit()
   const int edges = int(topology_.edges.size()), rings = int(topology_.rings.size());
   const cl::Memory &in = levels_[max_level_ - 1].mem(), &pos = limit_positions_->mem(),
                    &nrm = limit_normals_->mem();
-  const auto tiles = range_tiles(l);
-  launch(q, k.limit_interior, tiles.first, tiles.second, in, pos, nrm, grid(l), topology_.patch_count);
+  const cl::Buffer all; // null: every patch, edge and ring
+  const auto tiles = range_tiles(l, l.patches);
+  launch(q, k.limit_interior, tiles.first, tiles.second, in, pos, nrm, grid(l), all, l.patches);
   if (l.n > 1)
-    launch(q, k.limit_edges, range_edges(l.n - 1, edges), kLocalEdges, in, pos, nrm, k.edges, edges, grid(l));
-  launch(q, k.limit_corners, range1d(rings), kLocal1D, in, pos, nrm, k.rings, k.slots, rings, grid(l));
+    launch(q, k.limit_edges, range_edges(l.n - 1, edges), kLocalEdges, in, pos, nrm, k.edges, all, edges, grid(l));
+  launch(q, k.limit_corners, range1d(rings), kLocal1D, in, pos, nrm, k.rings, k.slots, all, rings, grid(l));
   limit_current_ = true;
 }
+
+PatchSet Atlas::patch_set(const std::vector<int>& patches, Reach reach) const
+{
+  PatchSet set;
+  set.patches = patches;
+  std::sort(set.patches.begin(), set.patches.end());
+  const auto listed = [&](int p) { return p >= 0 && std::binary_search(set.patches.begin(), set.patches.end(), p); };
+  std::vector<int> edges, vertices;
+  for (const int p : set.patches)
+    for (int s = 0; s < 4; ++s) {
+      edges.push_back(topology_.patch_sides[p][s]);
+      vertices.push_back(topology_.patch_corners[p][s]);
+    }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  for (const int e : edges) {
+    const PatchEdge& pe = topology_.edges[e];
+    if (reach == Reach::Any || (listed(pe.patch[0]) && (pe.patch[1] < 0 || listed(pe.patch[1]))))
+      set.edges.push_back(e);
+  }
+  for (const int v : vertices) {
+    const CornerRing& ring = topology_.rings[v];
+    bool all = true;
+    for (int m = 0; m < ring.count; ++m)
+      all = all && listed(topology_.slots[ring.first + m].patch);
+    if (reach == Reach::Any || all)
+      set.rings.push_back(device_ring_[v]);
+  }
+  return set;
+}
+
+namespace {
+
+//! A device copy of a list, or a null buffer for an empty one.
+cl::Buffer upload_list(Runtime& rt, const std::vector<int>& list)
+{
+  if (list.empty())
+    return cl::Buffer();
+  return cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(int) * list.size(),
+                    const_cast<int*>(list.data()));
+}
+
+} // namespace
+
+void Atlas::update_limit(const PatchSet& set)
+{
+  if (!limit_positions_ || !limit_current_) {
+    compute_limit();
+    return;
+  }
+  const LevelLayout l = layout(max_level_);
+  Kernels& k = *kernels_;
+  cl::CommandQueue& q = runtime_->queue();
+  const cl::Memory &in = levels_[max_level_ - 1].mem(), &pos = limit_positions_->mem(),
+                   &nrm = limit_normals_->mem();
+  const cl::Buffer patches = upload_list(*runtime_, set.patches), edges = upload_list(*runtime_, set.edges),
+                   rings = upload_list(*runtime_, set.rings);
+  if (!set.patches.empty()) {
+    const auto tiles = range_tiles(l, int(set.patches.size()));
+    launch(q, k.limit_interior, tiles.first, tiles.second, in, pos, nrm, grid(l), patches, int(set.patches.size()));
+  }
+  if (l.n > 1 && !set.edges.empty())
+    launch(q, k.limit_edges, range_edges(l.n - 1, int(set.edges.size())), kLocalEdges, in, pos, nrm, k.edges, edges,
+           int(set.edges.size()), grid(l));
+  if (!set.rings.empty())
+    launch(q, k.limit_corners, range1d(int(set.rings.size())), kLocal1D, in, pos, nrm, k.rings, k.slots, rings,
+           int(set.rings.size()), grid(l));
+  q.finish(); // the lists live on this stack frame's buffers only until here
+}
+
+const cl::Memory& Atlas::level_layer(int level)
+{
+  if (level < 1 || level > max_level_)
+    throw InputError("no level " + std::to_string(level) + " in this atlas");
+  return levels_[level - 1].mem();
+}
+
+const cl::Memory& Atlas::limit_normals_layer()
+{
+  if (!limit_current_)
+    compute_limit();
+  return limit_normals_->mem();
+}
+
+const cl::Buffer& Atlas::edge_table() const { return kernels_->edges; }
+const cl::Buffer& Atlas::ring_table() const { return kernels_->rings; }
+const cl::Buffer& Atlas::slot_table() const { return kernels_->slots; }
 
 void Atlas::finish() { runtime_->queue().finish(); }
 

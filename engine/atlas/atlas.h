@@ -10,6 +10,7 @@
 
 #include <array>   // for std::array
 #include <memory>  // for std::shared_ptr, std::unique_ptr
+#include <utility> // for std::pair
 #include <string>  // for std::string
 #include <vector>  // for std::vector
 
@@ -40,6 +41,10 @@ MemoryPlan plan_memory(const AtlasTopology& topology, int level, AtlasStorage st
 //! The (tile, tiles_x) pair kernels take to address a level.
 inline cl_int2 grid(const LevelLayout& l) { return cl_int2{{l.tile, l.tiles_x}}; }
 
+//! Global and local range for `count` whole tiles of a level, a work item per
+//! texel: (tile, tile * count).
+std::pair<cl::NDRange, cl::NDRange> range_tiles(const LevelLayout& layout, int count);
+
 //! Bytes of one float4 layer of a level in the given storage.
 std::size_t layer_bytes(const LevelLayout& layout, AtlasStorage storage);
 
@@ -53,6 +58,23 @@ int largest_fitting_level(const AtlasTopology& topology, const DeviceInfo& devic
 //! The patch tables of a mesh without a device: one Catmull-Clark step
 //! through OpenSubdiv.
 AtlasTopology atlas_topology_of(const BaseMesh& mesh);
+
+//! Some patches, with the patch edges and corner rings that go with them,
+//! as lists for the kernels that take a subset.
+struct PatchSet
+{
+  std::vector<int> patches; //!< sorted
+  std::vector<int> edges;   //!< indices into AtlasTopology::edges
+  std::vector<int> rings;   //!< indices into the device's ring table
+};
+
+//! Whether an edge or ring goes with a set of patches when any of its
+//! patches is in the set, or only when all are.
+enum class Reach
+{
+  Any,
+  All
+};
 
 class Atlas
 {
@@ -87,6 +109,19 @@ public:
   //! Waits for every queued kernel.
   void finish();
 
+  //! The edges and rings that go with `patches` (sorted) by `reach`.
+  PatchSet patch_set(const std::vector<int>& patches, Reach reach) const;
+  //! Recomputes the limit layers on a set only (after editing positions
+  //! there): the set's interiors, edges and rings.
+  void update_limit(const PatchSet& set);
+  //! Device layers for kernels of other families (brush.cl, geometry.cl),
+  //! which address them with the same storage macros.
+  const cl::Memory& level_layer(int level);
+  const cl::Memory& limit_normals_layer();
+  const cl::Buffer& edge_table() const;
+  const cl::Buffer& ring_table() const;
+  const cl::Buffer& slot_table() const;
+
   //! Positions of every texel of `level`, patch-major (LevelLayout::index).
   std::vector<Float4> read_positions(int level);
   void write_positions(int level, const std::vector<Float4>& texels);
@@ -114,6 +149,7 @@ private:
   std::unique_ptr<Layer> limit_positions_, limit_normals_;
   bool limit_current_ = false; // limit layers match the finest level
   std::unique_ptr<Kernels> kernels_;
+  std::vector<int> device_ring_; // level-1 vertex -> index in the device's ring table
 };
 
 } // namespace meshpaint

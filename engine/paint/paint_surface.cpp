@@ -23,14 +23,38 @@ struct PaintSurface::Cull
   CullRecord record;
 };
 
-//! Device state of the brush pipeline.
-struct PaintSurface::Device
+//! Kernels that filter or copy a layer, built for one storage path.
+struct LayerKernels
 {
   cl::Program program;
-  cl::Kernel patch_bounds, brush_cull, paint_dab, gather_tiles, scatter_tiles;
-  cl::Buffer bounds, records, count, active, dab;
+  cl::Kernel copy_tiles, smooth_interior, smooth_edges, smooth_corners, gather_tiles, scatter_tiles;
+
+  void build(Runtime& rt, AtlasStorage storage)
+  {
+    program = build_program(rt,
+                            std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "brush.cl", "geometry.cl"},
+                            std::string("-cl-std=CL1.2") + (storage == AtlasStorage::Image ? " -D ATLAS_IMAGE" : ""));
+    copy_tiles = cl::Kernel(program, "copy_tiles");
+    smooth_interior = cl::Kernel(program, "smooth_interior");
+    smooth_edges = cl::Kernel(program, "smooth_edges");
+    smooth_corners = cl::Kernel(program, "smooth_corners");
+    gather_tiles = cl::Kernel(program, "gather_tiles");
+    scatter_tiles = cl::Kernel(program, "scatter_tiles");
+  }
+};
+
+//! Device state of the brush pipeline. Positions live in the atlas's
+//! storage; paint channels, weights and lists are always buffers, so their
+//! kernels come from a buffer build (the same one when the atlas uses
+//! buffers).
+struct PaintSurface::Device
+{
+  LayerKernels positions, channels;
+  cl::Kernel patch_bounds, brush_cull, paint_dab, dab_weights, move_points;
+  cl::Buffer bounds, records, count, active, dab, weights;
   std::size_t record_capacity = 0, active_capacity = 0;
-  cl::Buffer diffuse, specular, material;
+  cl::Buffer diffuse, specular, material, channel_work;
+  cl::Memory position_work; // a scratch copy of the finest level, same storage
 };
 
 PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int level,
@@ -38,19 +62,29 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
   : atlas_(std::make_unique<Atlas>(runtime, mesh, level, storage)), level_(level), device_(std::make_unique<Device>())
 {
   atlas_->subdivide(1, level);
-  positions_ = atlas_->read_limit_positions();
+  atlas_->compute_limit();
   const LevelLayout l = atlas_->layout(level);
   Runtime& rt = atlas_->runtime();
   Device& d = *device_;
   try {
-    d.program = build_program(rt, std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "brush.cl"},
-                              std::string("-cl-std=CL1.2") + (storage == AtlasStorage::Image ? " -D ATLAS_IMAGE" : ""));
-    d.patch_bounds = cl::Kernel(d.program, "patch_bounds");
-    d.brush_cull = cl::Kernel(d.program, "brush_cull");
-    d.paint_dab = cl::Kernel(d.program, "paint_dab");
-    d.gather_tiles = cl::Kernel(d.program, "gather_tiles");
-    d.scatter_tiles = cl::Kernel(d.program, "scatter_tiles");
+    d.positions.build(rt, storage);
+    if (storage == AtlasStorage::Buffer)
+      d.channels = d.positions;
+    else
+      d.channels.build(rt, AtlasStorage::Buffer);
+    d.patch_bounds = cl::Kernel(d.positions.program, "patch_bounds");
+    d.brush_cull = cl::Kernel(d.positions.program, "brush_cull");
+    d.paint_dab = cl::Kernel(d.positions.program, "paint_dab");
+    d.dab_weights = cl::Kernel(d.positions.program, "dab_weights");
+    d.move_points = cl::Kernel(d.positions.program, "move_points");
     const std::size_t bytes = l.texels() * sizeof(Float4);
+    d.channel_work = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
+    d.weights = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, l.texels() * sizeof(float));
+    if (storage == AtlasStorage::Image)
+      d.position_work = cl::Image2D(rt.context(), CL_MEM_READ_WRITE, cl::ImageFormat(CL_RGBA, CL_FLOAT), l.width,
+                                    l.height);
+    else
+      d.position_work = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
     d.diffuse = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
     d.specular = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
     d.material = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
@@ -62,13 +96,24 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     d.count = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_int));
     d.dab = cl::Buffer(rt.context(), CL_MEM_READ_ONLY, sizeof(BrushDab));
     launch(rt.queue(), d.patch_bounds, cl::NDRange(round_up(l.patches, kGroup)), cl::NDRange(kGroup),
-           atlas_->limit_positions_layer(), grid(l), l.patches, d.bounds);
+           atlas_->limit_positions_layer(), grid(l), cl::Buffer(), l.patches, d.bounds);
     rt.queue().finish();
   } catch (const cl::Error& e) {
     throw DeviceError("cannot set up painting on " + rt.info().name + ": " + describe(e));
   }
   in_stroke_.assign(std::size_t(l.patches), 0);
 }
+
+namespace {
+
+//! A device copy of a list of ints.
+cl::Buffer device_list(Runtime& rt, const std::vector<int>& list)
+{
+  return cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(int) * std::max<std::size_t>(1, list.size()),
+                    const_cast<int*>(list.empty() ? nullptr : list.data()));
+}
+
+} // namespace
 
 Snapshot PaintSurface::take_snapshot(const std::vector<int>& patches)
 {
@@ -79,13 +124,16 @@ Snapshot PaintSurface::take_snapshot(const std::vector<int>& patches)
   Device& d = *device_;
   Runtime& rt = atlas_->runtime();
   const LevelLayout l = atlas_->layout(level_);
-  const std::size_t tile_texels = std::size_t(l.tile) * l.tile, n = patches.size() * tile_texels;
-  cl::Buffer list(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(int) * patches.size(),
-                  const_cast<int*>(patches.data()));
+  const std::size_t n = patches.size() * std::size_t(l.tile) * l.tile;
+  const cl::Buffer list = device_list(rt, patches);
   cl::Buffer out(rt.context(), CL_MEM_WRITE_ONLY, sizeof(Float4) * n);
-  for (const cl::Buffer* layer : {&d.diffuse, &d.specular, &d.material}) {
-    launch(rt.queue(), d.gather_tiles, cl::NDRange(round_up(tile_texels, 8), patches.size()), cl::NullRange, *layer,
-           list, cl_int(patches.size()), cl_int(tile_texels), out, cl_int(0));
+  const auto tiles = range_tiles(l, int(patches.size()));
+  // Layers: control points of the finest level, then the paint channels.
+  const std::pair<LayerKernels*, const cl::Memory*> layers[] = {
+    {&d.positions, &atlas_->level_layer(level_)}, {&d.channels, &d.diffuse}, {&d.channels, &d.specular},
+    {&d.channels, &d.material}};
+  for (const auto& [kernels, layer] : layers) {
+    launch(rt.queue(), kernels->gather_tiles, tiles.first, tiles.second, *layer, grid(l), list, int(patches.size()), out);
     s.layers.emplace_back(n);
     rt.queue().enqueueReadBuffer(out, CL_TRUE, 0, sizeof(Float4) * n, s.layers.back().data());
   }
@@ -99,17 +147,32 @@ void PaintSurface::restore(const Snapshot& s)
   Device& d = *device_;
   Runtime& rt = atlas_->runtime();
   const LevelLayout l = atlas_->layout(level_);
-  const std::size_t tile_texels = std::size_t(l.tile) * l.tile, n = s.patches.size() * tile_texels;
-  cl::Buffer list(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(int) * s.patches.size(),
-                  const_cast<int*>(s.patches.data()));
-  const cl::Buffer* layers[] = {&d.diffuse, &d.specular, &d.material};
-  for (std::size_t k = 0; k < 3; ++k) {
+  const std::size_t n = s.patches.size() * std::size_t(l.tile) * l.tile;
+  const cl::Buffer list = device_list(rt, s.patches);
+  const auto tiles = range_tiles(l, int(s.patches.size()));
+  const std::pair<LayerKernels*, const cl::Memory*> layers[] = {
+    {&d.positions, &atlas_->level_layer(level_)}, {&d.channels, &d.diffuse}, {&d.channels, &d.specular},
+    {&d.channels, &d.material}};
+  for (std::size_t k = 0; k < 4; ++k) {
     cl::Buffer in(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(Float4) * n,
                   const_cast<Float4*>(s.layers[k].data()));
-    launch(rt.queue(), d.scatter_tiles, cl::NDRange(round_up(tile_texels, 8), s.patches.size()), cl::NullRange,
-           *layers[k], list, cl_int(s.patches.size()), cl_int(tile_texels), in, cl_int(0));
+    launch(rt.queue(), layers[k].first->scatter_tiles, tiles.first, tiles.second, *layers[k].second, grid(l), list,
+           int(s.patches.size()), in);
     rt.queue().finish();
   }
+  refresh_geometry(s.patches);
+}
+
+void PaintSurface::refresh_geometry(const std::vector<int>& patches)
+{
+  Device& d = *device_;
+  Runtime& rt = atlas_->runtime();
+  const LevelLayout l = atlas_->layout(level_);
+  atlas_->update_limit(atlas_->patch_set(patches, Reach::Any));
+  const cl::Buffer list = device_list(rt, patches);
+  launch(rt.queue(), d.patch_bounds, cl::NDRange(round_up(patches.size(), kGroup)), cl::NDRange(kGroup),
+         atlas_->limit_positions_layer(), grid(l), list, int(patches.size()), d.bounds);
+  rt.queue().finish();
 }
 
 void PaintSurface::remember(const std::vector<int>& patches)
@@ -168,8 +231,8 @@ std::vector<PaintSurface::Cull> PaintSurface::cull(const Vec3& centre, float rad
     count = 0;
     rt.queue().enqueueWriteBuffer(d.count, CL_FALSE, 0, sizeof count, &count);
     launch(rt.queue(), d.brush_cull, cl::NDRange(round_up(l.patches, kGroup)), cl::NDRange(kGroup),
-           atlas_->limit_positions_layer(), grid(l), l.patches, d.bounds, c, radius, d.records, d.count,
-           cl_int(d.record_capacity));
+           atlas_->limit_positions_layer(), atlas_->limit_normals_layer(), grid(l), l.patches, d.bounds, c, radius,
+           d.records, d.count, cl_int(d.record_capacity));
     rt.queue().enqueueReadBuffer(d.count, CL_TRUE, 0, sizeof count, &count);
     if (std::size_t(count) <= d.record_capacity)
       break;
@@ -184,7 +247,7 @@ std::vector<PaintSurface::Cull> PaintSurface::cull(const Vec3& centre, float rad
   return out;
 }
 
-std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Vec3* centre_out)
+std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Vec3* centre_out, Vec3* normal_out)
 {
   // Snap: the closest texel within the radius is the brush centre.
   const std::vector<Cull> near = cull(point, radius);
@@ -194,11 +257,12 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
   for (const Cull& c : near)
     if (c.record.distance < best->record.distance)
       best = &c;
-  const LevelLayout l = atlas_->layout(level_);
-  const Float4& snapped = positions_[std::size_t(best->record.patch) * l.tile * l.tile + best->record.closest_texel];
+  const float* snapped = best->record.closest_position;
   const Vec3 centre{snapped[0], snapped[1], snapped[2]};
   if (centre_out)
     *centre_out = centre;
+  if (normal_out)
+    *normal_out = {best->record.closest_normal[0], best->record.closest_normal[1], best->record.closest_normal[2]};
 
   // The brush reaches the patches connected to the centre's patch through
   // sides that themselves come within the radius: never through the air.
@@ -276,6 +340,79 @@ StrokeReport PaintSurface::apply(const Stroke& stroke)
   return report;
 }
 
+void PaintSurface::weigh(const cl::Buffer& list, int count, const BrushDab& dab)
+{
+  Device& d = *device_;
+  Runtime& rt = atlas_->runtime();
+  const LevelLayout l = atlas_->layout(level_);
+  rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
+  const auto tiles = range_tiles(l, count);
+  launch(rt.queue(), d.dab_weights, tiles.first, tiles.second, atlas_->limit_positions_layer(), grid(l), list, count,
+         d.dab, d.material, d.weights);
+}
+
+void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke,
+                           const Vec3& normal)
+{
+  remember(patches);
+  Device& d = *device_;
+  Runtime& rt = atlas_->runtime();
+  cl::CommandQueue& q = rt.queue();
+  const LevelLayout l = atlas_->layout(level_);
+  const int count = int(patches.size());
+  const cl::Buffer list = device_list(rt, patches);
+  const auto tiles = range_tiles(l, count);
+  weigh(list, count, dab);
+
+  if (stroke.tool == Tool::Sculpt || stroke.tool == Tool::Inflate || stroke.tool == Tool::Flatten) {
+    const int mode = stroke.tool == Tool::Inflate ? MOVE_INFLATE : stroke.tool == Tool::Flatten ? MOVE_FLATTEN
+                                                                                                 : MOVE_SCULPT;
+    const cl::Memory& pos = atlas_->level_layer(level_);
+    launch(q, d.move_points, tiles.first, tiles.second, pos, d.position_work, atlas_->limit_normals_layer(), grid(l),
+           list, count, d.weights, mode, stroke.amount, cl_float4{{dab.centre[0], dab.centre[1], dab.centre[2], 0.f}},
+           cl_float4{{normal[0], normal[1], normal[2], 0.f}});
+    launch(q, d.positions.copy_tiles, tiles.first, tiles.second, d.position_work, pos, grid(l), list, count);
+    refresh_geometry(patches);
+    return;
+  }
+
+  // Smoothing: of the control points, or of the colour channels. Edges and
+  // corners are smoothed only where every patch sharing them is in the
+  // brush; elsewhere their weight is zero anyway.
+  const PatchSet set = atlas_->patch_set(patches, Reach::All);
+  const cl::Buffer edges = device_list(rt, set.edges), rings = device_list(rt, set.rings);
+  const int edge_count = int(set.edges.size()), ring_count = int(set.rings.size());
+  std::vector<std::pair<LayerKernels*, const cl::Memory*>> layers;
+  if (stroke.target_colour)
+    layers = {{&d.channels, &d.diffuse}, {&d.channels, &d.specular}};
+  else
+    layers = {{&d.positions, &atlas_->level_layer(level_)}};
+  std::vector<float> steps;
+  for (int i = 0; i < stroke.iterations; ++i) {
+    steps.push_back(stroke.lambda);
+    if (stroke.taubin && !stroke.target_colour)
+      steps.push_back(stroke.mu);
+  }
+  for (const auto& [k, layer] : layers) {
+    const cl::Memory& work = k == &d.positions ? d.position_work : static_cast<const cl::Memory&>(d.channel_work);
+    for (const float step : steps) {
+      launch(q, k->copy_tiles, tiles.first, tiles.second, *layer, work, grid(l), list, count);
+      launch(q, k->smooth_interior, tiles.first, tiles.second, *layer, work, grid(l), list, count, d.weights, step);
+      if (edge_count > 0 && l.n > 1)
+        launch(q, k->smooth_edges, cl::NDRange(l.n - 1, round_up(edge_count, kGroup)), cl::NDRange(1, kGroup),
+               *layer, work, grid(l), atlas_->edge_table(), edges, edge_count, d.weights, step);
+      if (ring_count > 0)
+        launch(q, k->smooth_corners, cl::NDRange(round_up(ring_count, kGroup)), cl::NDRange(kGroup), *layer, work,
+               grid(l), atlas_->ring_table(), atlas_->slot_table(), rings, ring_count, d.weights, step);
+      launch(q, k->copy_tiles, tiles.first, tiles.second, work, *layer, grid(l), list, count);
+    }
+  }
+  if (stroke.target_colour)
+    q.finish();
+  else
+    refresh_geometry(patches);
+}
+
 StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
 {
   Timer timer;
@@ -327,15 +464,18 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
         ++report.dabs;
         if (!(dab.radius > 0.f))
           continue;
-        Vec3 centre;
-        const std::vector<int> patches = brush_patches(point, dab.radius, &centre);
+        Vec3 centre, normal;
+        const std::vector<int> patches = brush_patches(point, dab.radius, &centre, &normal);
         if (patches.empty())
           continue;
         on_surface = true;
         dab.centre[0] = centre[0];
         dab.centre[1] = centre[1];
         dab.centre[2] = centre[2];
-        paint(patches, dab);
+        if (stroke.tool == Tool::Paint || stroke.tool == Tool::Label)
+          paint(patches, dab);
+        else
+          reshape(patches, dab, stroke, normal);
         ++report.dabs_applied;
         report.patches_touched += patches.size();
       }
@@ -349,6 +489,16 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
   }
   report.ms = timer.ms();
   return report;
+}
+
+void PaintSurface::geometry_changed()
+{
+  const LevelLayout l = atlas_->layout(level_);
+  Runtime& rt = atlas_->runtime();
+  atlas_->compute_limit();
+  launch(rt.queue(), device_->patch_bounds, cl::NDRange(round_up(l.patches, kGroup)), cl::NDRange(kGroup),
+         atlas_->limit_positions_layer(), grid(l), cl::Buffer(), l.patches, device_->bounds);
+  rt.queue().finish();
 }
 
 PaintChannels PaintSurface::read_channels()

@@ -70,7 +70,12 @@ public:
   //! closest surface point along the surface within `radius`, sorted. Empty
   //! when no surface is within the radius. `centre` receives the snapped
   //! centre.
-  std::vector<int> brush_patches(const Vec3& point, float radius, Vec3* centre = nullptr);
+  std::vector<int> brush_patches(const Vec3& point, float radius, Vec3* centre = nullptr,
+                                 Vec3* centre_normal = nullptr);
+
+  //! After positions were written from outside (Atlas::write_positions):
+  //! recomputes the limit surface and patch bounds everywhere.
+  void geometry_changed();
 
   PaintChannels read_channels();
   PaintedSurface painted_surface();
@@ -86,6 +91,12 @@ private:
   struct Cull;
   std::vector<Cull> cull(const Vec3& centre, float radius);
   void paint(const std::vector<int>& patches, const BrushDab& dab);
+  //! Smooths or moves geometry (or smooths colours) on the patches.
+  void reshape(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke, const Vec3& normal);
+  //! Weights of the dab on the patches' texels, into the weight buffer.
+  void weigh(const cl::Buffer& list, int count, const BrushDab& dab);
+  //! After positions changed on `patches`: limit surface and bounds there.
+  void refresh_geometry(const std::vector<int>& patches);
   StrokeReport apply_dabs(const Stroke& stroke);
   //! The painted layers' tiles of `patches`, from the device.
   Snapshot take_snapshot(const std::vector<int>& patches);
@@ -95,7 +106,6 @@ private:
 
   std::unique_ptr<Atlas> atlas_;
   int level_;
-  std::vector<Float4> positions_; // limit positions, patch-major (host copy for snapping)
   std::unique_ptr<Device> device_;
   UndoLog undo_;
   Snapshot stroke_before_;            // the running stroke's snapshot

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp> // for nlohmann::json
 
+#include <algorithm> // for std::find, std::max
 #include <cmath>   // for std::isfinite, std::sqrt
 #include <fstream> // for std::ifstream
 #include <map>     // for std::map
@@ -149,17 +150,49 @@ Stroke read_stroke(const json& j, std::size_t index)
 {
   if (!j.is_object())
     throw InputError("stroke " + std::to_string(index) + ": must be an object");
-  static const std::set<std::string> known = {"tool",    "points",   "radius", "strength", "falloff",
-                                              "spacing", "op",       "channels", "alphas", "pressure",
-                                              "mirror"};
+  static const std::set<std::string> known = {
+    "tool",   "points", "radius",   "strength",   "falloff", "spacing", "op",     "channels", "alphas",
+    "pressure", "mirror", "amount", "iterations", "target", "method",  "lambda", "mu"};
   const StrokeReader r(j, index);
   for (const auto& item : j.items())
     if (!known.count(item.key()))
       r.fail(item.key(), "is not a stroke key (tool, points, radius, strength, falloff, spacing, op, "
-                         "channels, alphas, pressure, mirror)");
+                         "channels, alphas, pressure, mirror, amount, iterations, target, method, lambda, mu)");
   Stroke s;
-  const std::string tool = r.word("tool", "paint", {"paint", "label", "wash"});
-  s.tool = tool == "label" ? Tool::Label : tool == "wash" ? Tool::Wash : Tool::Paint;
+  static const std::vector<std::string> tools = {"paint",  "label",   "wash",   "smooth",
+                                                 "blur",   "sculpt",  "inflate", "flatten"};
+  const std::string tool = r.word("tool", "paint", tools);
+  s.tool = Tool(std::find(tools.begin(), tools.end(), tool) - tools.begin());
+  const bool paints = s.tool == Tool::Paint || s.tool == Tool::Label || s.tool == Tool::Wash;
+  const bool moves = s.tool == Tool::Sculpt || s.tool == Tool::Inflate || s.tool == Tool::Flatten;
+  const bool smooths = s.tool == Tool::Smooth || s.tool == Tool::Blur;
+  for (const char* key : {"channels", "alphas", "op"})
+    if (!paints && r.has(key))
+      r.fail(key, std::string("has no meaning for a ") + tool + " stroke");
+  if (!moves && r.has("amount"))
+    r.fail("amount", "has no meaning for a " + tool + " stroke");
+  for (const char* key : {"iterations", "method", "lambda", "mu"})
+    if (!smooths && r.has(key))
+      r.fail(key, std::string("has no meaning for a ") + tool + " stroke");
+  if (s.tool != Tool::Smooth && r.has("target"))
+    r.fail("target", "has no meaning for a " + tool + " stroke");
+  if (moves) {
+    const bool flatten = s.tool == Tool::Flatten;
+    s.amount = float(flatten ? r.number("amount", 0.5, 0.0, 1.0) : r.number("amount", 0.0, -1e30, 1e30));
+    if (!flatten && !r.has("amount"))
+      r.fail("amount", "is required: how far a dab moves the surface, in world units");
+  }
+  if (smooths) {
+    s.iterations = int(r.number("iterations", 1, 1, 1000));
+    if (r.has("iterations") && !r.at("iterations").is_number_integer())
+      r.fail("iterations", "must be an integer from 1 to 1000");
+    s.target_colour = s.tool == Tool::Blur || r.word("target", "position", {"position", "color"}) == "color";
+    s.taubin = r.word("method", s.target_colour ? "laplacian" : "taubin", {"laplacian", "taubin"}) == "taubin";
+    s.lambda = float(r.number("lambda", 0.5, 0.0, 1.0));
+    s.mu = float(r.number("mu", -0.53, -1.0, 0.0));
+    if (s.taubin && !(-s.mu > s.lambda))
+      r.fail("mu", "must be more negative than -lambda for Taubin smoothing (e.g. lambda 0.5, mu -0.53)");
+  }
   s.strength = float(r.number("strength", 1.0, 0.0, 1.0));
   const std::string falloff = r.word("falloff", "smoothstep", {"constant", "linear", "smoothstep", "gaussian"});
   s.falloff = falloff == "constant" ? FALLOFF_CONSTANT : falloff == "linear" ? FALLOFF_LINEAR
@@ -199,13 +232,19 @@ Stroke read_stroke(const json& j, std::size_t index)
   if (s.tool == Tool::Label) {
     if (!r.has("channels") || r.at("channels").size() != 1 || !r.at("channels").contains("label"))
       r.fail("channels", "of a label stroke must be exactly {\"label\": id}");
-  } else if (!r.has("channels")) {
+  } else if (paints && !r.has("channels")) {
     r.fail("channels", "is required: what to paint, e.g. {\"diffuse\": [1, 0, 0]}");
   }
   return s;
 }
 
 } // namespace
+
+const char* tool_name(Tool tool)
+{
+  static const char* const names[] = {"paint", "label", "wash", "smooth", "blur", "sculpt", "inflate", "flatten"};
+  return names[int(tool)];
+}
 
 StrokeScript parse_stroke_script(const std::string& text)
 {

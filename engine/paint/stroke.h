@@ -12,10 +12,18 @@ namespace meshpaint {
 
 enum class Tool
 {
-  Paint, //!< the paint equation on the chosen channels
-  Label, //!< paint one class id into the label channel
-  Wash   //!< the paint equation everywhere at once, no brush
+  Paint,   //!< the paint equation on the chosen channels
+  Label,   //!< paint one class id into the label channel
+  Wash,    //!< the paint equation everywhere at once, no brush
+  Smooth,  //!< Laplacian or Taubin smoothing of positions (or colours)
+  Blur,    //!< smoothing of the colour channels
+  Sculpt,  //!< move along the normal at the brush centre
+  Inflate, //!< move along each point's own normal
+  Flatten  //!< move towards the plane through the centre
 };
+
+//! Name of a tool as the stroke script writes it.
+const char* tool_name(Tool tool);
 
 struct Stroke
 {
@@ -30,6 +38,11 @@ struct Stroke
   std::array<Float4, CHANNEL_COUNT> value{};  //!< per channel: rgb or x, and coverage in w
   std::array<float, CHANNEL_COUNT> alpha{};   //!< 0: channel untouched
   int mirror_axis = -1;                 //!< 0, 1, 2 for x, y, z; -1 none
+  float amount = 0.f;                   //!< sculpt, inflate: world units per dab; flatten: 0..1
+  int iterations = 1;                   //!< smooth, blur: passes per dab
+  bool target_colour = false;           //!< smooth: colours instead of positions
+  bool taubin = true;                   //!< smooth positions: lambda/mu pairs (no shrinking)
+  float lambda = 0.5f, mu = -0.53f;     //!< smoothing steps
 };
 
 //! A stroke script: an optional atlas level and the strokes in order.

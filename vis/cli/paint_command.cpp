@@ -15,12 +15,6 @@
 #include <iostream>   // for std::cout, std::cerr
 
 namespace meshpaint::cli {
-namespace {
-
-const char* tool_name(Tool t) { return t == Tool::Label ? "label" : t == Tool::Wash ? "wash" : "paint"; }
-
-} // namespace
-
 int paint_command(const Argv& argv)
 {
   Args args("paint", argv, {"--quiet"}, {"--strokes", "--level", "-o", "--device", "--storage"});

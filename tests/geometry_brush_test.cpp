@@ -1,0 +1,272 @@
+// Brushes that move geometry: sculpt, inflate, flatten and smoothing, with
+// the limit surface kept current on the touched patches.
+
+#include "atlas/weld.h"
+#include "paint/paint_surface.h"
+#include "support/runtime.h"
+#include "support/shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>   // for std::sqrt, std::sin
+#include <cstring> // for std::memcmp
+#include <map>     // for std::map
+
+namespace meshpaint {
+namespace {
+
+//! A cube of 6 x n x n quads pushed onto the unit sphere, with a
+//! deterministic radial noise of relative amplitude `noise`.
+BaseMesh noisy_sphere(int n, float noise)
+{
+  std::map<std::array<int, 3>, int> index;
+  std::vector<Vec3> pts;
+  std::vector<std::vector<int>> faces;
+  const auto vertex = [&](std::array<int, 3> g) {
+    auto [it, fresh] = index.emplace(g, int(pts.size()));
+    if (fresh) {
+      const double x = 2.0 * g[0] / n - 1, y = 2.0 * g[1] / n - 1, z = 2.0 * g[2] / n - 1;
+      const double len = std::sqrt(x * x + y * y + z * z);
+      const double r = 1.0 + noise * std::sin(12.9898 * pts.size() + 78.233);
+      pts.push_back({float(r * x / len), float(r * y / len), float(r * z / len)});
+    }
+    return it->second;
+  };
+  for (int a = 0; a < 3; ++a)
+    for (int side : {0, n}) {
+      const int b = (a + 1) % 3, c = (a + 2) % 3;
+      for (int u = 0; u < n; ++u)
+        for (int v = 0; v < n; ++v) {
+          std::vector<int> f;
+          for (auto [du, dv] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+            std::array<int, 3> g{};
+            g[a] = side;
+            g[b] = u + du;
+            g[c] = v + dv;
+            f.push_back(vertex(g));
+          }
+          if (side == 0)
+            std::swap(f[1], f[3]);
+          faces.push_back(f);
+        }
+    }
+  return make_base_mesh(pts, faces, "noisy_sphere");
+}
+
+double volume(const WeldedSurface& s)
+{
+  double v = 0;
+  const auto tri = [&](int a, int b, int c) {
+    const Vec3 &p = s.points[a], &q = s.points[b], &r = s.points[c];
+    v += (double(p[0]) * (double(q[1]) * r[2] - double(q[2]) * r[1]) -
+          double(p[1]) * (double(q[0]) * r[2] - double(q[2]) * r[0]) +
+          double(p[2]) * (double(q[0]) * r[1] - double(q[1]) * r[0])) / 6.0;
+  };
+  for (const auto& q : s.quads) {
+    tri(q[0], q[1], q[2]);
+    tri(q[0], q[2], q[3]);
+  }
+  return v;
+}
+
+//! Noise as the root mean square of the umbrella vector (mean of the edge
+//! neighbours minus the point) over the welded surface.
+double roughness_of(const WeldedSurface& s)
+{
+  std::vector<std::vector<int>> nbrs(s.points.size());
+  for (const auto& q : s.quads)
+    for (int k = 0; k < 4; ++k) {
+      nbrs[q[k]].push_back(q[(k + 1) % 4]);
+      nbrs[q[(k + 1) % 4]].push_back(q[k]);
+    }
+  double sum2 = 0;
+  for (std::size_t v = 0; v < s.points.size(); ++v) {
+    double m[3] = {0, 0, 0};
+    for (const int w : nbrs[v])
+      for (int a = 0; a < 3; ++a)
+        m[a] += s.points[w][a] / double(nbrs[v].size());
+    for (int a = 0; a < 3; ++a)
+      sum2 += (m[a] - s.points[v][a]) * (m[a] - s.points[v][a]);
+  }
+  return std::sqrt(sum2 / double(s.points.size()));
+}
+
+Stroke brush(Tool tool, const Vec3& at, float radius)
+{
+  Stroke s;
+  s.tool = tool;
+  s.points = {at};
+  s.radius = radius;
+  s.falloff = FALLOFF_CONSTANT;
+  return s;
+}
+
+TEST(GeometryBrush, SculptMovesTheCentreByAmountAlongTheNormal)
+{
+  PaintSurface surface(test::runtime(), test::flat_grid(6), 4, AtlasStorage::Buffer);
+  Stroke s = brush(Tool::Sculpt, {3.f, 3.f, 0.f}, 1.5f);
+  s.amount = 0.2f;
+  surface.apply(s);
+  const WeldedSurface out = surface.painted_surface().surface;
+  bool found = false;
+  for (std::size_t v = 0; v < out.points.size(); ++v)
+    if (std::fabs(out.points[v][0] - 3.f) < 1e-6 && std::fabs(out.points[v][1] - 3.f) < 1e-6) {
+      EXPECT_NEAR(out.points[v][2], 0.2f, 1e-6);
+      EXPECT_NEAR(out.normals[v][2], 1.f, 1e-6);
+      found = true;
+    }
+  EXPECT_TRUE(found);
+  // Far from the brush nothing moved.
+  for (std::size_t v = 0; v < out.points.size(); ++v)
+    if (std::hypot(out.points[v][0] - 3.f, out.points[v][1] - 3.f) > 2.5f)
+      ASSERT_EQ(out.points[v][2], 0.f);
+}
+
+TEST(GeometryBrush, LocalLimitUpdateEqualsAFullOne)
+{
+  PaintSurface surface(test::runtime(), test::genus_two(), 4, AtlasStorage::Buffer);
+  Stroke s = brush(Tool::Inflate, {1.5f, 0.5f, 1.f}, 0.7f);
+  s.falloff = FALLOFF_SMOOTHSTEP;
+  s.amount = 0.1f;
+  surface.apply(s);
+  const auto local_pos = surface.atlas().read_limit_positions();
+  const auto local_nrm = surface.atlas().read_limit_normals();
+  surface.atlas().compute_limit();
+  const auto full_pos = surface.atlas().read_limit_positions();
+  const auto full_nrm = surface.atlas().read_limit_normals();
+  ASSERT_EQ(std::memcmp(local_pos.data(), full_pos.data(), full_pos.size() * sizeof(Float4)), 0);
+  ASSERT_EQ(std::memcmp(local_nrm.data(), full_nrm.data(), full_nrm.size() * sizeof(Float4)), 0);
+}
+
+TEST(GeometryBrush, TaubinSmoothingRemovesNoiseAndKeepsTheVolume)
+{
+  const BaseMesh sphere = noisy_sphere(8, 0.f);
+  std::map<bool, double> shrink;
+  for (const bool taubin : {true, false}) {
+    PaintSurface surface(test::runtime(), sphere, 3, AtlasStorage::Buffer);
+    // Noise on the finest control points, the same on every stored copy.
+    const LevelLayout layout = surface.atlas().layout(3);
+    const std::vector<int> map = weld_map(surface.atlas().topology(), layout);
+    std::vector<Float4> control = surface.atlas().read_positions(3);
+    for (std::size_t t = 0; t < control.size(); ++t) {
+      const float r = 1.f + 0.01f * float(std::sin(12.9898 * map[t] + 78.233));
+      for (int a = 0; a < 3; ++a)
+        control[t][a] *= r;
+    }
+    surface.atlas().write_positions(3, control);
+    surface.geometry_changed();
+    const WeldedSurface before = surface.painted_surface().surface;
+    Stroke s = brush(Tool::Smooth, {0.f, 0.f, 1.f}, 10.f); // covers the whole sphere
+    s.iterations = 20;
+    s.taubin = taubin;
+    surface.apply(s);
+    const WeldedSurface after = surface.painted_surface().surface;
+    EXPECT_LT(roughness_of(after), 0.5 * roughness_of(before)) << (taubin ? "taubin" : "laplacian");
+    shrink[taubin] = std::fabs(volume(after) / volume(before) - 1.0);
+    RecordProperty(std::string(taubin ? "taubin" : "laplacian") + "_noise_after_over_before",
+                   std::to_string(roughness_of(after) / roughness_of(before)));
+  }
+  EXPECT_LT(shrink[true], 0.01) << "Taubin smoothing changed the volume by " << shrink[true];
+  EXPECT_GT(shrink[false], shrink[true]) << "Laplacian smoothing should shrink more than Taubin";
+}
+
+TEST(GeometryBrush, FlattenPullsTowardsThePlane)
+{
+  PaintSurface surface(test::runtime(), test::open_grid(), 4, AtlasStorage::Buffer);
+  const auto spread = [](const WeldedSurface& w) {
+    double lo = 1e9, hi = -1e9;
+    for (const Vec3& p : w.points)
+      if (std::hypot(p[0] - 1.5f, p[1] - 1.5f) < 0.5f) {
+        lo = std::min(lo, double(p[2]));
+        hi = std::max(hi, double(p[2]));
+      }
+    return hi - lo;
+  };
+  const double before = spread(surface.painted_surface().surface);
+  Stroke s = brush(Tool::Flatten, {1.5f, 1.5f, 0.4f}, 1.2f);
+  s.amount = 1.f;
+  for (int k = 0; k < 4; ++k)
+    surface.apply(s);
+  EXPECT_LT(spread(surface.painted_surface().surface), 0.5 * before);
+}
+
+TEST(GeometryBrush, BlurSmoothsColoursOnly)
+{
+  PaintSurface surface(test::runtime(), test::flat_grid(6), 4, AtlasStorage::Buffer);
+  Stroke dot = brush(Tool::Paint, {3.f, 3.f, 0.f}, 0.6f);
+  dot.value[CHANNEL_DIFFUSE] = {1.f, 0.f, 0.f, 1.f};
+  dot.alpha[CHANNEL_DIFFUSE] = 1.f;
+  surface.apply(dot);
+  const auto positions = surface.atlas().read_positions(4);
+  Stroke blur = brush(Tool::Blur, {3.f, 3.f, 0.f}, 2.f);
+  blur.target_colour = true;
+  blur.taubin = false;
+  blur.iterations = 5;
+  surface.apply(blur);
+  const PaintChannels ch = surface.read_channels();
+  std::size_t partial = 0;
+  for (const Float4& c : ch.diffuse)
+    partial += c[0] > 0.8f && c[0] < 1.f;
+  EXPECT_GT(partial, 20u) << "blurring a hard-edged dot leaves intermediate shades";
+  const auto after = surface.atlas().read_positions(4);
+  EXPECT_EQ(std::memcmp(after.data(), positions.data(), after.size() * sizeof(Float4)), 0);
+}
+
+TEST(GeometryBrush, UndoRestoresGeometryBitForBit)
+{
+  PaintSurface surface(test::runtime(), test::mixed_polygons(), 4, AtlasStorage::Buffer);
+  const auto control = surface.atlas().read_positions(4);
+  const auto limit = surface.atlas().read_limit_positions();
+  Stroke s = brush(Tool::Smooth, {1.f, 0.f, 0.6f}, 0.8f);
+  s.falloff = FALLOFF_GAUSSIAN;
+  s.iterations = 3;
+  surface.apply(s);
+  Stroke t = brush(Tool::Sculpt, {0.f, 1.f, 0.6f}, 0.8f);
+  t.amount = -0.1f;
+  surface.apply(t);
+  ASSERT_NE(std::memcmp(surface.atlas().read_positions(4).data(), control.data(), control.size() * sizeof(Float4)), 0);
+  while (surface.undo()) {
+  }
+  EXPECT_EQ(std::memcmp(surface.atlas().read_positions(4).data(), control.data(), control.size() * sizeof(Float4)), 0);
+  EXPECT_EQ(std::memcmp(surface.atlas().read_limit_positions().data(), limit.data(), limit.size() * sizeof(Float4)), 0);
+}
+
+class GeometryStorage : public testing::TestWithParam<std::string>
+{
+};
+
+// Smoothing keeps every stored copy identical, and the image path gives the
+// same bits as the buffer path.
+TEST_P(GeometryStorage, SmoothingIsConsistent)
+{
+  const BaseMesh mesh = test::shape(GetParam());
+  std::vector<std::vector<Float4>> results;
+  for (const AtlasStorage storage : {AtlasStorage::Buffer, AtlasStorage::Image}) {
+    if (storage == AtlasStorage::Image && !test::runtime()->info().images)
+      continue;
+    PaintSurface surface(test::runtime(), mesh, 3, storage);
+    Stroke s = brush(Tool::Smooth, mesh.points.front(), 0.6f * float(mesh.diagonal()));
+    s.falloff = FALLOFF_SMOOTHSTEP;
+    s.iterations = 2;
+    surface.apply(s);
+    Stroke t = brush(Tool::Inflate, mesh.points.back(), 0.4f * float(mesh.diagonal()));
+    t.amount = 0.05f;
+    surface.apply(t);
+    results.push_back(surface.atlas().read_positions(3));
+    const std::vector<int> map = weld_map(surface.atlas().topology(), surface.atlas().layout(3));
+    std::vector<long> first(surface.atlas().topology().unique_vertices(3), -1);
+    for (std::size_t k = 0; k < map.size(); ++k) {
+      if (first[map[k]] < 0)
+        first[map[k]] = long(k);
+      else
+        ASSERT_EQ(std::memcmp(&results.back()[k], &results.back()[first[map[k]]], sizeof(Float4)), 0);
+    }
+  }
+  if (results.size() == 2)
+    EXPECT_EQ(std::memcmp(results[0].data(), results[1].data(), results[0].size() * sizeof(Float4)), 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, GeometryStorage, testing::ValuesIn(test::shape_names()));
+
+} // namespace
+} // namespace meshpaint
