@@ -5,13 +5,13 @@
 #include "atlas/atlas.h"
 #include "atlas/weld.h"
 #include "reference/opensubdiv_reference.h"
+#include "support/copies.h"
 #include "support/runtime.h"
 #include "support/shapes.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>   // for std::acos, std::sqrt
-#include <cstring> // for std::memcmp
 
 namespace meshpaint {
 namespace {
@@ -59,24 +59,6 @@ BaseMesh load_case_mesh(const std::string& name)
   return load_mesh(path);
 }
 
-//! Every stored copy of a welded vertex holds exactly the same bits.
-void expect_copies_identical(const AtlasTopology& topo, const LevelLayout& layout,
-                             const std::vector<Float4>& texels, const char* what)
-{
-  const std::vector<int> map = weld_map(topo, layout);
-  std::vector<long> first(topo.unique_vertices(layout.level), -1);
-  std::size_t mismatches = 0;
-  for (std::size_t t = 0; t < map.size(); ++t) {
-    if (map[t] < 0)
-      continue;
-    if (first[map[t]] < 0)
-      first[map[t]] = long(t);
-    else if (std::memcmp(&texels[t], &texels[first[map[t]]], sizeof(Float4)) != 0)
-      ++mismatches;
-  }
-  EXPECT_EQ(mismatches, 0u) << what << ": copies of a patch-side or corner vertex differ";
-}
-
 class OpenSubdivOracle : public testing::TestWithParam<Case>
 {
 };
@@ -94,9 +76,10 @@ TEST_P(OpenSubdivOracle, LevelAndLimitMatch)
   const auto texels = atlas.read_positions(c.level);
   const auto limit_pos = atlas.read_limit_positions();
   const auto limit_nrm = atlas.read_limit_normals();
-  expect_copies_identical(atlas.topology(), layout, texels, "positions");
-  expect_copies_identical(atlas.topology(), layout, limit_pos, "limit positions");
-  expect_copies_identical(atlas.topology(), layout, limit_nrm, "limit normals");
+  // Every stored copy of a patch-side or corner vertex holds the same bits.
+  EXPECT_EQ(test::differing_copies(atlas.topology(), layout, texels), 0u) << "positions";
+  EXPECT_EQ(test::differing_copies(atlas.topology(), layout, limit_pos), 0u) << "limit positions";
+  EXPECT_EQ(test::differing_copies(atlas.topology(), layout, limit_nrm), 0u) << "limit normals";
 
   const WeldedSurface ours = weld(atlas.topology(), layout, texels, nullptr);
   const WeldedSurface limit = weld(atlas.topology(), layout, limit_pos, &limit_nrm);
