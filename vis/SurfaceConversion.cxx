@@ -3,10 +3,15 @@
 #include "core/atomic_file.h" // for meshpaint::write_atomically
 #include "core/errors.h"      // for meshpaint::IOError
 
+#include <algorithm> // for std::min, std::max
+#include <cmath>     // for std::floor
+
 #include <vtkCellArray.h>          // for vtkCellArray
 #include <vtkFloatArray.h>         // for vtkFloatArray
 #include <vtkIdTypeArray.h>        // for vtkIdTypeArray
+#include <vtkImageData.h>          // for vtkImageData
 #include <vtkIntArray.h>           // for vtkIntArray
+#include <vtkPNGWriter.h>          // for vtkPNGWriter
 #include <vtkPointData.h>          // for vtkPointData
 #include <vtkPoints.h>             // for vtkPoints
 #include <vtkPolyData.h>           // for vtkPolyData
@@ -93,6 +98,46 @@ BaseMesh to_base_mesh(vtkPolyData* poly, const std::string& name)
       faces.emplace_back(ids, ids + npts);
   }
   return make_base_mesh(std::move(points), faces, name);
+}
+
+namespace {
+
+//! One map as a PNG: `components` floats per pixel in 0..1 (after
+//! (v - offset) * scale), rows top first, quantised to 8 or 16 bits.
+void write_png(const std::vector<float>& values, int width, int height, int components, bool sixteen,
+               float offset, float scale, const std::string& path)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(sixteen ? VTK_UNSIGNED_SHORT : VTK_UNSIGNED_CHAR, components);
+  const double top = sixteen ? 65535.0 : 255.0;
+  for (int y = 0; y < height; ++y) // VTK's row 0 is the bottom of the picture
+    for (int x = 0; x < width; ++x)
+      for (int c = 0; c < components; ++c) {
+        const float v = (values[(std::size_t(y) * width + x) * components + c] - offset) * scale;
+        const double q = std::min(1.0, std::max(0.0, double(v))) * top + 0.5;
+        image->SetScalarComponentFromDouble(x, height - 1 - y, 0, c, std::floor(q));
+      }
+  write_atomically(path, [&](const std::string& tmp) {
+    auto writer = vtkSmartPointer<vtkPNGWriter>::New();
+    writer->SetFileName(tmp.c_str());
+    writer->SetInputData(image);
+    writer->Write();
+    if (writer->GetErrorCode() != 0)
+      throw IOError("cannot write '" + path + "'");
+  });
+}
+
+} // namespace
+
+void write_texture_maps(const TextureMaps& maps, const std::string& dir)
+{
+  write_png(maps.diffuse, maps.width, maps.height, 3, false, 0.f, 1.f, dir + "/diffuse.png");
+  write_png(maps.specular, maps.width, maps.height, 3, false, 0.f, 1.f, dir + "/specular.png");
+  write_png(maps.roughness, maps.width, maps.height, 1, false, 0.f, 1.f, dir + "/roughness.png");
+  const float range = maps.displacement_max - maps.displacement_min;
+  write_png(maps.displacement, maps.width, maps.height, 1, true, maps.displacement_min,
+            range > 0.f ? 1.f / range : 0.f, dir + "/displacement.png");
 }
 
 void write_vtp(vtkPolyData* poly, const std::string& path)

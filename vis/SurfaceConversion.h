@@ -5,6 +5,7 @@
 #include "meshpaintVisModule.h" // for MESHPAINTVIS_EXPORT
 
 #include "mesh/welded_surface.h" // for meshpaint::WeldedSurface
+#include "paint/model_export.h" // for meshpaint::TextureMaps
 #include "paint/paint_surface.h" // for meshpaint::PaintedSurface
 #include "mesh/base_mesh.h"       // for meshpaint::BaseMesh
 
@@ -25,6 +26,11 @@ MESHPAINTVIS_EXPORT vtkSmartPointer<vtkPolyData> to_polydata(const PaintedSurfac
 //! The polygons of `poly` (other cells ignored) as a checked base mesh.
 //! \throw InputError as make_base_mesh does.
 MESHPAINTVIS_EXPORT BaseMesh to_base_mesh(vtkPolyData* poly, const std::string& name);
+
+//! Writes the texture maps as PNG files DIR/diffuse.png, specular.png (8-bit
+//! RGB), roughness.png (8-bit grey) and displacement.png (16-bit grey over
+//! the map's displacement range), each atomically.
+MESHPAINTVIS_EXPORT void write_texture_maps(const TextureMaps& maps, const std::string& dir);
 
 //! Writes .vtp (XML, appended raw binary, zlib-compressed) atomically.
 //! \throw IOError when writing fails.

@@ -235,3 +235,49 @@ def test_bad_stroke_scripts_name_stroke_and_key(plane, tmp_path, stroke, message
     lines = r.stderr.strip().splitlines()
     assert len(lines) == 1 and re.search(message, lines[0]), r.stderr
     assert not out.exists(), "nothing may be written when the script is bad"
+
+
+def test_paint_model_textures_match_the_surface(plane, tmp_path):
+    import numpy as np
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    script = tmp_path / "s.json"
+    script.write_text(json.dumps({"strokes": [
+        {"tool": "paint", "points": [[1.2, 1.3, 0], [2.7, 2.9, 0]], "radius": 0.7, "falloff": "linear",
+         "channels": {"diffuse": [0.1, 0.9, 0.3], "roughness": 1.0}}]}))
+    out = tmp_path / "out"
+    r = run("paint", str(plane), "--strokes", str(script), "--level", "4", "--model-level", "3", "-o", str(out))
+    assert r.returncode == 0, r.stderr
+    for name in ("model.obj", "model.mtl", "diffuse.png", "specular.png", "roughness.png", "displacement.png"):
+        assert (out / name).exists(), name
+    assert "map_Kd diffuse.png" in (out / "model.mtl").read_text()
+
+    surface = read_polydata(out / "surface.vtp")
+    s_points = vtk_to_numpy(surface.GetPoints().GetData())
+    s_diffuse = vtk_to_numpy(surface.GetPointData().GetArray("diffuse"))
+    lookup = {tuple(np.round(p, 5)): d for p, d in zip(s_points, s_diffuse)}
+
+    reader = vtk.vtkPNGReader()
+    reader.SetFileName(str(out / "diffuse.png"))
+    reader.Update()
+    img = reader.GetOutput()
+    w, h, _ = img.GetDimensions()
+    pixels = vtk_to_numpy(img.GetPointData().GetScalars()).reshape(h, w, -1)  # row 0 = bottom
+
+    # Every face corner's texture coordinate lands on the pixel that holds
+    # the colour of that corner on the painted surface.
+    lines = (out / "model.obj").read_text().splitlines()
+    v = [tuple(map(float, l.split()[1:4])) for l in lines if l.startswith("v ")]
+    vt = [tuple(map(float, l.split()[1:3])) for l in lines if l.startswith("vt ")]
+    checked = 0
+    for l in lines:
+        if not l.startswith("f "):
+            continue
+        for corner in l.split()[1:]:
+            vi, ti, _ = (int(x) - 1 for x in corner.split("/"))
+            u, vv = vt[ti]
+            px, py = int(u * w), int(vv * h)  # v up: VTK's row 0 is the bottom too
+            expected = lookup[tuple(np.round(v[vi], 5))]
+            assert np.all(np.abs(pixels[py, px, :3] / 255.0 - expected) <= 0.5 / 255 + 1e-6), (v[vi], expected)
+            checked += 1
+    assert checked == 4 * (16 * 4) * (4 * 4)  # corners x patches (4 per base quad) x 4x4 cells at level 3

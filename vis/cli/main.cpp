@@ -24,9 +24,10 @@ commands:
                                       positions and point array Normals
   bench subdivide MESH [--level L] [--json] [--repeats N]
                                       kernels against OpenSubdiv's CpuEvaluator (level 3)
-  paint MESH --strokes S.json [--level L] [--quiet] -o OUTDIR
+  paint MESH --strokes S.json [--level L] [--model-level M] [--quiet] -o OUTDIR
                                       apply a stroke script (docs/strokes.md); writes
-                                      OUTDIR/surface.vtp with the paint channels
+                                      OUTDIR/surface.vtp with the paint channels, and
+                                      model.obj + model.mtl + PNG texture maps
   devices                             the OpenCL devices (for --device / MESHPAINT_DEVICE)
   help                                this text
 

@@ -9,6 +9,7 @@
 #include "core/errors.h"
 #include "core/format.h"
 #include "core/timer.h"
+#include "paint/model_export.h"
 #include "paint/paint_surface.h"
 
 #include <filesystem> // for std::filesystem
@@ -17,8 +18,8 @@
 namespace meshpaint::cli {
 int paint_command(const Argv& argv)
 {
-  Args args("paint", argv, {"--quiet"}, {"--strokes", "--level", "-o", "--device", "--storage"});
-  args.expect_positionals(1, 1, "MESH --strokes S.json [--level L] -o OUTDIR");
+  Args args("paint", argv, {"--quiet"}, {"--strokes", "--level", "--model-level", "-o", "--device", "--storage"});
+  args.expect_positionals(1, 1, "MESH --strokes S.json [--level L] [--model-level M] -o OUTDIR");
   if (!args.has("--strokes"))
     throw InputError("--strokes S.json is required");
   const std::string dir = args.value("-o");
@@ -27,6 +28,7 @@ int paint_command(const Argv& argv)
   // Everything is checked before anything is painted.
   const StrokeScript script = load_stroke_script(args.value("--strokes"));
   const int level = args.integer("--level", script.level > 0 ? script.level : 3, 1, kMaxLevel);
+  const int model_level = args.integer("--model-level", std::max(1, level - 2), 1, level);
   const bool quiet = args.flag("--quiet");
   const BaseMesh mesh = load_reported(args.positionals()[0]);
   std::error_code ec;
@@ -55,10 +57,17 @@ int paint_command(const Argv& argv)
   }
   const std::string out = dir + "/surface.vtp";
   write_vtp(to_polydata(surface.painted_surface()), out);
+  ExportModel model;
+  TextureMaps maps;
+  build_export(surface, model_level, model, maps);
+  write_texture_maps(maps, dir);
+  write_obj_model(model, maps, dir);
   std::cout << "meshpaint paint: " << mesh.name << " at level " << level << ", " << script.strokes.size()
             << " strokes (set-up " << format_fixed(setup_ms, 1) << " ms)\n";
   table.print(std::cout);
-  std::cout << "wrote " << out << "\n";
+  std::cout << "wrote " << out << ", " << dir << "/model.obj (level " << model_level << ", "
+            << model.mesh.quads.size() << " quads) with model.mtl and " << maps.width << "x" << maps.height
+            << " texture maps\n";
   return 0;
 }
 

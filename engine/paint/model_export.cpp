@@ -1,0 +1,144 @@
+#include "paint/model_export.h"
+
+#include "atlas/weld.h"
+#include "core/atomic_file.h"
+#include "core/errors.h"
+#include "paint/paint_surface.h"
+
+#include <algorithm> // for std::min, std::max
+#include <cstdio>    // for std::fprintf
+#include <memory>    // for std::unique_ptr
+
+namespace meshpaint {
+
+void build_export(PaintSurface& surface, int model_level, ExportModel& model, TextureMaps& maps)
+{
+  Atlas& atlas = surface.atlas();
+  const int level = surface.level();
+  if (model_level < 1 || model_level > level)
+    throw InputError("model level " + std::to_string(model_level) + " must be from 1 to the painting level " +
+                     std::to_string(level));
+  const LevelLayout fine = atlas.layout(level), coarse = atlas.layout(model_level);
+  const int step = fine.n / coarse.n, pitch = fine.tile + 2;
+  const std::vector<Float4> pos = atlas.read_limit_positions(), nrm = atlas.read_limit_normals();
+  const PaintChannels ch = surface.read_channels();
+
+  // Texture maps: tile p at (p % tiles_x, p / tiles_x) * pitch, texel (i, j)
+  // one pixel in from the tile's corner; the gutter repeats the border.
+  maps.width = fine.tiles_x * pitch;
+  maps.height = fine.tiles_y * pitch;
+  const std::size_t pixels = std::size_t(maps.width) * maps.height;
+  maps.diffuse.assign(3 * pixels, 0.f);
+  maps.specular.assign(3 * pixels, 0.f);
+  maps.roughness.assign(pixels, 0.f);
+  maps.displacement.assign(pixels, 0.f);
+  maps.displacement_min = maps.displacement_max = ch.material.empty() ? 0.f : ch.material[0][1];
+  for (const Float4& m : ch.material) {
+    maps.displacement_min = std::min(maps.displacement_min, m[1]);
+    maps.displacement_max = std::max(maps.displacement_max, m[1]);
+  }
+  for (int p = 0; p < fine.patches; ++p) {
+    const int ox = (p % fine.tiles_x) * pitch, oy = (p / fine.tiles_x) * pitch;
+    for (int y = 0; y < pitch; ++y)
+      for (int x = 0; x < pitch; ++x) {
+        const int i = std::clamp(x - 1, 0, fine.n), j = std::clamp(y - 1, 0, fine.n);
+        const std::size_t t = fine.index(p, i, j), px = std::size_t(oy + y) * maps.width + ox + x;
+        for (int c = 0; c < 3; ++c) {
+          maps.diffuse[3 * px + c] = ch.diffuse[t][c];
+          maps.specular[3 * px + c] = ch.specular[t][c];
+        }
+        maps.roughness[px] = ch.material[t][0];
+        maps.displacement[px] = ch.material[t][1];
+      }
+  }
+
+  // Model: the coarse level's welded vertices, placed at the matching fine
+  // texels of the limit surface; each quad corner's texture coordinate is
+  // the centre of that texel's pixel.
+  const std::vector<int> weld = weld_map(atlas.topology(), coarse);
+  model.mesh = WeldedSurface();
+  model.mesh.level = model_level;
+  model.mesh.points.resize(atlas.topology().unique_vertices(model_level));
+  model.mesh.normals.resize(model.mesh.points.size());
+  model.uvs.clear();
+  for (int p = 0; p < coarse.patches; ++p) {
+    const int ox = (p % fine.tiles_x) * pitch, oy = (p / fine.tiles_x) * pitch;
+    for (int j = 0; j <= coarse.n; ++j)
+      for (int i = 0; i <= coarse.n; ++i) {
+        const std::size_t t = fine.index(p, i * step, j * step);
+        const int v = weld[coarse.index(p, i, j)];
+        model.mesh.points[v] = {pos[t][0], pos[t][1], pos[t][2]};
+        model.mesh.normals[v] = {nrm[t][0], nrm[t][1], nrm[t][2]};
+      }
+    static const int corner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (int j = 0; j < coarse.n; ++j)
+      for (int i = 0; i < coarse.n; ++i) {
+        std::array<int, 4> quad;
+        for (int k = 0; k < 4; ++k) {
+          const int ci = i + corner[k][0], cj = j + corner[k][1];
+          quad[k] = weld[coarse.index(p, ci, cj)];
+          const float px = float(ox + 1 + ci * step) + 0.5f, py = float(oy + 1 + cj * step) + 0.5f;
+          model.uvs.push_back({px / float(maps.width), 1.f - py / float(maps.height)});
+        }
+        model.mesh.quads.push_back(quad);
+      }
+  }
+}
+
+namespace {
+
+struct FileCloser
+{
+  void operator()(std::FILE* f) const { std::fclose(f); }
+};
+
+std::unique_ptr<std::FILE, FileCloser> open_for_writing(const std::string& path, const std::string& shown)
+{
+  std::unique_ptr<std::FILE, FileCloser> f(std::fopen(path.c_str(), "w"));
+  if (!f)
+    throw IOError("cannot write '" + shown + "'");
+  return f;
+}
+
+} // namespace
+
+void write_obj_model(const ExportModel& model, const TextureMaps& maps, const std::string& dir)
+{
+  write_atomically(dir + "/model.mtl", [&](const std::string& tmp) {
+    auto f = open_for_writing(tmp, dir + "/model.mtl");
+    const float range = maps.displacement_max - maps.displacement_min;
+    std::fprintf(f.get(),
+                 "# meshpaint: the paint channels as texture maps\n"
+                 "# displacement.png is 16-bit: height = %.9g + %.9g * pixel / 65535 (world units,\n"
+                 "# along the normal); the model's points are not displaced.\n"
+                 "newmtl painted\nKa 0 0 0\nKd 1 1 1\nKs 1 1 1\nillum 2\n"
+                 "map_Kd diffuse.png\nmap_Ks specular.png\nmap_Pr roughness.png\ndisp displacement.png\n",
+                 double(maps.displacement_min), double(range));
+    if (std::ferror(f.get()))
+      throw IOError("cannot write '" + dir + "/model.mtl'");
+  });
+  write_atomically(dir + "/model.obj", [&](const std::string& tmp) {
+    auto f = open_for_writing(tmp, dir + "/model.obj");
+    std::FILE* out = f.get();
+    std::fprintf(out, "# meshpaint model: level %d, %zu vertices, %zu quads\nmtllib model.mtl\nusemtl painted\n",
+                 model.mesh.level, model.mesh.points.size(), model.mesh.quads.size());
+    for (const Vec3& p : model.mesh.points)
+      std::fprintf(out, "v %.9g %.9g %.9g\n", double(p[0]), double(p[1]), double(p[2]));
+    for (const Vec3& n : model.mesh.normals)
+      std::fprintf(out, "vn %.7g %.7g %.7g\n", double(n[0]), double(n[1]), double(n[2]));
+    for (const auto& uv : model.uvs)
+      std::fprintf(out, "vt %.9g %.9g\n", double(uv[0]), double(uv[1]));
+    for (std::size_t q = 0; q < model.mesh.quads.size(); ++q) {
+      std::fprintf(out, "f");
+      for (int k = 0; k < 4; ++k) {
+        const int v = model.mesh.quads[q][k] + 1;
+        std::fprintf(out, " %d/%zu/%d", v, 4 * q + k + 1, v);
+      }
+      std::fprintf(out, "\n");
+    }
+    if (std::ferror(out))
+      throw IOError("cannot write '" + dir + "/model.obj'");
+  });
+}
+
+} // namespace meshpaint

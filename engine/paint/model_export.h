@@ -1,0 +1,44 @@
+// The painted surface as a model any renderer loads: a quad mesh of a
+// coarse level whose corners carry texture coordinates into texture maps of
+// the painting level (the atlas images of the paint channels).
+#pragma once
+
+#include "mesh/welded_surface.h"
+
+#include <array>  // for std::array
+#include <string> // for std::string
+#include <vector> // for std::vector
+
+namespace meshpaint {
+
+class PaintSurface;
+
+//! Channel images, row 0 at the top. Each patch's tile is surrounded by a
+//! one-pixel gutter repeating its border, so bilinear filtering at a tile's
+//! rim reads only that patch's colours.
+struct TextureMaps
+{
+  int width = 0, height = 0;
+  std::vector<float> diffuse, specular;        //!< rgb per pixel, 0..1
+  std::vector<float> roughness, displacement;  //!< one value per pixel
+  float displacement_min = 0.f, displacement_max = 0.f;
+};
+
+struct ExportModel
+{
+  WeldedSurface mesh;                       //!< points on the limit surface, with normals
+  std::vector<std::array<float, 2>> uvs;    //!< per quad corner (4 per quad), OBJ convention (v up)
+};
+
+//! The model at `model_level` (1 .. the painting level) and the texture
+//! maps of the painting level. Model points are limit-surface points without
+//! the displacement channel, which travels in its own map.
+void build_export(PaintSurface& surface, int model_level, ExportModel& model, TextureMaps& maps);
+
+//! Writes DIR/model.obj and DIR/model.mtl (atomically) naming the maps
+//! diffuse.png, specular.png, roughness.png and displacement.png; the MTL
+//! records how displacement pixels map back to world units.
+//! \throw IOError when a file cannot be written.
+void write_obj_model(const ExportModel& model, const TextureMaps& maps, const std::string& dir);
+
+} // namespace meshpaint
