@@ -61,6 +61,19 @@ typedef struct {
 #define CHANNEL_MASK 5
 #define CHANNEL_COUNT 6
 
+/* Patterns of pattern paint (paint = pigment in pattern(coordinate)). */
+#define PATTERN_NONE 0
+#define PATTERN_NOISE 1      /* gradient noise, 0..1 */
+#define PATTERN_TURBULENCE 2 /* sum of |noise| over octaves */
+#define PATTERN_MARBLE 3     /* sin(x + turbulence), veins */
+#define PATTERN_BATH 4       /* 1 below the plane z = 0 of the pattern space, soft edge */
+
+#define PATTERN_COORD_POSITION 0 /* the surface point: solid textures */
+#define PATTERN_COORD_UV 1       /* the patch parameters (u, v, 0) */
+
+#define MATTE_SELF 0   /* the pattern value is the pigment's coverage */
+#define MATTE_OPAQUE 1 /* full coverage; the pattern value shades the pigment */
+
 /* One brush dab. value[c] holds channel c's paint (rgb for diffuse and
  * specular, x for the others); alpha[c] its alpha, 0 leaving it untouched.
  * Floats and ints only, so both sides agree on the layout. */
@@ -72,7 +85,13 @@ typedef struct {
   mp_int op;                      /* PAINT_OP_* */
   float value[CHANNEL_COUNT][4];
   float alpha[CHANNEL_COUNT];
-  mp_int pad[2];
+  float specular_coefficient;     /* >= 0: paint the specular colour's largest component to this, keeping its hue */
+  mp_int pattern;                 /* PATTERN_* */
+  mp_int pattern_coord;           /* PATTERN_COORD_* */
+  mp_int matte;                   /* MATTE_* */
+  mp_int octaves;
+  float pattern_transform[12];    /* rows of a 3x4 matrix: world (or uv) to pattern space */
+  mp_int pad;
 } BrushDab;
 
 /* What the culling kernel reports for a patch that reaches into the brush:

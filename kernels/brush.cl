@@ -80,6 +80,71 @@ __kernel void brush_cull(ATLAS_IN pos, ATLAS_IN nrm, int2 g, int patches, __glob
   records[k] = r;
 }
 
+/* Gradient noise in [-1, 1] from an integer hash: no tables to upload. */
+inline uint hash3(int3 c)
+{
+  uint h = (uint)c.x * 0x8da6b343u ^ (uint)c.y * 0xd8163841u ^ (uint)c.z * 0xcb1ab31fu;
+  h ^= h >> 15;
+  h *= 0x2c1b3c6du;
+  h ^= h >> 12;
+  return h;
+}
+
+inline float grad_dot(int3 c, float3 d)
+{
+  const uint h = hash3(c) & 15u; /* one of 12 edge directions (4 repeated) */
+  const float u = h < 8u ? d.x : d.y, v = h < 4u ? d.y : (h == 12u || h == 14u ? d.x : d.z);
+  return ((h & 1u) ? -u : u) + ((h & 2u) ? -v : v);
+}
+
+inline float gradient_noise(float3 p)
+{
+  const float3 f = floor(p), d = p - f;
+  const int3 c = convert_int3(f);
+  const float3 s = d * d * d * (d * (d * 6.0f - 15.0f) + 10.0f);
+  float n[2][2][2];
+  for (int z = 0; z < 2; ++z)
+    for (int y = 0; y < 2; ++y)
+      for (int x = 0; x < 2; ++x)
+        n[z][y][x] = grad_dot(c + (int3)(x, y, z), d - (float3)((float)x, (float)y, (float)z));
+  const float x00 = mix(n[0][0][0], n[0][0][1], s.x), x10 = mix(n[0][1][0], n[0][1][1], s.x);
+  const float x01 = mix(n[1][0][0], n[1][0][1], s.x), x11 = mix(n[1][1][0], n[1][1][1], s.x);
+  return clamp(mix(mix(x00, x10, s.y), mix(x01, x11, s.y), s.z), -1.0f, 1.0f);
+}
+
+inline float turbulence(float3 p, int octaves)
+{
+  float sum = 0.0f, amplitude = 1.0f, norm = 0.0f;
+  for (int o = 0; o < octaves; ++o) {
+    sum += amplitude * fabs(gradient_noise(p));
+    norm += amplitude;
+    amplitude *= 0.5f;
+    p *= 2.0f;
+  }
+  return sum / norm;
+}
+
+/* The pattern value in [0, 1] at pattern-space point q. */
+inline float pattern_value(__global const BrushDab *dab, float3 q)
+{
+  switch (dab->pattern) {
+  case PATTERN_NOISE: return 0.5f + 0.5f * gradient_noise(q);
+  case PATTERN_TURBULENCE: return turbulence(q, dab->octaves);
+  case PATTERN_MARBLE: return 0.5f + 0.5f * sin(6.2831853f * (q.x + 2.0f * turbulence(q, dab->octaves)));
+  case PATTERN_BATH: return clamp(0.5f - q.z, 0.0f, 1.0f);
+  default: return 1.0f;
+  }
+}
+
+/* Where texel (i, j) of a patch sits in pattern space. */
+inline float3 pattern_point(__global const BrushDab *dab, float3 x, int2 ij, int n)
+{
+  const float3 c = dab->pattern_coord == PATTERN_COORD_UV ? (float3)((float)ij.x / n, (float)ij.y / n, 0.0f) : x;
+  __global const float *m = dab->pattern_transform;
+  return (float3)(m[0] * c.x + m[1] * c.y + m[2] * c.z + m[3], m[4] * c.x + m[5] * c.y + m[6] * c.z + m[7],
+                  m[8] * c.x + m[9] * c.y + m[10] * c.z + m[11]);
+}
+
 /* Brush profile at t = distance / radius in [0, 1]. */
 inline float falloff_weight(int falloff, float t)
 {
@@ -103,10 +168,13 @@ inline float4 paint_op(int op, float4 paint, float coverage, float4 surface)
   }
 }
 
-/* surface = lerp(surface, paint OP surface, a): the paint equation. */
-inline float4 paint_blend(__global const BrushDab *dab, int c, float4 surface, float a)
+/* surface = lerp(surface, paint OP surface, a): the paint equation, with
+ * paint = pigment in pattern: an opaque matte shades the pigment by the
+ * pattern value `shade`, a self matte is folded into `a` by the caller. */
+inline float4 paint_blend(__global const BrushDab *dab, int c, float4 surface, float a, float shade)
 {
-  const float4 paint = vload4(0, dab->value[c]);
+  float4 paint = vload4(0, dab->value[c]);
+  paint.xyz *= shade;
   return mix(surface, paint_op(dab->op, paint, paint.w, surface), a);
 }
 
@@ -128,22 +196,39 @@ __kernel void paint_dab(ATLAS_IN pos, int2 g, __global const int *active, int ac
     return;
   const int k = CHANNEL_INDEX(g.x, p, ij);
   float4 m = material[k];
-  const float w = falloff_weight(dab->falloff, t) * dab->strength * (1.0f - m.w);
+  float w = falloff_weight(dab->falloff, t) * dab->strength * (1.0f - m.w);
+  float shade = 1.0f;
+  if (dab->pattern != PATTERN_NONE) {
+    const float v = pattern_value(dab, pattern_point(dab, x, ij, g.x - 1));
+    if (dab->matte == MATTE_SELF)
+      w *= v;
+    else
+      shade = v;
+  }
   if (dab->alpha[CHANNEL_DIFFUSE] > 0.0f)
-    diffuse[k] = clamp(paint_blend(dab, CHANNEL_DIFFUSE, diffuse[k], w * dab->alpha[CHANNEL_DIFFUSE]), 0.0f, 1.0f);
-  if (dab->alpha[CHANNEL_SPECULAR] > 0.0f)
-    specular[k] = clamp(paint_blend(dab, CHANNEL_SPECULAR, specular[k], w * dab->alpha[CHANNEL_SPECULAR]), 0.0f, 1.0f);
+    diffuse[k] = clamp(paint_blend(dab, CHANNEL_DIFFUSE, diffuse[k], w * dab->alpha[CHANNEL_DIFFUSE], shade), 0.0f, 1.0f);
+  if (dab->alpha[CHANNEL_SPECULAR] > 0.0f) {
+    const float4 s = specular[k];
+    float4 target = vload4(0, dab->value[CHANNEL_SPECULAR]);
+    if (dab->specular_coefficient >= 0.0f) /* polish, sandpaper: the coefficient, not the hue */
+    {
+      const float top = fmax(s.x, fmax(s.y, s.z));
+      target.xyz = top > 1e-6f ? s.xyz * (dab->specular_coefficient / top) : (float3)(dab->specular_coefficient);
+    }
+    specular[k] = clamp(mix(s, paint_op(dab->op, (float4)(target.xyz * shade, target.w), target.w, s),
+                            w * dab->alpha[CHANNEL_SPECULAR]), 0.0f, 1.0f);
+  }
   if (dab->alpha[CHANNEL_ROUGHNESS] > 0.0f)
-    m.x = clamp(paint_blend(dab, CHANNEL_ROUGHNESS, (float4)(m.x), w * dab->alpha[CHANNEL_ROUGHNESS]).x, 0.0f, 1.0f);
+    m.x = clamp(paint_blend(dab, CHANNEL_ROUGHNESS, (float4)(m.x), w * dab->alpha[CHANNEL_ROUGHNESS], shade).x, 0.0f, 1.0f);
   if (dab->alpha[CHANNEL_DISPLACEMENT] > 0.0f)
-    m.y = paint_blend(dab, CHANNEL_DISPLACEMENT, (float4)(m.y), w * dab->alpha[CHANNEL_DISPLACEMENT]).x;
+    m.y = paint_blend(dab, CHANNEL_DISPLACEMENT, (float4)(m.y), w * dab->alpha[CHANNEL_DISPLACEMENT], shade).x;
   /* Labels are class ids: they are set, never blended. */
   if (dab->alpha[CHANNEL_LABEL] > 0.0f && w * dab->alpha[CHANNEL_LABEL] >= 0.5f)
     m.z = dab->value[CHANNEL_LABEL][0];
   /* The mask protects the other channels, so it is painted without itself. */
   if (dab->alpha[CHANNEL_MASK] > 0.0f) {
     const float wm = falloff_weight(dab->falloff, t) * dab->strength * dab->alpha[CHANNEL_MASK];
-    m.w = clamp(paint_blend(dab, CHANNEL_MASK, (float4)(m.w), wm).x, 0.0f, 1.0f);
+    m.w = clamp(paint_blend(dab, CHANNEL_MASK, (float4)(m.w), wm, 1.0f).x, 0.0f, 1.0f);
   }
   material[k] = m;
 }

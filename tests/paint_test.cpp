@@ -269,7 +269,7 @@ TEST(StrokeScript, ErrorsNameTheStrokeAndKey)
             "stroke 0: \"radius\" must be a number from 1e-30 to 1e+30");
   EXPECT_EQ(message(R"({"strokes": [{"tool": "paint", "points": [[0,0,0]], "radius": 1, "strength": "lots", "channels": {"roughness": 1}}]})"),
             "stroke 0: \"strength\" must be a number from 0 to 1");
-  EXPECT_EQ(message(R"({"strokes": [{"tool": "spray"}]})"), "stroke 0: \"tool\" must be one of paint, label, wash, smooth, blur, sculpt, inflate, flatten");
+  EXPECT_EQ(message(R"({"strokes": [{"tool": "spray"}]})"), "stroke 0: \"tool\" must be one of paint, label, wash, dip, smooth, blur, sculpt, inflate, flatten");
   EXPECT_EQ(message(R"({"strokes": [{"colour": [1,0,0]}]})").substr(0, 40), "stroke 0: \"colour\" is not a stroke key (");
   EXPECT_EQ(message(R"({"strokes": [{"points": [[0,0]], "radius": 1}]})"), "stroke 0: \"points\" must be a list of [x, y, z] points");
   EXPECT_EQ(message(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "channels": {"gloss": 1}}]})").substr(0, 51),
@@ -351,6 +351,136 @@ TEST(Undo, BudgetForgetsTheOldestStrokesAndSaysSo)
   EXPECT_TRUE(surface.undo_log().can_redo());
   surface.apply(s);
   EXPECT_FALSE(surface.undo_log().can_redo());
+}
+
+} // namespace
+} // namespace meshpaint
+
+namespace meshpaint {
+namespace {
+
+std::vector<std::size_t> texels_near(PaintSurface& surface, const Vec3& c, double r)
+{
+  const auto pos = surface.atlas().read_limit_positions();
+  std::vector<std::size_t> out;
+  for (std::size_t t = 0; t < pos.size(); ++t)
+    if (distance(pos[t], c) < r)
+      out.push_back(t);
+  return out;
+}
+
+TEST(PaintModes, RemoverPaintsTheUnderlyingMaterialBack)
+{
+  PaintSurface surface(test::runtime(), test::flat_grid(6), 3, AtlasStorage::Buffer);
+  Stroke red = paint_diffuse(dab_at({3.f, 3.f, 0.f}, 1.f), {1.f, 0.f, 0.f, 1.f});
+  red.value[CHANNEL_ROUGHNESS] = {0.9f, 0.9f, 0.9f, 1.f};
+  red.alpha[CHANNEL_ROUGHNESS] = 1.f;
+  surface.apply(red);
+  const Stroke remover = parse_stroke_script(
+    R"({"strokes": [{"points": [[3, 3, 0]], "radius": 1.5, "falloff": "constant", "mode": "remover"}]})").strokes[0];
+  surface.apply(remover);
+  const auto ch = surface.read_channels();
+  for (const std::size_t t : texels_near(surface, {3.f, 3.f, 0.f}, 1.4)) {
+    ASSERT_EQ(ch.diffuse[t][0], 0.8f);
+    ASSERT_EQ(ch.diffuse[t][1], 0.8f);
+    ASSERT_EQ(ch.material[t][0], 0.5f);
+  }
+}
+
+TEST(PaintModes, PolishAndSandpaperChangeShineNotColour)
+{
+  PaintSurface surface(test::runtime(), test::flat_grid(6), 3, AtlasStorage::Buffer);
+  Stroke tint = dab_at({3.f, 3.f, 0.f}, 1.f);
+  tint.value[CHANNEL_SPECULAR] = {0.2f, 0.1f, 0.05f, 1.f};
+  tint.alpha[CHANNEL_SPECULAR] = 1.f;
+  surface.apply(tint);
+  surface.apply(parse_stroke_script(R"({"strokes": [{"points": [[3, 3, 0]], "radius": 1, "falloff": "constant",
+                                       "mode": "polish", "coefficient": 0.8}]})").strokes[0]);
+  auto ch = surface.read_channels();
+  const auto inside = texels_near(surface, {3.f, 3.f, 0.f}, 0.9);
+  for (const std::size_t t : inside) {
+    ASSERT_NEAR(ch.specular[t][0], 0.8f, 1e-6);
+    ASSERT_NEAR(ch.specular[t][1], 0.4f, 1e-6);
+    ASSERT_NEAR(ch.specular[t][2], 0.2f, 1e-6);
+    ASSERT_NEAR(ch.material[t][0], 0.1f, 1e-6);
+    ASSERT_EQ(ch.diffuse[t][0], 0.8f);
+  }
+  surface.apply(parse_stroke_script(R"({"strokes": [{"points": [[3, 3, 0]], "radius": 1, "falloff": "constant",
+                                       "mode": "sandpaper"}]})").strokes[0]);
+  ch = surface.read_channels();
+  for (const std::size_t t : inside) {
+    ASSERT_NEAR(ch.material[t][0], 0.9f, 1e-6);
+    ASSERT_NEAR(ch.specular[t][0], 0.05f, 1e-6);
+    ASSERT_NEAR(ch.specular[t][2], 0.0125f, 1e-6);
+  }
+}
+
+TEST(PaintModes, DyeAndMaterialCheckTheirChannels)
+{
+  const auto fails = [](const std::string& s) {
+    try {
+      parse_stroke_script(s);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(fails(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "mode": "dye", "channels": {"roughness": 0.2}}]})"), "");
+  EXPECT_NE(fails(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "mode": "material", "channels": {"diffuse": [1,0,0]}}]})"), "");
+  EXPECT_EQ(fails(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "mode": "material",
+                       "channels": {"diffuse": [1,0,0], "specular": [1,1,1], "roughness": 0.3}}]})"), "");
+}
+
+TEST(PatternPaint, SolidTexturesVaryAndFollowTheirTransform)
+{
+  std::vector<std::vector<Float4>> results;
+  for (const char* transform : {"[[1,0,0,0],[0,1,0,0],[0,0,1,0]]", "[[0,1,0,0.37],[1,0,0,0],[0,0,1,0.11]]"}) {
+    PaintSurface surface(test::runtime(), test::genus_two(), 3, AtlasStorage::Buffer);
+    surface.apply(parse_stroke_script(std::string(R"({"strokes": [{"tool": "wash", "channels": {"diffuse": [1, 0, 0]},
+      "pattern": {"type": "marble", "scale": 2, "transform": )") + transform + "}}]}").strokes[0]);
+    results.push_back(surface.read_channels().diffuse);
+    double lo = 1, hi = 0;
+    for (const Float4& d : results.back()) {
+      const double t = 1.0 - d[1] / 0.8; // green falls from 0.8 to 0 as the pattern goes to 1
+      ASSERT_GE(t, -1e-6);
+      ASSERT_LE(t, 1 + 1e-6);
+      lo = std::min(lo, t);
+      hi = std::max(hi, t);
+    }
+    EXPECT_GT(hi - lo, 0.5) << "a marble wash should show veins";
+  }
+  EXPECT_NE(std::memcmp(results[0].data(), results[1].data(), results[0].size() * sizeof(Float4)), 0);
+}
+
+TEST(PatternPaint, DipPaintsBelowTheBathLevelOnly)
+{
+  PaintSurface surface(test::runtime(), test::genus_two(), 3, AtlasStorage::Buffer);
+  surface.apply(parse_stroke_script(R"({"strokes": [{"tool": "dip", "channels": {"diffuse": [0, 0, 1]},
+    "pattern": {"type": "bath", "scale": 20, "transform": [[1,0,0,0],[0,1,0,0],[0,0,1,-0.5]]}}]})").strokes[0]);
+  const auto pos = surface.atlas().read_limit_positions();
+  const auto ch = surface.read_channels();
+  std::size_t below = 0, above = 0;
+  for (std::size_t t = 0; t < pos.size(); ++t) {
+    if (pos[t][2] < 0.4f) {
+      ASSERT_EQ(ch.diffuse[t][2], 1.f);
+      ++below;
+    } else if (pos[t][2] > 0.6f) {
+      ASSERT_EQ(ch.diffuse[t][2], 0.8f);
+      ++above;
+    }
+  }
+  EXPECT_GT(below, 100u);
+  EXPECT_GT(above, 100u);
+}
+
+TEST(StrokeScript, RubberbandAndRubberstamp)
+{
+  const std::string path = R"("points": [[0,0,0], [5,5,0], [2,0,0]], "radius": 1, "spacing": 0.5, "channels": {"diffuse": [1,0,0]})";
+  const Stroke band = parse_stroke_script(R"({"strokes": [{"stroke": "rubberband", )" + path + "}]}").strokes[0];
+  ASSERT_EQ(band.points.size(), 2u);
+  EXPECT_EQ(stroke_samples(band).size(), 5u); // 0, 0.5, ... 2 along the straight line
+  const Stroke stamp = parse_stroke_script(R"({"strokes": [{"stroke": "rubberstamp", )" + path + "}]}").strokes[0];
+  EXPECT_EQ(stroke_samples(stamp).size(), 1u);
 }
 
 } // namespace

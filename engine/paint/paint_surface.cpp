@@ -59,7 +59,8 @@ struct PaintSurface::Device
 
 PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int level,
                            AtlasStorage storage, const BaseMaterial& material)
-  : atlas_(std::make_unique<Atlas>(runtime, mesh, level, storage)), level_(level), device_(std::make_unique<Device>())
+  : atlas_(std::make_unique<Atlas>(runtime, mesh, level, storage)), level_(level), device_(std::make_unique<Device>()),
+    base_material_(material)
 {
   atlas_->subdivide(1, level);
   atlas_->compute_limit();
@@ -425,8 +426,25 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
       dab.value[c][k] = stroke.value[c][k];
     dab.alpha[c] = stroke.alpha[c];
   }
+  if (stroke.remover) { // the underlying material, copied back
+    const BaseMaterial& m = base_material_;
+    for (int k = 0; k < 4; ++k) {
+      dab.value[CHANNEL_DIFFUSE][k] = m.diffuse[k];
+      dab.value[CHANNEL_SPECULAR][k] = m.specular[k];
+      dab.value[CHANNEL_ROUGHNESS][k] = k < 3 ? m.roughness : 1.f;
+      dab.value[CHANNEL_DISPLACEMENT][k] = k < 3 ? 0.f : 1.f;
+    }
+    dab.op = PAINT_OP_COPY;
+  }
+  dab.specular_coefficient = stroke.specular_coefficient;
+  dab.pattern = stroke.pattern;
+  dab.pattern_coord = stroke.pattern_coord;
+  dab.matte = stroke.matte;
+  dab.octaves = stroke.octaves;
+  for (int k = 0; k < 12; ++k)
+    dab.pattern_transform[k] = stroke.pattern_transform[std::size_t(k)];
   try {
-    if (stroke.tool == Tool::Wash) {
+    if (stroke.tool == Tool::Wash || stroke.tool == Tool::Dip) {
       std::vector<int> all(std::size_t(atlas_->topology().patch_count));
       for (std::size_t p = 0; p < all.size(); ++p)
         all[p] = int(p);

@@ -107,6 +107,7 @@ private:
   std::unique_ptr<Atlas> atlas_;
   int level_;
   std::unique_ptr<Device> device_;
+  BaseMaterial base_material_;
   UndoLog undo_;
   Snapshot stroke_before_;            // the running stroke's snapshot
   std::vector<char> in_stroke_;       // per patch: already in stroke_before_

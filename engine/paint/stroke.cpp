@@ -146,24 +146,85 @@ void read_channels(const StrokeReader& r, Stroke& s)
   }
 }
 
+//! "pattern": {"type": "noise"|"turbulence"|"marble"|"bath", "coord": "position"|"uv",
+//! "matte": "self"|"opaque", "scale": s, "octaves": n, "transform": [[...4], [...4], [...4]]}
+void read_pattern(const StrokeReader& r, Stroke& s)
+{
+  const json& p = r.at("pattern");
+  if (!p.is_object())
+    r.fail("pattern", "must be an object such as {\"type\": \"marble\", \"scale\": 4}");
+  static const std::set<std::string> keys = {"type", "coord", "matte", "scale", "octaves", "transform"};
+  for (const auto& item : p.items())
+    if (!keys.count(item.key()))
+      r.fail("pattern", "has an unknown key \"" + item.key() + "\" (type, coord, matte, scale, octaves, transform)");
+  static const std::vector<std::string> types = {"noise", "turbulence", "marble", "bath"};
+  const auto word = [&](const char* key, const std::vector<std::string>& allowed, const std::string& fallback) {
+    if (!p.contains(key))
+      return fallback;
+    if (p[key].is_string())
+      for (const std::string& a : allowed)
+        if (p[key].get<std::string>() == a)
+          return a;
+    std::string list;
+    for (const std::string& a : allowed)
+      list += (list.empty() ? "" : ", ") + a;
+    r.fail("pattern", std::string("\"") + key + "\" must be one of " + list);
+  };
+  if (!p.contains("type"))
+    r.fail("pattern", "needs a \"type\" (noise, turbulence, marble, bath)");
+  s.pattern = 1 + int(std::find(types.begin(), types.end(), word("type", types, "")) - types.begin());
+  s.pattern_coord = word("coord", {"position", "uv"}, "position") == "uv" ? PATTERN_COORD_UV : PATTERN_COORD_POSITION;
+  s.matte = word("matte", {"self", "opaque"}, "self") == "opaque" ? MATTE_OPAQUE : MATTE_SELF;
+  double scale = 1.0;
+  if (p.contains("scale")) {
+    if (!p["scale"].is_number() || !(p["scale"].get<double>() > 0) || !std::isfinite(p["scale"].get<double>()))
+      r.fail("pattern", "\"scale\" must be a positive number");
+    scale = p["scale"].get<double>();
+  }
+  if (p.contains("octaves")) {
+    if (!p["octaves"].is_number_integer() || p["octaves"].get<int>() < 1 || p["octaves"].get<int>() > 12)
+      r.fail("pattern", "\"octaves\" must be an integer from 1 to 12");
+    s.octaves = p["octaves"].get<int>();
+  }
+  if (p.contains("transform")) {
+    const json& t = p["transform"];
+    if (!t.is_array() || t.size() != 3)
+      r.fail("pattern", "\"transform\" must be three rows of four numbers (a 3x4 matrix)");
+    for (int row = 0; row < 3; ++row) {
+      if (!t[row].is_array() || t[row].size() != 4)
+        r.fail("pattern", "\"transform\" must be three rows of four numbers (a 3x4 matrix)");
+      for (int col = 0; col < 4; ++col) {
+        if (!t[row][col].is_number() || !std::isfinite(t[row][col].get<double>()))
+          r.fail("pattern", "\"transform\" must hold finite numbers");
+        s.pattern_transform[std::size_t(row * 4 + col)] = t[row][col].get<float>();
+      }
+    }
+  }
+  for (float& m : s.pattern_transform) // the scale applies after the transform
+    m = float(m * scale);
+}
+
 Stroke read_stroke(const json& j, std::size_t index)
 {
   if (!j.is_object())
     throw InputError("stroke " + std::to_string(index) + ": must be an object");
   static const std::set<std::string> known = {
     "tool",   "points", "radius",   "strength",   "falloff", "spacing", "op",     "channels", "alphas",
-    "pressure", "mirror", "amount", "iterations", "target", "method",  "lambda", "mu"};
+    "pressure", "mirror", "amount", "iterations", "target", "method",  "lambda", "mu",
+    "mode",     "coefficient", "pattern", "stroke"};
   const StrokeReader r(j, index);
   for (const auto& item : j.items())
     if (!known.count(item.key()))
       r.fail(item.key(), "is not a stroke key (tool, points, radius, strength, falloff, spacing, op, "
-                         "channels, alphas, pressure, mirror, amount, iterations, target, method, lambda, mu)");
+                         "channels, alphas, pressure, mirror, amount, iterations, target, method, lambda, mu, "
+                         "mode, coefficient, pattern, stroke)");
   Stroke s;
-  static const std::vector<std::string> tools = {"paint",  "label",   "wash",   "smooth",
+  static const std::vector<std::string> tools = {"paint",  "label",   "wash",   "dip",   "smooth",
                                                  "blur",   "sculpt",  "inflate", "flatten"};
   const std::string tool = r.word("tool", "paint", tools);
   s.tool = Tool(std::find(tools.begin(), tools.end(), tool) - tools.begin());
-  const bool paints = s.tool == Tool::Paint || s.tool == Tool::Label || s.tool == Tool::Wash;
+  const bool paints = s.tool == Tool::Paint || s.tool == Tool::Label || s.tool == Tool::Wash || s.tool == Tool::Dip;
+  const bool everywhere = s.tool == Tool::Wash || s.tool == Tool::Dip;
   const bool moves = s.tool == Tool::Sculpt || s.tool == Tool::Inflate || s.tool == Tool::Flatten;
   const bool smooths = s.tool == Tool::Smooth || s.tool == Tool::Blur;
   for (const char* key : {"channels", "alphas", "op"})
@@ -205,10 +266,10 @@ Stroke read_stroke(const json& j, std::size_t index)
     s.mirror_axis = r.word("mirror", "x", {"x", "y", "z"})[0] - 'x';
   read_channels(r, s);
 
-  if (s.tool == Tool::Wash) {
-    for (const char* key : {"points", "radius", "pressure", "mirror", "spacing", "falloff"})
+  if (everywhere) {
+    for (const char* key : {"points", "radius", "pressure", "mirror", "spacing", "falloff", "stroke"})
       if (r.has(key))
-        r.fail(key, "has no meaning for a wash, which covers everything at once");
+        r.fail(key, "has no meaning for a " + tool + ", which covers everything at once");
   } else {
     if (!r.has("points"))
       r.fail("points", "is required: the path of the stroke as [[x, y, z], ...]");
@@ -229,10 +290,68 @@ Stroke read_stroke(const json& j, std::size_t index)
       }
     }
   }
+  if (r.has("stroke")) {
+    // rubberband: a straight line from the first point to the last;
+    // rubberstamp: the first point only; interpolated: every point.
+    const std::string kind = r.word("stroke", "interpolated", {"interpolated", "rubberband", "rubberstamp"});
+    if (kind == "rubberband" && s.points.size() > 2) {
+      s.points = {s.points.front(), s.points.back()};
+      if (!s.pressure.empty())
+        s.pressure = {s.pressure.front(), s.pressure.back()};
+    } else if (kind == "rubberstamp") {
+      s.points.resize(1);
+      if (!s.pressure.empty())
+        s.pressure.resize(1);
+    }
+  }
+  if (r.has("pattern") && !paints)
+    r.fail("pattern", "has no meaning for a " + tool + " stroke");
+  if (r.has("pattern"))
+    read_pattern(r, s);
+  if (s.tool == Tool::Dip && s.pattern == PATTERN_NONE)
+    r.fail("pattern", "is required for a dip: the 3D matte to dip through, e.g. {\"type\": \"bath\"}");
+  if (r.has("mode") && (!paints || s.tool == Tool::Label))
+    r.fail("mode", "has no meaning for a " + tool + " stroke");
+  const std::string mode = r.word("mode", "", {"material", "remover", "dye", "polish", "sandpaper"});
+  if (!r.has("mode") && r.has("coefficient"))
+    r.fail("coefficient", "belongs to the polish and sandpaper modes");
+  if (mode == "material") {
+    for (const char* c : {"diffuse", "specular", "roughness"})
+      if (!r.has("channels") || !r.at("channels").contains(c))
+        r.fail("channels", std::string("of full material paint must give diffuse, specular and roughness; \"") + c +
+                             "\" is missing");
+  } else if (mode == "remover") {
+    if (r.has("channels"))
+      r.fail("channels", "has no meaning for the remover, which paints the underlying material back");
+    s.remover = true;
+    for (const int c : {CHANNEL_DIFFUSE, CHANNEL_SPECULAR, CHANNEL_ROUGHNESS, CHANNEL_DISPLACEMENT})
+      s.alpha[c] = 1.f;
+  } else if (mode == "dye") {
+    if (!r.has("channels"))
+      r.fail("channels", "of dye paint must give diffuse or specular");
+    for (const auto& item : r.at("channels").items())
+      if (item.key() != "diffuse" && item.key() != "specular")
+        r.fail("channels", "of dye paint may only be diffuse and specular, not \"" + item.key() + "\"");
+  } else if (mode == "polish" || mode == "sandpaper") {
+    if (r.has("channels"))
+      for (const auto& item : r.at("channels").items())
+        if (item.key() != "roughness")
+          r.fail("channels", "of " + mode + " paint may only be roughness, not \"" + item.key() + "\"");
+    const bool polish = mode == "polish";
+    if (s.alpha[CHANNEL_ROUGHNESS] == 0.f) {
+      const float rough = polish ? 0.1f : 0.9f;
+      s.value[CHANNEL_ROUGHNESS] = {rough, rough, rough, 1.f};
+      s.alpha[CHANNEL_ROUGHNESS] = 1.f;
+    }
+    s.specular_coefficient = float(r.number("coefficient", polish ? 0.9 : 0.05, 0.0, 1.0));
+    s.value[CHANNEL_SPECULAR] = {0.f, 0.f, 0.f, 1.f};
+    s.alpha[CHANNEL_SPECULAR] = 1.f;
+  }
+  const bool has_paint = r.has("channels") || s.remover || s.specular_coefficient >= 0.f;
   if (s.tool == Tool::Label) {
     if (!r.has("channels") || r.at("channels").size() != 1 || !r.at("channels").contains("label"))
       r.fail("channels", "of a label stroke must be exactly {\"label\": id}");
-  } else if (paints && !r.has("channels")) {
+  } else if (paints && !has_paint) {
     r.fail("channels", "is required: what to paint, e.g. {\"diffuse\": [1, 0, 0]}");
   }
   return s;
@@ -242,7 +361,8 @@ Stroke read_stroke(const json& j, std::size_t index)
 
 const char* tool_name(Tool tool)
 {
-  static const char* const names[] = {"paint", "label", "wash", "smooth", "blur", "sculpt", "inflate", "flatten"};
+  static const char* const names[] = {"paint", "label",  "wash",    "dip",    "smooth",
+                                     "blur",  "sculpt", "inflate", "flatten"};
   return names[int(tool)];
 }
 

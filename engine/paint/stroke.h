@@ -15,6 +15,7 @@ enum class Tool
   Paint,   //!< the paint equation on the chosen channels
   Label,   //!< paint one class id into the label channel
   Wash,    //!< the paint equation everywhere at once, no brush
+  Dip,     //!< a wash through a 3D matte (the stroke's pattern)
   Smooth,  //!< Laplacian or Taubin smoothing of positions (or colours)
   Blur,    //!< smoothing of the colour channels
   Sculpt,  //!< move along the normal at the brush centre
@@ -43,6 +44,13 @@ struct Stroke
   bool target_colour = false;           //!< smooth: colours instead of positions
   bool taubin = true;                   //!< smooth positions: lambda/mu pairs (no shrinking)
   float lambda = 0.5f, mu = -0.53f;     //!< smoothing steps
+  bool remover = false;                 //!< paint the underlying material back
+  float specular_coefficient = -1.f;    //!< >= 0: polish / sandpaper the specular coefficient
+  int pattern = PATTERN_NONE;           //!< PATTERN_*
+  int pattern_coord = PATTERN_COORD_POSITION;
+  int matte = MATTE_SELF;
+  int octaves = 4;
+  std::array<float, 12> pattern_transform{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}; //!< 3x4, rows
 };
 
 //! A stroke script: an optional atlas level and the strokes in order.
