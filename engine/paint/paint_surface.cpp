@@ -178,6 +178,8 @@ void PaintSurface::refresh_geometry(const std::vector<int>& patches)
 
 void PaintSurface::remember(const std::vector<int>& patches)
 {
+  if (!undo_.recording())
+    return;
   std::vector<int> fresh;
   for (const int p : patches)
     if (!in_stroke_[std::size_t(p)]) {

@@ -26,6 +26,10 @@ public:
   explicit UndoLog(std::size_t budget_bytes = std::size_t(512) << 20) : budget_(budget_bytes) {}
 
   void set_budget(std::size_t bytes);
+  //! With recording off, strokes take no snapshots at all (benchmarks,
+  //! batch jobs that never undo).
+  void set_recording(bool on) { recording_ = on; }
+  bool recording() const { return recording_; }
   std::size_t budget() const { return budget_; }
   std::size_t bytes() const { return bytes_; }
 
@@ -52,6 +56,7 @@ private:
 
   std::size_t budget_;
   std::size_t bytes_ = 0;
+  bool recording_ = true;
   std::deque<Snapshot> undo_;
   std::vector<Snapshot> redo_;
   std::vector<std::string> messages_;

@@ -133,12 +133,18 @@ int bench_subdivide(const Args& args)
 
 } // namespace
 
+int bench_paint(const Args& args);
+
 int bench_command(const Argv& argv)
 {
-  Args args("bench", argv, {"--json"}, {"--level", "--repeats", "--device", "--storage"});
-  if (args.positionals().empty() || args.positionals()[0] != "subdivide")
-    throw InputError("usage: meshpaint bench subdivide MESH --level L [--json] [--repeats N]");
-  return bench_subdivide(args);
+  Args args("bench", argv, {"--json"}, {"--level", "--repeats", "--steps", "--tool", "--device", "--storage"});
+  const std::string what = args.positionals().empty() ? "" : args.positionals()[0];
+  if (what == "subdivide")
+    return bench_subdivide(args);
+  if (what == "paint")
+    return bench_paint(args);
+  throw InputError("usage: meshpaint bench subdivide MESH [--level L] [--json] [--repeats N] | "
+                   "meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint]");
 }
 
 } // namespace meshpaint::cli

@@ -28,6 +28,9 @@ commands:
                                       apply a stroke script (docs/strokes.md); writes
                                       OUTDIR/surface.vtp with the paint channels, and
                                       model.obj + model.mtl + PNG texture maps
+  bench paint [--json] [--steps N] [--tool sculpt|paint]
+                                      brush step times as the paper's Table 1, and
+                                      smoothing against VTK and OpenMesh
   devices                             the OpenCL devices (for --device / MESHPAINT_DEVICE)
   help                                this text
 

@@ -1,0 +1,199 @@
+// meshpaint bench paint: the paper's Table 1 on this machine (brush step
+// time by mesh size and brush size), and full-surface smoothing against VTK
+// and OpenMesh on the same surface, all in one run.
+
+#include "commands.h"
+#include "table.h"
+
+#include "SurfaceConversion.h"
+
+#include "atlas/weld.h"
+#include "core/errors.h"
+#include "core/format.h"
+#include "core/timer.h"
+#include "mesh/openmesh_types.h"
+#include "paint/paint_surface.h"
+
+#include <OpenMesh/Tools/Smoother/JacobiLaplaceSmootherT.hh> // for JacobiLaplaceSmootherT
+
+#include <vtkSmoothPolyDataFilter.h> // for vtkSmoothPolyDataFilter
+
+#include <algorithm> // for std::nth_element
+#include <cmath>     // for std::sqrt
+#include <iostream>  // for std::cout
+
+namespace meshpaint::cli {
+namespace {
+
+struct Row
+{
+  std::string mesh;
+  int level;
+  double paper_ms[3]; // GeForce 7800, brush + rendering (Ritschel et al., Table 1)
+};
+
+// Meshes near the paper's 100k, 600k and 2.3M faces, at the painting level.
+const Row kRows[] = {{"femur.off", 2, {30, 30, 30}},
+                     {"armadillo.off", 2, {60, 80, 100}},
+                     {"armadillo.off", 3, {120, 220, 390}}};
+const double kCoverage[3] = {0.01, 0.10, 0.50};
+
+//! Radius around `centre` whose ball holds `fraction` of the texels: texels
+//! sample the surface about evenly, so this is about that share of the area.
+float radius_for(const std::vector<Float4>& texels, const Vec3& centre, double fraction)
+{
+  std::vector<float> d(texels.size());
+  for (std::size_t t = 0; t < texels.size(); ++t)
+    d[t] = std::sqrt((texels[t][0] - centre[0]) * (texels[t][0] - centre[0]) +
+                     (texels[t][1] - centre[1]) * (texels[t][1] - centre[1]) +
+                     (texels[t][2] - centre[2]) * (texels[t][2] - centre[2]));
+  const std::size_t k = std::min(d.size() - 1, std::size_t(fraction * double(d.size())));
+  std::nth_element(d.begin(), d.begin() + long(k), d.end());
+  return d[k];
+}
+
+struct SmoothingResult
+{
+  std::size_t vertices = 0;
+  double meshpaint_ms = 0, vtk_ms = 0, openmesh_ms = 0;
+};
+
+//! Per-iteration time of Laplacian smoothing of the whole level-L surface.
+SmoothingResult bench_smoothing(PaintSurface& surface, int iterations, int repeats)
+{
+  SmoothingResult r;
+  const WeldedSurface welded = level_surface(surface.atlas(), surface.level(), false);
+  r.vertices = welded.points.size();
+  const double diagonal = surface.atlas().base_mesh().diagonal();
+
+  Stroke s;
+  s.tool = Tool::Smooth;
+  s.points = {surface.atlas().base_mesh().points.front()};
+  s.radius = float(4 * diagonal); // the whole surface
+  s.falloff = FALLOFF_CONSTANT;
+  s.iterations = iterations;
+  s.taubin = false;
+  std::vector<double> ours;
+  for (int k = 0; k < repeats; ++k)
+    ours.push_back(surface.apply(s).ms / iterations);
+  r.meshpaint_ms = median(ours);
+
+  vtkSmartPointer<vtkPolyData> poly = to_polydata(welded);
+  std::vector<double> vtk;
+  for (int k = 0; k < repeats; ++k) {
+    auto smooth = vtkSmartPointer<vtkSmoothPolyDataFilter>::New();
+    smooth->SetInputData(poly);
+    smooth->SetNumberOfIterations(iterations);
+    smooth->SetRelaxationFactor(0.5);
+    smooth->FeatureEdgeSmoothingOff();
+    smooth->BoundarySmoothingOn();
+    smooth->SetConvergence(0.0);
+    Timer t;
+    smooth->Update();
+    vtk.push_back(t.ms() / iterations);
+  }
+  r.vtk_ms = median(vtk);
+
+  PolyMesh mesh;
+  for (const Vec3& p : welded.points)
+    mesh.add_vertex(PolyMesh::Point(p[0], p[1], p[2]));
+  for (const auto& q : welded.quads)
+    mesh.add_face({PolyMesh::VertexHandle(q[0]), PolyMesh::VertexHandle(q[1]), PolyMesh::VertexHandle(q[2]),
+                   PolyMesh::VertexHandle(q[3])});
+  mesh.request_vertex_normals();
+  mesh.request_face_normals();
+  mesh.update_normals();
+  std::vector<double> om;
+  for (int k = 0; k < repeats; ++k) {
+    OpenMesh::Smoother::JacobiLaplaceSmootherT<PolyMesh> smoother(mesh);
+    smoother.initialize(OpenMesh::Smoother::SmootherT<PolyMesh>::Tangential_and_Normal,
+                        OpenMesh::Smoother::SmootherT<PolyMesh>::C0);
+    Timer t;
+    smoother.smooth(unsigned(iterations));
+    om.push_back(t.ms() / iterations);
+  }
+  r.openmesh_ms = median(om);
+  return r;
+}
+
+} // namespace
+
+int bench_paint(const Args& args)
+{
+  args.expect_positionals(1, 1, "paint [--json] [--steps N] [--tool sculpt|paint]");
+  const int steps = args.integer("--steps", 21, 1, 1000);
+  const std::string tool = args.value("--tool", "sculpt");
+  if (tool != "sculpt" && tool != "paint")
+    throw InputError("--tool must be sculpt or paint, not '" + tool + "'");
+  const bool json = args.flag("--json");
+  auto runtime = open_device(args);
+  const AtlasStorage storage =
+    args.has("--storage") ? parse_storage(args.value("--storage")) : default_storage(runtime->info());
+
+  Table table({"faces", "mesh", "1% ms", "10% ms", "50% ms", "paper ms (1/10/50%)", "speed-up (1/10/50%)"});
+  Table smoothing({"vertices", "mesh", "meshpaint ms", "VTK ms", "OpenMesh ms", "vs VTK", "vs OpenMesh"});
+  std::string json_rows, json_smooth;
+  for (const Row& row : kRows) {
+    const BaseMesh mesh = load_mesh(scans_dir() + "/" + row.mesh);
+    PaintSurface surface(runtime, mesh, row.level, storage);
+    surface.undo_log().set_recording(false); // the paper's step has no undo
+    const std::vector<Float4> texels = surface.atlas().read_limit_positions();
+    const Vec3 at = surface.atlas().base_mesh().points[surface.atlas().base_mesh().vertex_count() / 2];
+    const std::size_t faces = std::size_t(surface.atlas().topology().patch_count) * surface.atlas().layout(row.level).n *
+                              surface.atlas().layout(row.level).n;
+    double ms[3];
+    for (int c = 0; c < 3; ++c) {
+      Stroke s;
+      s.tool = tool == "paint" ? Tool::Paint : Tool::Sculpt;
+      s.points = {at};
+      s.radius = radius_for(texels, at, kCoverage[c]);
+      s.falloff = FALLOFF_SMOOTHSTEP;
+      s.amount = float(1e-4 * mesh.diagonal());
+      s.value[CHANNEL_DIFFUSE] = {0.9f, 0.2f, 0.1f, 1.f};
+      s.alpha[CHANNEL_DIFFUSE] = 0.5f;
+      surface.apply(s); // warm-up
+      std::vector<double> t;
+      for (int k = 0; k < steps; ++k)
+        t.push_back(surface.apply(s).ms);
+      ms[c] = median(t);
+    }
+    const std::string name = row.mesh.substr(0, row.mesh.find('.')) + " L" + std::to_string(row.level);
+    table.add({grouped(faces), name, format_fixed(ms[0], 2), format_fixed(ms[1], 2), format_fixed(ms[2], 2),
+               format_fixed(row.paper_ms[0], 0) + "/" + format_fixed(row.paper_ms[1], 0) + "/" +
+                 format_fixed(row.paper_ms[2], 0),
+               format_fixed(row.paper_ms[0] / ms[0], 1) + "x/" + format_fixed(row.paper_ms[1] / ms[1], 1) + "x/" +
+                 format_fixed(row.paper_ms[2] / ms[2], 1) + "x"});
+    json_rows += std::string(json_rows.empty() ? "" : ",") + "{\"mesh\":" + json_string(name) +
+                 ",\"faces\":" + std::to_string(faces) + ",\"ms\":[" + std::to_string(ms[0]) + "," +
+                 std::to_string(ms[1]) + "," + std::to_string(ms[2]) + "],\"paper_ms\":[" +
+                 std::to_string(row.paper_ms[0]) + "," + std::to_string(row.paper_ms[1]) + "," +
+                 std::to_string(row.paper_ms[2]) + "]}";
+    if (row.level >= 2) {
+      const SmoothingResult r = bench_smoothing(surface, 10, 3);
+      smoothing.add({grouped(r.vertices), name, format_fixed(r.meshpaint_ms, 2), format_fixed(r.vtk_ms, 2),
+                     format_fixed(r.openmesh_ms, 2), format_fixed(r.vtk_ms / r.meshpaint_ms, 1) + "x",
+                     format_fixed(r.openmesh_ms / r.meshpaint_ms, 1) + "x"});
+      json_smooth += std::string(json_smooth.empty() ? "" : ",") + "{\"mesh\":" + json_string(name) +
+                     ",\"vertices\":" + std::to_string(r.vertices) + ",\"meshpaint_ms\":" +
+                     std::to_string(r.meshpaint_ms) + ",\"vtk_ms\":" + std::to_string(r.vtk_ms) +
+                     ",\"openmesh_ms\":" + std::to_string(r.openmesh_ms) + "}";
+    }
+  }
+  if (json) {
+    std::cout << "{\"tool\":" << json_string(tool) << ",\"steps\":" << steps << ",\"device\":"
+              << json_string(runtime->info().name) << ",\"brush\":[" << json_rows << "],\"smoothing\":["
+              << json_smooth << "]}\n";
+    return 0;
+  }
+  std::cout << "meshpaint bench paint: one " << tool << " brush step (culling, weights, transformation"
+            << (tool == "sculpt" ? ", limit normals and bounds on the touched patches" : "")
+            << "), median of " << steps << " steps after a warm-up; rendering not included\n"
+            << "  device " << runtime->info().summary() << ", " << storage_name(storage) << " storage\n\n";
+  table.print(std::cout);
+  std::cout << "\n  the paper's figures (GeForce 7800) include rendering at 800x600\n\n"
+            << "full-surface Laplacian smoothing, per iteration (10 iterations, median of 3)\n\n";
+  smoothing.print(std::cout);
+  return 0;
+}
+
+} // namespace meshpaint::cli
