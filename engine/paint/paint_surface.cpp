@@ -9,7 +9,6 @@
 #include <algorithm> // for std::sort, std::max
 #include <cmath>     // for std::sqrt
 #include <limits>    // for std::numeric_limits
-#include <unordered_map> // for std::unordered_map
 
 namespace meshpaint {
 namespace {
@@ -245,20 +244,27 @@ std::vector<PaintSurface::Cull> PaintSurface::cull(const Vec3& centre, float rad
   std::vector<Cull> out(static_cast<std::size_t>(count));
   if (count > 0)
     rt.queue().enqueueReadBuffer(d.records, CL_TRUE, 0, sizeof(CullRecord) * count, out.data());
-  // Appends land in any order; sort so that everything after is deterministic.
-  std::sort(out.begin(), out.end(), [](const Cull& a, const Cull& b) { return a.record.patch < b.record.patch; });
+  // Appends land in any order: callers must not depend on it.
   return out;
 }
 
 std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Vec3* centre_out, Vec3* normal_out)
 {
-  // Snap: the closest texel within the radius is the brush centre.
-  const std::vector<Cull> near = cull(point, radius);
+  // Snap: the closest texel within the radius is the brush centre. A point
+  // on the surface needs only a small search; grow it up to the radius.
+  const float start = std::min(radius, float(1e-3 * atlas_->base_mesh().diagonal()));
+  std::vector<Cull> near;
+  for (float r = start; near.empty(); r = std::min(radius, 8.f * r)) {
+    near = cull(point, r);
+    if (r >= radius)
+      break;
+  }
   if (near.empty())
     return {};
   const Cull* best = &near.front();
-  for (const Cull& c : near)
-    if (c.record.distance < best->record.distance)
+  for (const Cull& c : near) // nearest, ties to the lowest patch: independent of append order
+    if (c.record.distance < best->record.distance ||
+        (c.record.distance == best->record.distance && c.record.patch < best->record.patch))
       best = &c;
   const float* snapped = best->record.closest_position;
   const Vec3 centre{snapped[0], snapped[1], snapped[2]};
@@ -269,32 +275,42 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
 
   // The brush reaches the patches connected to the centre's patch through
   // sides that themselves come within the radius: never through the air.
+  const int start_patch = best->record.patch;
   const std::vector<Cull> reach = cull(centre, radius);
-  std::unordered_map<int, const CullRecord*> by_patch;
-  for (const Cull& c : reach)
-    by_patch[c.record.patch] = &c.record;
   const AtlasTopology& topo = atlas_->topology();
-  std::vector<int> active, stack{best->record.patch};
-  std::unordered_map<int, bool> seen{{best->record.patch, true}};
+  std::vector<int> record_of(std::size_t(topo.patch_count), -1);
+  for (std::size_t k = 0; k < reach.size(); ++k)
+    record_of[std::size_t(reach[k].record.patch)] = int(k);
+  std::vector<char> seen(std::size_t(topo.patch_count), 0);
+  std::vector<int> stack{start_patch};
+  seen[std::size_t(start_patch)] = 1;
+  std::size_t reached = 0;
   while (!stack.empty()) {
     const int p = stack.back();
     stack.pop_back();
-    const auto it = by_patch.find(p);
-    if (it == by_patch.end())
+    const int k = record_of[std::size_t(p)];
+    if (k < 0) {
+      seen[std::size_t(p)] = 0; // not within the radius after all
       continue;
-    active.push_back(p);
+    }
+    ++reached;
+    const CullRecord& rec = reach[std::size_t(k)].record;
     for (int s = 0; s < 4; ++s) {
-      if (!(it->second->side_distance[s] <= radius))
+      if (!(rec.side_distance[s] <= radius))
         continue;
       const PatchEdge& e = topo.edges[topo.patch_sides[p][s]];
       const int q = e.patch[0] == p && e.side[0] == s ? e.patch[1] : e.patch[0];
-      if (q >= 0 && !seen[q]) {
-        seen[q] = true;
+      if (q >= 0 && !seen[std::size_t(q)]) {
+        seen[std::size_t(q)] = 1;
         stack.push_back(q);
       }
     }
   }
-  std::sort(active.begin(), active.end());
+  std::vector<int> active;
+  active.reserve(reached);
+  for (int p = 0; p < topo.patch_count; ++p)
+    if (seen[std::size_t(p)])
+      active.push_back(p);
   return active;
 }
 
@@ -397,18 +413,25 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
       steps.push_back(stroke.mu);
   }
   for (const auto& [k, layer] : layers) {
+    // Passes alternate between the layer and a work copy; texels no pass
+    // writes (sides and corners shared with patches outside the brush) are
+    // the same in both from the first copy on.
     const cl::Memory& work = k == &d.positions ? d.position_work : static_cast<const cl::Memory&>(d.channel_work);
+    launch(q, k->copy_tiles, tiles.first, tiles.second, *layer, work, grid(l), list, count);
+    const cl::Memory* from = layer;
+    const cl::Memory* to = &work;
     for (const float step : steps) {
-      launch(q, k->copy_tiles, tiles.first, tiles.second, *layer, work, grid(l), list, count);
-      launch(q, k->smooth_interior, tiles.first, tiles.second, *layer, work, grid(l), list, count, d.weights, step);
+      launch(q, k->smooth_interior, tiles.first, tiles.second, *from, *to, grid(l), list, count, d.weights, step);
       if (edge_count > 0 && l.n > 1)
         launch(q, k->smooth_edges, cl::NDRange(l.n - 1, round_up(edge_count, kGroup)), cl::NDRange(1, kGroup),
-               *layer, work, grid(l), atlas_->edge_table(), edges, edge_count, d.weights, step);
+               *from, *to, grid(l), atlas_->edge_table(), edges, edge_count, d.weights, step);
       if (ring_count > 0)
-        launch(q, k->smooth_corners, cl::NDRange(round_up(ring_count, kGroup)), cl::NDRange(kGroup), *layer, work,
+        launch(q, k->smooth_corners, cl::NDRange(round_up(ring_count, kGroup)), cl::NDRange(kGroup), *from, *to,
                grid(l), atlas_->ring_table(), atlas_->slot_table(), rings, ring_count, d.weights, step);
-      launch(q, k->copy_tiles, tiles.first, tiles.second, work, *layer, grid(l), list, count);
+      std::swap(from, to);
     }
+    if (from != layer) // the result is in the work copy
+      launch(q, k->copy_tiles, tiles.first, tiles.second, work, *layer, grid(l), list, count);
   }
   if (stroke.target_colour)
     q.finish();
