@@ -102,6 +102,15 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     throw DeviceError("cannot set up painting on " + rt.info().name + ": " + describe(e));
   }
   in_stroke_.assign(std::size_t(l.patches), 0);
+  mark_.assign(std::size_t(l.patches), 0);
+  record_slot_.assign(std::size_t(l.patches), nullptr);
+  const AtlasTopology& topo = atlas_->topology();
+  neighbours_.resize(std::size_t(l.patches));
+  for (int p = 0; p < l.patches; ++p)
+    for (int s = 0; s < 4; ++s) {
+      const PatchEdge& e = topo.edges[topo.patch_sides[p][s]];
+      neighbours_[std::size_t(p)][s] = e.patch[0] == p && e.side[0] == s ? e.patch[1] : e.patch[0];
+    }
 }
 
 namespace {
@@ -277,40 +286,41 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
   // sides that themselves come within the radius: never through the air.
   const int start_patch = best->record.patch;
   const std::vector<Cull> reach = cull(centre, radius);
-  const AtlasTopology& topo = atlas_->topology();
-  std::vector<int> record_of(std::size_t(topo.patch_count), -1);
-  for (std::size_t k = 0; k < reach.size(); ++k)
-    record_of[std::size_t(reach[k].record.patch)] = int(k);
-  std::vector<char> seen(std::size_t(topo.patch_count), 0);
-  std::vector<int> stack{start_patch};
-  seen[std::size_t(start_patch)] = 1;
-  std::size_t reached = 0;
+
+  // Flood from the centre's patch over the culled patches; `mark_` holds,
+  // per patch, 2 * generation for "culled" and 2 * generation + 1 for
+  // "reached", so nothing needs clearing between dabs.
+  const std::uint32_t culled = 2 * ++generation_, reached = culled + 1;
+  for (const Cull& c : reach)
+    mark_[std::size_t(c.record.patch)] = culled;
+  std::vector<const CullRecord*> record_of_stack;
+  std::vector<int> stack;
+  const auto visit = [&](int p) {
+    if (mark_[std::size_t(p)] == culled) {
+      mark_[std::size_t(p)] = reached;
+      stack.push_back(p);
+    }
+  };
+  // Records by patch, for the sides' distances.
+  for (const Cull& c : reach)
+    record_slot_[std::size_t(c.record.patch)] = &c.record;
+  visit(start_patch);
+  std::size_t count = 0;
   while (!stack.empty()) {
     const int p = stack.back();
     stack.pop_back();
-    const int k = record_of[std::size_t(p)];
-    if (k < 0) {
-      seen[std::size_t(p)] = 0; // not within the radius after all
-      continue;
-    }
-    ++reached;
-    const CullRecord& rec = reach[std::size_t(k)].record;
-    for (int s = 0; s < 4; ++s) {
-      if (!(rec.side_distance[s] <= radius))
-        continue;
-      const PatchEdge& e = topo.edges[topo.patch_sides[p][s]];
-      const int q = e.patch[0] == p && e.side[0] == s ? e.patch[1] : e.patch[0];
-      if (q >= 0 && !seen[std::size_t(q)]) {
-        seen[std::size_t(q)] = 1;
-        stack.push_back(q);
-      }
-    }
+    ++count;
+    const CullRecord& rec = *record_slot_[std::size_t(p)];
+    for (int s = 0; s < 4; ++s)
+      if (rec.side_distance[s] <= radius && neighbours_[std::size_t(p)][s] >= 0)
+        visit(neighbours_[std::size_t(p)][s]);
   }
   std::vector<int> active;
-  active.reserve(reached);
-  for (int p = 0; p < topo.patch_count; ++p)
-    if (seen[std::size_t(p)])
-      active.push_back(p);
+  active.reserve(count);
+  for (const Cull& c : reach)
+    if (mark_[std::size_t(c.record.patch)] == reached)
+      active.push_back(c.record.patch);
+  std::sort(active.begin(), active.end());
   return active;
 }
 

@@ -7,7 +7,9 @@
 #include "paint/stroke.h"
 #include "paint/undo_log.h"
 
-#include <memory> // for std::unique_ptr
+#include <array>   // for std::array
+#include <cstdint> // for std::uint32_t
+#include <memory>  // for std::unique_ptr
 #include <vector> // for std::vector
 
 namespace meshpaint {
@@ -111,6 +113,10 @@ private:
   UndoLog undo_;
   Snapshot stroke_before_;            // the running stroke's snapshot
   std::vector<char> in_stroke_;       // per patch: already in stroke_before_
+  std::vector<std::array<int, 4>> neighbours_; // per patch side: the patch across, -1 on a border
+  std::vector<std::uint32_t> mark_;   // per patch: culled / reached in dab `generation_`
+  std::vector<const CullRecord*> record_slot_; // per patch: its record in the current dab
+  std::uint32_t generation_ = 0;
 };
 
 } // namespace meshpaint
