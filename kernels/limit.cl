@@ -116,15 +116,22 @@ __kernel void limit_corners(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, __global
     float4 es = (float4)(0.0f), ds = (float4)(0.0f);
     t1 = (float4)(0.0f);
     t2 = (float4)(0.0f);
+    /* cos(i theta) by rotation, not a cos() per slot: the corner kernel
+     * runs once per ring and is bound by these. */
+    const float st = sin(theta);
+    float cp = c, ci = 1.0f, si_ = 0.0f; /* cos(-theta) = cos(theta) */
     for (int i = 0; i < m; ++i) {
-      const CornerSlot si = slots[ring.first + i];
-      const float4 ei = CORNER_LOAD(src, g, si, 1, 0);
-      const float4 di = CORNER_LOAD(src, g, si, 1, 1);
-      const float cp = cos((i - 1) * theta), ci = cos(i * theta), cn = cos((i + 1) * theta);
+      const CornerSlot slot = slots[ring.first + i];
+      const float4 ei = CORNER_LOAD(src, g, slot, 1, 0);
+      const float4 di = CORNER_LOAD(src, g, slot, 1, 1);
+      const float cn = ci * c - si_ * st, sn = si_ * c + ci * st;
       es += ei;
       ds += di;
       t1 += (4.0f * ci) * ei + (face_scale * (ci + cn)) * di;
       t2 += (4.0f * cp) * ei + (face_scale * (cp + ci)) * di;
+      cp = ci;
+      ci = cn;
+      si_ = sn;
     }
     p = (fm * fm * v + 4.0f * es + ds) * (1.0f / (fm * (fm + 5.0f)));
   }
