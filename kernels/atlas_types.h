@@ -67,6 +67,8 @@ typedef struct {
 #define PATTERN_TURBULENCE 2 /* sum of |noise| over octaves */
 #define PATTERN_MARBLE 3     /* sin(x + turbulence), veins */
 #define PATTERN_BATH 4       /* 1 below the plane z = 0 of the pattern space, soft edge */
+#define PATTERN_IMAGE 5      /* a 2D image over pattern-space x, y in [0, 1), repeated */
+#define PATTERN_VOLUME 6     /* a 3D voxel array over pattern-space [0, 1)^3, clamped */
 
 #define PATTERN_COORD_POSITION 0 /* the surface point: solid textures */
 #define PATTERN_COORD_UV 1       /* the patch parameters (u, v, 0) */
@@ -91,7 +93,9 @@ typedef struct {
   mp_int matte;                   /* MATTE_* */
   mp_int octaves;
   float pattern_transform[12];    /* rows of a 3x4 matrix: world (or uv) to pattern space */
-  mp_int pad;
+  mp_int raster_size[4];          /* pattern image or volume: width, height, depth, channels */
+  mp_int stamp_size[2];           /* brush stamp: width, height; 0: none */
+  float stamp_u[4], stamp_v[4];   /* the stamp's axes in the tangent plane at the centre */
 } BrushDab;
 
 /* What the culling kernel reports for a patch that reaches into the brush:

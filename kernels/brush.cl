@@ -124,16 +124,80 @@ inline float turbulence(float3 p, int octaves)
   return sum / norm;
 }
 
-/* The pattern value in [0, 1] at pattern-space point q. */
-inline float pattern_value(__global const BrushDab *dab, float3 q)
+/* Sample (x, y, z) of a raster as rgba: one channel is grey and its own
+ * alpha, three are rgb with alpha 1. */
+inline float4 raster_texel(__global const float *r, int4 size, int x, int y, int z)
+{
+  __global const float *s = r + ((z * size.y + y) * size.x + x) * size.w;
+  if (size.w == 1)
+    return (float4)(s[0]);
+  return (float4)(s[0], s[1], s[2], size.w == 4 ? s[3] : 1.0f);
+}
+
+/* Bilinear (trilinear for depth > 1) at q in [0, 1)^3, sample centres at
+ * (i + 0.5) / n; `repeat`: 2D patterns tile the plane, else the border
+ * samples extend outwards. */
+inline float4 raster_sample(__global const float *r, int4 size, float3 q, int repeat)
+{
+  const int volume = size.z > 1;
+  repeat = repeat && !volume;
+  if (repeat)
+    q.xy = q.xy - floor(q.xy);
+  const float3 g = clamp(q, 0.0f, 1.0f) * convert_float3(size.xyz) - 0.5f;
+  const float3 f = floor(g), t = g - f;
+  const int3 a = convert_int3(f);
+  float4 acc = (float4)(0.0f);
+  for (int dz = 0; dz <= volume; ++dz)
+    for (int dy = 0; dy <= 1; ++dy)
+      for (int dx = 0; dx <= 1; ++dx) {
+        int x = a.x + dx, y = a.y + dy;
+        if (repeat) {
+          x = (x + size.x) % size.x;
+          y = (y + size.y) % size.y;
+        } else {
+          x = clamp(x, 0, size.x - 1);
+          y = clamp(y, 0, size.y - 1);
+        }
+        const int z = clamp(a.z + dz, 0, size.z - 1);
+        const float w = (dx ? t.x : 1.0f - t.x) * (dy ? t.y : 1.0f - t.y) * (volume ? (dz ? t.z : 1.0f - t.z) : 1.0f);
+        acc += w * raster_texel(r, size, x, y, z);
+      }
+  return acc;
+}
+
+/* The pattern at pattern-space point q: rgb shades the pigment (opaque
+ * matte), w is the matte (self matte). Procedural patterns are grey. */
+inline float4 pattern_sample(__global const BrushDab *dab, __global const float *raster, float3 q)
 {
   switch (dab->pattern) {
-  case PATTERN_NOISE: return 0.5f + 0.5f * gradient_noise(q);
-  case PATTERN_TURBULENCE: return turbulence(q, dab->octaves);
-  case PATTERN_MARBLE: return 0.5f + 0.5f * sin(6.2831853f * (q.x + 2.0f * turbulence(q, dab->octaves)));
-  case PATTERN_BATH: return clamp(0.5f - q.z, 0.0f, 1.0f);
-  default: return 1.0f;
+  case PATTERN_NOISE: return (float4)(0.5f + 0.5f * gradient_noise(q));
+  case PATTERN_TURBULENCE: return (float4)(turbulence(q, dab->octaves));
+  case PATTERN_MARBLE: return (float4)(0.5f + 0.5f * sin(6.2831853f * (q.x + 2.0f * turbulence(q, dab->octaves))));
+  case PATTERN_BATH: return (float4)(clamp(0.5f - q.z, 0.0f, 1.0f));
+  case PATTERN_IMAGE:
+  case PATTERN_VOLUME: {
+    const int4 size = vload4(0, dab->raster_size);
+    const float4 s = raster_sample(raster, size, q, 1);
+    /* an rgb image mattes by its luminance */
+    return size.w == 3 ? (float4)(s.xyz, dot(s.xyz, (float3)(0.2126f, 0.7152f, 0.0722f))) : s;
   }
+  default: return (float4)(1.0f);
+  }
+}
+
+/* The brush stamp's value at x: the image laid in the tangent plane at the
+ * centre, spanning the brush's diameter; 1 without a stamp. */
+inline float stamp_weight(__global const BrushDab *dab, __global const float *stamp, float3 x)
+{
+  if (dab->stamp_size[0] == 0)
+    return 1.0f;
+  const float3 d = x - vload3(0, dab->centre);
+  const float u = 0.5f + 0.5f * dot(d, vload3(0, dab->stamp_u)) / dab->radius;
+  const float v = 0.5f + 0.5f * dot(d, vload3(0, dab->stamp_v)) / dab->radius;
+  if (u < 0.0f || u >= 1.0f || v < 0.0f || v >= 1.0f)
+    return 0.0f;
+  const int4 size = (int4)(dab->stamp_size[0], dab->stamp_size[1], 1, 1);
+  return raster_sample(stamp, size, (float3)(u, v, 0.0f), 0).x;
 }
 
 /* Where texel (i, j) of a patch sits in pattern space. */
@@ -171,7 +235,7 @@ inline float4 paint_op(int op, float4 paint, float coverage, float4 surface)
 /* surface = lerp(surface, paint OP surface, a): the paint equation, with
  * paint = pigment in pattern: an opaque matte shades the pigment by the
  * pattern value `shade`, a self matte is folded into `a` by the caller. */
-inline float4 paint_blend(__global const BrushDab *dab, int c, float4 surface, float a, float shade)
+inline float4 paint_blend(__global const BrushDab *dab, int c, float4 surface, float a, float3 shade)
 {
   float4 paint = vload4(0, dab->value[c]);
   paint.xyz *= shade;
@@ -181,8 +245,8 @@ inline float4 paint_blend(__global const BrushDab *dab, int c, float4 surface, f
 /* Range: (tile, tile * #active). Every texel of the active patches, all
  * stored copies included, so copies stay identical. */
 __kernel void paint_dab(ATLAS_IN pos, int2 g, __global const int *active, int active_count,
-                        __global const BrushDab *dab, __global float4 *diffuse, __global float4 *specular,
-                        __global float4 *material)
+                        __global const BrushDab *dab, __global const float *raster, __global const float *stamp,
+                        __global float4 *diffuse, __global float4 *specular, __global float4 *material)
 {
   const int i = get_global_id(0), y = get_global_id(1);
   const int a = y / g.x, j = y - a * g.x;
@@ -196,14 +260,14 @@ __kernel void paint_dab(ATLAS_IN pos, int2 g, __global const int *active, int ac
     return;
   const int k = CHANNEL_INDEX(g.x, p, ij);
   float4 m = material[k];
-  float w = falloff_weight(dab->falloff, t) * dab->strength * (1.0f - m.w);
-  float shade = 1.0f;
+  float w = falloff_weight(dab->falloff, t) * dab->strength * (1.0f - m.w) * stamp_weight(dab, stamp, x);
+  float3 shade = (float3)(1.0f);
   if (dab->pattern != PATTERN_NONE) {
-    const float v = pattern_value(dab, pattern_point(dab, x, ij, g.x - 1));
+    const float4 v = pattern_sample(dab, raster, pattern_point(dab, x, ij, g.x - 1));
     if (dab->matte == MATTE_SELF)
-      w *= v;
+      w *= v.w;
     else
-      shade = v;
+      shade = v.xyz;
   }
   if (dab->alpha[CHANNEL_DIFFUSE] > 0.0f)
     diffuse[k] = clamp(paint_blend(dab, CHANNEL_DIFFUSE, diffuse[k], w * dab->alpha[CHANNEL_DIFFUSE], shade), 0.0f, 1.0f);
@@ -228,7 +292,7 @@ __kernel void paint_dab(ATLAS_IN pos, int2 g, __global const int *active, int ac
   /* The mask protects the other channels, so it is painted without itself. */
   if (dab->alpha[CHANNEL_MASK] > 0.0f) {
     const float wm = falloff_weight(dab->falloff, t) * dab->strength * dab->alpha[CHANNEL_MASK];
-    m.w = clamp(paint_blend(dab, CHANNEL_MASK, (float4)(m.w), wm, 1.0f).x, 0.0f, 1.0f);
+    m.w = clamp(paint_blend(dab, CHANNEL_MASK, (float4)(m.w), wm, (float3)(1.0f)).x, 0.0f, 1.0f);
   }
   material[k] = m;
 }

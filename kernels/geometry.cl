@@ -22,15 +22,19 @@ inline float dab_falloff(int falloff, float t)
 /* Range: (tile, tile * count). Weight of each texel of the listed patches:
  * falloff x strength x (1 - mask), 0 outside the radius. */
 __kernel void dab_weights(ATLAS_IN limit_pos, int2 g, __global const int *list, int count,
-                          __global const BrushDab *dab, __global const float4 *material, __global float *weights)
+                          __global const BrushDab *dab, __global const float *stamp, __global const float4 *material,
+                          __global float *weights)
 {
   int p;
   int2 ij;
   if (!tile_texel(g, list, count, &p, &ij))
     return;
-  const float t = distance(ATLAS_LOAD(limit_pos, g, p, ij).xyz, vload3(0, dab->centre)) / dab->radius;
+  const float3 x = ATLAS_LOAD(limit_pos, g, p, ij).xyz;
+  const float t = distance(x, vload3(0, dab->centre)) / dab->radius;
   const int k = WEIGHT_INDEX(g, p, ij);
-  weights[k] = t <= 1.0f ? dab_falloff(dab->falloff, t) * dab->strength * (1.0f - material[k].w) : 0.0f;
+  weights[k] = t <= 1.0f ? dab_falloff(dab->falloff, t) * dab->strength * (1.0f - material[k].w) *
+                             stamp_weight(dab, stamp, x)
+                         : 0.0f;
 }
 
 /* Range: (tile, tile * count). Copies whole tiles of the listed patches. */

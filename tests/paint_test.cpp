@@ -485,3 +485,88 @@ TEST(StrokeScript, RubberbandAndRubberstamp)
 
 } // namespace
 } // namespace meshpaint
+
+namespace meshpaint {
+namespace {
+
+TEST(PatternPaint, ImagesInPatchParametersAndVolumesInSpace)
+{
+  {
+    PaintSurface surface(test::runtime(), test::flat_grid(2), 3, AtlasStorage::Buffer);
+    Stroke s = parse_stroke_script(R"({"strokes": [{"tool": "wash", "channels": {"diffuse": [1, 0, 0]},
+      "pattern": {"type": "image", "coord": "uv", "file": "halves.png"}}]})").strokes[0];
+    auto image = std::make_shared<Raster>();
+    image->width = 2;
+    image->height = 1;
+    image->samples = {0.f, 1.f}; // left half clear, right half full
+    s.pattern_raster = image;
+    surface.apply(s);
+    const auto ch = surface.read_channels();
+    const LevelLayout l = surface.atlas().layout(3);
+    for (int p = 0; p < l.patches; ++p)
+      for (int j = 0; j <= l.n; ++j) {
+        ASSERT_EQ(ch.diffuse[l.index(p, 1, j)][1], 0.8f) << "u = 1/4 lies on the clear pixel's centre";
+        ASSERT_EQ(ch.diffuse[l.index(p, 3, j)][1], 0.f) << "u = 3/4 lies on the full pixel's centre";
+      }
+  }
+  {
+    PaintSurface surface(test::runtime(), test::genus_two(), 3, AtlasStorage::Buffer);
+    Stroke s = parse_stroke_script(R"({"strokes": [{"tool": "dip", "channels": {"diffuse": [0, 1, 0]},
+      "pattern": {"type": "volume", "file": "layers.vti"}}]})").strokes[0];
+    auto volume = std::make_shared<Raster>();
+    volume->width = volume->height = volume->depth = 2;
+    volume->samples = {0, 0, 0, 0, 1, 1, 1, 1}; // z = 0 layer empty, z = 1 layer full
+    s.pattern_raster = volume;
+    surface.apply(s);
+    const auto pos = surface.atlas().read_limit_positions();
+    const auto ch = surface.read_channels();
+    for (std::size_t t = 0; t < pos.size(); ++t) {
+      if (pos[t][2] < 0.2f)
+        ASSERT_EQ(ch.diffuse[t][1], 0.8f);
+      if (pos[t][2] > 0.8f)
+        ASSERT_EQ(ch.diffuse[t][1], 1.f);
+    }
+  }
+}
+
+TEST(PatternPaint, MissingSamplesAreAnError)
+{
+  PaintSurface surface(test::runtime(), test::flat_grid(2), 2, AtlasStorage::Buffer);
+  const Stroke s = parse_stroke_script(R"({"strokes": [{"tool": "wash", "channels": {"diffuse": [1, 0, 0]},
+      "pattern": {"type": "image", "file": "nowhere.png"}}]})").strokes[0];
+  EXPECT_THROW(surface.apply(s), InputError);
+}
+
+TEST(Paint, BrushImageShapesTheDab)
+{
+  PaintSurface surface(test::runtime(), test::flat_grid(6), 4, AtlasStorage::Buffer);
+  Stroke s = paint_diffuse(dab_at({3.f, 3.f, 0.f}, 1.5f), {0.f, 0.f, 1.f, 1.f});
+  s.points = {{3.f, 3.f, 0.f}, {3.5f, 3.f, 0.f}}; // heading +x: the stamp's u axis
+  s.spacing = 10.f;                                // one dab only
+  auto stamp = std::make_shared<Raster>();
+  stamp->width = 2;
+  stamp->height = 1;
+  stamp->samples = {0.f, 1.f}; // nothing behind the centre, everything ahead
+  s.stamp = stamp;
+  s.stamp_file = "half.png";
+  surface.apply(s);
+  const auto pos = surface.atlas().read_limit_positions();
+  const auto ch = surface.read_channels();
+  std::size_t ahead = 0;
+  for (std::size_t t = 0; t < pos.size(); ++t) {
+    if (distance(pos[t], {3.f, 3.f, 0.f}) > 1.4)
+      continue;
+    // Pixel centres at u = 1/4 and 3/4 of the diameter: clear before x = 2.25,
+    // full after x = 3.75, blended between.
+    if (pos[t][0] < 2.2f)
+      ASSERT_EQ(ch.diffuse[t][2], 0.8f) << "behind the centre the stamp is empty";
+    if (pos[t][0] > 3.8f) {
+      ASSERT_EQ(ch.diffuse[t][2], 1.f);
+      ++ahead;
+    }
+  }
+  EXPECT_GT(ahead, 20u);
+}
+
+} // namespace
+} // namespace meshpaint

@@ -53,6 +53,7 @@ struct PaintSurface::Device
   cl::Buffer bounds, records, count, active, dab, weights;
   std::size_t record_capacity = 0, active_capacity = 0;
   cl::Buffer diffuse, specular, material, channel_work;
+  cl::Buffer raster, stamp; // the stroke's pattern samples and brush image (one float when none)
   cl::Memory position_work; // a scratch copy of the finest level, same storage
 };
 
@@ -342,7 +343,7 @@ void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
   launch(rt.queue(), d.paint_dab,
          cl::NDRange(std::size_t(l.tile), round_up(std::size_t(l.tile) * patches.size(), rows)),
          cl::NDRange(std::size_t(l.tile), rows), atlas_->limit_positions_layer(), grid(l), d.active,
-         cl_int(patches.size()), d.dab, d.diffuse, d.specular, d.material);
+         cl_int(patches.size()), d.dab, d.raster, d.stamp, d.diffuse, d.specular, d.material);
   // The host buffers above must outlive the copies: wait for this dab.
   rt.queue().finish();
 }
@@ -369,6 +370,70 @@ StrokeReport PaintSurface::apply(const Stroke& stroke)
   return report;
 }
 
+void PaintSurface::upload_rasters(const Stroke& stroke, BrushDab& dab)
+{
+  for (const Raster* r : {stroke.pattern_raster.get(), stroke.stamp.get()})
+    if (r && (r->width < 1 || r->height < 1 || r->depth < 1 || r->channels < 1 || r->channels > 4 ||
+              r->samples.size() != std::size_t(r->width) * r->height * r->depth * r->channels))
+      throw InputError("a pattern or brush image of " + std::to_string(r->width) + "x" + std::to_string(r->height) +
+                       "x" + std::to_string(r->depth) + " samples of " + std::to_string(r->channels) +
+                       " channels does not match its " + std::to_string(r->samples.size()) + " values");
+  Device& d = *device_;
+  Runtime& rt = atlas_->runtime();
+  const auto upload = [&](const std::vector<float>& v) {
+    static const float none = 0.f;
+    return cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                      sizeof(float) * std::max<std::size_t>(1, v.size()), const_cast<float*>(v.empty() ? &none : v.data()));
+  };
+  const Raster* r = stroke.pattern_raster.get();
+  d.raster = upload(r ? r->samples : std::vector<float>());
+  dab.raster_size[0] = r ? r->width : 0;
+  dab.raster_size[1] = r ? r->height : 0;
+  dab.raster_size[2] = r ? r->depth : 0;
+  dab.raster_size[3] = r ? r->channels : 0;
+  // The stamp as grey: its first channel, or the mean of rgb.
+  std::vector<float> grey;
+  if (const Raster* s = stroke.stamp.get()) {
+    const int c = s->channels;
+    for (std::size_t k = 0; k + std::size_t(c) <= s->samples.size(); k += std::size_t(c))
+      grey.push_back(c >= 3 ? (s->samples[k] + s->samples[k + 1] + s->samples[k + 2]) / 3.f : s->samples[k]);
+    dab.stamp_size[0] = s->width;
+    dab.stamp_size[1] = s->height;
+  } else {
+    dab.stamp_size[0] = dab.stamp_size[1] = 0;
+  }
+  d.stamp = upload(grey);
+}
+
+void PaintSurface::stamp_axes(const Vec3& n, const Vec3& heading, BrushDab& dab)
+{
+  // u: the stroke's heading in the tangent plane (or the world axis most
+  // across the normal when there is none); v = n x u.
+  const auto dot = [](const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  Vec3 u = heading;
+  const auto project = [&](Vec3 a) {
+    const float k = dot(a, n);
+    return Vec3{a[0] - k * n[0], a[1] - k * n[1], a[2] - k * n[2]};
+  };
+  u = project(u);
+  if (dot(u, u) < 1e-12f) {
+    const int axis = std::fabs(n[0]) <= std::fabs(n[1]) && std::fabs(n[0]) <= std::fabs(n[2]) ? 0
+                     : std::fabs(n[1]) <= std::fabs(n[2])                                  ? 1
+                                                                                            : 2;
+    Vec3 e{0.f, 0.f, 0.f};
+    e[axis] = 1.f;
+    u = project(e);
+  }
+  const float len = std::sqrt(dot(u, u));
+  for (float& c : u)
+    c /= len;
+  const Vec3 v{n[1] * u[2] - n[2] * u[1], n[2] * u[0] - n[0] * u[2], n[0] * u[1] - n[1] * u[0]};
+  for (int k = 0; k < 3; ++k) {
+    dab.stamp_u[k] = u[k];
+    dab.stamp_v[k] = v[k];
+  }
+}
+
 void PaintSurface::weigh(const cl::Buffer& list, int count, const BrushDab& dab)
 {
   Device& d = *device_;
@@ -377,7 +442,7 @@ void PaintSurface::weigh(const cl::Buffer& list, int count, const BrushDab& dab)
   rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
   const auto tiles = range_tiles(l, count);
   launch(rt.queue(), d.dab_weights, tiles.first, tiles.second, atlas_->limit_positions_layer(), grid(l), list, count,
-         d.dab, d.material, d.weights);
+         d.dab, d.stamp, d.material, d.weights);
 }
 
 void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke,
@@ -478,6 +543,13 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
   dab.octaves = stroke.octaves;
   for (int k = 0; k < 12; ++k)
     dab.pattern_transform[k] = stroke.pattern_transform[std::size_t(k)];
+  if ((stroke.pattern == PATTERN_IMAGE || stroke.pattern == PATTERN_VOLUME) &&
+      (!stroke.pattern_raster || stroke.pattern_raster->empty()))
+    throw InputError("the stroke's " + std::string(stroke.pattern == PATTERN_IMAGE ? "image" : "volume") +
+                     " pattern has no samples (load '" + stroke.pattern_file + "' first)");
+  if (!stroke.stamp_file.empty() && (!stroke.stamp || stroke.stamp->empty()))
+    throw InputError("the stroke's brush image has no samples (load '" + stroke.stamp_file + "' first)");
+  upload_rasters(stroke, dab);
   try {
     if (stroke.tool == Tool::Wash || stroke.tool == Tool::Dip) {
       std::vector<int> all(std::size_t(atlas_->topology().patch_count));
@@ -525,6 +597,8 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
         dab.centre[0] = centre[0];
         dab.centre[1] = centre[1];
         dab.centre[2] = centre[2];
+        if (dab.stamp_size[0] > 0)
+          stamp_axes(normal, sample.heading, dab);
         if (stroke.tool == Tool::Paint || stroke.tool == Tool::Label)
           paint(patches, dab);
         else

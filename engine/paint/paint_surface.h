@@ -100,6 +100,10 @@ private:
   //! After positions changed on `patches`: limit surface and bounds there.
   void refresh_geometry(const std::vector<int>& patches);
   StrokeReport apply_dabs(const Stroke& stroke);
+  //! The stroke's pattern samples and brush image to the device, sizes into the dab.
+  void upload_rasters(const Stroke& stroke, BrushDab& dab);
+  //! The brush image's axes in the tangent plane at a dab.
+  static void stamp_axes(const Vec3& normal, const Vec3& heading, BrushDab& dab);
   //! The painted layers' tiles of `patches`, from the device.
   Snapshot take_snapshot(const std::vector<int>& patches);
   void restore(const Snapshot& snapshot);

@@ -6,6 +6,7 @@
 
 #include <algorithm> // for std::find, std::max
 #include <cmath>   // for std::isfinite, std::sqrt
+#include <filesystem> // for std::filesystem::path
 #include <fstream> // for std::ifstream
 #include <map>     // for std::map
 #include <set>     // for std::set
@@ -153,11 +154,11 @@ void read_pattern(const StrokeReader& r, Stroke& s)
   const json& p = r.at("pattern");
   if (!p.is_object())
     r.fail("pattern", "must be an object such as {\"type\": \"marble\", \"scale\": 4}");
-  static const std::set<std::string> keys = {"type", "coord", "matte", "scale", "octaves", "transform"};
+  static const std::set<std::string> keys = {"type", "coord", "matte", "scale", "octaves", "transform", "file"};
   for (const auto& item : p.items())
     if (!keys.count(item.key()))
-      r.fail("pattern", "has an unknown key \"" + item.key() + "\" (type, coord, matte, scale, octaves, transform)");
-  static const std::vector<std::string> types = {"noise", "turbulence", "marble", "bath"};
+      r.fail("pattern", "has an unknown key \"" + item.key() + "\" (type, coord, matte, scale, octaves, transform, file)");
+  static const std::vector<std::string> types = {"noise", "turbulence", "marble", "bath", "image", "volume"};
   const auto word = [&](const char* key, const std::vector<std::string>& allowed, const std::string& fallback) {
     if (!p.contains(key))
       return fallback;
@@ -171,8 +172,16 @@ void read_pattern(const StrokeReader& r, Stroke& s)
     r.fail("pattern", std::string("\"") + key + "\" must be one of " + list);
   };
   if (!p.contains("type"))
-    r.fail("pattern", "needs a \"type\" (noise, turbulence, marble, bath)");
+    r.fail("pattern", "needs a \"type\" (noise, turbulence, marble, bath, image, volume)");
   s.pattern = 1 + int(std::find(types.begin(), types.end(), word("type", types, "")) - types.begin());
+  const bool sampled = s.pattern == PATTERN_IMAGE || s.pattern == PATTERN_VOLUME;
+  if (sampled != p.contains("file"))
+    r.fail("pattern", sampled ? "of type image or volume needs a \"file\"" : "\"file\" belongs to image and volume patterns");
+  if (sampled) {
+    if (!p["file"].is_string() || p["file"].get<std::string>().empty())
+      r.fail("pattern", "\"file\" must be a file name");
+    s.pattern_file = p["file"].get<std::string>();
+  }
   s.pattern_coord = word("coord", {"position", "uv"}, "position") == "uv" ? PATTERN_COORD_UV : PATTERN_COORD_POSITION;
   s.matte = word("matte", {"self", "opaque"}, "self") == "opaque" ? MATTE_OPAQUE : MATTE_SELF;
   double scale = 1.0;
@@ -211,13 +220,13 @@ Stroke read_stroke(const json& j, std::size_t index)
   static const std::set<std::string> known = {
     "tool",   "points", "radius",   "strength",   "falloff", "spacing", "op",     "channels", "alphas",
     "pressure", "mirror", "amount", "iterations", "target", "method",  "lambda", "mu",
-    "mode",     "coefficient", "pattern", "stroke"};
+    "mode",     "coefficient", "pattern", "stroke", "stamp"};
   const StrokeReader r(j, index);
   for (const auto& item : j.items())
     if (!known.count(item.key()))
       r.fail(item.key(), "is not a stroke key (tool, points, radius, strength, falloff, spacing, op, "
                          "channels, alphas, pressure, mirror, amount, iterations, target, method, lambda, mu, "
-                         "mode, coefficient, pattern, stroke)");
+                         "mode, coefficient, pattern, stroke, stamp)");
   Stroke s;
   static const std::vector<std::string> tools = {"paint",  "label",   "wash",   "dip",   "smooth",
                                                  "blur",   "sculpt",  "inflate", "flatten"};
@@ -303,6 +312,13 @@ Stroke read_stroke(const json& j, std::size_t index)
       if (!s.pressure.empty())
         s.pressure.resize(1);
     }
+  }
+  if (r.has("stamp")) {
+    if (everywhere || s.tool == Tool::Label)
+      r.fail("stamp", "has no meaning for a " + tool + " stroke");
+    if (!r.at("stamp").is_string() || r.at("stamp").get<std::string>().empty())
+      r.fail("stamp", "must be the file name of a brush image");
+    s.stamp_file = r.at("stamp").get<std::string>();
   }
   if (r.has("pattern") && !paints)
     r.fail("pattern", "has no meaning for a " + tool + " stroke");
@@ -402,11 +418,18 @@ StrokeScript load_stroke_script(const std::string& path)
     throw IOError("cannot open stroke script '" + path + "'");
   std::ostringstream text;
   text << in.rdbuf();
+  StrokeScript script;
   try {
-    return parse_stroke_script(text.str());
+    script = parse_stroke_script(text.str());
   } catch (const InputError& e) {
     throw InputError("'" + path + "': " + e.what());
   }
+  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  for (Stroke& s : script.strokes)
+    for (std::string* file : {&s.pattern_file, &s.stamp_file})
+      if (!file->empty() && std::filesystem::path(*file).is_relative())
+        *file = (dir / *file).string();
+  return script;
 }
 
 std::vector<DabSample> stroke_samples(const Stroke& s)
@@ -415,6 +438,9 @@ std::vector<DabSample> stroke_samples(const Stroke& s)
   // Spacing follows the pressure-scaled radius; never below a tiny step.
   const auto step = [&](float pressure) { return s.spacing * s.radius * std::max(pressure, 0.05f); };
   std::vector<DabSample> out{{s.points[0], pressure_at(0)}};
+  if (s.points.size() > 1)
+    for (int k = 0; k < 3; ++k)
+      out[0].heading[k] = s.points[1][k] - s.points[0][k];
   float since = 0.f; // path length since the last dab
   for (std::size_t k = 1; k < s.points.size(); ++k) {
     const Vec3 &a = s.points[k - 1], &b = s.points[k];
@@ -431,7 +457,8 @@ std::vector<DabSample> stroke_samples(const Stroke& s)
       at += need;
       since = 0.f;
       const float t = at / len, p = pressure_at(k - 1) * (1.f - t) + pressure_at(k) * t;
-      out.push_back({{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])}, p});
+      out.push_back({{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])}, p,
+                     {b[0] - a[0], b[1] - a[1], b[2] - a[2]}});
     }
   }
   return out;

@@ -3,8 +3,10 @@
 
 #include "atlas_types.h" // for CHANNEL_COUNT, FALLOFF_*, PAINT_OP_*
 #include "core/vec.h"
+#include "paint/raster.h"
 
 #include <array>  // for std::array
+#include <memory> // for std::shared_ptr
 #include <string> // for std::string
 #include <vector> // for std::vector
 
@@ -51,6 +53,10 @@ struct Stroke
   int matte = MATTE_SELF;
   int octaves = 4;
   std::array<float, 12> pattern_transform{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}; //!< 3x4, rows
+  std::string pattern_file;                    //!< image or volume pattern, as the script names it
+  std::shared_ptr<const Raster> pattern_raster; //!< its samples (loaded by the caller)
+  std::string stamp_file;                      //!< brush image laid in the tangent plane
+  std::shared_ptr<const Raster> stamp;         //!< its samples (loaded by the caller)
 };
 
 //! A stroke script: an optional atlas level and the strokes in order.
@@ -66,7 +72,8 @@ struct StrokeScript
 //! "stroke 2: \"radius\" must be a positive number".
 StrokeScript parse_stroke_script(const std::string& json_text);
 
-//! Reads and parses a stroke script file.
+//! Reads and parses a stroke script file; relative pattern and stamp file
+//! names are taken from the script's folder.
 //! \throw IOError when the file cannot be read; InputError as above.
 StrokeScript load_stroke_script(const std::string& path);
 
@@ -76,6 +83,7 @@ struct DabSample
 {
   Vec3 centre;
   float pressure;
+  Vec3 heading{0.f, 0.f, 0.f}; //!< direction of the path there; zero for a single point
 };
 std::vector<DabSample> stroke_samples(const Stroke& stroke);
 

@@ -281,3 +281,47 @@ def test_paint_model_textures_match_the_surface(plane, tmp_path):
             assert np.all(np.abs(pixels[py, px, :3] / 255.0 - expected) <= 0.5 / 255 + 1e-6), (v[vi], expected)
             checked += 1
     assert checked == 4 * (16 * 4) * (4 * 4)  # corners x patches (4 per base quad) x 4x4 cells at level 3
+
+
+def write_png(path, pixels):
+    """pixels: rows (top first) of grey values 0..255."""
+    img = vtk.vtkImageData()
+    h, w = len(pixels), len(pixels[0])
+    img.SetDimensions(w, h, 1)
+    img.AllocateScalars(vtk.VTK_UNSIGNED_CHAR, 1)
+    for y in range(h):
+        for x in range(w):
+            img.SetScalarComponentFromDouble(x, h - 1 - y, 0, 0, pixels[y][x])
+    writer = vtk.vtkPNGWriter()
+    writer.SetFileName(str(path))
+    writer.SetInputData(img)
+    writer.Write()
+
+
+def test_paint_with_image_pattern_and_stamp_files(plane, tmp_path):
+    write_png(tmp_path / "checker.png", [[0, 255], [255, 0]])
+    write_png(tmp_path / "stamp.png", [[255, 255], [255, 255]])
+    script = tmp_path / "s.json"
+    script.write_text(json.dumps({"strokes": [
+        {"tool": "wash", "channels": {"diffuse": [1, 0, 0]},
+         "pattern": {"type": "image", "coord": "uv", "file": "checker.png"}},
+        {"tool": "paint", "points": [[2, 2, 0]], "radius": 0.5, "stamp": "stamp.png",
+         "channels": {"roughness": 1.0}}]}))
+    r = run("paint", str(plane), "--strokes", str(script), "-o", str(tmp_path / "out"), "--quiet")
+    assert r.returncode == 0, r.stderr
+    poly = read_polydata(tmp_path / "out" / "surface.vtp")
+    greens = {round(poly.GetPointData().GetArray("diffuse").GetTuple3(i)[1], 3) for i in range(poly.GetNumberOfPoints())}
+    assert len(greens) > 2, "a checker pattern gives several shades"
+    rough = [poly.GetPointData().GetArray("roughness").GetValue(i) for i in range(poly.GetNumberOfPoints())]
+    assert max(rough) == 1.0
+
+
+def test_paint_with_a_missing_pattern_file_names_the_stroke(plane, tmp_path):
+    script = tmp_path / "s.json"
+    script.write_text(json.dumps({"strokes": [
+        {"tool": "wash", "channels": {"diffuse": [1, 0, 0]}},
+        {"tool": "wash", "channels": {"diffuse": [1, 0, 0]}, "pattern": {"type": "image", "file": "gone.png"}}]}))
+    r = run("paint", str(plane), "--strokes", str(script), "-o", str(tmp_path / "out"))
+    assert r.returncode == 2
+    assert re.search(r"stroke 1: cannot open '.*gone.png': no such file", r.stderr), r.stderr
+    assert not (tmp_path / "out").exists()

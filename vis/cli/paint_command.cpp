@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "table.h"
 
+#include "RasterIO.h"
 #include "SurfaceConversion.h"
 
 #include "core/errors.h"
@@ -26,7 +27,8 @@ int paint_command(const Argv& argv)
   if (dir.empty())
     throw InputError("-o OUTDIR is required");
   // Everything is checked before anything is painted.
-  const StrokeScript script = load_stroke_script(args.value("--strokes"));
+  StrokeScript script = load_stroke_script(args.value("--strokes"));
+  load_stroke_rasters(script);
   const int level = args.integer("--level", script.level > 0 ? script.level : 3, 1, kMaxLevel);
   const int model_level = args.integer("--model-level", std::max(1, level - 2), 1, level);
   const bool quiet = args.flag("--quiet");
