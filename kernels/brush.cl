@@ -296,3 +296,47 @@ __kernel void paint_dab(ATLAS_IN pos, int2 g, __global const int *active, int ac
   }
   material[k] = m;
 }
+
+/* Range: (tile, tile * count) in groups of whole rows, local size `items`.
+ * Per work group: the weighted sums of diffuse and specular under the dab
+ * and of the weights, for the smear brush's pickup. partial: 3 float4 per
+ * group (diffuse * w, specular * w, (w, 0, 0, 0)). */
+__kernel void dab_pickup(ATLAS_IN pos, int2 g, __global const int *list, int count, __global const BrushDab *dab,
+                         __global const float *stamp, __global const float4 *diffuse,
+                         __global const float4 *specular, __global float4 *partial, __local float4 *scratch)
+{
+  const int local_id = get_local_id(1) * get_local_size(0) + get_local_id(0);
+  const int items = get_local_size(0) * get_local_size(1);
+  float4 d = (float4)(0.0f), s = (float4)(0.0f);
+  float w = 0.0f;
+  int p;
+  int2 ij;
+  if (tile_texel(g, list, count, &p, &ij)) {
+    const float3 x = ATLAS_LOAD(pos, g, p, ij).xyz;
+    const float t = distance(x, vload3(0, dab->centre)) / dab->radius;
+    if (t <= 1.0f) {
+      const int k = CHANNEL_INDEX(g.x, p, ij);
+      w = falloff_weight(dab->falloff, t) * stamp_weight(dab, stamp, x);
+      d = w * diffuse[k];
+      s = w * specular[k];
+    }
+  }
+  __local float4 *ds = scratch, *ss = scratch + items, *ws = scratch + 2 * items;
+  ds[local_id] = d;
+  ss[local_id] = s;
+  ws[local_id] = (float4)(w, 0.0f, 0.0f, 0.0f);
+  barrier(CLK_LOCAL_MEM_FENCE);
+  if (local_id == 0) {
+    /* In order, so the result does not depend on scheduling. */
+    float4 a = (float4)(0.0f), b = (float4)(0.0f), c = (float4)(0.0f);
+    for (int k = 0; k < items; ++k) {
+      a += ds[k];
+      b += ss[k];
+      c += ws[k];
+    }
+    const int group = get_group_id(1) * get_num_groups(0) + get_group_id(0);
+    partial[3 * group] = a;
+    partial[3 * group + 1] = b;
+    partial[3 * group + 2] = c;
+  }
+}

@@ -269,7 +269,7 @@ TEST(StrokeScript, ErrorsNameTheStrokeAndKey)
             "stroke 0: \"radius\" must be a number from 1e-30 to 1e+30");
   EXPECT_EQ(message(R"({"strokes": [{"tool": "paint", "points": [[0,0,0]], "radius": 1, "strength": "lots", "channels": {"roughness": 1}}]})"),
             "stroke 0: \"strength\" must be a number from 0 to 1");
-  EXPECT_EQ(message(R"({"strokes": [{"tool": "spray"}]})"), "stroke 0: \"tool\" must be one of paint, label, wash, dip, smooth, blur, sculpt, inflate, flatten");
+  EXPECT_EQ(message(R"({"strokes": [{"tool": "spray"}]})"), "stroke 0: \"tool\" must be one of paint, label, wash, dip, smooth, blur, sculpt, inflate, flatten, smear");
   EXPECT_EQ(message(R"({"strokes": [{"colour": [1,0,0]}]})").substr(0, 40), "stroke 0: \"colour\" is not a stroke key (");
   EXPECT_EQ(message(R"({"strokes": [{"points": [[0,0]], "radius": 1}]})"), "stroke 0: \"points\" must be a list of [x, y, z] points");
   EXPECT_EQ(message(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "channels": {"gloss": 1}}]})").substr(0, 51),
@@ -566,6 +566,41 @@ TEST(Paint, BrushImageShapesTheDab)
     }
   }
   EXPECT_GT(ahead, 20u);
+}
+
+} // namespace
+} // namespace meshpaint
+
+namespace meshpaint {
+namespace {
+
+TEST(Paint, SmearDragsColourAlongTheStroke)
+{
+  PaintSurface surface(test::runtime(), test::flat_grid(8), 4, AtlasStorage::Buffer);
+  surface.apply(paint_diffuse(dab_at({2.f, 4.f, 0.f}, 0.8f), {0.f, 0.f, 1.f, 1.f})); // a blue spot
+  const auto before = surface.read_channels();
+  const Stroke smear = parse_stroke_script(R"({"strokes": [{"tool": "smear", "points": [[2, 4, 0], [6, 4, 0]],
+                                              "radius": 0.6, "falloff": "constant", "spacing": 0.5, "strength": 0.5}]})")
+                         .strokes[0];
+  surface.apply(smear);
+  const auto pos = surface.atlas().read_limit_positions();
+  const auto after = surface.read_channels();
+  // Blue now reaches well past the spot, fading along the way.
+  double blue_at_4 = 0, blue_at_5_5 = 0;
+  for (std::size_t t = 0; t < pos.size(); ++t) {
+    if (distance(pos[t], {4.f, 4.f, 0.f}) < 0.2)
+      blue_at_4 = std::max(blue_at_4, double(after.diffuse[t][2] - after.diffuse[t][0]));
+    if (distance(pos[t], {5.5f, 4.f, 0.f}) < 0.2)
+      blue_at_5_5 = std::max(blue_at_5_5, double(after.diffuse[t][2] - after.diffuse[t][0]));
+    if (distance(pos[t], {4.f, 4.f, 0.f}) < 0.2)
+      ASSERT_EQ(before.diffuse[t][2], 0.8f) << "was not blue before";
+  }
+  EXPECT_GT(blue_at_4, 0.05);
+  EXPECT_GT(blue_at_4, blue_at_5_5);
+  // Off the path nothing changed.
+  for (std::size_t t = 0; t < pos.size(); ++t)
+    if (std::fabs(pos[t][1] - 4.f) > 1.f)
+      ASSERT_EQ(after.diffuse[t][2], before.diffuse[t][2]);
 }
 
 } // namespace

@@ -7,6 +7,7 @@
 #include "core/timer.h"
 
 #include <algorithm> // for std::sort, std::max
+#include <optional>  // for std::optional
 #include <cmath>     // for std::sqrt
 #include <limits>    // for std::numeric_limits
 
@@ -49,7 +50,7 @@ struct LayerKernels
 struct PaintSurface::Device
 {
   LayerKernels positions, channels;
-  cl::Kernel patch_bounds, brush_cull, paint_dab, dab_weights, move_points;
+  cl::Kernel patch_bounds, brush_cull, paint_dab, dab_weights, move_points, dab_pickup;
   cl::Buffer bounds, records, count, active, dab, weights;
   std::size_t record_capacity = 0, active_capacity = 0;
   cl::Buffer diffuse, specular, material, channel_work;
@@ -78,6 +79,7 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     d.paint_dab = cl::Kernel(d.positions.program, "paint_dab");
     d.dab_weights = cl::Kernel(d.positions.program, "dab_weights");
     d.move_points = cl::Kernel(d.positions.program, "move_points");
+    d.dab_pickup = cl::Kernel(d.positions.program, "dab_pickup");
     const std::size_t bytes = l.texels() * sizeof(Float4);
     d.channel_work = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
     d.weights = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, l.texels() * sizeof(float));
@@ -370,6 +372,51 @@ StrokeReport PaintSurface::apply(const Stroke& stroke)
   return report;
 }
 
+void PaintSurface::smear(const std::vector<int>& patches, BrushDab dab, std::optional<std::array<Float4, 2>>& carried)
+{
+  Device& d = *device_;
+  Runtime& rt = atlas_->runtime();
+  const LevelLayout l = atlas_->layout(level_);
+  // Lay down what the previous dab picked up, then pick up from here.
+  if (carried) {
+    for (int k = 0; k < 4; ++k) {
+      dab.value[CHANNEL_DIFFUSE][k] = (*carried)[0][k];
+      dab.value[CHANNEL_SPECULAR][k] = (*carried)[1][k];
+    }
+    for (int c = 0; c < CHANNEL_COUNT; ++c)
+      dab.alpha[c] = c == CHANNEL_DIFFUSE || c == CHANNEL_SPECULAR ? 1.f : 0.f;
+    dab.op = PAINT_OP_COPY;
+    dab.pattern = PATTERN_NONE;
+    paint(patches, dab);
+  }
+  const cl::Buffer list = device_list(rt, patches);
+  const int count = int(patches.size());
+  const auto tiles = range_tiles(l, count);
+  const std::size_t groups = (tiles.first[0] / tiles.second[0]) * (tiles.first[1] / tiles.second[1]);
+  const std::size_t items = tiles.second[0] * tiles.second[1];
+  cl::Buffer partial(rt.context(), CL_MEM_WRITE_ONLY, 3 * groups * sizeof(Float4));
+  rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
+  launch(rt.queue(), d.dab_pickup, tiles.first, tiles.second, atlas_->limit_positions_layer(), grid(l), list, count,
+         d.dab, d.stamp, d.diffuse, d.specular, partial, cl::Local(3 * items * sizeof(Float4)));
+  std::vector<Float4> sums(3 * groups);
+  rt.queue().enqueueReadBuffer(partial, CL_TRUE, 0, sums.size() * sizeof(Float4), sums.data());
+  double acc[2][4] = {}, weight = 0;
+  for (std::size_t g = 0; g < groups; ++g) {
+    for (int k = 0; k < 4; ++k) {
+      acc[0][k] += sums[3 * g][k];
+      acc[1][k] += sums[3 * g + 1][k];
+    }
+    weight += sums[3 * g + 2][0];
+  }
+  if (weight > 0) {
+    std::array<Float4, 2> load;
+    for (int c = 0; c < 2; ++c)
+      for (int k = 0; k < 4; ++k)
+        load[std::size_t(c)][k] = float(acc[c][k] / weight);
+    carried = load;
+  }
+}
+
 void PaintSurface::upload_rasters(const Stroke& stroke, BrushDab& dab)
 {
   for (const Raster* r : {stroke.pattern_raster.get(), stroke.stamp.get()})
@@ -575,6 +622,7 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
       }
       mirror_at = 0.5f * (lo + hi);
     }
+    std::optional<std::array<Float4, 2>> carried; // the smear brush's load: diffuse, specular
     for (const DabSample& sample : stroke_samples(stroke)) {
       std::vector<Vec3> centres{sample.centre};
       if (stroke.mirror_axis >= 0) {
@@ -599,7 +647,9 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
         dab.centre[2] = centre[2];
         if (dab.stamp_size[0] > 0)
           stamp_axes(normal, sample.heading, dab);
-        if (stroke.tool == Tool::Paint || stroke.tool == Tool::Label)
+        if (stroke.tool == Tool::Smear)
+          smear(patches, dab, carried);
+        else if (stroke.tool == Tool::Paint || stroke.tool == Tool::Label)
           paint(patches, dab);
         else
           reshape(patches, dab, stroke, normal);

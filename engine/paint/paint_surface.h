@@ -10,6 +10,7 @@
 #include <array>   // for std::array
 #include <cstdint> // for std::uint32_t
 #include <memory>  // for std::unique_ptr
+#include <optional> // for std::optional
 #include <vector> // for std::vector
 
 namespace meshpaint {
@@ -100,6 +101,9 @@ private:
   //! After positions changed on `patches`: limit surface and bounds there.
   void refresh_geometry(const std::vector<int>& patches);
   StrokeReport apply_dabs(const Stroke& stroke);
+  //! One dab of the smear brush: lays down `carried`, then picks up the
+  //! weighted mean colour under the dab into it.
+  void smear(const std::vector<int>& patches, BrushDab dab, std::optional<std::array<Float4, 2>>& carried);
   //! The stroke's pattern samples and brush image to the device, sizes into the dab.
   void upload_rasters(const Stroke& stroke, BrushDab& dab);
   //! The brush image's axes in the tangent plane at a dab.

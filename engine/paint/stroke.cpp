@@ -228,8 +228,8 @@ Stroke read_stroke(const json& j, std::size_t index)
                          "channels, alphas, pressure, mirror, amount, iterations, target, method, lambda, mu, "
                          "mode, coefficient, pattern, stroke, stamp)");
   Stroke s;
-  static const std::vector<std::string> tools = {"paint",  "label",   "wash",   "dip",   "smooth",
-                                                 "blur",   "sculpt",  "inflate", "flatten"};
+  static const std::vector<std::string> tools = {"paint", "label",   "wash",    "dip",     "smooth",
+                                                 "blur",  "sculpt",  "inflate", "flatten", "smear"};
   const std::string tool = r.word("tool", "paint", tools);
   s.tool = Tool(std::find(tools.begin(), tools.end(), tool) - tools.begin());
   const bool paints = s.tool == Tool::Paint || s.tool == Tool::Label || s.tool == Tool::Wash || s.tool == Tool::Dip;
@@ -377,8 +377,8 @@ Stroke read_stroke(const json& j, std::size_t index)
 
 const char* tool_name(Tool tool)
 {
-  static const char* const names[] = {"paint", "label",  "wash",    "dip",    "smooth",
-                                     "blur",  "sculpt", "inflate", "flatten"};
+  static const char* const names[] = {"paint", "label",  "wash",    "dip",     "smooth",
+                                     "blur",  "sculpt", "inflate", "flatten", "smear"};
   return names[int(tool)];
 }
 

@@ -22,7 +22,8 @@ enum class Tool
   Blur,    //!< smoothing of the colour channels
   Sculpt,  //!< move along the normal at the brush centre
   Inflate, //!< move along each point's own normal
-  Flatten  //!< move towards the plane through the centre
+  Flatten, //!< move towards the plane through the centre
+  Smear    //!< drag the colours along the stroke: each dab lays down what the previous one picked up
 };
 
 //! Name of a tool as the stroke script writes it.
