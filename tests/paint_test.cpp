@@ -605,3 +605,22 @@ TEST(Paint, SmearDragsColourAlongTheStroke)
 
 } // namespace
 } // namespace meshpaint
+
+namespace meshpaint {
+namespace {
+
+TEST(StrokeScript, BlurAndSmearOps)
+{
+  const auto script = parse_stroke_script(R"({"strokes": [
+    {"points": [[0,0,0]], "radius": 1, "op": "blur", "iterations": 2},
+    {"points": [[0,0,0], [1,0,0]], "radius": 1, "op": "smear"}]})");
+  EXPECT_EQ(script.strokes[0].tool, Tool::Blur);
+  EXPECT_TRUE(script.strokes[0].target_colour);
+  EXPECT_EQ(script.strokes[1].tool, Tool::Smear);
+  EXPECT_THROW(parse_stroke_script(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "op": "blur",
+                                      "channels": {"diffuse": [1,0,0]}}]})"),
+               InputError);
+}
+
+} // namespace
+} // namespace meshpaint

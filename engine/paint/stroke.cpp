@@ -230,15 +230,27 @@ Stroke read_stroke(const json& j, std::size_t index)
   Stroke s;
   static const std::vector<std::string> tools = {"paint", "label",   "wash",    "dip",     "smooth",
                                                  "blur",  "sculpt",  "inflate", "flatten", "smear"};
-  const std::string tool = r.word("tool", "paint", tools);
+  std::string tool = r.word("tool", "paint", tools);
   s.tool = Tool(std::find(tools.begin(), tools.end(), tool) - tools.begin());
+  // The paint equation's filtering ops are brushes of their own: "op":
+  // "blur" filters the colours under the brush, "op": "smear" drags them.
+  if (s.tool == Tool::Paint && r.has("op") && r.at("op").is_string() &&
+      (r.at("op").get<std::string>() == "blur" || r.at("op").get<std::string>() == "smear")) {
+    tool = r.at("op").get<std::string>();
+    s.tool = tool == "blur" ? Tool::Blur : Tool::Smear;
+    if (r.has("channels"))
+      r.fail("channels", "has no meaning for op " + tool + ", which moves the colours already there");
+  }
   const bool paints = s.tool == Tool::Paint || s.tool == Tool::Label || s.tool == Tool::Wash || s.tool == Tool::Dip;
   const bool everywhere = s.tool == Tool::Wash || s.tool == Tool::Dip;
   const bool moves = s.tool == Tool::Sculpt || s.tool == Tool::Inflate || s.tool == Tool::Flatten;
   const bool smooths = s.tool == Tool::Smooth || s.tool == Tool::Blur;
-  for (const char* key : {"channels", "alphas", "op"})
+  for (const char* key : {"channels", "alphas"})
     if (!paints && r.has(key))
       r.fail(key, std::string("has no meaning for a ") + tool + " stroke");
+  const bool filter_op = s.tool == Tool::Blur || s.tool == Tool::Smear;
+  if (!paints && r.has("op") && !(filter_op && r.at("op").is_string() && r.at("op").get<std::string>() == tool))
+    r.fail("op", "has no meaning for a " + tool + " stroke");
   if (!moves && r.has("amount"))
     r.fail("amount", "has no meaning for a " + tool + " stroke");
   for (const char* key : {"iterations", "method", "lambda", "mu"})
@@ -267,7 +279,8 @@ Stroke read_stroke(const json& j, std::size_t index)
   const std::string falloff = r.word("falloff", "smoothstep", {"constant", "linear", "smoothstep", "gaussian"});
   s.falloff = falloff == "constant" ? FALLOFF_CONSTANT : falloff == "linear" ? FALLOFF_LINEAR
               : falloff == "gaussian" ? FALLOFF_GAUSSIAN : FALLOFF_SMOOTHSTEP;
-  const std::string op = r.word("op", "copy", {"copy", "over", "max", "add", "subtract"});
+  const std::string op =
+    paints ? r.word("op", "copy", {"copy", "over", "max", "add", "subtract", "blur", "smear"}) : "copy";
   s.op = op == "over" ? PAINT_OP_OVER : op == "max" ? PAINT_OP_MAX : op == "add" ? PAINT_OP_ADD
          : op == "subtract" ? PAINT_OP_SUBTRACT : PAINT_OP_COPY;
   s.spacing = float(r.number("spacing", 0.25, 0.01, 100.0));
