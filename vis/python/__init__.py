@@ -1,0 +1,42 @@
+"""meshpaint: paint colour, materials and geometry onto surfaces, from Python.
+
+The classes are meshpaint's VTK classes. VTK's wrapping cannot raise
+exceptions from C++, so vtkPaintSurface here is the wrapped class with its
+failing calls turned into meshpaint.Error, carrying the same message as the
+command line; everything else is the VTK class itself.
+"""
+import vtkmodules.vtkCommonExecutionModel  # noqa: F401  (the base classes' module)
+
+from . import meshpaintVis as _wrapped
+from .meshpaintVis import vtkCatmullClarkAtlasFilter  # noqa: F401
+
+
+class Error(RuntimeError):
+    """A failed meshpaint call: bad input, a file problem, or the device."""
+
+
+class vtkPaintSurface(_wrapped.vtkPaintSurface):
+    __doc__ = _wrapped.vtkPaintSurface.__doc__
+
+    def _check(self, ok):
+        if not ok:
+            raise Error(self.GetLastError())
+
+    def ApplyStrokes(self, json_text):
+        """Checks a stroke script and queues its strokes for the next Update()."""
+        self._check(super().ApplyStrokes(json_text))
+
+    def Undo(self):
+        """Undoes the last stroke; raises Error when there is nothing to undo."""
+        self._check(super().Undo())
+
+    def Redo(self):
+        """Redoes the last undone stroke; raises Error when there is none."""
+        self._check(super().Redo())
+
+    def Update(self, *args):
+        """Paints the queued strokes; raises Error if the update fails."""
+        self.GlobalWarningDisplayOff()
+        super().Update(*args)
+        if self.GetLastError():
+            raise Error(self.GetLastError())

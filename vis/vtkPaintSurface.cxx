@@ -1,0 +1,133 @@
+#include "vtkPaintSurface.h"
+
+#include "RasterIO.h"          // for meshpaint::load_stroke_rasters
+#include "SurfaceConversion.h" // for meshpaint::to_base_mesh, to_polydata
+
+#include "paint/paint_surface.h" // for meshpaint::PaintSurface
+
+#include <vtkInformation.h>       // for vtkInformation
+#include <vtkInformationVector.h> // for vtkInformationVector
+#include <vtkObjectFactory.h>     // for vtkStandardNewMacro
+#include <vtkPolyData.h>          // for vtkPolyData
+
+#include <vector> // for std::vector
+
+vtkStandardNewMacro(vtkPaintSurface);
+
+struct vtkPaintSurface::Internals
+{
+  std::unique_ptr<meshpaint::PaintSurface> surface;
+  vtkMTimeType built_from = 0; // input's modification time the surface was built from
+  int built_level = 0;
+  std::vector<meshpaint::Stroke> queued;
+};
+
+vtkPaintSurface::vtkPaintSurface() : Impl(new Internals) {}
+vtkPaintSurface::~vtkPaintSurface() = default;
+
+void vtkPaintSurface::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Level: " << this->Level << "\n";
+  os << indent << "Device: " << (this->Device.empty() ? "(default)" : this->Device) << "\n";
+  os << indent << "StrokeCount: " << this->StrokeCount << "\n";
+}
+
+namespace {
+
+//! Runs `f`, keeping any exception's message in `error`; 1 on success.
+template <typename F>
+int guarded(std::string& error, F&& f)
+{
+  error.clear();
+  try {
+    f();
+    return 1;
+  } catch (const cl::Error& e) {
+    error = meshpaint::describe(e);
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  return 0;
+}
+
+} // namespace
+
+int vtkPaintSurface::ApplyStrokes(const char* json)
+{
+  const int ok = guarded(this->LastError, [&] {
+    meshpaint::StrokeScript script = meshpaint::parse_stroke_script(json ? json : "");
+    meshpaint::load_stroke_rasters(script);
+    if (script.level > 0 && !this->Impl->surface && this->Impl->queued.empty())
+      this->SetLevel(script.level);
+    for (auto& s : script.strokes)
+      this->Impl->queued.push_back(std::move(s));
+  });
+  if (ok)
+    this->Modified();
+  return ok;
+}
+
+int vtkPaintSurface::Undo()
+{
+  if (!this->Impl->surface) {
+    this->LastError = "nothing painted yet";
+    return 0;
+  }
+  int done = 0;
+  const int ok = guarded(this->LastError, [&] { done = this->Impl->surface->undo() ? 1 : 0; });
+  if (ok && done) {
+    --this->StrokeCount;
+    this->Modified();
+  } else if (ok) {
+    this->LastError = "nothing to undo";
+  }
+  return ok && done;
+}
+
+int vtkPaintSurface::Redo()
+{
+  if (!this->Impl->surface) {
+    this->LastError = "nothing painted yet";
+    return 0;
+  }
+  int done = 0;
+  const int ok = guarded(this->LastError, [&] { done = this->Impl->surface->redo() ? 1 : 0; });
+  if (ok && done) {
+    ++this->StrokeCount;
+    this->Modified();
+  } else if (ok) {
+    this->LastError = "nothing to redo";
+  }
+  return ok && done;
+}
+
+int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                 vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  const int ok = guarded(this->LastError, [&] {
+    Internals& in = *this->Impl;
+    // A new input or level starts a new surface; queued strokes go onto it.
+    if (!in.surface || in.built_from != input->GetMTime() || in.built_level != this->Level) {
+      auto runtime = meshpaint::Runtime::open(this->Device);
+      in.surface = std::make_unique<meshpaint::PaintSurface>(runtime, meshpaint::to_base_mesh(input, "input"),
+                                                             this->Level, meshpaint::default_storage(runtime->info()));
+      in.built_from = input->GetMTime();
+      in.built_level = this->Level;
+      this->StrokeCount = 0;
+    }
+    for (const meshpaint::Stroke& s : in.queued) {
+      in.surface->apply(s);
+      ++this->StrokeCount;
+    }
+    in.queued.clear();
+    output->ShallowCopy(meshpaint::to_polydata(in.surface->painted_surface()));
+  });
+  if (!ok) {
+    vtkErrorMacro(<< this->LastError);
+    this->Impl->queued.clear();
+  }
+  return ok;
+}

@@ -1,0 +1,74 @@
+/**
+ * @class vtkPaintSurface
+ * @brief A polygon mesh painted with stroke scripts on an OpenCL device.
+ *
+ * Input: any polygonal vtkPolyData (its polygons are the base mesh).
+ * Output: the painted limit surface of the painting level, welded, with
+ * point arrays diffuse, specular, roughness, displacement, mask, label and
+ * Normals. Strokes are applied in order; every stroke is one undo step.
+ * Methods that can fail return 0 and leave the reason in GetLastError(); the
+ * Python package raises it as meshpaint.Error.
+ */
+#ifndef vtkPaintSurface_h
+#define vtkPaintSurface_h
+
+#include "meshpaintVisModule.h" // for MESHPAINTVIS_EXPORT
+
+#include <vtkPolyDataAlgorithm.h> // for vtkPolyDataAlgorithm
+
+#include <memory> // for std::unique_ptr
+#include <string> // for std::string
+
+class MESHPAINTVIS_EXPORT vtkPaintSurface : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkPaintSurface* New();
+  vtkTypeMacro(vtkPaintSurface, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  //@{
+  /// Painting level, 1 to 12 (default 3). Changing it starts over.
+  vtkSetClampMacro(Level, int, 1, 12);
+  vtkGetMacro(Level, int);
+  //@}
+
+  //@{
+  /// OpenCL device selector (see `meshpaint devices`); empty: default.
+  vtkSetStdStringFromCharMacro(Device);
+  vtkGetCharFromStdStringMacro(Device);
+  //@}
+
+  /// Checks a stroke script (docs/strokes.md) and queues its strokes for
+  /// the next Update(). Returns 0, applying nothing, when the script is bad.
+  int ApplyStrokes(const char* json);
+
+  /// Undoes (redoes) the last stroke; 0 when there is nothing to undo (redo)
+  /// or the surface is not painted yet.
+  int Undo();
+  int Redo();
+
+  /// Strokes applied so far (queued ones not included).
+  vtkGetMacro(StrokeCount, int);
+
+  /// Why the last call or update failed; empty after a good one.
+  const char* GetLastError() const { return this->LastError.c_str(); }
+
+protected:
+  vtkPaintSurface();
+  ~vtkPaintSurface() override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int Level = 3;
+  std::string Device;
+  std::string LastError;
+  int StrokeCount = 0;
+
+private:
+  vtkPaintSurface(const vtkPaintSurface&) = delete;
+  void operator=(const vtkPaintSurface&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Impl;
+};
+
+#endif
