@@ -68,39 +68,28 @@ int vtkPaintSurface::ApplyStrokes(const char* json)
   return ok;
 }
 
-int vtkPaintSurface::Undo()
+int vtkPaintSurface::Step(bool back)
 {
   if (!this->Impl->surface) {
     this->LastError = "nothing painted yet";
     return 0;
   }
-  int done = 0;
-  const int ok = guarded(this->LastError, [&] { done = this->Impl->surface->undo() ? 1 : 0; });
-  if (ok && done) {
-    --this->StrokeCount;
-    this->Modified();
-  } else if (ok) {
-    this->LastError = "nothing to undo";
-  }
-  return ok && done;
+  bool done = false;
+  const int ok = guarded(this->LastError, [&] {
+    done = back ? this->Impl->surface->undo() : this->Impl->surface->redo();
+  });
+  if (ok && !done)
+    this->LastError = back ? "nothing to undo" : "nothing to redo";
+  if (!ok || !done)
+    return 0;
+  this->StrokeCount += back ? -1 : 1;
+  this->Modified();
+  return 1;
 }
 
-int vtkPaintSurface::Redo()
-{
-  if (!this->Impl->surface) {
-    this->LastError = "nothing painted yet";
-    return 0;
-  }
-  int done = 0;
-  const int ok = guarded(this->LastError, [&] { done = this->Impl->surface->redo() ? 1 : 0; });
-  if (ok && done) {
-    ++this->StrokeCount;
-    this->Modified();
-  } else if (ok) {
-    this->LastError = "nothing to redo";
-  }
-  return ok && done;
-}
+int vtkPaintSurface::Undo() { return this->Step(true); }
+
+int vtkPaintSurface::Redo() { return this->Step(false); }
 
 int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                  vtkInformationVector* outputVector)

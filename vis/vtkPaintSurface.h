@@ -67,6 +67,8 @@ private:
   vtkPaintSurface(const vtkPaintSurface&) = delete;
   void operator=(const vtkPaintSurface&) = delete;
 
+  int Step(bool back); // Undo (back) or Redo
+
   struct Internals;
   std::unique_ptr<Internals> Impl;
 };
