@@ -297,21 +297,22 @@ __kernel void paint_dab(ATLAS_IN pos, int2 g, __global const int *active, int ac
   material[k] = m;
 }
 
-/* Range: (tile, tile * count) in groups of whole rows, local size `items`.
- * Per work group: the weighted sums of diffuse and specular under the dab
- * and of the weights, for the smear brush's pickup. partial: 3 float4 per
- * group (diffuse * w, specular * w, (w, 0, 0, 0)). */
+/* Range: count * tile^2 work items in groups of `get_local_size(0)`, one per
+ * texel of the listed patches. Per work group: the weighted sums of diffuse
+ * and specular under the dab and of the weights, for the smear brush's
+ * pickup. partial: 3 float4 per group (diffuse * w, specular * w,
+ * (w, 0, 0, 0)). */
 __kernel void dab_pickup(ATLAS_IN pos, int2 g, __global const int *list, int count, __global const BrushDab *dab,
                          __global const float *stamp, __global const float4 *diffuse,
                          __global const float4 *specular, __global float4 *partial, __local float4 *scratch)
 {
-  const int local_id = get_local_id(1) * get_local_size(0) + get_local_id(0);
-  const int items = get_local_size(0) * get_local_size(1);
+  const int id = get_global_id(0), local_id = get_local_id(0), items = get_local_size(0);
+  const int tile_texels = g.x * g.x, a = id / tile_texels, r = id - a * tile_texels;
   float4 d = (float4)(0.0f), s = (float4)(0.0f);
   float w = 0.0f;
-  int p;
-  int2 ij;
-  if (tile_texel(g, list, count, &p, &ij)) {
+  if (a < count) {
+    const int p = list[a];
+    const int2 ij = (int2)(r % g.x, r / g.x);
     const float3 x = ATLAS_LOAD(pos, g, p, ij).xyz;
     const float t = distance(x, vload3(0, dab->centre)) / dab->radius;
     if (t <= 1.0f) {
@@ -328,15 +329,15 @@ __kernel void dab_pickup(ATLAS_IN pos, int2 g, __global const int *list, int cou
   barrier(CLK_LOCAL_MEM_FENCE);
   if (local_id == 0) {
     /* In order, so the result does not depend on scheduling. */
-    float4 a = (float4)(0.0f), b = (float4)(0.0f), c = (float4)(0.0f);
+    float4 sa = (float4)(0.0f), sb = (float4)(0.0f), sc = (float4)(0.0f);
     for (int k = 0; k < items; ++k) {
-      a += ds[k];
-      b += ss[k];
-      c += ws[k];
+      sa += ds[k];
+      sb += ss[k];
+      sc += ws[k];
     }
-    const int group = get_group_id(1) * get_num_groups(0) + get_group_id(0);
-    partial[3 * group] = a;
-    partial[3 * group + 1] = b;
-    partial[3 * group + 2] = c;
+    const int group = get_group_id(0);
+    partial[3 * group] = sa;
+    partial[3 * group + 1] = sb;
+    partial[3 * group + 2] = sc;
   }
 }

@@ -4,20 +4,10 @@
  * `dst` (images cannot be read and written by one kernel); the host copies
  * the tiles back. Smoothing follows the atlas's three batches, so each stored
  * copy of a side or corner texel gets one value. Weights are per texel,
- * patch-major, computed from the limit surface. */
+ * patch-major, computed from the limit surface. Built after brush.cl, whose
+ * falloff and stamp helpers it shares. */
 
 #define WEIGHT_INDEX(g, p, ij) (((p) * (g).x + (ij).y) * (g).x + (ij).x)
-
-/* Brush profile at t = distance / radius in [0, 1]. */
-inline float dab_falloff(int falloff, float t)
-{
-  switch (falloff) {
-  case FALLOFF_LINEAR: return 1.0f - t;
-  case FALLOFF_SMOOTHSTEP: return 1.0f - t * t * (3.0f - 2.0f * t);
-  case FALLOFF_GAUSSIAN: return exp(-4.5f * t * t);
-  default: return 1.0f;
-  }
-}
 
 /* Range: (tile, tile * count). Weight of each texel of the listed patches:
  * falloff x strength x (1 - mask), 0 outside the radius. */
@@ -32,7 +22,7 @@ __kernel void dab_weights(ATLAS_IN limit_pos, int2 g, __global const int *list, 
   const float3 x = ATLAS_LOAD(limit_pos, g, p, ij).xyz;
   const float t = distance(x, vload3(0, dab->centre)) / dab->radius;
   const int k = WEIGHT_INDEX(g, p, ij);
-  weights[k] = t <= 1.0f ? dab_falloff(dab->falloff, t) * dab->strength * (1.0f - material[k].w) *
+  weights[k] = t <= 1.0f ? falloff_weight(dab->falloff, t) * dab->strength * (1.0f - material[k].w) *
                              stamp_weight(dab, stamp, x)
                          : 0.0f;
 }

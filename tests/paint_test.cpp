@@ -15,6 +15,17 @@
 namespace meshpaint {
 namespace {
 
+//! The message a stroke script is refused with, or "" when it is accepted.
+std::string script_error(const std::string& json)
+{
+  try {
+    parse_stroke_script(json);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 BaseMesh flat_square() { return test::flat_grid(6); }
 
 //! A closed plate 4 x 4 x 0.1: top and bottom are near in space, far along the surface.
@@ -253,14 +264,7 @@ TEST(StrokeScript, SamplesFollowSpacingAndPressure)
 
 TEST(StrokeScript, ErrorsNameTheStrokeAndKey)
 {
-  const auto message = [](const std::string& json) {
-    try {
-      parse_stroke_script(json);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("(accepted)");
-  };
+  const auto message = script_error;
   const std::string ok = R"({"tool": "paint", "points": [[0,0,0]], "radius": 1, "channels": {"diffuse": [1,0,0]}})";
   EXPECT_EQ(parse_stroke_script("{\"strokes\": [" + ok + "]}").strokes.size(), 1u);
   EXPECT_EQ(message("{\"strokes\": [" + ok + ", {\"tool\": \"paint\", \"radius\": -1}]}"),
@@ -417,14 +421,7 @@ TEST(PaintModes, PolishAndSandpaperChangeShineNotColour)
 
 TEST(PaintModes, DyeAndMaterialCheckTheirChannels)
 {
-  const auto fails = [](const std::string& s) {
-    try {
-      parse_stroke_script(s);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
+  const auto fails = script_error;
   EXPECT_NE(fails(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "mode": "dye", "channels": {"roughness": 0.2}}]})"), "");
   EXPECT_NE(fails(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "mode": "material", "channels": {"diffuse": [1,0,0]}}]})"), "");
   EXPECT_EQ(fails(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "mode": "material",
@@ -620,6 +617,21 @@ TEST(StrokeScript, BlurAndSmearOps)
   EXPECT_THROW(parse_stroke_script(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "op": "blur",
                                       "channels": {"diffuse": [1,0,0]}}]})"),
                InputError);
+}
+
+} // namespace
+} // namespace meshpaint
+
+namespace meshpaint {
+namespace {
+
+TEST(StrokeScript, RefusesStrokesOfAbsurdLengthAndTaubinColours)
+{
+  const auto fails = script_error;
+  EXPECT_NE(fails(R"({"strokes": [{"points": [[0,0,0], [1000,0,0]], "radius": 1e-9,
+                     "channels": {"diffuse": [1,0,0]}}]})").find("too small for the path"), std::string::npos);
+  EXPECT_NE(fails(R"({"strokes": [{"tool": "blur", "points": [[0,0,0]], "radius": 1, "method": "taubin"}]})")
+              .find("taubin is for positions"), std::string::npos);
 }
 
 } // namespace

@@ -108,13 +108,22 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
       this->StrokeCount = 0;
     }
     for (const meshpaint::Stroke& s : in.queued) {
-      in.surface->apply(s);
+      const std::size_t depth = in.surface->undo_log().undo_depth();
+      try {
+        in.surface->apply(s);
+      } catch (...) {
+        // A stroke that failed halfway is still one undo step.
+        if (in.surface->undo_log().undo_depth() > depth)
+          ++this->StrokeCount;
+        throw;
+      }
       ++this->StrokeCount;
     }
     in.queued.clear();
     output->ShallowCopy(meshpaint::to_polydata(in.surface->painted_surface()));
   });
   if (!ok) {
+    ++this->FailedUpdates;
     vtkErrorMacro(<< this->LastError);
     this->Impl->queued.clear();
   }

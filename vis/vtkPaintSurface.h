@@ -53,6 +53,10 @@ public:
   /// Why the last call or update failed; empty after a good one.
   const char* GetLastError() const { return this->LastError.c_str(); }
 
+  /// Updates that failed so far: the Python package compares it around
+  /// Update() to raise only for that update's failure.
+  vtkGetMacro(FailedUpdates, int);
+
 protected:
   vtkPaintSurface();
   ~vtkPaintSurface() override;
@@ -62,6 +66,7 @@ protected:
   std::string Device;
   std::string LastError;
   int StrokeCount = 0;
+  int FailedUpdates = 0;
 
 private:
   vtkPaintSurface(const vtkPaintSurface&) = delete;

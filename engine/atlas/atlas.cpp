@@ -347,19 +347,6 @@ PatchSet Atlas::patch_set(const std::vector<int>& patches, Reach reach) const
   return set;
 }
 
-namespace {
-
-//! A device copy of a list, or a null buffer for an empty one.
-cl::Buffer upload_list(Runtime& rt, const std::vector<int>& list)
-{
-  if (list.empty())
-    return cl::Buffer();
-  return cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(int) * list.size(),
-                    const_cast<int*>(list.data()));
-}
-
-} // namespace
-
 void Atlas::update_limit(const PatchSet& set)
 {
   if (!limit_positions_ || !limit_current_ || int(set.patches.size()) == topology_.patch_count) {
@@ -371,8 +358,8 @@ void Atlas::update_limit(const PatchSet& set)
   cl::CommandQueue& q = runtime_->queue();
   const cl::Memory &in = levels_[max_level_ - 1].mem(), &pos = limit_positions_->mem(),
                    &nrm = limit_normals_->mem();
-  const cl::Buffer patches = upload_list(*runtime_, set.patches), edges = upload_list(*runtime_, set.edges),
-                   rings = upload_list(*runtime_, set.rings);
+  const cl::Buffer patches = device_ints(runtime_->context(), set.patches),
+                   edges = device_ints(runtime_->context(), set.edges), rings = device_ints(runtime_->context(), set.rings);
   if (!set.patches.empty()) {
     const auto tiles = range_tiles(l, int(set.patches.size()));
     launch(q, k.limit_interior, tiles.first, tiles.second, in, pos, nrm, grid(l), patches, int(set.patches.size()));

@@ -3,7 +3,9 @@
 
 #include "cl/opencl.h"
 
-#include <cstddef> // for std::size_t
+#include <algorithm> // for std::max
+#include <cstddef>   // for std::size_t
+#include <vector>    // for std::vector
 
 namespace meshpaint {
 
@@ -17,6 +19,15 @@ void launch(cl::CommandQueue& queue, cl::Kernel& kernel, const cl::NDRange& glob
   cl_uint index = 0;
   (kernel.setArg(index++, args), ...);
   queue.enqueueNDRangeKernel(kernel, cl::NullRange, global, local);
+}
+
+//! A read-only device copy of a list of ints (one element for an empty
+//! list, so it is always a valid argument).
+inline cl::Buffer device_ints(const cl::Context& context, const std::vector<int>& list)
+{
+  static const int none = 0;
+  return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(int) * std::max<std::size_t>(1, list.size()),
+                    const_cast<int*>(list.empty() ? &none : list.data()));
 }
 
 } // namespace meshpaint

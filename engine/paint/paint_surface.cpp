@@ -24,7 +24,7 @@ struct PaintSurface::Cull
 };
 
 //! Kernels that filter or copy a layer, built for one storage path.
-struct LayerKernels
+struct PaintSurface::LayerKernels
 {
   cl::Program program;
   cl::Kernel copy_tiles, smooth_interior, smooth_edges, smooth_corners, gather_tiles, scatter_tiles;
@@ -116,36 +116,35 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     }
 }
 
-namespace {
 
-//! A device copy of a list of ints.
-cl::Buffer device_list(Runtime& rt, const std::vector<int>& list)
+std::pair<PaintSurface::LayerKernels*, const cl::Memory*> PaintSurface::layer(int id)
 {
-  return cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(int) * std::max<std::size_t>(1, list.size()),
-                    const_cast<int*>(list.empty() ? nullptr : list.data()));
+  Device& d = *device_;
+  switch (id) {
+  case kPositions: return {&d.positions, &atlas_->level_layer(level_)};
+  case kDiffuse: return {&d.channels, &d.diffuse};
+  case kSpecular: return {&d.channels, &d.specular};
+  default: return {&d.channels, &d.material};
+  }
 }
 
-} // namespace
-
-Snapshot PaintSurface::take_snapshot(const std::vector<int>& patches)
+Snapshot PaintSurface::take_snapshot(const std::vector<int>& patches, const std::vector<int>& layers)
 {
   Snapshot s;
   s.patches = patches;
+  s.layer_ids = layers;
   if (patches.empty())
     return s;
-  Device& d = *device_;
   Runtime& rt = atlas_->runtime();
   const LevelLayout l = atlas_->layout(level_);
   const std::size_t n = patches.size() * std::size_t(l.tile) * l.tile;
-  const cl::Buffer list = device_list(rt, patches);
+  const cl::Buffer list = device_ints(rt.context(), patches);
   cl::Buffer out(rt.context(), CL_MEM_WRITE_ONLY, sizeof(Float4) * n);
   const auto tiles = range_tiles(l, int(patches.size()));
-  // Layers: control points of the finest level, then the paint channels.
-  const std::pair<LayerKernels*, const cl::Memory*> layers[] = {
-    {&d.positions, &atlas_->level_layer(level_)}, {&d.channels, &d.diffuse}, {&d.channels, &d.specular},
-    {&d.channels, &d.material}};
-  for (const auto& [kernels, layer] : layers) {
-    launch(rt.queue(), kernels->gather_tiles, tiles.first, tiles.second, *layer, grid(l), list, int(patches.size()), out);
+  for (const int id : layers) {
+    const auto [kernels, memory] = layer(id);
+    launch(rt.queue(), kernels->gather_tiles, tiles.first, tiles.second, *memory, grid(l), list, int(patches.size()),
+           out);
     s.layers.emplace_back(n);
     rt.queue().enqueueReadBuffer(out, CL_TRUE, 0, sizeof(Float4) * n, s.layers.back().data());
   }
@@ -156,23 +155,22 @@ void PaintSurface::restore(const Snapshot& s)
 {
   if (s.patches.empty())
     return;
-  Device& d = *device_;
   Runtime& rt = atlas_->runtime();
   const LevelLayout l = atlas_->layout(level_);
   const std::size_t n = s.patches.size() * std::size_t(l.tile) * l.tile;
-  const cl::Buffer list = device_list(rt, s.patches);
+  const cl::Buffer list = device_ints(rt.context(), s.patches);
   const auto tiles = range_tiles(l, int(s.patches.size()));
-  const std::pair<LayerKernels*, const cl::Memory*> layers[] = {
-    {&d.positions, &atlas_->level_layer(level_)}, {&d.channels, &d.diffuse}, {&d.channels, &d.specular},
-    {&d.channels, &d.material}};
-  for (std::size_t k = 0; k < 4; ++k) {
-    cl::Buffer in(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(Float4) * n,
-                  const_cast<Float4*>(s.layers[k].data()));
-    launch(rt.queue(), layers[k].first->scatter_tiles, tiles.first, tiles.second, *layers[k].second, grid(l), list,
+  for (std::size_t k = 0; k < s.layer_ids.size(); ++k) {
+    const auto [kernels, memory] = layer(s.layer_ids[k]);
+    // Copied at creation (COPY_HOST_PTR): no wait needed for the host data.
+    const cl::Buffer in(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(Float4) * n,
+                        const_cast<Float4*>(s.layers[k].data()));
+    launch(rt.queue(), kernels->scatter_tiles, tiles.first, tiles.second, *memory, grid(l), list,
            int(s.patches.size()), in);
-    rt.queue().finish();
   }
-  refresh_geometry(s.patches);
+  if (std::find(s.layer_ids.begin(), s.layer_ids.end(), int(kPositions)) != s.layer_ids.end())
+    refresh_geometry(s.patches);
+  rt.queue().finish();
 }
 
 void PaintSurface::refresh_geometry(const std::vector<int>& patches)
@@ -181,9 +179,25 @@ void PaintSurface::refresh_geometry(const std::vector<int>& patches)
   Runtime& rt = atlas_->runtime();
   const LevelLayout l = atlas_->layout(level_);
   atlas_->update_limit(atlas_->patch_set(patches, Reach::Any));
-  const cl::Buffer list = device_list(rt, patches);
-  launch(rt.queue(), d.patch_bounds, cl::NDRange(round_up(patches.size(), kGroup)), cl::NDRange(kGroup),
-         atlas_->limit_positions_layer(), grid(l), list, int(patches.size()), d.bounds);
+  // The limit changed on the patches' sides and corners too, which every
+  // patch sharing a corner with them stores: their bounds move as well.
+  const AtlasTopology& topo = atlas_->topology();
+  const std::uint32_t stamp = 2 * ++generation_;
+  std::vector<int> around;
+  for (const int p : patches)
+    for (int c = 0; c < 4; ++c) {
+      const CornerRing& ring = topo.rings[std::size_t(topo.patch_corners[std::size_t(p)][c])];
+      for (int m = 0; m < ring.count; ++m) {
+        const int q = topo.slots[std::size_t(ring.first + m)].patch;
+        if (mark_[std::size_t(q)] != stamp) {
+          mark_[std::size_t(q)] = stamp;
+          around.push_back(q);
+        }
+      }
+    }
+  const cl::Buffer list = device_ints(rt.context(), around);
+  launch(rt.queue(), d.patch_bounds, cl::NDRange(round_up(around.size(), kGroup)), cl::NDRange(kGroup),
+         atlas_->limit_positions_layer(), grid(l), list, int(around.size()), d.bounds);
   rt.queue().finish();
 }
 
@@ -193,13 +207,14 @@ void PaintSurface::remember(const std::vector<int>& patches)
     return;
   std::vector<int> fresh;
   for (const int p : patches)
-    if (!in_stroke_[std::size_t(p)]) {
-      in_stroke_[std::size_t(p)] = 1;
+    if (!in_stroke_[std::size_t(p)])
       fresh.push_back(p);
-    }
   if (fresh.empty())
     return;
-  Snapshot s = take_snapshot(fresh);
+  Snapshot s = take_snapshot(fresh, stroke_layers_); // flags only once the tiles are safe
+  for (const int p : fresh)
+    in_stroke_[std::size_t(p)] = 1;
+  stroke_before_.layer_ids = s.layer_ids;
   stroke_before_.patches.insert(stroke_before_.patches.end(), s.patches.begin(), s.patches.end());
   stroke_before_.layers.resize(std::max(stroke_before_.layers.size(), s.layers.size()));
   for (std::size_t k = 0; k < s.layers.size(); ++k)
@@ -211,7 +226,7 @@ bool PaintSurface::undo()
   if (!undo_.can_undo())
     return false;
   const Snapshot& before = undo_.next_undo();
-  Snapshot now = take_snapshot(before.patches);
+  Snapshot now = take_snapshot(before.patches, before.layer_ids);
   restore(before);
   undo_.undone(std::move(now));
   return true;
@@ -222,7 +237,7 @@ bool PaintSurface::redo()
   if (!undo_.can_redo())
     return false;
   const Snapshot& after = undo_.next_redo();
-  Snapshot now = take_snapshot(after.patches);
+  Snapshot now = take_snapshot(after.patches, after.layer_ids);
   restore(after);
   undo_.redone(std::move(now));
   return true;
@@ -243,7 +258,7 @@ std::vector<PaintSurface::Cull> PaintSurface::cull(const Vec3& centre, float rad
       d.records = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(CullRecord) * d.record_capacity);
     }
     count = 0;
-    rt.queue().enqueueWriteBuffer(d.count, CL_FALSE, 0, sizeof count, &count);
+    rt.queue().enqueueWriteBuffer(d.count, CL_TRUE, 0, sizeof count, &count);
     launch(rt.queue(), d.brush_cull, cl::NDRange(round_up(l.patches, kGroup)), cl::NDRange(kGroup),
            atlas_->limit_positions_layer(), atlas_->limit_normals_layer(), grid(l), l.patches, d.bounds, c, radius,
            d.records, d.count, cl_int(d.record_capacity));
@@ -339,14 +354,12 @@ void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
     d.active_capacity = std::max(patches.size(), std::size_t(l.patches < 1024 ? l.patches : 1024));
     d.active = cl::Buffer(rt.context(), CL_MEM_READ_ONLY, sizeof(cl_int) * d.active_capacity);
   }
-  rt.queue().enqueueWriteBuffer(d.active, CL_FALSE, 0, sizeof(cl_int) * patches.size(), patches.data());
-  rt.queue().enqueueWriteBuffer(d.dab, CL_FALSE, 0, sizeof dab, &dab);
-  const std::size_t rows = std::max<std::size_t>(1, 256 / std::size_t(l.tile));
-  launch(rt.queue(), d.paint_dab,
-         cl::NDRange(std::size_t(l.tile), round_up(std::size_t(l.tile) * patches.size(), rows)),
-         cl::NDRange(std::size_t(l.tile), rows), atlas_->limit_positions_layer(), grid(l), d.active,
+  // Blocking: the host memory behind both may be gone if a launch throws.
+  rt.queue().enqueueWriteBuffer(d.active, CL_TRUE, 0, sizeof(cl_int) * patches.size(), patches.data());
+  rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
+  const auto tiles = range_tiles(l, int(patches.size()));
+  launch(rt.queue(), d.paint_dab, tiles.first, tiles.second, atlas_->limit_positions_layer(), grid(l), d.active,
          cl_int(patches.size()), d.dab, d.raster, d.stamp, d.diffuse, d.specular, d.material);
-  // The host buffers above must outlive the copies: wait for this dab.
   rt.queue().finish();
 }
 
@@ -361,6 +374,18 @@ StrokeReport PaintSurface::apply(const Stroke& stroke)
       undo_.record(std::move(stroke_before_));
     stroke_before_ = Snapshot();
   };
+  // Only the layers this tool changes go into its undo step.
+  switch (stroke.tool) {
+  case Tool::Smooth:
+    stroke_layers_ = stroke.target_colour ? std::vector<int>{kDiffuse, kSpecular} : std::vector<int>{kPositions};
+    break;
+  case Tool::Sculpt:
+  case Tool::Inflate:
+  case Tool::Flatten: stroke_layers_ = {kPositions}; break;
+  case Tool::Blur:
+  case Tool::Smear: stroke_layers_ = {kDiffuse, kSpecular}; break;
+  default: stroke_layers_ = {kDiffuse, kSpecular, kMaterial}; break;
+  }
   StrokeReport report;
   try {
     report = apply_dabs(stroke);
@@ -389,15 +414,14 @@ void PaintSurface::smear(const std::vector<int>& patches, BrushDab dab, std::opt
     dab.pattern = PATTERN_NONE;
     paint(patches, dab);
   }
-  const cl::Buffer list = device_list(rt, patches);
+  const cl::Buffer list = device_ints(rt.context(), patches);
   const int count = int(patches.size());
-  const auto tiles = range_tiles(l, count);
-  const std::size_t groups = (tiles.first[0] / tiles.second[0]) * (tiles.first[1] / tiles.second[1]);
-  const std::size_t items = tiles.second[0] * tiles.second[1];
+  const std::size_t items = kGroup, texels = std::size_t(count) * l.tile * l.tile;
+  const std::size_t groups = (texels + items - 1) / items;
   cl::Buffer partial(rt.context(), CL_MEM_WRITE_ONLY, 3 * groups * sizeof(Float4));
   rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
-  launch(rt.queue(), d.dab_pickup, tiles.first, tiles.second, atlas_->limit_positions_layer(), grid(l), list, count,
-         d.dab, d.stamp, d.diffuse, d.specular, partial, cl::Local(3 * items * sizeof(Float4)));
+  launch(rt.queue(), d.dab_pickup, cl::NDRange(groups * items), cl::NDRange(items), atlas_->limit_positions_layer(),
+         grid(l), list, count, d.dab, d.stamp, d.diffuse, d.specular, partial, cl::Local(3 * items * sizeof(Float4)));
   std::vector<Float4> sums(3 * groups);
   rt.queue().enqueueReadBuffer(partial, CL_TRUE, 0, sums.size() * sizeof(Float4), sums.data());
   double acc[2][4] = {}, weight = 0;
@@ -501,7 +525,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   cl::CommandQueue& q = rt.queue();
   const LevelLayout l = atlas_->layout(level_);
   const int count = int(patches.size());
-  const cl::Buffer list = device_list(rt, patches);
+  const cl::Buffer list = device_ints(rt.context(), patches);
   const auto tiles = range_tiles(l, count);
   weigh(list, count, dab);
 
@@ -521,7 +545,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   // corners are smoothed only where every patch sharing them is in the
   // brush; elsewhere their weight is zero anyway.
   const PatchSet set = atlas_->patch_set(patches, Reach::All);
-  const cl::Buffer edges = device_list(rt, set.edges), rings = device_list(rt, set.rings);
+  const cl::Buffer edges = device_ints(rt.context(), set.edges), rings = device_ints(rt.context(), set.rings);
   const int edge_count = int(set.edges.size()), ring_count = int(set.rings.size());
   std::vector<std::pair<LayerKernels*, const cl::Memory*>> layers;
   if (stroke.target_colour)
@@ -622,23 +646,25 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
       }
       mirror_at = 0.5f * (lo + hi);
     }
-    std::optional<std::array<Float4, 2>> carried; // the smear brush's load: diffuse, specular
+    std::optional<std::array<Float4, 2>> carried[2]; // the smear brush's load per side of the mirror
     for (const DabSample& sample : stroke_samples(stroke)) {
-      std::vector<Vec3> centres{sample.centre};
+      // The dab, and with a mirror its reflection (heading reflected too).
+      std::vector<DabSample> dabs{sample};
       if (stroke.mirror_axis >= 0) {
-        Vec3 m = sample.centre;
-        m[stroke.mirror_axis] = 2.f * mirror_at - m[stroke.mirror_axis];
-        centres.push_back(m);
+        DabSample m = sample;
+        m.centre[stroke.mirror_axis] = 2.f * mirror_at - m.centre[stroke.mirror_axis];
+        m.heading[stroke.mirror_axis] = -m.heading[stroke.mirror_axis];
+        dabs.push_back(m);
       }
       dab.radius = stroke.radius * sample.pressure;
       dab.strength = stroke.strength * sample.pressure;
       bool on_surface = false;
-      for (const Vec3& point : centres) {
+      for (std::size_t side = 0; side < dabs.size(); ++side) {
         ++report.dabs;
         if (!(dab.radius > 0.f))
           continue;
         Vec3 centre, normal;
-        const std::vector<int> patches = brush_patches(point, dab.radius, &centre, &normal);
+        const std::vector<int> patches = brush_patches(dabs[side].centre, dab.radius, &centre, &normal);
         if (patches.empty())
           continue;
         on_surface = true;
@@ -646,9 +672,9 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
         dab.centre[1] = centre[1];
         dab.centre[2] = centre[2];
         if (dab.stamp_size[0] > 0)
-          stamp_axes(normal, sample.heading, dab);
+          stamp_axes(normal, dabs[side].heading, dab);
         if (stroke.tool == Tool::Smear)
-          smear(patches, dab, carried);
+          smear(patches, dab, carried[side]);
         else if (stroke.tool == Tool::Paint || stroke.tool == Tool::Label)
           paint(patches, dab);
         else

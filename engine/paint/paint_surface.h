@@ -108,8 +108,19 @@ private:
   void upload_rasters(const Stroke& stroke, BrushDab& dab);
   //! The brush image's axes in the tangent plane at a dab.
   static void stamp_axes(const Vec3& normal, const Vec3& heading, BrushDab& dab);
-  //! The painted layers' tiles of `patches`, from the device.
-  Snapshot take_snapshot(const std::vector<int>& patches);
+  //! Layers a snapshot may hold: the finest level's control points and the
+  //! three channel layers.
+  enum Layer : int
+  {
+    kPositions,
+    kDiffuse,
+    kSpecular,
+    kMaterial
+  };
+  struct LayerKernels;
+  std::pair<LayerKernels*, const cl::Memory*> layer(int id);
+  //! The given layers' tiles of `patches`, from the device.
+  Snapshot take_snapshot(const std::vector<int>& patches, const std::vector<int>& layers);
   void restore(const Snapshot& snapshot);
   //! Adds the patches not yet in the stroke's snapshot, before they change.
   void remember(const std::vector<int>& patches);
@@ -120,6 +131,7 @@ private:
   BaseMaterial base_material_;
   UndoLog undo_;
   Snapshot stroke_before_;            // the running stroke's snapshot
+  std::vector<int> stroke_layers_;    // the layers the running stroke changes
   std::vector<char> in_stroke_;       // per patch: already in stroke_before_
   std::vector<std::array<int, 4>> neighbours_; // per patch side: the patch across, -1 on a border
   std::vector<std::uint32_t> mark_;   // per patch: culled / reached in dab `generation_`

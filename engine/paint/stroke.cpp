@@ -270,8 +270,12 @@ Stroke read_stroke(const json& j, std::size_t index)
       r.fail("iterations", "must be an integer from 1 to 1000");
     s.target_colour = s.tool == Tool::Blur || r.word("target", "position", {"position", "color"}) == "color";
     s.taubin = r.word("method", s.target_colour ? "laplacian" : "taubin", {"laplacian", "taubin"}) == "taubin";
+    if (s.taubin && s.target_colour)
+      r.fail("method", "taubin is for positions; colours are smoothed with laplacian");
     s.lambda = float(r.number("lambda", 0.5, 0.0, 1.0));
     s.mu = float(r.number("mu", -0.53, -1.0, 0.0));
+    if (!s.target_colour && r.has("mu") && !s.taubin)
+      r.fail("mu", "belongs to Taubin smoothing (\"method\": \"taubin\")");
     if (s.taubin && !(-s.mu > s.lambda))
       r.fail("mu", "must be more negative than -lambda for Taubin smoothing (e.g. lambda 0.5, mu -0.53)");
   }
@@ -311,6 +315,21 @@ Stroke read_stroke(const json& j, std::size_t index)
         s.pressure.push_back(v.get<float>());
       }
     }
+  }
+  if (!everywhere) {
+    // A path a million dabs long is a mistake, not a stroke: say so rather
+    // than run for hours (spacing shrinks with pressure down to 1/20).
+    double length = 0;
+    for (std::size_t k = 1; k < s.points.size(); ++k) {
+      double d2 = 0;
+      for (int a = 0; a < 3; ++a)
+        d2 += double(s.points[k][a] - s.points[k - 1][a]) * double(s.points[k][a] - s.points[k - 1][a]);
+      length += std::sqrt(d2);
+    }
+    const double step = double(s.spacing) * double(s.radius) * (s.pressure.empty() ? 1.0 : 0.05);
+    if (length / step > double(kMaxDabsPerStroke))
+      r.fail("spacing", "x radius is too small for the path: more than " + std::to_string(kMaxDabsPerStroke) +
+                          " dabs in one stroke");
   }
   if (r.has("stroke")) {
     // rubberband: a straight line from the first point to the last;
@@ -450,6 +469,8 @@ std::vector<DabSample> stroke_samples(const Stroke& s)
   const auto pressure_at = [&](std::size_t k) { return s.pressure.empty() ? 1.f : s.pressure[k]; };
   // Spacing follows the pressure-scaled radius; never below a tiny step.
   const auto step = [&](float pressure) { return s.spacing * s.radius * std::max(pressure, 0.05f); };
+  if (!(step(0.05f) > 0.f))
+    return {{s.points[0], pressure_at(0)}};
   std::vector<DabSample> out{{s.points[0], pressure_at(0)}};
   if (s.points.size() > 1)
     for (int k = 0; k < 3; ++k)
@@ -460,10 +481,10 @@ std::vector<DabSample> stroke_samples(const Stroke& s)
     const float len = std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
                                 (b[2] - a[2]) * (b[2] - a[2]));
     float at = 0.f; // along this segment
-    while (true) {
+    while (out.size() <= kMaxDabsPerStroke) {
       const float u = len > 0.f ? at / len : 0.f;
       const float need = step(pressure_at(k - 1) * (1.f - u) + pressure_at(k) * u) - since;
-      if (at + need > len) {
+      if (at + need > len || !(at + need > at)) { // the end, or a step float can no longer take
         since += len - at;
         break;
       }

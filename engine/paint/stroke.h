@@ -78,6 +78,9 @@ StrokeScript parse_stroke_script(const std::string& json_text);
 //! \throw IOError when the file cannot be read; InputError as above.
 StrokeScript load_stroke_script(const std::string& path);
 
+//! Most dabs one stroke may have; parse_stroke_script() refuses longer ones.
+constexpr std::size_t kMaxDabsPerStroke = 1000000;
+
 //! Centres of the dabs of a stroke along its path, every spacing * radius
 //! (pressure-scaled), the first point always included; with their pressure.
 struct DabSample

@@ -15,6 +15,7 @@ namespace meshpaint {
 struct Snapshot
 {
   std::vector<int> patches;                //!< in the order of the tiles below
+  std::vector<int> layer_ids;              //!< which layers (PaintSurface's numbering)
   std::vector<std::vector<Float4>> layers; //!< per layer: #patches x tile^2 texels
   std::size_t bytes() const;
 };

@@ -94,3 +94,14 @@ def test_guide_example_script_runs(tmp_path):
     assert r.returncode == 0, r.stderr
     assert "painted red" in r.stdout
     assert (tmp_path / "bunny.vtp").exists()
+
+
+def test_a_failed_call_does_not_poison_the_next_update():
+    s = meshpaint.vtkPaintSurface()
+    s.SetInputData(sphere().GetOutput())
+    s.SetLevel(2)
+    s.Update()
+    with pytest.raises(meshpaint.Error, match="nothing to undo"):
+        s.Undo()
+    s.Update()  # fine: the failed Undo was not an update failure
+    assert s.GetOutput().GetNumberOfPoints() > 0

@@ -42,6 +42,7 @@ int paint_command(const Argv& argv)
   Timer total;
   PaintSurface surface(runtime, mesh, level,
                        args.has("--storage") ? parse_storage(args.value("--storage")) : default_storage(runtime->info()));
+  surface.undo_log().set_recording(false); // a script never undoes: no snapshots to pay for
   const double setup_ms = total.ms();
   Table table({"stroke", "tool", "dabs", "on surface", "patches", "ms", "note"});
   Timer progress;
@@ -50,8 +51,6 @@ int paint_command(const Argv& argv)
     const StrokeReport r = surface.apply(stroke);
     table.add({std::to_string(k), tool_name(stroke.tool), std::to_string(r.dabs), std::to_string(r.dabs_applied),
                grouped(r.patches_touched), format_fixed(r.ms, 2), r.left_surface ? "left the surface" : ""});
-    for (const std::string& note : surface.undo_log().take_messages())
-      std::cerr << "meshpaint paint: " << note << "\n";
     if (!quiet && progress.ms() > 1000.0) {
       std::cerr << "meshpaint paint: stroke " << k + 1 << " of " << script.strokes.size() << "\n";
       progress.restart();

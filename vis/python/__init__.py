@@ -35,8 +35,9 @@ class vtkPaintSurface(_wrapped.vtkPaintSurface):
         self._check(super().Redo())
 
     def Update(self, *args):
-        """Paints the queued strokes; raises Error if the update fails."""
+        """Paints the queued strokes; raises Error if this update fails."""
         self.GlobalWarningDisplayOff()
+        failed = self.GetFailedUpdates()
         super().Update(*args)
-        if self.GetLastError():
+        if self.GetFailedUpdates() != failed:
             raise Error(self.GetLastError())
