@@ -5,9 +5,12 @@
 
 #include "paint/paint_surface.h" // for meshpaint::PaintSurface
 
+#include <nlohmann/json.hpp> // for nlohmann::json
+
 #include <vtkInformation.h>       // for vtkInformation
 #include <vtkInformationVector.h> // for vtkInformationVector
 #include <vtkObjectFactory.h>     // for vtkStandardNewMacro
+#include <vtkPoints.h>            // for vtkPoints
 #include <vtkPolyData.h>          // for vtkPolyData
 
 #include <vector> // for std::vector
@@ -16,6 +19,8 @@ vtkStandardNewMacro(vtkPaintSurface);
 
 struct vtkPaintSurface::Internals
 {
+  nlohmann::json brush = {{"tool", "paint"}}; // the setters' stroke, without points
+  std::string brush_text;
   std::unique_ptr<meshpaint::PaintSurface> surface;
   vtkMTimeType built_from = 0; // input's modification time the surface was built from
   int built_level = 0;
@@ -52,6 +57,53 @@ int guarded(std::string& error, F&& f)
 }
 
 } // namespace
+
+// Each setter writes its stroke-script key; checking happens once, in
+// ApplyStroke(), by the same parser that reads scripts.
+void vtkPaintSurface::SetTool(const char* v) { this->Impl->brush["tool"] = v ? v : ""; }
+void vtkPaintSurface::SetRadius(double v) { this->Impl->brush["radius"] = v; }
+void vtkPaintSurface::SetStrength(double v) { this->Impl->brush["strength"] = v; }
+void vtkPaintSurface::SetFalloff(const char* v) { this->Impl->brush["falloff"] = v ? v : ""; }
+void vtkPaintSurface::SetSpacing(double v) { this->Impl->brush["spacing"] = v; }
+void vtkPaintSurface::SetOp(const char* v) { this->Impl->brush["op"] = v ? v : ""; }
+void vtkPaintSurface::SetAmount(double v) { this->Impl->brush["amount"] = v; }
+void vtkPaintSurface::SetIterations(int v) { this->Impl->brush["iterations"] = v; }
+void vtkPaintSurface::SetDiffuse(double r, double g, double b) { this->Impl->brush["channels"]["diffuse"] = {r, g, b}; }
+void vtkPaintSurface::SetSpecular(double r, double g, double b) { this->Impl->brush["channels"]["specular"] = {r, g, b}; }
+void vtkPaintSurface::SetRoughness(double v) { this->Impl->brush["channels"]["roughness"] = v; }
+void vtkPaintSurface::SetDisplacement(double v) { this->Impl->brush["channels"]["displacement"] = v; }
+void vtkPaintSurface::SetLabel(int v) { this->Impl->brush["channels"]["label"] = v; }
+void vtkPaintSurface::SetMask(double v) { this->Impl->brush["channels"]["mask"] = v; }
+void vtkPaintSurface::ClearChannels() { this->Impl->brush.erase("channels"); }
+
+void vtkPaintSurface::SetMirror(const char* v)
+{
+  if (v && *v)
+    this->Impl->brush["mirror"] = v;
+  else
+    this->Impl->brush.erase("mirror");
+}
+
+const char* vtkPaintSurface::GetBrushJSON()
+{
+  this->Impl->brush_text = this->Impl->brush.dump();
+  return this->Impl->brush_text.c_str();
+}
+
+int vtkPaintSurface::ApplyStroke(vtkPoints* path)
+{
+  nlohmann::json stroke = this->Impl->brush;
+  const std::string tool = stroke.value("tool", "paint");
+  if (tool != "wash" && tool != "dip") {
+    stroke["points"] = nlohmann::json::array();
+    for (vtkIdType k = 0; path && k < path->GetNumberOfPoints(); ++k) {
+      double p[3];
+      path->GetPoint(k, p);
+      stroke["points"].push_back({p[0], p[1], p[2]});
+    }
+  }
+  return this->ApplyStrokes(nlohmann::json{{"strokes", {stroke}}}.dump().c_str());
+}
 
 int vtkPaintSurface::ApplyStrokes(const char* json)
 {

@@ -19,6 +19,8 @@
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
+class vtkPoints;
+
 class MESHPAINTVIS_EXPORT vtkPaintSurface : public vtkPolyDataAlgorithm
 {
 public:
@@ -41,6 +43,36 @@ public:
   /// Checks a stroke script (docs/strokes.md) and queues its strokes for
   /// the next Update(). Returns 0, applying nothing, when the script is bad.
   int ApplyStrokes(const char* json);
+
+  //@{
+  /// The brush for ApplyStroke(): the stroke-script keys of docs/strokes.md
+  /// as setters. Channels set here are painted by every following stroke
+  /// until ClearChannels().
+  void SetTool(const char* tool);
+  void SetRadius(double radius);
+  void SetStrength(double strength);
+  void SetFalloff(const char* falloff);
+  void SetSpacing(double spacing);
+  void SetOp(const char* op);
+  void SetMirror(const char* axis); ///< "x", "y", "z", or "" for none
+  void SetAmount(double amount);
+  void SetIterations(int iterations);
+  void SetDiffuse(double r, double g, double b);
+  void SetSpecular(double r, double g, double b);
+  void SetRoughness(double roughness);
+  void SetDisplacement(double height);
+  void SetLabel(int label);
+  void SetMask(double mask);
+  void ClearChannels();
+  //@}
+
+  /// Queues one stroke of the brush above along `path` (world coordinates),
+  /// checked exactly as a stroke script is. Returns 0, queuing nothing, when
+  /// the brush or path is not valid.
+  int ApplyStroke(vtkPoints* path);
+
+  /// The brush above as one stroke-script stroke, without points (JSON).
+  const char* GetBrushJSON();
 
   /// Undoes (redoes) the last stroke; 0 when there is nothing to undo (redo)
   /// or the surface is not painted yet.

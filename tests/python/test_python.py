@@ -105,3 +105,35 @@ def test_a_failed_call_does_not_poison_the_next_update():
         s.Undo()
     s.Update()  # fine: the failed Undo was not an update failure
     assert s.GetOutput().GetNumberOfPoints() > 0
+
+
+def test_brush_setters_and_a_vtkpoints_path():
+    s = meshpaint.vtkPaintSurface()
+    s.SetInputData(sphere().GetOutput())
+    s.SetLevel(2)
+    s.SetRadius(0.15)
+    s.SetFalloff("constant")
+    s.SetDiffuse(0, 0, 1)
+    s.SetRoughness(0.9)
+    path = vtk.vtkPoints()
+    path.InsertNextPoint(0, 0, 0.5)
+    path.InsertNextPoint(0.3, 0, 0.4)
+    s.ApplyStroke(path)
+    s.Update()
+    out = s.GetOutput()
+    diffuse = vtk_to_numpy(out.GetPointData().GetArray("diffuse"))
+    rough = vtk_to_numpy(out.GetPointData().GetArray("roughness"))
+    blue = (diffuse[:, 2] == 1) & (diffuse[:, 0] == 0)
+    assert blue.sum() > 10
+    assert np.all(rough[blue] == np.float32(0.9))
+    assert json.loads(s.GetBrushJSON())["channels"]["diffuse"] == [0, 0, 1]
+    s.SetRadius(-1)
+    with pytest.raises(meshpaint.Error, match=r'stroke 0: "radius" must be a number'):
+        s.ApplyStroke(path)
+    s.SetRadius(0.2)
+    s.ClearChannels()
+    s.SetTool("sculpt")
+    s.SetAmount(0.05)
+    s.ApplyStroke(path)
+    s.Update()
+    assert s.GetStrokeCount() == 2

@@ -26,6 +26,10 @@ class vtkPaintSurface(_wrapped.vtkPaintSurface):
         """Checks a stroke script and queues its strokes for the next Update()."""
         self._check(super().ApplyStrokes(json_text))
 
+    def ApplyStroke(self, path):
+        """Queues one stroke of the brush set with the setters along a vtkPoints path."""
+        self._check(super().ApplyStroke(path))
+
     def Undo(self):
         """Undoes the last stroke; raises Error when there is nothing to undo."""
         self._check(super().Undo())
