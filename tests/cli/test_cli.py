@@ -158,6 +158,10 @@ def test_demo_writes_its_surface(tmp_path):
     out = tmp_path / "demo" / "bunny00_level2_limit.vtp"
     assert out.exists()
     assert read_polydata(out).GetNumberOfPoints() == 904898
+    painted = read_polydata(tmp_path / "demo" / "painted" / "surface.vtp")
+    labels = painted.GetPointData().GetArray("label")
+    assert any(labels.GetValue(i) == 1 for i in range(labels.GetNumberOfTuples()))
+    assert (tmp_path / "demo" / "painted" / "model.obj").exists()
 
 
 def test_devices_lists_the_default(tmp_path):

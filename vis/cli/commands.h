@@ -3,7 +3,9 @@
 
 #include "args.h"
 
+#include "atlas/atlas.h"
 #include "cl/runtime.h"
+#include "paint/stroke.h"
 #include "mesh/base_mesh.h"
 #include "mesh/welded_surface.h"
 
@@ -30,6 +32,13 @@ BaseMesh load_reported(const std::string& path);
 
 //! Where the set-up script puts the scans (data/scans in the source tree).
 std::string scans_dir();
+//! The bundled stroke scripts (data/strokes in the source tree).
+std::string strokes_dir();
+
+//! Paints `script` onto `mesh` and writes DIR/surface.vtp and the textured
+//! model (model.obj, model.mtl, PNG maps), printing a table of the strokes.
+void paint_job(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage, const BaseMesh& mesh,
+               const StrokeScript& script, int level, int model_level, const std::string& dir, bool quiet);
 
 //! \throw InputError unless the path ends in .obj, .ply or .vtp (any case).
 void check_surface_format(const std::string& path);

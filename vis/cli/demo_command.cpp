@@ -7,6 +7,7 @@
 #include "atlas/atlas.h"
 #include "atlas/weld.h"
 #include "core/errors.h"
+#include "paint/stroke.h"
 #include "core/format.h"
 #include "core/timer.h"
 #include "mesh/surface_io.h"
@@ -54,6 +55,13 @@ int demo_command(const Argv& argv)
   const std::string out = dir + "/" + mesh.name + "_level" + std::to_string(level) + "_limit.vtp";
   write_any(surface, out);
   os << "wrote      " << out << " (" << format_fixed(t.ms(), 1) << " ms)\n";
+
+  // Then the main job: painting. The bundled script's strokes lie on the
+  // bunny; another mesh gets its marble wash only.
+  StrokeScript script = load_stroke_script(strokes_dir() + "/bunny_demo.json");
+  if (!args.positionals().empty())
+    script.strokes.resize(1);
+  paint_job(runtime, storage, mesh, script, level, std::max(1, level - 2), dir + "/painted", true);
   return 0;
 }
 

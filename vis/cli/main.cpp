@@ -17,7 +17,8 @@ const char* const kUsage = R"(usage: meshpaint COMMAND [ARGS]
 
 commands:
   demo [MESH] [--level L] [-o DIR]    subdivide the bunny scan (or MESH), write its limit
-                                      surface as DIR/NAME_levelL_limit.vtp, print timings
+                                      surface as DIR/NAME_levelL_limit.vtp, then paint the
+                                      bundled strokes into DIR/painted/; print timings
   info MESH                           counts, genus, boundaries, valences, atlas per level
   subdivide MESH --level L [--limit] [--quiet] -o OUT.{obj,ply,vtp}
                                       the level-L surface (welded quads); --limit: limit

@@ -17,31 +17,15 @@
 #include <iostream>   // for std::cout, std::cerr
 
 namespace meshpaint::cli {
-int paint_command(const Argv& argv)
+void paint_job(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage, const BaseMesh& mesh,
+               const StrokeScript& script, int level, int model_level, const std::string& dir, bool quiet)
 {
-  Args args("paint", argv, {"--quiet"}, {"--strokes", "--level", "--model-level", "-o", "--device", "--storage"});
-  args.expect_positionals(1, 1, "MESH --strokes S.json [--level L] [--model-level M] -o OUTDIR");
-  if (!args.has("--strokes"))
-    throw InputError("--strokes S.json is required");
-  const std::string dir = args.value("-o");
-  if (dir.empty())
-    throw InputError("-o OUTDIR is required");
-  // Everything is checked before anything is painted.
-  StrokeScript script = load_stroke_script(args.value("--strokes"));
-  load_stroke_rasters(script);
-  const int level = args.integer("--level", script.level > 0 ? script.level : 3, 1, kMaxLevel);
-  const int model_level = args.integer("--model-level", std::max(1, level - 2), 1, level);
-  const bool quiet = args.flag("--quiet");
-  const BaseMesh mesh = load_reported(args.positionals()[0]);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec)
     throw IOError("cannot create '" + dir + "': " + ec.message());
-
-  auto runtime = open_device(args);
   Timer total;
-  PaintSurface surface(runtime, mesh, level,
-                       args.has("--storage") ? parse_storage(args.value("--storage")) : default_storage(runtime->info()));
+  PaintSurface surface(runtime, mesh, level, storage);
   surface.undo_log().set_recording(false); // a script never undoes: no snapshots to pay for
   const double setup_ms = total.ms();
   Table table({"stroke", "tool", "dabs", "on surface", "patches", "ms", "note"});
@@ -63,12 +47,32 @@ int paint_command(const Argv& argv)
   build_export(surface, model_level, model, maps);
   write_texture_maps(maps, dir);
   write_obj_model(model, maps, dir);
-  std::cout << "meshpaint paint: " << mesh.name << " at level " << level << ", " << script.strokes.size()
+  std::cout << "painted    " << mesh.name << " at level " << level << ", " << script.strokes.size()
             << " strokes (set-up " << format_fixed(setup_ms, 1) << " ms)\n";
   table.print(std::cout);
-  std::cout << "wrote " << out << ", " << dir << "/model.obj (level " << model_level << ", "
+  std::cout << "wrote      " << out << ", " << dir << "/model.obj (level " << model_level << ", "
             << model.mesh.quads.size() << " quads) with model.mtl and " << maps.width << "x" << maps.height
             << " texture maps\n";
+}
+
+int paint_command(const Argv& argv)
+{
+  Args args("paint", argv, {"--quiet"}, {"--strokes", "--level", "--model-level", "-o", "--device", "--storage"});
+  args.expect_positionals(1, 1, "MESH --strokes S.json [--level L] [--model-level M] -o OUTDIR");
+  if (!args.has("--strokes"))
+    throw InputError("--strokes S.json is required");
+  const std::string dir = args.value("-o");
+  if (dir.empty())
+    throw InputError("-o OUTDIR is required");
+  // Everything is checked before anything is painted.
+  StrokeScript script = load_stroke_script(args.value("--strokes"));
+  load_stroke_rasters(script);
+  const int level = args.integer("--level", script.level > 0 ? script.level : 3, 1, kMaxLevel);
+  const int model_level = args.integer("--model-level", std::max(1, level - 2), 1, level);
+  const BaseMesh mesh = load_reported(args.positionals()[0]);
+  auto runtime = open_device(args);
+  paint_job(runtime, args.has("--storage") ? parse_storage(args.value("--storage")) : default_storage(runtime->info()),
+            mesh, script, level, model_level, dir, args.flag("--quiet"));
   return 0;
 }
 

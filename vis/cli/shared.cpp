@@ -20,4 +20,6 @@ BaseMesh load_reported(const std::string& path)
 
 std::string scans_dir() { return std::string(MESHPAINT_SOURCE_DIR) + "/data/scans"; }
 
+std::string strokes_dir() { return std::string(MESHPAINT_SOURCE_DIR) + "/data/strokes"; }
+
 } // namespace meshpaint::cli
