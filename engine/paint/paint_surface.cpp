@@ -18,11 +18,6 @@ constexpr std::size_t kGroup = 64;
 
 } // namespace
 
-struct PaintSurface::Cull
-{
-  CullRecord record;
-};
-
 //! Kernels that filter or copy a layer, built for one storage path.
 struct PaintSurface::LayerKernels
 {
@@ -221,31 +216,28 @@ void PaintSurface::remember(const std::vector<int>& patches)
     stroke_before_.layers[k].insert(stroke_before_.layers[k].end(), s.layers[k].begin(), s.layers[k].end());
 }
 
-bool PaintSurface::undo()
-{
-  if (!undo_.can_undo())
-    return false;
-  const Snapshot& before = undo_.next_undo();
-  Snapshot now = take_snapshot(before.patches, before.layer_ids);
-  restore(before);
-  undo_.undone(std::move(now));
-  return true;
-}
+bool PaintSurface::undo() { return step(true); }
 
-bool PaintSurface::redo()
+bool PaintSurface::redo() { return step(false); }
+
+bool PaintSurface::step(bool back)
 {
-  if (!undo_.can_redo())
+  if (back ? !undo_.can_undo() : !undo_.can_redo())
     return false;
-  const Snapshot& after = undo_.next_redo();
-  Snapshot now = take_snapshot(after.patches, after.layer_ids);
-  restore(after);
-  undo_.redone(std::move(now));
+  // Keep the present state of the same tiles, so the step can be reversed.
+  const Snapshot& target = back ? undo_.next_undo() : undo_.next_redo();
+  Snapshot now = take_snapshot(target.patches, target.layer_ids);
+  restore(target);
+  if (back)
+    undo_.undone(std::move(now));
+  else
+    undo_.redone(std::move(now));
   return true;
 }
 
 PaintSurface::~PaintSurface() = default;
 
-std::vector<PaintSurface::Cull> PaintSurface::cull(const Vec3& centre, float radius)
+std::vector<CullRecord> PaintSurface::cull(const Vec3& centre, float radius)
 {
   Device& d = *device_;
   Runtime& rt = atlas_->runtime();
@@ -268,7 +260,7 @@ std::vector<PaintSurface::Cull> PaintSurface::cull(const Vec3& centre, float rad
     d.record_capacity = std::size_t(count); // grow and run once more
     d.records = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(CullRecord) * d.record_capacity);
   }
-  std::vector<Cull> out(static_cast<std::size_t>(count));
+  std::vector<CullRecord> out(static_cast<std::size_t>(count));
   if (count > 0)
     rt.queue().enqueueReadBuffer(d.records, CL_TRUE, 0, sizeof(CullRecord) * count, out.data());
   // Appends land in any order: callers must not depend on it.
@@ -280,7 +272,7 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
   // Snap: the closest texel within the radius is the brush centre. A point
   // on the surface needs only a small search; grow it up to the radius.
   const float start = std::min(radius, float(1e-3 * atlas_->base_mesh().diagonal()));
-  std::vector<Cull> near;
+  std::vector<CullRecord> near;
   for (float r = start; near.empty(); r = std::min(radius, 8.f * r)) {
     near = cull(point, r);
     if (r >= radius)
@@ -288,30 +280,31 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
   }
   if (near.empty())
     return {};
-  const Cull* best = &near.front();
-  for (const Cull& c : near) // nearest, ties to the lowest patch: independent of append order
-    if (c.record.distance < best->record.distance ||
-        (c.record.distance == best->record.distance && c.record.patch < best->record.patch))
+  const CullRecord* best = &near.front();
+  for (const CullRecord& c : near) // nearest, ties to the lowest patch: independent of append order
+    if (c.distance < best->distance ||
+        (c.distance == best->distance && c.patch < best->patch))
       best = &c;
-  const float* snapped = best->record.closest_position;
+  const float* snapped = best->closest_position;
   const Vec3 centre{snapped[0], snapped[1], snapped[2]};
   if (centre_out)
     *centre_out = centre;
   if (normal_out)
-    *normal_out = {best->record.closest_normal[0], best->record.closest_normal[1], best->record.closest_normal[2]};
+    *normal_out = {best->closest_normal[0], best->closest_normal[1], best->closest_normal[2]};
 
   // The brush reaches the patches connected to the centre's patch through
   // sides that themselves come within the radius: never through the air.
-  const int start_patch = best->record.patch;
-  const std::vector<Cull> reach = cull(centre, radius);
+  const int start_patch = best->patch;
+  const std::vector<CullRecord> reach = cull(centre, radius);
 
   // Flood from the centre's patch over the culled patches; `mark_` holds,
   // per patch, 2 * generation for "culled" and 2 * generation + 1 for
   // "reached", so nothing needs clearing between dabs.
   const std::uint32_t culled = 2 * ++generation_, reached = culled + 1;
-  for (const Cull& c : reach)
-    mark_[std::size_t(c.record.patch)] = culled;
-  std::vector<const CullRecord*> record_of_stack;
+  for (const CullRecord& c : reach) {
+    mark_[std::size_t(c.patch)] = culled;
+    record_slot_[std::size_t(c.patch)] = &c; // for the sides' distances
+  }
   std::vector<int> stack;
   const auto visit = [&](int p) {
     if (mark_[std::size_t(p)] == culled) {
@@ -319,9 +312,6 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
       stack.push_back(p);
     }
   };
-  // Records by patch, for the sides' distances.
-  for (const Cull& c : reach)
-    record_slot_[std::size_t(c.record.patch)] = &c.record;
   visit(start_patch);
   std::size_t count = 0;
   while (!stack.empty()) {
@@ -335,9 +325,9 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
   }
   std::vector<int> active;
   active.reserve(count);
-  for (const Cull& c : reach)
-    if (mark_[std::size_t(c.record.patch)] == reached)
-      active.push_back(c.record.patch);
+  for (const CullRecord& c : reach)
+    if (mark_[std::size_t(c.patch)] == reached)
+      active.push_back(c.patch);
   std::sort(active.begin(), active.end());
   return active;
 }

@@ -91,8 +91,10 @@ public:
 
 private:
   struct Device;
-  struct Cull;
-  std::vector<Cull> cull(const Vec3& centre, float radius);
+  //! Records of the patches with a texel within `radius` of `centre`, in
+  //! no particular order.
+  std::vector<CullRecord> cull(const Vec3& centre, float radius);
+  bool step(bool back); // undo (back) or redo
   void paint(const std::vector<int>& patches, const BrushDab& dab);
   //! Smooths or moves geometry (or smooths colours) on the patches.
   void reshape(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke, const Vec3& normal);
