@@ -558,7 +558,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   const auto tiles = range_tiles(l, count);
   if (reweigh) {
     if (coarse)
-      multires_->compute_base_limit();
+      multires_->compute_base_limit(patches);
     weigh(list, count, dab, level);
   }
   const cl::Buffer& weights = coarse ? multires_->base_weights() : d.weights;
