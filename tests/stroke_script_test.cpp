@@ -80,6 +80,20 @@ TEST(StrokeScript, NumbersSurviveExactly)
   expect_round_trip(script);
 }
 
+TEST(StrokeScript, ABrushKeepsOnlyTheKeysItsToolReads)
+{
+  const std::string brush = drop_meaningless_keys(
+    R"({"tool": "grab", "points": [[0, 0, 0]], "radius": 1, "amount": 0.1, "iterations": 3, "op": "over",
+        "channels": {"diffuse": [1, 0, 0]}, "edit_level": 2})");
+  const StrokeScript script = parse_stroke_script("{\"strokes\": [" + brush + "]}");
+  EXPECT_EQ(script.strokes[0].tool, Tool::Grab);
+  EXPECT_EQ(script.strokes[0].edit_level, 2);
+  // A bad value is not a key to drop: it is still reported.
+  const std::string bad = drop_meaningless_keys(R"({"tool": "sculpt", "points": [[0, 0, 0]], "radius": -1, "amount": 1})");
+  EXPECT_THROW(parse_stroke_script("{\"strokes\": [" + bad + "]}"), InputError);
+  EXPECT_EQ(drop_meaningless_keys("not json"), "not json");
+}
+
 TEST(StrokeScript, HistoryFollowsUndoAndRedo)
 {
   PaintSurface surface(test::runtime(), test::flat_grid(4), 3, AtlasStorage::Buffer);

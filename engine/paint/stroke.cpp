@@ -25,7 +25,7 @@ public:
 
   [[noreturn]] void fail(const std::string& key, const std::string& what) const
   {
-    throw InputError(where_ + "\"" + key + "\" " + what);
+    throw StrokeKeyError(where_ + "\"" + key + "\" " + what, key, what.rfind("has no meaning", 0) == 0);
   }
 
   bool has(const std::string& key) const { return j_.contains(key); }
@@ -464,6 +464,29 @@ StrokeScript parse_stroke_script(const std::string& text)
   for (std::size_t k = 0; k < j["strokes"].size(); ++k)
     script.strokes.push_back(read_stroke(j["strokes"][k], k));
   return script;
+}
+
+std::string drop_meaningless_keys(const std::string& stroke_object)
+{
+  json stroke;
+  try {
+    stroke = json::parse(stroke_object);
+  } catch (const json::parse_error&) {
+    return stroke_object;
+  }
+  for (std::size_t tries = 0; stroke.is_object() && tries <= stroke.size(); ++tries) {
+    try {
+      read_stroke(stroke, 0);
+      break;
+    } catch (const StrokeKeyError& e) {
+      if (!e.meaningless() || !stroke.contains(e.key()))
+        break;
+      stroke.erase(e.key());
+    } catch (const InputError&) {
+      break;
+    }
+  }
+  return stroke.dump();
 }
 
 StrokeScript load_stroke_script(const std::string& path)

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "atlas_types.h" // for CHANNEL_COUNT, FALLOFF_*, PAINT_OP_*
+#include "core/errors.h"
 #include "core/vec.h"
 #include "paint/raster.h"
 
@@ -65,6 +66,29 @@ struct Stroke
   bool operator==(const Stroke& o) const;
   bool operator!=(const Stroke& o) const { return !(*this == o); }
 };
+
+//! A stroke-script error about one key of one stroke.
+class StrokeKeyError : public InputError
+{
+public:
+  StrokeKeyError(const std::string& message, std::string key, bool meaningless)
+    : InputError(message), key_(std::move(key)), meaningless_(meaningless)
+  {
+  }
+  const std::string& key() const { return key_; }
+  //! The key is fine in itself but means nothing for the stroke's tool.
+  bool meaningless() const { return meaningless_; }
+
+private:
+  std::string key_;
+  bool meaningless_;
+};
+
+//! A brush kept as stroke keys (a window's or a setter API's current
+//! settings) as one stroke: the JSON object without the keys that mean
+//! nothing for its tool, e.g. a sculpt "amount" left over under a paint
+//! tool. Other problems are left for parse_stroke_script() to report.
+std::string drop_meaningless_keys(const std::string& stroke_object);
 
 //! A stroke script: an optional atlas level and the strokes in order.
 struct StrokeScript
