@@ -43,7 +43,13 @@ const char* const kEveryKind = R"({"level": 3, "strokes": [
   {"tool": "inflate", "points": [[0, 1, 0]], "radius": 0.4, "amount": 0.02},
   {"tool": "flatten", "points": [[0, 1, 0]], "radius": 0.4, "amount": 0.3},
   {"tool": "smear", "points": [[0, 1, 0], [0, 0.8, 0.6]], "radius": 0.4, "strength": 0.6},
-  {"tool": "grab", "points": [[0, -1, 0], [0, -1.2, 0.1]], "radius": 0.4, "edit_level": 2}
+  {"tool": "grab", "points": [[0, -1, 0], [0, -1.2, 0.1]], "radius": 0.4, "edit_level": 2},
+  {"tool": "paint", "points": [[0, 0, 1], [0.2, 0, 0.95]], "radius": 0.3, "space": "screen", "backfaces": "paint",
+   "camera": {"position": [0, 0, 5], "focal_point": [0, 0, 0], "view_up": [0, 1, 0], "view_angle": 25},
+   "channels": {"diffuse": [0, 1, 0]}, "pattern": {"type": "turbulence", "coord": "screen", "scale": 2}},
+  {"tool": "paint", "points": [[1, 0, 0]], "radius": 0.3, "space": "tangent", "channels": {"roughness": 0.9}},
+  {"tool": "paint", "points": [[1, 0, 0]], "radius": 0.05, "space": "parameter", "channels": {"label": 3}},
+  {"tool": "sculpt", "points": [[0, 0, -1]], "radius": 0.3, "space": "tangent", "amount": 0.02}
 ]})";
 
 void expect_round_trip(const StrokeScript& script)
