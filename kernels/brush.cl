@@ -392,3 +392,67 @@ __kernel void dab_pickup(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int 
     partial[3 * group + 2] = sc;
   }
 }
+
+/* Spray paint (Hanrahan and Haeberli): droplets at random points of the
+ * brush's disc on the screen, each landing on the nearest surface seen
+ * there. Three passes over the texels of the listed patches, front-facing
+ * ones within a texel's width of a droplet's screen point (drops: screen
+ * x / z, y / z): the least depth per droplet, then the least texel index at
+ * that depth, then its position (w = 1; 0 where the droplet hit nothing). */
+inline int spray_candidate(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const BrushDab *dab,
+                           __global const float4 *bounds, int p, int2 ij, float2 drop, float *depth)
+{
+  const float3 x = ATLAS_LOAD(pos, g, p, ij).xyz;
+  if (dot(ATLAS_LOAD(nrm, g, p, ij).xyz, x - vload3(0, dab->eye)) > 0.0f)
+    return 0;
+  const float2 s = screen_point(dab, x, depth);
+  const float reach = 1.5f * M_SQRT2_F * bounds[p].w / (float)(g.x - 1); /* about a texel */
+  return *depth > 0.0f && distance(s, drop) * *depth <= reach;
+}
+
+/* Range: (tile, tile * count). keys: one per droplet, preset to UINT_MAX. */
+__kernel void spray_depth(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *list, int count,
+                          __global const BrushDab *dab, __global const float4 *bounds, __global const float2 *drops,
+                          int drop_count, __global uint *keys)
+{
+  int p;
+  int2 ij;
+  if (!tile_texel(g, list, count, &p, &ij))
+    return;
+  for (int k = 0; k < drop_count; ++k) {
+    float z;
+    if (spray_candidate(pos, nrm, g, dab, bounds, p, ij, drops[k], &z))
+      atomic_min(&keys[k], as_uint(z)); /* positive floats order as their bits */
+  }
+}
+
+/* Range: as spray_depth. texels: one per droplet, preset to INT_MAX. */
+__kernel void spray_texel(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *list, int count,
+                          __global const BrushDab *dab, __global const float4 *bounds, __global const float2 *drops,
+                          int drop_count, __global const uint *keys, __global int *texels)
+{
+  int p;
+  int2 ij;
+  if (!tile_texel(g, list, count, &p, &ij))
+    return;
+  for (int k = 0; k < drop_count; ++k) {
+    float z;
+    if (spray_candidate(pos, nrm, g, dab, bounds, p, ij, drops[k], &z) && as_uint(z) == keys[k])
+      atomic_min(&texels[k], (p * g.x + ij.y) * g.x + ij.x);
+  }
+}
+
+/* Range: drop_count. */
+__kernel void spray_points(ATLAS_IN pos, int2 g, __global const int *texels, int drop_count, __global float4 *points)
+{
+  const int k = get_global_id(0);
+  if (k >= drop_count)
+    return;
+  const int t = texels[k];
+  if (t == INT_MAX) {
+    points[k] = (float4)(0.0f);
+    return;
+  }
+  const int tile_texels = g.x * g.x, p = t / tile_texels, r = t - p * tile_texels;
+  points[k] = (float4)(ATLAS_LOAD(pos, g, p, (int2)(r % g.x, r / g.x)).xyz, 1.0f);
+}

@@ -7,7 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath> // for std::sqrt, std::sin, std::cos
+#include <cmath>   // for std::sqrt, std::sin, std::cos
+#include <cstdio>  // for std::printf
+#include <cstring> // for std::memcmp
 
 namespace meshpaint {
 namespace {
@@ -202,6 +204,75 @@ TEST(BrushSpace, ScreenStrokesEndAtTheSilhouette)
   s.space = SPACE_OBJECT;
   s.has_camera = false;
   EXPECT_FALSE(object.apply(s).left_surface);
+}
+
+//! A roof: the plane z = 0 for y in [0, 4] (facing +z) and, from its edge
+//! y = 4, a plane rising at 60 degrees (its normal 60 degrees from +z), both
+//! 8 units wide in unit quads.
+BaseMesh roof()
+{
+  std::vector<Vec3> pts;
+  const double a = 60.0 * M_PI / 180.0;
+  for (int v = 0; v <= 8; ++v)
+    for (int x = 0; x <= 8; ++x)
+      pts.push_back(v <= 4 ? Vec3{float(x), float(v), 0.f}
+                           : Vec3{float(x), float(4 + (v - 4) * std::cos(a)), float((v - 4) * std::sin(a))});
+  std::vector<std::vector<int>> faces;
+  for (int v = 0; v < 8; ++v)
+    for (int x = 0; x < 8; ++x)
+      faces.push_back({v * 9 + x, v * 9 + x + 1, (v + 1) * 9 + x + 1, (v + 1) * 9 + x});
+  return make_base_mesh(pts, faces, "roof");
+}
+
+TEST(BrushSpace, SprayDensityFallsWithTheCosineOfTheView)
+{
+  // Seen from straight above, a spray disc over the ridge: half of it on
+  // the flat part, half on the part at 60 degrees, which has twice the area
+  // under the same half disc. Each droplet adds the same displacement over
+  // the same surface area, so the displacement per area is the density.
+  PaintSurface surface(test::runtime(), roof(), 4, AtlasStorage::Buffer);
+  Stroke s;
+  s.points = {{4.f, 4.f, 0.f}};
+  s.radius = 1.5f;
+  s.falloff = FALLOFF_CONSTANT;
+  s.space = SPACE_SCREEN;
+  s.has_camera = true;
+  s.camera.position = {4.f, 4.f, 200.f};
+  s.camera.focal_point = {4.f, 4.f, 0.f};
+  s.camera.view_angle = 2.f;
+  s.op = PAINT_OP_ADD;
+  s.value[CHANNEL_DISPLACEMENT] = {1e-3f, 1e-3f, 1e-3f, 1.f};
+  s.alpha[CHANNEL_DISPLACEMENT] = 1.f;
+  s.spray_drops = 400;
+  s.spray_size = 0.08f;
+  for (unsigned seed = 0; seed < 5; ++seed) {
+    s.spray_seed = seed;
+    surface.apply(s);
+  }
+  const std::vector<Float4> pos = surface.atlas().read_limit_positions();
+  const std::vector<Float4> material = surface.read_channels().material;
+  // Texels lie evenly over both parts (unit quads): per part, the sum of the
+  // displacement over the texels under the disc on the screen.
+  double sum[2] = {0, 0};
+  std::size_t under[2] = {0, 0};
+  for (std::size_t t = 0; t < pos.size(); ++t) {
+    const int part = pos[t][1] > 4.f + 1e-4f ? 1 : 0;
+    sum[part] += material[t][1];
+    if (std::hypot(pos[t][0] - 4.0, pos[t][1] - 4.0) <= s.radius)
+      ++under[part];
+  }
+  ASSERT_GT(sum[0], 0.0);
+  const double ratio = (sum[1] / double(under[1])) / (sum[0] / double(under[0]));
+  std::printf("spray density, 60-degree part / face-on part: %.3f (cos 60 = 0.5)\n", ratio);
+  EXPECT_NEAR(ratio, 0.5, 0.15 * 0.5);
+  // The same seed gives the same droplets.
+  PaintSurface again(test::runtime(), roof(), 4, AtlasStorage::Buffer);
+  for (unsigned seed = 0; seed < 5; ++seed) {
+    s.spray_seed = seed;
+    again.apply(s);
+  }
+  const std::vector<Float4> repeat = again.read_channels().material;
+  EXPECT_EQ(std::memcmp(repeat.data(), material.data(), material.size() * sizeof(Float4)), 0);
 }
 
 } // namespace

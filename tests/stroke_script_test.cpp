@@ -48,6 +48,9 @@ const char* const kEveryKind = R"({"level": 3, "strokes": [
    "camera": {"position": [0, 0, 5], "focal_point": [0, 0, 0], "view_up": [0, 1, 0], "view_angle": 25},
    "channels": {"diffuse": [0, 1, 0]}, "pattern": {"type": "turbulence", "coord": "screen", "scale": 2}},
   {"tool": "paint", "points": [[1, 0, 0]], "radius": 0.3, "space": "tangent", "channels": {"roughness": 0.9}},
+  {"tool": "label", "points": [[0, 0, 1]], "radius": 0.4, "space": "screen", "channels": {"label": 9},
+   "camera": {"position": [0, 0, 5], "focal_point": [0, 0, 0], "view_up": [0, 1, 0]},
+   "spray": {"drops": 16, "size": 0.05, "seed": 7}},
   {"tool": "paint", "points": [[1, 0, 0]], "radius": 0.05, "space": "parameter", "channels": {"label": 3}},
   {"tool": "sculpt", "points": [[0, 0, -1]], "radius": 0.3, "space": "tangent", "amount": 0.02}
 ]})";

@@ -5,6 +5,7 @@
 #include "cl/program.h"
 #include "core/errors.h"
 #include "core/timer.h"
+#include "paint/spray.h"
 
 #include <algorithm> // for std::sort, std::max
 #include <optional>  // for std::optional
@@ -46,6 +47,7 @@ struct PaintSurface::Device
 {
   LayerKernels positions, channels;
   cl::Kernel patch_bounds, brush_cull, paint_dab, dab_weights, move_points, dab_pickup;
+  cl::Kernel spray_depth, spray_texel, spray_points;
   cl::Buffer bounds, records, count, active, dab, weights;
   std::size_t record_capacity = 0, active_capacity = 0;
   cl::Buffer diffuse, specular, material, channel_work;
@@ -75,6 +77,9 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     d.dab_weights = cl::Kernel(d.positions.program, "dab_weights");
     d.move_points = cl::Kernel(d.positions.program, "move_points");
     d.dab_pickup = cl::Kernel(d.positions.program, "dab_pickup");
+    d.spray_depth = cl::Kernel(d.positions.program, "spray_depth");
+    d.spray_texel = cl::Kernel(d.positions.program, "spray_texel");
+    d.spray_points = cl::Kernel(d.positions.program, "spray_points");
     const std::size_t bytes = l.texels() * sizeof(Float4);
     d.channel_work = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
     d.weights = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, l.texels() * sizeof(float));
@@ -347,6 +352,53 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
       active.push_back(c.patch);
   std::sort(active.begin(), active.end());
   return active;
+}
+
+void PaintSurface::spray(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke,
+                         std::uint64_t index)
+{
+  // Droplets fall evenly on the screen, so the surface gets fewer per area
+  // where it is seen obliquely: by the cosine of the angle to the view.
+  Device& d = *device_;
+  Runtime& rt = atlas_->runtime();
+  const LevelLayout l = atlas_->layout(level_);
+  const int k = stroke.spray_drops;
+  std::vector<cl_float2> drops;
+  for (const auto& o : spray_offsets(stroke.spray_seed, index, k, dab.radius))
+    drops.push_back({{dab.screen_centre[0] + o[0] / dab.centre_depth, dab.screen_centre[1] + o[1] / dab.centre_depth}});
+  const cl::Buffer drop_buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(cl_float2) * drops.size(),
+                               drops.data());
+  cl::Buffer keys(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_uint) * drops.size()),
+    texels(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_int) * drops.size()),
+    points(rt.context(), CL_MEM_WRITE_ONLY, sizeof(cl_float4) * drops.size());
+  cl::CommandQueue& q = rt.queue();
+  q.enqueueFillBuffer(keys, cl_uint(0xffffffffu), 0, sizeof(cl_uint) * drops.size());
+  q.enqueueFillBuffer(texels, cl_int(std::numeric_limits<cl_int>::max()), 0, sizeof(cl_int) * drops.size());
+  q.enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
+  const cl::Buffer list = device_ints(rt.context(), patches);
+  const auto tiles = range_tiles(l, int(patches.size()));
+  const cl::Memory &pos = atlas_->limit_positions_layer(), &nrm = atlas_->limit_normals_layer();
+  launch(q, d.spray_depth, tiles.first, tiles.second, pos, nrm, grid(l), list, int(patches.size()), d.dab, d.bounds,
+         drop_buffer, k, keys);
+  launch(q, d.spray_texel, tiles.first, tiles.second, pos, nrm, grid(l), list, int(patches.size()), d.dab, d.bounds,
+         drop_buffer, k, keys, texels);
+  launch(q, d.spray_points, cl::NDRange(round_up(std::size_t(k), kGroup)), cl::NDRange(kGroup), pos, grid(l), texels, k,
+         points);
+  std::vector<Float4> landed(drops.size());
+  q.enqueueReadBuffer(points, CL_TRUE, 0, sizeof(cl_float4) * landed.size(), landed.data());
+  // Each droplet is a small object-space dab where it landed.
+  Stroke droplet = stroke;
+  droplet.space = SPACE_OBJECT;
+  droplet.has_camera = false;
+  BrushDab drop = dab;
+  drop.radius = stroke.spray_size;
+  for (const Float4& at : landed) {
+    if (at[3] == 0.f)
+      continue;
+    Vec3 normal;
+    const std::vector<int> hit = place(droplet, DabSample{{at[0], at[1], at[2]}, 1.f, {0.f, 0.f, 0.f}}, drop, normal);
+    paint(hit, drop);
+  }
 }
 
 void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
@@ -804,6 +856,8 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
         on_surface = true;
         if (stroke.tool == Tool::Smear)
           smear(patches, dab, carried[side]);
+        else if (stroke.spray_drops > 0)
+          spray(patches, dab, stroke, report.dabs);
         else if (stroke.tool == Tool::Paint || stroke.tool == Tool::Label)
           paint(patches, dab);
         else

@@ -109,6 +109,9 @@ private:
   std::vector<CullRecord> cull(const Vec3& centre, float radius);
   bool step(bool back); // undo (back) or redo
   void paint(const std::vector<int>& patches, const BrushDab& dab);
+  //! One dab of spray paint: droplets at random points of the brush's disc
+  //! on the screen (seeded by the stroke's seed and the dab's `index`).
+  void spray(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke, std::uint64_t index);
   //! Smooths or moves geometry (or smooths colours) on the patches.
   //! `reweigh` false keeps the weights of the previous call (grab).
   void reshape(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke, const Vec3& normal,
