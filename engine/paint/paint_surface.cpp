@@ -47,7 +47,7 @@ struct PaintSurface::Device
 {
   LayerKernels positions, channels;
   cl::Kernel patch_bounds, brush_cull, paint_dab, dab_weights, move_points, dab_pickup;
-  cl::Kernel spray_depth, spray_texel, spray_points;
+  cl::Kernel spray_pick, spray_points;
   cl::Buffer bounds, records, count, active, dab, weights;
   std::size_t record_capacity = 0, active_capacity = 0;
   cl::Buffer diffuse, specular, material, channel_work;
@@ -77,8 +77,7 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     d.dab_weights = cl::Kernel(d.positions.program, "dab_weights");
     d.move_points = cl::Kernel(d.positions.program, "move_points");
     d.dab_pickup = cl::Kernel(d.positions.program, "dab_pickup");
-    d.spray_depth = cl::Kernel(d.positions.program, "spray_depth");
-    d.spray_texel = cl::Kernel(d.positions.program, "spray_texel");
+    d.spray_pick = cl::Kernel(d.positions.program, "spray_pick");
     d.spray_points = cl::Kernel(d.positions.program, "spray_points");
     const std::size_t bytes = l.texels() * sizeof(Float4);
     d.channel_work = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
@@ -378,10 +377,9 @@ void PaintSurface::spray(const std::vector<int>& patches, const BrushDab& dab, c
   const cl::Buffer list = device_ints(rt.context(), patches);
   const auto tiles = range_tiles(l, int(patches.size()));
   const cl::Memory &pos = atlas_->limit_positions_layer(), &nrm = atlas_->limit_normals_layer();
-  launch(q, d.spray_depth, tiles.first, tiles.second, pos, nrm, grid(l), list, int(patches.size()), d.dab, d.bounds,
-         drop_buffer, k, keys);
-  launch(q, d.spray_texel, tiles.first, tiles.second, pos, nrm, grid(l), list, int(patches.size()), d.dab, d.bounds,
-         drop_buffer, k, keys, texels);
+  for (const int pass : {0, 1})
+    launch(q, d.spray_pick, tiles.first, tiles.second, pos, nrm, grid(l), list, int(patches.size()), d.dab, d.bounds,
+           drop_buffer, k, pass, keys, texels);
   launch(q, d.spray_points, cl::NDRange(round_up(std::size_t(k), kGroup)), cl::NDRange(kGroup), pos, grid(l), texels, k,
          points);
   std::vector<Float4> landed(drops.size());
