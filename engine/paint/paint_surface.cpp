@@ -421,6 +421,28 @@ void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
   rt.queue().finish();
 }
 
+StrokeReport PaintSurface::apply(const Stroke& stroke, const std::vector<char>& dabs)
+{
+  dab_mask_ = &dabs;
+  try {
+    const StrokeReport r = apply(stroke);
+    dab_mask_ = nullptr;
+    return r;
+  } catch (...) {
+    dab_mask_ = nullptr;
+    throw;
+  }
+}
+
+float PaintSurface::distance_to(const Vec3& point, float radius)
+{
+  Vec3 centre;
+  if (brush_patches(point, radius, &centre).empty())
+    return std::numeric_limits<float>::infinity();
+  const Vec3 d{centre[0] - point[0], centre[1] - point[1], centre[2] - point[2]};
+  return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+}
+
 StrokeReport PaintSurface::apply(const Stroke& stroke)
 {
   // One undo step per stroke: the tiles its dabs touched, as they were; also
@@ -831,7 +853,11 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
       mirror_at = 0.5f * (lo + hi);
     }
     std::optional<std::array<Float4, 2>> carried[2]; // the smear brush's load per side of the mirror
-    for (const DabSample& sample : stroke_samples(stroke)) {
+    const std::vector<DabSample> samples = stroke_samples(stroke);
+    for (std::size_t index = 0; index < samples.size(); ++index) {
+      const DabSample& sample = samples[index];
+      if (dab_mask_ && (index >= dab_mask_->size() || !(*dab_mask_)[index])) // another object's dab
+        continue;
       // The dab, and with a mirror its reflection (heading reflected too).
       std::vector<DabSample> dabs{sample};
       if (stroke.mirror_axis >= 0) {
@@ -863,7 +889,9 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
         ++report.dabs_applied;
         report.patches_touched += patches.size();
       }
-      if (!on_surface && dab.radius > 0.f) { // zero pressure skips a dab, no surface ends the stroke
+      // Zero pressure skips a dab, no surface ends the stroke (in a scene,
+      // the scene decides that).
+      if (!on_surface && dab.radius > 0.f && !dab_mask_) {
         report.left_surface = true;
         break;
       }
@@ -884,6 +912,8 @@ void PaintSurface::grab(const Stroke& stroke, BrushDab& dab, StrokeReport& repor
   if (stroke.points.size() > 1 && samples.back().centre != stroke.points.back()) // the pull ends at the path's end
     samples.push_back({stroke.points.back(), stroke.pressure.empty() ? 1.f : stroke.pressure.back()});
   report.dabs = samples.size();
+  if (dab_mask_ && (dab_mask_->empty() || !dab_mask_->front())) // in a scene, the region is another object's
+    return;
   dab.radius = stroke.radius * samples.front().pressure;
   dab.strength = stroke.strength * samples.front().pressure;
   if (!(dab.radius > 0.f))
