@@ -107,6 +107,7 @@ typedef struct {
   mp_int centre_patch;            /* parameter: the patch under the centre */
   float centre_texel[2];          /* parameter: the centre in its texels */
   float texel_size;               /* parameter: world units per texel there */
+  float side_sign;                /* 1 painting the outside, -1 the inside: the side a normal points to */
 } BrushDab;
 
 /* What the culling kernel reports for a patch that reaches into the brush:

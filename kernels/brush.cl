@@ -200,6 +200,7 @@ inline float2 screen_point(__global const BrushDab *dab, float3 x, float *z)
 inline float brush_t(__global const BrushDab *dab, float3 x, float3 nx, int p, int2 ij, int n, float2 *plane)
 {
   const float3 d = x - vload3(0, dab->centre);
+  nx *= dab->side_sign;
   switch (dab->space) {
   case SPACE_SCREEN: {
     if (!dab->paint_backfaces && dot(nx, x - vload3(0, dab->eye)) > 0.0f)
@@ -403,7 +404,7 @@ inline int spray_candidate(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const Br
                            __global const float4 *bounds, int p, int2 ij, float2 drop, float *depth)
 {
   const float3 x = ATLAS_LOAD(pos, g, p, ij).xyz;
-  if (dot(ATLAS_LOAD(nrm, g, p, ij).xyz, x - vload3(0, dab->eye)) > 0.0f)
+  if (dab->side_sign * dot(ATLAS_LOAD(nrm, g, p, ij).xyz, x - vload3(0, dab->eye)) > 0.0f)
     return 0;
   const float2 s = screen_point(dab, x, depth);
   const float reach = 1.5f * M_SQRT2_F * bounds[p].w / (float)(g.x - 1); /* about a texel */

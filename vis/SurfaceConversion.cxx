@@ -64,8 +64,14 @@ vtkSmartPointer<vtkPolyData> to_polydata(const PaintedSurface& s)
   vtkPointData* pd = poly->GetPointData();
   pd->AddArray(vec3_array(s.diffuse, "diffuse"));
   pd->AddArray(vec3_array(s.specular, "specular"));
+  if (!s.inside_diffuse.empty()) { // two-sided
+    pd->AddArray(vec3_array(s.inside_diffuse, "inside_diffuse"));
+    pd->AddArray(vec3_array(s.inside_specular, "inside_specular"));
+  }
   for (const auto& [values, name] : {std::pair{&s.roughness, "roughness"}, std::pair{&s.displacement, "displacement"},
-                                     std::pair{&s.mask, "mask"}}) {
+                                     std::pair{&s.mask, "mask"}, std::pair{&s.inside_roughness, "inside_roughness"}}) {
+    if (values->empty())
+      continue;
     auto a = vtkSmartPointer<vtkFloatArray>::New();
     a->SetName(name);
     a->SetNumberOfValues(vtkIdType(values->size()));
@@ -135,6 +141,11 @@ void write_texture_maps(const TextureMaps& maps, const std::string& dir)
   write_png(maps.diffuse, maps.width, maps.height, 3, false, 0.f, 1.f, dir + "/diffuse.png");
   write_png(maps.specular, maps.width, maps.height, 3, false, 0.f, 1.f, dir + "/specular.png");
   write_png(maps.roughness, maps.width, maps.height, 1, false, 0.f, 1.f, dir + "/roughness.png");
+  if (!maps.inside_diffuse.empty()) {
+    write_png(maps.inside_diffuse, maps.width, maps.height, 3, false, 0.f, 1.f, dir + "/inside_diffuse.png");
+    write_png(maps.inside_specular, maps.width, maps.height, 3, false, 0.f, 1.f, dir + "/inside_specular.png");
+    write_png(maps.inside_roughness, maps.width, maps.height, 1, false, 0.f, 1.f, dir + "/inside_roughness.png");
+  }
   const float range = maps.displacement_max - maps.displacement_min;
   write_png(maps.displacement, maps.width, maps.height, 1, true, maps.displacement_min,
             range > 0.f ? 1.f / range : 0.f, dir + "/displacement.png");

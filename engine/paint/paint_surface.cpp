@@ -51,6 +51,7 @@ struct PaintSurface::Device
   cl::Buffer bounds, records, count, active, dab, weights;
   std::size_t record_capacity = 0, active_capacity = 0;
   cl::Buffer diffuse, specular, material, channel_work;
+  cl::Buffer inside_diffuse, inside_specular, inside_material; // two-sided surfaces
   cl::Buffer raster, stamp; // the stroke's pattern samples and brush image (one float when none)
   cl::Memory position_work; // a scratch copy of the finest level, same storage
 };
@@ -119,6 +120,9 @@ std::pair<PaintSurface::LayerKernels*, const cl::Memory*> PaintSurface::layer(in
   case kPositions: return {&d.positions, &atlas_->level_layer(level_)};
   case kDiffuse: return {&d.channels, &d.diffuse};
   case kSpecular: return {&d.channels, &d.specular};
+  case kInsideDiffuse: return {&d.channels, &d.inside_diffuse};
+  case kInsideSpecular: return {&d.channels, &d.inside_specular};
+  case kInsideMaterial: return {&d.channels, &d.inside_material};
   default: return {&d.channels, &d.material};
   }
 }
@@ -403,6 +407,17 @@ void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
 {
   if (patches.empty())
     return;
+  if (inside_ && (dab.alpha[CHANNEL_LABEL] > 0.f || dab.alpha[CHANNEL_DISPLACEMENT] > 0.f)) {
+    // Labels and displacement belong to the surface, not to one side.
+    BrushDab shared = dab, sided = dab;
+    for (int c = 0; c < CHANNEL_COUNT; ++c)
+      (c == CHANNEL_LABEL || c == CHANNEL_DISPLACEMENT ? sided : shared).alpha[c] = 0.f;
+    inside_ = false;
+    paint(patches, shared);
+    inside_ = true;
+    paint(patches, sided);
+    return;
+  }
   remember(patches);
   Device& d = *device_;
   Runtime& rt = atlas_->runtime();
@@ -417,7 +432,7 @@ void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
   const auto tiles = range_tiles(l, int(patches.size()));
   launch(rt.queue(), d.paint_dab, tiles.first, tiles.second, atlas_->limit_positions_layer(),
          atlas_->limit_normals_layer(), grid(l), d.active,
-         cl_int(patches.size()), d.dab, d.raster, d.stamp, d.diffuse, d.specular, d.material);
+         cl_int(patches.size()), d.dab, d.raster, d.stamp, diffuse_buffer(), specular_buffer(), material_buffer());
   rt.queue().finish();
 }
 
@@ -458,6 +473,7 @@ StrokeReport PaintSurface::apply(const Stroke& stroke)
     if (undo_.recording())
       undo_.record(std::move(stroke_before_));
     stroke_before_ = Snapshot();
+    inside_ = false;
     history_.push_back(stroke);
     undone_.clear();
   };
@@ -474,6 +490,9 @@ StrokeReport PaintSurface::apply(const Stroke& stroke)
   case Tool::Smear: stroke_layers_ = {kDiffuse, kSpecular}; break;
   default: stroke_layers_ = {kDiffuse, kSpecular, kMaterial}; break;
   }
+  if (two_sided_ && stroke_layers_.front() != kPositions) // either side may change
+    for (const int id : std::vector<int>(stroke_layers_))
+      stroke_layers_.push_back(id + kInsideDiffuse - kDiffuse);
   StrokeReport report;
   stretch_ = 1.f;
   try {
@@ -511,7 +530,8 @@ void PaintSurface::smear(const std::vector<int>& patches, BrushDab dab, std::opt
   rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
   launch(rt.queue(), d.dab_pickup, cl::NDRange(groups * items), cl::NDRange(items), atlas_->limit_positions_layer(),
          atlas_->limit_normals_layer(),
-         grid(l), list, count, d.dab, d.stamp, d.diffuse, d.specular, partial, cl::Local(3 * items * sizeof(Float4)));
+         grid(l), list, count, d.dab, d.stamp, diffuse_buffer(), specular_buffer(), partial,
+         cl::Local(3 * items * sizeof(Float4)));
   std::vector<Float4> sums(3 * groups);
   rt.queue().enqueueReadBuffer(partial, CL_TRUE, 0, sums.size() * sizeof(Float4), sums.data());
   double acc[2][4] = {}, weight = 0;
@@ -607,16 +627,29 @@ std::vector<int> PaintSurface::place(const Stroke& stroke, const DabSample& samp
     return patches;
   for (int k = 0; k < 3; ++k)
     dab.centre[k] = centre[k];
-  if (!aim(stroke, normal, sample.heading, closest, dab))
+  if (!aim(stroke, sample.centre, normal, sample.heading, closest, dab))
     return {};
   if (stroke.space == SPACE_PARAMETER)
     return {closest.patch};
   return patches;
 }
 
-bool PaintSurface::aim(const Stroke& stroke, const Vec3& normal, const Vec3& heading, const CullRecord& closest,
-                       BrushDab& dab)
+bool PaintSurface::aim(const Stroke& stroke, const Vec3& point, const Vec3& normal, const Vec3& heading,
+                       const CullRecord& closest, BrushDab& dab)
 {
+  // The side a two-sided surface is painted on: the one the eye sees for a
+  // screen brush, else the one the stroke's point lies on.
+  const bool colours = stroke.tool == Tool::Paint || stroke.tool == Tool::Wash || stroke.tool == Tool::Dip ||
+                       stroke.tool == Tool::Smear || stroke.tool == Tool::Blur ||
+                       (stroke.tool == Tool::Smooth && stroke.target_colour);
+  inside_ = false;
+  if (two_sided_ && colours) {
+    const Vec3 from = stroke.space == SPACE_SCREEN && stroke.has_camera ? stroke.camera.position : point;
+    const float seen = (from[0] - dab.centre[0]) * normal[0] + (from[1] - dab.centre[1]) * normal[1] +
+                       (from[2] - dab.centre[2]) * normal[2];
+    inside_ = stroke.side == 2 || (stroke.side == 0 && seen < 0.f);
+  }
+  dab.side_sign = inside_ ? -1.f : 1.f;
   dab.space = stroke.space;
   dab.paint_backfaces = stroke.paint_backfaces ? 1 : 0;
   for (int k = 0; k < 3; ++k)
@@ -649,7 +682,7 @@ bool PaintSurface::aim(const Stroke& stroke, const Vec3& normal, const Vec3& hea
     dab.screen_centre[1] = dot(v, up) / z;
     // Screen strokes end at silhouettes: where the surface under the brush
     // turns away from the eye, or lies behind it.
-    if (stroke.space == SPACE_SCREEN && (!(z > 0.f) || dot(normal, v) >= 0.f))
+    if (stroke.space == SPACE_SCREEN && (!(z > 0.f) || dab.side_sign * dot(normal, v) >= 0.f))
       return false;
   }
   if (stroke.space == SPACE_PARAMETER) {
@@ -682,7 +715,7 @@ void PaintSurface::weigh(const cl::Buffer& list, int count, const BrushDab& dab,
   launch(rt.queue(), d.dab_weights, tiles.first, tiles.second,
          coarse ? multires_->base_positions() : atlas_->limit_positions_layer(),
          coarse ? multires_->base_normals() : atlas_->limit_normals_layer(), grid(l), list, count, d.dab, d.stamp,
-         d.material, grid(f), stride, coarse ? multires_->base_weights() : d.weights);
+         material_buffer(), grid(f), stride, coarse ? multires_->base_weights() : d.weights);
 }
 
 void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke,
@@ -749,7 +782,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   const int edge_count = int(set.edges.size()), ring_count = int(set.rings.size());
   std::vector<std::pair<LayerKernels*, const cl::Memory*>> layers;
   if (stroke.target_colour)
-    layers = {{&d.channels, &d.diffuse}, {&d.channels, &d.specular}};
+    layers = {{&d.channels, &diffuse_buffer()}, {&d.channels, &specular_buffer()}};
   else
     layers = {{&d.positions, &atlas_->level_layer(level)}};
   std::vector<float> steps;
@@ -790,6 +823,7 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
   Timer timer;
   StrokeReport report;
   BrushDab dab{};
+  dab.side_sign = 1.f;
   dab.falloff = stroke.falloff;
   dab.op = stroke.op;
   for (int c = 0; c < CHANNEL_COUNT; ++c) {
@@ -829,6 +863,7 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
       dab.radius = std::numeric_limits<float>::infinity();
       dab.strength = stroke.strength;
       dab.falloff = FALLOFF_CONSTANT;
+      inside_ = two_sided_ && stroke.side == 2; // a wash covers the outside unless told
       paint(all, dab);
       report.dabs = report.dabs_applied = 1;
       report.patches_touched = all.size();
@@ -953,7 +988,49 @@ PaintChannels PaintSurface::read_channels()
   q.enqueueReadBuffer(device_->diffuse, CL_TRUE, 0, n * sizeof(Float4), c.diffuse.data());
   q.enqueueReadBuffer(device_->specular, CL_TRUE, 0, n * sizeof(Float4), c.specular.data());
   q.enqueueReadBuffer(device_->material, CL_TRUE, 0, n * sizeof(Float4), c.material.data());
+  if (two_sided_) {
+    for (auto [from, to] : {std::pair{&device_->inside_diffuse, &c.inside_diffuse},
+                            std::pair{&device_->inside_specular, &c.inside_specular},
+                            std::pair{&device_->inside_material, &c.inside_material}}) {
+      to->resize(n);
+      q.enqueueReadBuffer(*from, CL_TRUE, 0, n * sizeof(Float4), to->data());
+    }
+  }
   return c;
+}
+
+cl::Buffer& PaintSurface::diffuse_buffer() { return inside_ ? device_->inside_diffuse : device_->diffuse; }
+cl::Buffer& PaintSurface::specular_buffer() { return inside_ ? device_->inside_specular : device_->specular; }
+cl::Buffer& PaintSurface::material_buffer() { return inside_ ? device_->inside_material : device_->material; }
+
+void PaintSurface::set_two_sided(bool on)
+{
+  if (on == two_sided_)
+    return;
+  Device& d = *device_;
+  Runtime& rt = atlas_->runtime();
+  const std::size_t bytes = atlas_->layout(level_).texels() * sizeof(Float4);
+  if (on) {
+    try {
+      d.inside_diffuse = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
+      d.inside_specular = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
+      d.inside_material = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
+      const auto f4 = [](const Float4& v) { return cl_float4{{v[0], v[1], v[2], v[3]}}; };
+      rt.queue().enqueueFillBuffer(d.inside_diffuse, f4(base_material_.diffuse), 0, bytes);
+      rt.queue().enqueueFillBuffer(d.inside_specular, f4(base_material_.specular), 0, bytes);
+      rt.queue().enqueueFillBuffer(d.inside_material, cl_float4{{base_material_.roughness, 0.f, 0.f, 0.f}}, 0, bytes);
+      rt.queue().finish();
+    } catch (const cl::Error& e) {
+      throw DeviceError("cannot add the inside channels on " + rt.info().name + ": " + describe(e));
+    }
+  } else {
+    d.inside_diffuse = d.inside_specular = d.inside_material = cl::Buffer();
+  }
+  two_sided_ = on;
+  // Steps recorded for the other number of layers cannot be undone.
+  UndoLog fresh(undo_.budget());
+  fresh.set_recording(undo_.recording());
+  undo_ = std::move(fresh);
 }
 
 namespace {
@@ -981,6 +1058,17 @@ PaintedSurface painted(WeldedSurface surface, const AtlasTopology& topology, con
     out.displacement[v] = c.material[t][1];
     out.label[v] = int(c.material[t][2]);
     out.mask[v] = c.material[t][3];
+  }
+  if (!c.inside_diffuse.empty()) {
+    out.inside_diffuse.resize(nv);
+    out.inside_specular.resize(nv);
+    out.inside_roughness.resize(nv);
+    for (std::size_t t = 0; t < map.size(); ++t) {
+      const int v = map[t];
+      out.inside_diffuse[v] = {c.inside_diffuse[t][0], c.inside_diffuse[t][1], c.inside_diffuse[t][2]};
+      out.inside_specular[v] = {c.inside_specular[t][0], c.inside_specular[t][1], c.inside_specular[t][2]};
+      out.inside_roughness[v] = c.inside_material[t][0];
+    }
   }
   for (std::size_t v = 0; v < nv; ++v)
     for (int k = 0; k < 3; ++k)
@@ -1012,17 +1100,23 @@ PaintedSurface PaintSurface::painted_surface(int level)
   const std::vector<Float4> positions = atlas_->read_positions(level), normals = atlas_->read_limit_normals();
   const PaintChannels fine = read_channels();
   std::vector<Float4> coarse_normals(c.texels());
-  PaintChannels coarse{std::vector<Float4>(c.texels()), std::vector<Float4>(c.texels()),
-                       std::vector<Float4>(c.texels())};
-  for (int p = 0; p < c.patches; ++p)
-    for (int j = 0; j < c.tile; ++j)
-      for (int i = 0; i < c.tile; ++i) {
-        const std::size_t at = c.index(p, i, j), from = f.index(p, i * stride, j * stride);
-        coarse_normals[at] = normals[from];
-        coarse.diffuse[at] = fine.diffuse[from];
-        coarse.specular[at] = fine.specular[from];
-        coarse.material[at] = fine.material[from];
-      }
+  PaintChannels coarse;
+  const auto sampled = [&](const std::vector<Float4>& from, std::vector<Float4>& to) {
+    if (from.empty())
+      return;
+    to.resize(c.texels());
+    for (int p = 0; p < c.patches; ++p)
+      for (int j = 0; j < c.tile; ++j)
+        for (int i = 0; i < c.tile; ++i)
+          to[c.index(p, i, j)] = from[f.index(p, i * stride, j * stride)];
+  };
+  sampled(normals, coarse_normals);
+  sampled(fine.diffuse, coarse.diffuse);
+  sampled(fine.specular, coarse.specular);
+  sampled(fine.material, coarse.material);
+  sampled(fine.inside_diffuse, coarse.inside_diffuse);
+  sampled(fine.inside_specular, coarse.inside_specular);
+  sampled(fine.inside_material, coarse.inside_material);
   return painted(weld(atlas_->topology(), c, positions, &coarse_normals), atlas_->topology(), c, coarse);
 }
 

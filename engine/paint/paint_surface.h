@@ -22,6 +22,10 @@ struct PaintChannels
   std::vector<Float4> diffuse;  //!< rgb
   std::vector<Float4> specular; //!< rgb
   std::vector<Float4> material; //!< (roughness, displacement, label, mask)
+  //! Two-sided surfaces: the inside's diffuse, specular and material (of
+  //! which roughness and mask count; displacement and labels are the
+  //! surface's, in `material`). Empty otherwise.
+  std::vector<Float4> inside_diffuse, inside_specular, inside_material;
 };
 
 //! The welded limit surface with its channels per vertex; points are
@@ -32,6 +36,9 @@ struct PaintedSurface
   std::vector<Vec3> diffuse, specular;
   std::vector<float> roughness, displacement, mask;
   std::vector<int> label;
+  //! Two-sided surfaces: the inside's channels; empty otherwise.
+  std::vector<Vec3> inside_diffuse, inside_specular;
+  std::vector<float> inside_roughness;
 };
 
 //! What one stroke did.
@@ -66,6 +73,13 @@ public:
 
   Atlas& atlas() { return *atlas_; }
   int level() const { return level_; }
+
+  //! Two-sided materials: an inside set of diffuse, specular and roughness
+  //! (starting as the base material), painted where the brush sees the
+  //! surface from behind (Stroke::side). Off by default; turning it on
+  //! starts a fresh undo history.
+  void set_two_sided(bool on);
+  bool two_sided() const { return two_sided_; }
 
   //! Runs the stroke's dabs in order. A dab whose centre has no surface
   //! within its radius ends the stroke (left_surface).
@@ -140,7 +154,8 @@ private:
   static void stamp_axes(const Vec3& normal, const Vec3& heading, BrushDab& dab);
   //! The dab's brush space at its centre (camera axes, the centre's texel);
   //! false where a screen-space stroke meets a silhouette and ends.
-  bool aim(const Stroke& stroke, const Vec3& normal, const Vec3& heading, const CullRecord& closest, BrushDab& dab);
+  bool aim(const Stroke& stroke, const Vec3& point, const Vec3& normal, const Vec3& heading, const CullRecord& closest,
+           BrushDab& dab);
   //! Finds the dab's site and aims it: the patches it may change, empty
   //! when it misses the surface (or meets a silhouette).
   std::vector<int> place(const Stroke& stroke, const DabSample& sample, BrushDab& dab, Vec3& normal);
@@ -151,8 +166,15 @@ private:
     kPositions,
     kDiffuse,
     kSpecular,
-    kMaterial
+    kMaterial,
+    kInsideDiffuse,
+    kInsideSpecular,
+    kInsideMaterial
   };
+  //! The channel buffers a dab writes: the side it paints.
+  cl::Buffer& diffuse_buffer();
+  cl::Buffer& specular_buffer();
+  cl::Buffer& material_buffer();
   struct LayerKernels;
   std::pair<LayerKernels*, const cl::Memory*> layer(int id);
   //! The given layers' tiles of `patches`, from the device.
@@ -177,6 +199,8 @@ private:
   std::vector<const CullRecord*> record_slot_; // per patch: its record in the current dab
   std::uint32_t generation_ = 0;
   const std::vector<char>* dab_mask_ = nullptr; // apply(stroke, dabs): the dabs for this surface
+  bool two_sided_ = false;
+  bool inside_ = false; // the running dab paints the inside
 };
 
 } // namespace meshpaint

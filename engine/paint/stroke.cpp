@@ -279,6 +279,14 @@ void read_space(const StrokeReader& r, Stroke& s, const std::string& tool, bool 
       r.fail("backfaces", "has no meaning unless \"space\" is \"screen\" or \"tangent\"");
     s.paint_backfaces = r.word("backfaces", "skip", {"skip", "paint"}) == "paint";
   }
+  if (r.has("side")) {
+    const bool colours = s.tool == Tool::Paint || s.tool == Tool::Wash || s.tool == Tool::Dip ||
+                         s.tool == Tool::Smear || s.tool == Tool::Blur || (s.tool == Tool::Smooth && s.target_colour);
+    if (!colours)
+      r.fail("side", "has no meaning for a " + tool + " stroke: only colours and roughness have two sides");
+    const std::string side = r.word("side", "auto", {"auto", "outside", "inside"});
+    s.side = side == "outside" ? 1 : side == "inside" ? 2 : 0;
+  }
   if (r.has("spray")) {
     if (s.space != SPACE_SCREEN || (s.tool != Tool::Paint && s.tool != Tool::Label))
       r.fail("spray", "belongs to paint and label strokes in screen space");
@@ -310,13 +318,13 @@ Stroke read_stroke(const json& j, std::size_t index)
   static const std::set<std::string> known = {
     "tool",   "points", "radius",   "strength",   "falloff", "spacing", "op",     "channels", "alphas",
     "pressure", "mirror", "amount", "iterations", "target", "method",  "lambda", "mu",
-    "mode",     "coefficient", "pattern", "stroke", "stamp", "edit_level", "space", "camera", "backfaces", "spray"};
+    "mode",     "coefficient", "pattern", "stroke", "stamp", "edit_level", "space", "camera", "backfaces", "spray", "side"};
   const StrokeReader r(j, index);
   for (const auto& item : j.items())
     if (!known.count(item.key()))
       r.fail(item.key(), "is not a stroke key (tool, points, radius, strength, falloff, spacing, op, "
                          "channels, alphas, pressure, mirror, amount, iterations, target, method, lambda, mu, "
-                         "mode, coefficient, pattern, stroke, stamp, edit_level, space, camera, backfaces, spray)");
+                         "mode, coefficient, pattern, stroke, stamp, edit_level, space, camera, backfaces, spray, side)");
   Stroke s;
   static const std::vector<std::string> tools = {"paint",  "label",   "wash",    "dip",   "smooth", "blur",
                                                  "sculpt", "inflate", "flatten", "smear", "grab"};
@@ -527,7 +535,7 @@ bool Stroke::operator==(const Stroke& o) const
          pattern_transform == o.pattern_transform && pattern_file == o.pattern_file && stamp_file == o.stamp_file &&
          edit_level == o.edit_level && space == o.space && paint_backfaces == o.paint_backfaces &&
          has_camera == o.has_camera && (!has_camera || camera == o.camera) && spray_drops == o.spray_drops &&
-         spray_size == o.spray_size && spray_seed == o.spray_seed;
+         spray_size == o.spray_size && spray_seed == o.spray_seed && side == o.side;
 }
 
 StrokeScript parse_stroke_script(const std::string& text)

@@ -79,6 +79,7 @@ struct Stroke
   bool paint_backfaces = false;         //!< tangent, screen: also faces turned away from the brush
   bool has_camera = false;              //!< screen space, screen patterns: `camera` is given
   Camera camera;
+  int side = 0;                         //!< two-sided surfaces: 0 the side the brush sees, 1 outside, 2 inside
   int spray_drops = 0;                  //!< screen space: droplets per dab (0: no spray)
   float spray_size = 0.f;               //!< their radius on the surface, world units
   unsigned spray_seed = 0;

@@ -85,6 +85,8 @@ json stroke_object(const Stroke& s)
                    {"view_angle", s.camera.view_angle}};
   if (s.paint_backfaces)
     j["backfaces"] = "paint";
+  if (s.side > 0)
+    j["side"] = s.side == 1 ? "outside" : "inside";
   if (s.spray_drops > 0)
     j["spray"] = {{"drops", s.spray_drops}, {"size", s.spray_size}, {"seed", s.spray_seed}};
   if (paints) {
