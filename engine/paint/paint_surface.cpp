@@ -705,6 +705,18 @@ PaintChannels PaintSurface::read_channels()
   return c;
 }
 
+void PaintSurface::write_channels(const PaintChannels& c)
+{
+  const std::size_t n = atlas_->layout(level_).texels();
+  if (c.diffuse.size() != n || c.specular.size() != n || c.material.size() != n)
+    throw InputError("channel layers of " + std::to_string(c.diffuse.size()) + " texels do not fit a level-" +
+                     std::to_string(level_) + " atlas of " + std::to_string(n));
+  cl::CommandQueue& q = atlas_->runtime().queue();
+  q.enqueueWriteBuffer(device_->diffuse, CL_TRUE, 0, n * sizeof(Float4), c.diffuse.data());
+  q.enqueueWriteBuffer(device_->specular, CL_TRUE, 0, n * sizeof(Float4), c.specular.data());
+  q.enqueueWriteBuffer(device_->material, CL_TRUE, 0, n * sizeof(Float4), c.material.data());
+}
+
 PaintedSurface PaintSurface::painted_surface()
 {
   PaintedSurface out;

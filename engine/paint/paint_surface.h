@@ -81,6 +81,10 @@ public:
   void geometry_changed();
 
   PaintChannels read_channels();
+  //! Replaces every channel (e.g. from a saved project); each layer must
+  //! hold the painting level's texels.
+  //! \throw InputError when a layer has another size.
+  void write_channels(const PaintChannels& channels);
   PaintedSurface painted_surface();
 
   //! Undo and redo whole strokes; false when there is nothing to undo

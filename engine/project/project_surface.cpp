@@ -1,0 +1,44 @@
+#include "project/project_surface.h"
+
+#include "core/errors.h"
+
+#include <utility> // for std::move
+
+namespace meshpaint {
+
+std::unique_ptr<PaintSurface> open_project_surface(std::shared_ptr<Runtime> runtime, const Project& project,
+                                                   AtlasStorage storage)
+{
+  auto surface = std::make_unique<PaintSurface>(std::move(runtime), project.mesh, project.level, storage);
+  Atlas& atlas = surface->atlas();
+  // Saved meshes are already in spatial order, which reordering keeps.
+  const std::vector<int>& order = atlas.base_face_order();
+  for (std::size_t f = 0; f < order.size(); ++f)
+    if (order[f] != int(f))
+      throw InputError("project '" + project.mesh.name + "': its base mesh is not in atlas order");
+  const std::size_t texels = atlas.layout(project.level).texels();
+  if (project.positions.size() != texels)
+    throw InputError("project '" + project.mesh.name + "': " + std::to_string(project.positions.size()) +
+                     " texels do not fit its level-" + std::to_string(project.level) + " atlas of " +
+                     std::to_string(texels));
+  atlas.write_positions(project.level, project.positions);
+  surface->geometry_changed();
+  surface->write_channels(project.channels);
+  return surface;
+}
+
+Project capture_project(PaintSurface& surface, std::vector<LabelClass> labels, std::string history,
+                        ScanReference scan)
+{
+  Project p;
+  p.mesh = surface.atlas().base_mesh();
+  p.level = surface.level();
+  p.positions = surface.atlas().read_positions(p.level);
+  p.channels = surface.read_channels();
+  p.labels = std::move(labels);
+  p.history = std::move(history);
+  p.scan = std::move(scan);
+  return p;
+}
+
+} // namespace meshpaint
