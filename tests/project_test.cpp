@@ -42,6 +42,14 @@ std::string load_error(const fs::path& path)
   return "";
 }
 
+Project captured(PaintSurface& s, const std::string& history = "")
+{
+  Project p;
+  p.history = history;
+  capture_surface(s, p);
+  return p;
+}
+
 bool same_texels(const std::vector<Float4>& a, const std::vector<Float4>& b)
 {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Float4)) == 0;
@@ -84,8 +92,14 @@ protected:
     scan.path = "scans/a.off";
     scan.bytes = 1234;
     scan.crc32 = 0xdeadbeef;
-    return capture_project(s, {{3, "tumour", {1.f, 0.f, 0.f}}, {7, "bone", {0.9f, 0.9f, 0.8f}}},
-                           R"({"strokes": []})", scan);
+    Project p;
+    p.labels = {{3, "tumour", {1.f, 0.f, 0.f}}, {7, "bone", {0.9f, 0.9f, 0.8f}}};
+    p.history = R"({"strokes": []})";
+    p.scan = scan;
+    capture_surface(s, p);
+    p.reference = p.positions;
+    p.reference[5][1] += 1.f;
+    return p;
   }
 
   fs::path dir_;
@@ -109,6 +123,7 @@ TEST_F(ProjectTest, RoundTripIsBitForBit)
   EXPECT_TRUE(same_texels(loaded.channels.diffuse, saved.channels.diffuse));
   EXPECT_TRUE(same_texels(loaded.channels.specular, saved.channels.specular));
   EXPECT_TRUE(same_texels(loaded.channels.material, saved.channels.material));
+  EXPECT_TRUE(same_texels(loaded.reference, saved.reference));
   ASSERT_EQ(loaded.labels.size(), 2u);
   EXPECT_EQ(loaded.labels[1].id, 7);
   EXPECT_EQ(loaded.labels[1].name, "bone");
@@ -128,7 +143,9 @@ TEST_F(ProjectTest, RoundTripIsBitForBit)
   EXPECT_TRUE(same_texels(reopened->atlas().read_limit_normals(), surface->atlas().read_limit_normals()));
   EXPECT_TRUE(same_texels(reopened->read_channels().material, surface->read_channels().material));
   const fs::path again = dir_ / "b.meshpaint";
-  save_project(capture_project(*reopened, loaded.labels, loaded.history, loaded.scan), again.string());
+  Project resaved = loaded;
+  capture_surface(*reopened, resaved);
+  save_project(resaved, again.string());
   EXPECT_EQ(file_bytes(again), file_bytes(path));
 }
 
@@ -143,7 +160,7 @@ TEST_F(ProjectTest, RebuildsTheAtlasOfAnUnorderedInput)
     reordered |= s.atlas().base_face_order()[f] != int(f);
   EXPECT_TRUE(reordered) << "the shape should need reordering for this test to mean anything";
   const fs::path path = dir_ / "g.meshpaint";
-  save_project(capture_project(s, {}, ""), path.string());
+  save_project(captured(s), path.string());
   auto reopened = open_project_surface(test::runtime(), load_project(path.string()), AtlasStorage::Buffer);
   EXPECT_TRUE(same_texels(reopened->atlas().read_limit_positions(), s.atlas().read_limit_positions()));
 }
@@ -170,7 +187,9 @@ TEST_F(ProjectTest, EveryFlippedByteIsRefused)
   // A small project, so every byte can be tried.
   PaintSurface s(test::runtime(), test::tetrahedron(), 1, AtlasStorage::Buffer);
   const fs::path path = dir_ / "f.meshpaint";
-  save_project(capture_project(s, {{1, "a", {1.f, 1.f, 1.f}}}, "{}"), path.string());
+  Project p = captured(s, "{}");
+  p.labels = {{1, "a", {1.f, 1.f, 1.f}}};
+  save_project(p, path.string());
   const std::vector<char> bytes = file_bytes(path);
   const fs::path bad = dir_ / "bad.meshpaint";
   for (std::size_t k = 0; k < bytes.size(); ++k) {
@@ -185,7 +204,7 @@ TEST_F(ProjectTest, NewerVersionsAndOtherFilesAreRefusedByName)
 {
   PaintSurface s(test::runtime(), test::tetrahedron(), 1, AtlasStorage::Buffer);
   const fs::path path = dir_ / "v.meshpaint";
-  save_project(capture_project(s, {}, ""), path.string());
+  save_project(captured(s), path.string());
   std::vector<char> bytes = file_bytes(path);
   bytes[8] = char(kProjectVersion + 1); // the version, little-endian
   put_bytes(path, bytes);
@@ -200,8 +219,8 @@ TEST_F(ProjectTest, AFailedSaveKeepsThePreviousFile)
 {
   PaintSurface s(test::runtime(), test::tetrahedron(), 1, AtlasStorage::Buffer);
   const fs::path path = dir_ / "keep.meshpaint";
-  save_project(capture_project(s, {}, "first"), path.string());
-  Project broken = capture_project(s, {}, "second");
+  save_project(captured(s, "first"), path.string());
+  Project broken = captured(s, "second");
   broken.channels.diffuse.pop_back(); // refused while writing
   EXPECT_THROW(save_project(broken, path.string()), InputError);
   EXPECT_EQ(load_project(path.string()).history, "first");

@@ -182,6 +182,13 @@ void write_payload(const Project& p, ByteWriter& w)
     w.end_section();
   }
 
+  w.begin_section("REFP");
+  if (!p.reference.empty() && p.reference.size() != p.positions.size())
+    throw InputError("cannot save a project whose reference and positions differ in size");
+  w.u64(p.reference.size());
+  w.texels(p.reference);
+  w.end_section();
+
   w.begin_section("LABL");
   w.u32(std::uint32_t(p.labels.size()));
   for (const LabelClass& c : p.labels) {
@@ -247,6 +254,12 @@ void read_payload(ByteReader& r, Project& p)
     *layer = r.texels(std::size_t(texels));
     r.end_section();
   }
+  r.begin_section("REFP");
+  const std::uint64_t reference = r.u64();
+  if (reference != 0 && reference != texels)
+    r.fail("the reference holds " + std::to_string(reference) + " texels, the atlas " + std::to_string(texels));
+  p.reference = r.texels(std::size_t(reference));
+  r.end_section();
   r.begin_section("LABL");
   p.labels.resize(r.count(16));
   for (LabelClass& c : p.labels) {

@@ -30,6 +30,9 @@ struct Project
   int level = 0;                 //!< painting level, 1..kMaxLevel
   std::vector<Float4> positions; //!< finest-level control points, patch-major (LevelLayout::index)
   PaintChannels channels;        //!< same shape as positions
+  //! Finest-level positions the surface started from (as fitted to its
+  //! scan), same shape as positions; empty: the base mesh's subdivision.
+  std::vector<Float4> reference;
   std::vector<LabelClass> labels;
   std::string history;           //!< the strokes applied so far, as a stroke script (JSON)
   ScanReference scan;

@@ -27,18 +27,25 @@ std::unique_ptr<PaintSurface> open_project_surface(std::shared_ptr<Runtime> runt
   return surface;
 }
 
-Project capture_project(PaintSurface& surface, std::vector<LabelClass> labels, std::string history,
-                        ScanReference scan)
+StrokeScript stroke_history(const std::string& history)
 {
-  Project p;
+  return history.empty() ? StrokeScript() : parse_stroke_script(history);
+}
+
+std::string continued_history(const std::string& previous, const std::vector<Stroke>& applied, int level)
+{
+  StrokeScript history = stroke_history(previous);
+  history.level = level;
+  history.strokes.insert(history.strokes.end(), applied.begin(), applied.end());
+  return stroke_script_json(history);
+}
+
+void capture_surface(PaintSurface& surface, Project& p)
+{
   p.mesh = surface.atlas().base_mesh();
   p.level = surface.level();
   p.positions = surface.atlas().read_positions(p.level);
   p.channels = surface.read_channels();
-  p.labels = std::move(labels);
-  p.history = std::move(history);
-  p.scan = std::move(scan);
-  return p;
 }
 
 } // namespace meshpaint

@@ -16,9 +16,17 @@ namespace meshpaint {
 std::unique_ptr<PaintSurface> open_project_surface(std::shared_ptr<Runtime> runtime, const Project& project,
                                                    AtlasStorage storage);
 
-//! The surface's state as a project, with the given labels, history
-//! (a stroke script) and scan.
-Project capture_project(PaintSurface& surface, std::vector<LabelClass> labels, std::string history,
-                        ScanReference scan = {});
+//! A project's stroke history as a script ("" is an empty one).
+//! \throw InputError when it is not a valid stroke script.
+StrokeScript stroke_history(const std::string& history);
+
+//! A stroke history (stroke-script JSON, or "" for none) continued by
+//! `applied`, as stroke-script JSON at `level`.
+//! \throw InputError when `previous` is not a valid stroke script.
+std::string continued_history(const std::string& previous, const std::vector<Stroke>& applied, int level);
+
+//! Fills the project's mesh, level, positions and channels from the
+//! surface; labels, history, reference and scan stay as they are.
+void capture_surface(PaintSurface& surface, Project& project);
 
 } // namespace meshpaint

@@ -1,0 +1,203 @@
+"""Projects on the command line: saving, continuing, statistics per label, and
+refusing damaged files. Run by CTest like test_cli.py."""
+import json
+import os
+import random
+import re
+import signal
+import struct
+import subprocess
+import time
+
+import pytest
+
+from test_cli import BIN, PLANE_OBJ, SCANS, read_polydata, run
+
+
+@pytest.fixture
+def plane(tmp_path):
+    path = tmp_path / "plane.obj"
+    path.write_text(PLANE_OBJ)
+    return path
+
+
+def script(tmp_path, name, strokes, level=None):
+    path = tmp_path / name
+    body = {"strokes": strokes}
+    if level is not None:
+        body["level"] = level
+    path.write_text(json.dumps(body))
+    return path
+
+
+RED = {"tool": "paint", "points": [[1, 1, 0], [3, 1, 0]], "radius": 0.5, "falloff": "constant",
+       "channels": {"diffuse": [1, 0, 0]}}
+LABEL = {"tool": "label", "points": [[2, 3, 0]], "radius": 0.6, "falloff": "constant", "channels": {"label": 4}}
+SCULPT = {"tool": "sculpt", "points": [[2, 2, 0]], "radius": 0.8, "amount": 0.1}
+
+
+def point_arrays(path):
+    poly = read_polydata(path)
+    pd = poly.GetPointData()
+    points = [poly.GetPoint(i) for i in range(poly.GetNumberOfPoints())]
+    arrays = {pd.GetArrayName(k): [pd.GetArray(k).GetTuple(i) for i in range(poly.GetNumberOfPoints())]
+              for k in range(pd.GetNumberOfArrays())}
+    return points, arrays
+
+
+def info_lines(path):
+    r = run("info", str(path))
+    assert r.returncode == 0, r.stderr
+    return r.stdout
+
+
+def history_length(path):
+    out = info_lines(path)
+    counts = [int(line.split()[1]) for line in out.splitlines() if line.startswith("history ")]
+    assert len(counts) == 1, out
+    return counts[0]
+
+
+def test_continuing_a_project_paints_what_one_run_paints(plane, tmp_path):
+    first = script(tmp_path, "a.json", [RED, SCULPT], level=3)
+    second = script(tmp_path, "b.json", [LABEL])
+    both = script(tmp_path, "ab.json", [RED, SCULPT, LABEL], level=3)
+    project = tmp_path / "p.meshpaint"
+    r = run("paint", str(plane), "--strokes", str(first), "--save", str(project), "--quiet")
+    assert r.returncode == 0, r.stderr
+    assert f"saved      {project}" in r.stdout
+    r = run("paint", str(project), "--strokes", str(second), "-o", str(tmp_path / "continued"),
+            "--save", str(tmp_path / "q.meshpaint"), "--quiet")
+    assert r.returncode == 0, r.stderr
+    r = run("paint", str(plane), "--strokes", str(both), "-o", str(tmp_path / "once"), "--quiet")
+    assert r.returncode == 0, r.stderr
+    continued = point_arrays(tmp_path / "continued" / "surface.vtp")
+    once = point_arrays(tmp_path / "once" / "surface.vtp")
+    assert continued[0] == once[0]
+    assert continued[1] == once[1]
+    # the history grows with every run
+    assert history_length(project) == 2
+    assert history_length(tmp_path / "q.meshpaint") == 3
+
+
+def test_subdivide_and_stats_take_a_project(plane, tmp_path):
+    strokes = script(tmp_path, "s.json", [SCULPT, LABEL], level=3)
+    project = tmp_path / "p.meshpaint"
+    labels = tmp_path / "labels.json"
+    labels.write_text(json.dumps([{"id": 4, "name": "spot", "colour": [1, 0, 0]},
+                                  {"id": 9, "name": "unused", "colour": [0, 0, 1]}]))
+    r = run("paint", str(plane), "--strokes", str(strokes), "--save", str(project), "--labels", str(labels),
+            "-o", str(tmp_path / "out"), "--quiet")
+    assert r.returncode == 0, r.stderr
+    # the project's limit surface is the painted one (no displacement painted)
+    r = run("subdivide", str(project), "--level", "3", "--limit", "-o", str(tmp_path / "limit.vtp"), "--quiet")
+    assert r.returncode == 0, r.stderr
+    assert point_arrays(tmp_path / "limit.vtp")[0] == point_arrays(tmp_path / "out" / "surface.vtp")[0]
+    r = run("subdivide", str(project), "--level", "4", "-o", str(tmp_path / "finer.obj"), "--quiet")
+    assert r.returncode == 0, r.stderr
+    assert max(p[2] for p in point_arrays(tmp_path / "finer.obj")[0]) > 0.05  # the sculpted bump stays
+
+    r = run("stats", str(project), "--json")
+    assert r.returncode == 0, r.stderr
+    stats = json.loads(r.stdout)
+    by_id = {l["id"]: l for l in stats["labels"]}
+    assert by_id[4]["name"] == "spot" and by_id[4]["colour"] == [1, 0, 0]
+    assert by_id[9]["area"] == 0 and by_id[9]["centroid"] is None
+    assert by_id[0]["name"] == "unlabelled"
+    assert sum(l["area"] for l in stats["labels"]) == pytest.approx(stats["area"], rel=1e-9)
+    spot = by_id[4]
+    # a disc of radius 0.6 around (2, 3), flat there: area near pi r^2, centred
+    assert spot["area"] == pytest.approx(3.14159 * 0.36, rel=0.15)
+    assert spot["centroid"][0] == pytest.approx(2, abs=0.05) and spot["centroid"][1] == pytest.approx(3, abs=0.05)
+    assert 1.4 <= spot["bbox_min"][0] <= 1.6 and 2.4 <= spot["bbox_max"][0] <= 2.6
+
+    r = run("stats", str(project), "--csv")
+    assert r.returncode == 0, r.stderr
+    rows = r.stdout.strip().splitlines()
+    assert rows[0].startswith("id,name,vertices,area,area_fraction,centroid_x")
+    assert any(row.startswith('4,"spot",') for row in rows)
+    r = run("stats", str(project))
+    assert r.returncode == 0, r.stderr
+    assert "spot" in r.stdout and "unlabelled" in r.stdout
+
+
+def damaged(tmp_path, plane, change):
+    project = tmp_path / "p.meshpaint"
+    r = run("paint", str(plane), "--save", str(project), "--quiet")
+    assert r.returncode == 0, r.stderr
+    data = bytearray(project.read_bytes())
+    bad = tmp_path / "bad.meshpaint"
+    bad.write_bytes(change(data))
+    return bad
+
+
+@pytest.mark.parametrize("change, message", [
+    (lambda d: d[:len(d) - 10], r"truncated project \(\d+ bytes, the header promises \d+\)"),
+    (lambda d: d[:20], r"truncated project \(the header ends early\)"),
+    (lambda d: d[:60] + bytes([d[60] ^ 1]) + d[61:], r"corrupt project \(payload checksum mismatch\)"),
+    (lambda d: d[:20] + bytes([d[20] ^ 1]) + d[21:], r"corrupt project \(header checksum mismatch\)"),
+    (lambda d: d[:8] + struct.pack("<I", 7) + d[12:],
+     r"project format version 7 is newer than this meshpaint reads \(up to 1\); open it with a newer meshpaint"),
+    (lambda d: b"solid cube\n" + d, r"not a meshpaint project"),
+])
+@pytest.mark.parametrize("command", ["info", "paint", "subdivide", "stats"])
+def test_damaged_projects_give_one_line_and_exit_2(plane, tmp_path, change, message, command):
+    bad = damaged(tmp_path, plane, change)
+    args = {"info": [], "stats": [], "paint": ["--save", str(tmp_path / "out.meshpaint")],
+            "subdivide": ["--level", "2", "-o", str(tmp_path / "x.obj")]}[command]
+    r = run(command, str(bad), *args)
+    lines = r.stderr.strip().splitlines()
+    assert r.returncode == 2, r.stderr
+    assert len(lines) == 1, r.stderr
+    assert lines[0].startswith(f"meshpaint {command}: {bad}: ")
+    assert re.search(message, lines[0]), lines[0]
+    assert not (tmp_path / "out.meshpaint").exists() and not (tmp_path / "x.obj").exists()
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--level", "4", "--save", "{tmp}/y.meshpaint"], r"is a level-3 project; --level 4 cannot change that"),
+    (["--save", "{tmp}/x.vtp"], r"--save needs a file name ending in .meshpaint, not '.*x.vtp'"),
+    ([], r"-o OUTDIR or --save P.meshpaint is required"),
+    (["--save", "{tmp}/y.meshpaint", "--labels", "{tmp}/labels.json"], r"labels.json: label 0: \"colour\" must be \[r, g, b\]"),
+])
+def test_project_arguments_are_checked(plane, tmp_path, args, message):
+    project = tmp_path / "p.meshpaint"
+    assert run("paint", str(plane), "--save", str(project), "--level", "3").returncode == 0
+    (tmp_path / "labels.json").write_text(json.dumps([{"id": 1, "name": "a", "colour": [1, 0]}]))
+    r = run("paint", str(project), *[a.format(tmp=tmp_path) for a in args])
+    lines = r.stderr.strip().splitlines()
+    assert r.returncode == 2 and len(lines) == 1, r.stderr
+    assert re.search(message, lines[0]), lines[0]
+
+
+def test_killed_while_saving_the_previous_project_still_loads(tmp_path):
+    """Kills `meshpaint paint P --save P` with a signal at random moments
+    while it works and saves: P must always load, with its history from
+    before or after that run, never anything in between."""
+    mesh = os.path.join(SCANS, "femur.off")
+    if not os.path.exists(mesh):
+        pytest.skip("data/scans/femur.off missing (scripts/fetch-scans.sh)")
+    project = tmp_path / "femur.meshpaint"
+    strokes = script(tmp_path, "s.json", [{"tool": "wash", "channels": {"diffuse": [0.5, 0.6, 0.7]},
+                                           "strength": 0.5}])
+    r = run("paint", mesh, "--level", "3", "--save", str(project), "--quiet")
+    assert r.returncode == 0, r.stderr
+    # How long one run takes, to spread the kills over it.
+    started = time.monotonic()
+    r = run("paint", str(project), "--strokes", str(strokes), "--save", str(project), "--quiet")
+    assert r.returncode == 0, r.stderr
+    duration = time.monotonic() - started
+    history = 1
+    rng = random.Random(7)
+    killed = 0
+    for attempt in range(12):
+        p = subprocess.Popen([BIN, "paint", str(project), "--strokes", str(strokes), "--save", str(project),
+                              "--quiet"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        time.sleep(rng.uniform(0.3, 1.0) * duration)
+        p.send_signal(rng.choice([signal.SIGKILL, signal.SIGTERM, signal.SIGINT]))
+        code = p.wait(timeout=120)
+        killed += code != 0
+        now = history_length(project)
+        assert now in (history, history + 1), (attempt, now, history)
+        history = now
+    assert killed >= 6, "too few runs were killed while working to test anything"
