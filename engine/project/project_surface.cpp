@@ -1,5 +1,6 @@
 #include "project/project_surface.h"
 
+#include "atlas/weld.h"
 #include "core/errors.h"
 
 #include <utility> // for std::move
@@ -25,6 +26,15 @@ std::unique_ptr<PaintSurface> open_project_surface(std::shared_ptr<Runtime> runt
   surface->geometry_changed();
   surface->write_channels(project.channels);
   return surface;
+}
+
+WeldedSurface reference_surface(std::shared_ptr<Runtime> runtime, const Project& project, AtlasStorage storage)
+{
+  Atlas atlas(std::move(runtime), project.mesh, project.level, storage);
+  atlas.subdivide(1, project.level);
+  if (!project.reference.empty())
+    atlas.write_positions(project.level, project.reference);
+  return level_surface(atlas, project.level, true);
 }
 
 StrokeScript stroke_history(const std::string& history)

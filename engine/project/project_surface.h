@@ -16,6 +16,11 @@ namespace meshpaint {
 std::unique_ptr<PaintSurface> open_project_surface(std::shared_ptr<Runtime> runtime, const Project& project,
                                                    AtlasStorage storage);
 
+//! The limit surface the project started from (its reference positions,
+//! else the base mesh's subdivision), welded like PaintSurface's painted
+//! surface: same vertices, same quads.
+WeldedSurface reference_surface(std::shared_ptr<Runtime> runtime, const Project& project, AtlasStorage storage);
+
 //! A project's stroke history as a script ("" is an empty one).
 //! \throw InputError when it is not a valid stroke script.
 StrokeScript stroke_history(const std::string& history);

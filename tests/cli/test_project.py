@@ -201,3 +201,127 @@ def test_killed_while_saving_the_previous_project_still_loads(tmp_path):
         assert now in (history, history + 1), (attempt, now, history)
         history = now
     assert killed >= 6, "too few runs were killed while working to test anything"
+
+
+def off_points(path):
+    lines = [l for l in open(path).read().split("\n") if l.strip() and not l.startswith("#")]
+    nv = int(lines[1].split()[0])
+    return [tuple(float(x) for x in l.split()[:3]) for l in lines[2:2 + nv]]
+
+
+def dist(a, b):
+    return sum((x - y) ** 2 for x, y in zip(a, b)) ** 0.5
+
+
+@pytest.fixture(scope="module")
+def bunny_transfer(tmp_path_factory):
+    """The bunny used as its own base mesh (level 2), a label dab of radius r
+    and a sculpt dab at scan vertex 1000, handed back to the scan."""
+    mesh = os.path.join(SCANS, "bunny00.off")
+    if not os.path.exists(mesh):
+        pytest.skip("data/scans/bunny00.off missing (scripts/fetch-scans.sh)")
+    tmp = tmp_path_factory.mktemp("bunny")
+    points = off_points(mesh)
+    centre = points[1000]
+    r = 0.08  # 5% of the diagonal
+    strokes = script(tmp, "s.json", [
+        {"tool": "label", "points": [centre], "radius": r, "falloff": "constant", "channels": {"label": 5}},
+        {"tool": "sculpt", "points": [centre], "radius": 0.05, "amount": 0.01}])
+    project = tmp / "bunny.meshpaint"
+    done = run("paint", mesh, "--level", "2", "--strokes", str(strokes), "--save", str(project), "--quiet")
+    assert done.returncode == 0, done.stderr
+    outputs = {}
+    for geometry in (False, True):
+        out = tmp / f"scan_{geometry}.vtp"
+        done = run("transfer", str(project), "--to", mesh, "-o", str(out), *(["--geometry"] if geometry else []))
+        assert done.returncode == 0, done.stderr
+        assert "scan vertices" in done.stderr
+        outputs[geometry] = read_polydata(out)
+    return points, centre, r, outputs
+
+
+def test_transfer_keeps_the_scan_and_its_labels_match_the_stroke(bunny_transfer):
+    points, centre, r, outputs = bunny_transfer
+    scan = outputs[False]
+    assert scan.GetNumberOfPoints() == len(points) and scan.GetNumberOfCells() == 75408
+    label = scan.GetPointData().GetArray("label")
+    for name, comps in (("diffuse", 3), ("specular", 3), ("roughness", 1), ("displacement", 1), ("label", 1)):
+        assert scan.GetPointData().GetArray(name).GetNumberOfComponents() == comps
+    inside = outside = 0
+    for i, p in enumerate(points):
+        assert dist(scan.GetPoint(i), p) < 1e-6  # same vertices, same order
+        d = dist(p, centre)
+        if d < 0.9 * r:
+            assert label.GetValue(i) == 5, (i, d / r)
+            inside += 1
+        elif d > 1.1 * r:
+            assert label.GetValue(i) == 0, (i, d / r)
+            outside += 1
+    assert inside > 100 and outside > 30000
+
+
+def test_transfer_geometry_carries_the_sculpting_over(bunny_transfer):
+    points, centre, _, outputs = bunny_transfer
+    plain, moved = outputs[False], outputs[True]
+    near = 0
+    for i, p in enumerate(points):
+        shift = dist(moved.GetPoint(i), plain.GetPoint(i))
+        d = dist(p, centre)
+        if d > 0.06:  # outside the sculpt brush and its limit-surface support: bit for bit
+            assert moved.GetPoint(i) == plain.GetPoint(i), i
+        elif d < 0.01:
+            assert shift == pytest.approx(0.01, rel=0.3), i  # the full amount near the centre
+            near += 1
+    assert near > 0
+
+
+def test_transfer_keeps_every_array_of_a_vtp_scan(plane, tmp_path):
+    import vtk
+    reader = vtk.vtkOBJReader()
+    reader.SetFileName(str(plane))
+    reader.Update()
+    scan = reader.GetOutput()
+    ids = vtk.vtkIntArray()
+    ids.SetName("scanner_id")
+    for i in range(scan.GetNumberOfPoints()):
+        ids.InsertNextValue(100 + i)
+    scan.GetPointData().AddArray(ids)
+    quality = vtk.vtkFloatArray()
+    quality.SetName("quality")
+    for i in range(scan.GetNumberOfCells()):
+        quality.InsertNextValue(i / 10)
+    scan.GetCellData().AddArray(quality)
+    writer = vtk.vtkXMLPolyDataWriter()
+    writer.SetFileName(str(tmp_path / "scan.vtp"))
+    writer.SetInputData(scan)
+    writer.Write()
+    strokes = script(tmp_path, "s.json", [RED, LABEL], level=3)
+    assert run("paint", str(plane), "--strokes", str(strokes), "--save", str(tmp_path / "p.meshpaint")).returncode == 0
+    r = run("transfer", str(tmp_path / "p.meshpaint"), "--to", str(tmp_path / "scan.vtp"), "-o", str(tmp_path / "o.vtp"))
+    assert r.returncode == 0, r.stderr
+    out = read_polydata(tmp_path / "o.vtp")
+    assert out.GetNumberOfPoints() == scan.GetNumberOfPoints() and out.GetNumberOfCells() == scan.GetNumberOfCells()
+    assert [out.GetPointData().GetArray("scanner_id").GetValue(i) for i in range(out.GetNumberOfPoints())] == \
+        [100 + i for i in range(scan.GetNumberOfPoints())]
+    assert out.GetCellData().GetArray("quality").GetValue(3) == pytest.approx(0.3)
+    # the red stroke's corners (1, 1) and (3, 1) are scan vertices 6 and 8
+    assert out.GetPointData().GetArray("diffuse").GetTuple3(6) == (1.0, 0.0, 0.0)
+    assert out.GetPointData().GetArray("label").GetValue(7) == 0
+
+
+@pytest.mark.parametrize("args, message", [
+    (["{plane}", "--to", "{plane}", "-o", "{tmp}/o.vtp"], r"transfer needs a project \(.meshpaint\), not '.*plane.obj'"),
+    (["{project}", "-o", "{tmp}/o.vtp"], r"--to SCAN is required"),
+    (["{project}", "--to", "{plane}", "-o", "{tmp}/o.ply"], r"unknown format '.ply' \(.vtp\)"),
+    (["{project}", "--to", "{tmp}/nothing.off", "-o", "{tmp}/o.vtp"], r"cannot open '.*nothing.off': no such file"),
+    (["{project}", "--to", "{tmp}/s.json", "-o", "{tmp}/o.vtp"], r"unknown format '.json'"),
+])
+def test_transfer_arguments_are_checked(plane, tmp_path, args, message):
+    project = tmp_path / "p.meshpaint"
+    (tmp_path / "s.json").write_text("{}")
+    assert run("paint", str(plane), "--save", str(project)).returncode == 0
+    r = run("transfer", *[a.format(plane=plane, project=project, tmp=tmp_path) for a in args])
+    lines = r.stderr.strip().splitlines()
+    assert r.returncode == 2 and len(lines) == 1, r.stderr
+    assert re.search(message, lines[0]), lines[0]
+    assert not (tmp_path / "o.vtp").exists()

@@ -31,8 +31,12 @@ commands:
                                       OUTDIR/surface.vtp with the paint channels, and
                                       model.obj + model.mtl + PNG texture maps; --save:
                                       the project to continue from
-  stats MESH [--labels labels.json] [--json|--csv]
+  stats MESH [--labels labels.json] [--json|--csv] [--level L]
                                       per-label area, centroid and bounds
+  transfer PROJECT --to SCAN -o OUT.vtp [--geometry] [--quiet]
+                                      the scan with the project's channels as point
+                                      arrays (label, diffuse, ...); --geometry: moved
+                                      as the surface was sculpted or smoothed
   bench paint [--json] [--steps N] [--tool sculpt|paint]
                                       brush step times as the paper's Table 1, and
                                       smoothing against VTK and OpenMesh
@@ -77,7 +81,7 @@ int main(int argc, char** argv)
   static const std::map<std::string, int (*)(const Argv&)> commands = {
     {"info", info_command},   {"subdivide", subdivide_command}, {"bench", bench_command},
     {"demo", demo_command},   {"devices", devices_command}, {"paint", paint_command},
-    {"stats", stats_command}};
+    {"stats", stats_command}, {"transfer", transfer_command}};
   try {
     if (command == "help" || command == "--help" || command == "-h") {
       std::cout << kUsage;
