@@ -28,6 +28,7 @@ int devices_command(const Argv& argv);
 int paint_command(const Argv& argv);
 int stats_command(const Argv& argv);
 int transfer_command(const Argv& argv);
+int fit_command(const Argv& argv);
 
 //! The device named by --device (or MESHPAINT_DEVICE, or the default).
 std::shared_ptr<Runtime> open_device(const Args& args);

@@ -33,6 +33,9 @@ commands:
                                       the project to continue from
   stats MESH [--labels labels.json] [--json|--csv] [--level L]
                                       per-label area, centroid and bounds
+  fit SCAN [--base-faces N] [--level L] [--direct] [--passes P] [--quiet] -o PROJECT.meshpaint
+                                      a project from a scan: coarse base mesh (decimated),
+                                      atlas at level L fitted onto the scan; fit error
   transfer PROJECT --to SCAN -o OUT.vtp [--geometry] [--quiet]
                                       the scan with the project's channels as point
                                       arrays (label, diffuse, ...); --geometry: moved
@@ -81,7 +84,8 @@ int main(int argc, char** argv)
   static const std::map<std::string, int (*)(const Argv&)> commands = {
     {"info", info_command},   {"subdivide", subdivide_command}, {"bench", bench_command},
     {"demo", demo_command},   {"devices", devices_command}, {"paint", paint_command},
-    {"stats", stats_command}, {"transfer", transfer_command}};
+    {"stats", stats_command}, {"transfer", transfer_command},
+    {"fit", fit_command}};
   try {
     if (command == "help" || command == "--help" || command == "-h") {
       std::cout << kUsage;
