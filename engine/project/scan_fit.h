@@ -49,7 +49,7 @@ struct FitReport
 
 struct FitOptions
 {
-  int passes = 3; //!< limit evaluations and corrections
+  int passes = 2; //!< limit evaluations and corrections
   //! Receives one line per step (progress), may be empty.
   std::function<void(const std::string&)> progress;
 };

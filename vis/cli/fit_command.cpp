@@ -58,7 +58,7 @@ int fit_command(const Argv& argv)
     throw InputError("--base-faces and --direct exclude each other");
   const int base_faces = args.integer("--base-faces", 0, 4, 10000000);
   const int level = args.integer("--level", 3, 1, kMaxLevel);
-  const int passes = args.integer("--passes", 3, 1, 100);
+  const int passes = args.integer("--passes", 2, 1, 100);
   const bool quiet = args.flag("--quiet");
   const auto say = [&](const std::string& line) {
     if (!quiet)
