@@ -171,9 +171,10 @@ def test_project_arguments_are_checked(plane, tmp_path, args, message):
 
 
 def test_killed_while_saving_the_previous_project_still_loads(tmp_path):
-    """Kills `meshpaint paint P --save P` with a signal at random moments
-    while it works and saves: P must always load, with its history from
-    before or after that run, never anything in between."""
+    """Kills `meshpaint paint P --save P` with a signal at random moments:
+    half of the runs at a random time while they work, half just after their
+    temporary file appears (during the write itself). P must always load,
+    with its history from before or after that run, never anything between."""
     mesh = os.path.join(SCANS, "femur.off")
     if not os.path.exists(mesh):
         pytest.skip("data/scans/femur.off missing (scripts/fetch-scans.sh)")
@@ -189,19 +190,28 @@ def test_killed_while_saving_the_previous_project_still_loads(tmp_path):
     duration = time.monotonic() - started
     history = 1
     rng = random.Random(7)
-    killed = 0
+    killed = caught_writing = 0
     for attempt in range(12):
         p = subprocess.Popen([BIN, "paint", str(project), "--strokes", str(strokes), "--save", str(project),
                               "--quiet"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        time.sleep(rng.uniform(0.3, 1.0) * duration)
+        temporary = tmp_path / f".femur.tmp-{p.pid}.meshpaint"
+        if attempt % 2:
+            deadline = time.monotonic() + 3 * duration + 5
+            while not temporary.exists() and p.poll() is None and time.monotonic() < deadline:
+                time.sleep(0.0005)
+            time.sleep(rng.uniform(0, 0.002))
+        else:
+            time.sleep(rng.uniform(0.2, 1.0) * duration)
         p.send_signal(rng.choice([signal.SIGKILL, signal.SIGTERM, signal.SIGINT]))
-        code = p.wait(timeout=120)
-        killed += code != 0
+        killed += p.wait(timeout=120) != 0
+        if temporary.exists():  # died in the middle of writing it
+            caught_writing += 1
+            temporary.unlink()
         now = history_length(project)
         assert now in (history, history + 1), (attempt, now, history)
         history = now
     assert killed >= 6, "too few runs were killed while working to test anything"
-
+    assert caught_writing >= 1, "no run was killed while writing its file"
 
 def off_points(path):
     lines = [l for l in open(path).read().split("\n") if l.strip() and not l.startswith("#")]

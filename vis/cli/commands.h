@@ -65,8 +65,10 @@ std::string strokes_dir();
 //! Paints `script` onto the surface and, unless DIR is empty, writes
 //! DIR/surface.vtp and the textured model (model.obj, model.mtl, PNG maps),
 //! printing a table of the strokes.
+//! With `lod` between 1 and the painting level (exclusive), also
+//! DIR/surface_lodL.vtp: the painted surface at that coarser level.
 void paint_job(PaintSurface& surface, const std::string& name, const StrokeScript& script, int model_level,
-               const std::string& dir, bool quiet);
+               const std::string& dir, bool quiet, int lod = -1);
 
 //! \throw InputError unless the path ends in .obj, .ply or .vtp (any case).
 void check_surface_format(const std::string& path);

@@ -6,6 +6,7 @@
 
 #include "PaintingExport.h"
 #include "RasterIO.h"
+#include "SurfaceConversion.h"
 
 #include "core/errors.h"
 #include "core/format.h"
@@ -17,7 +18,7 @@
 namespace meshpaint::cli {
 
 void paint_job(PaintSurface& surface, const std::string& name, const StrokeScript& script, int model_level,
-               const std::string& dir, bool quiet)
+               const std::string& dir, bool quiet, int lod)
 {
   surface.undo_log().set_recording(false); // a script never undoes: no snapshots to pay for
   Table table({"stroke", "tool", "dabs", "on surface", "patches", "ms", "note"});
@@ -25,8 +26,15 @@ void paint_job(PaintSurface& surface, const std::string& name, const StrokeScrip
   for (std::size_t k = 0; k < script.strokes.size(); ++k) {
     const Stroke& stroke = script.strokes[k];
     const StrokeReport r = surface.apply(stroke);
+    std::string note = r.left_surface ? "left the surface" : "";
+    if (r.stretch >= kUndersampledStretch) {
+      note += std::string(note.empty() ? "" : "; ") + "stretched " + format_fixed(r.stretch, 1) + "x";
+      std::cerr << "warning: stroke " << k << ": edit level " << stroke.edit_level
+                << " undersamples the surface here (a patch stretched " << format_fixed(r.stretch, 1)
+                << " times); edit at a finer level\n";
+    }
     table.add({std::to_string(k), tool_name(stroke.tool), std::to_string(r.dabs), std::to_string(r.dabs_applied),
-               grouped(r.patches_touched), format_fixed(r.ms, 2), r.left_surface ? "left the surface" : ""});
+               grouped(r.patches_touched), format_fixed(r.ms, 2), note});
     if (!quiet && progress.ms() > 1000.0) {
       std::cerr << "meshpaint paint: stroke " << k + 1 << " of " << script.strokes.size() << "\n";
       progress.restart();
@@ -42,13 +50,19 @@ void paint_job(PaintSurface& surface, const std::string& name, const StrokeScrip
   std::cout << "wrote      " << written.surface_path << ", " << dir << "/model.obj (level " << model_level << ", "
             << written.model_quads << " quads) with model.mtl and " << written.map_width << "x"
             << written.map_height << " texture maps\n";
+  if (lod > 0 && lod < surface.level()) {
+    const std::string lod_out = dir + "/surface_lod" + std::to_string(lod) + ".vtp";
+    write_vtp(to_polydata(surface.painted_surface(lod)), lod_out);
+    std::cout << "wrote      " << lod_out << " (level " << lod << " with the normals of level " << surface.level()
+              << ")\n";
+  }
 }
 
 int paint_command(const Argv& argv)
 {
   Args args("paint", argv, {"--quiet"},
-            {"--strokes", "--level", "--model-level", "-o", "--save", "--labels", "--device", "--storage"});
-  args.expect_positionals(1, 1, "MESH|PROJECT --strokes S.json [--level L] [--model-level M] [-o OUTDIR] "
+            {"--strokes", "--level", "--model-level", "--lod", "-o", "--save", "--labels", "--device", "--storage"});
+  args.expect_positionals(1, 1, "MESH|PROJECT --strokes S.json [--level L] [--model-level M] [--lod L] [-o OUTDIR] "
                                 "[--save P.meshpaint] [--labels labels.json]");
   const std::string dir = args.value("-o");
   const std::string save = args.value("--save");
@@ -69,12 +83,18 @@ int paint_command(const Argv& argv)
   const MeshOrProject input = open_mesh_or_project(args.positionals()[0]);
   const int level = input_level(args, input, script.level > 0 ? script.level : 3);
   const int model_level = args.integer("--model-level", std::max(1, level - 2), 1, level);
+  const int lod = args.integer("--lod", level, 1, level);
+  for (std::size_t k = 0; k < script.strokes.size(); ++k)
+    if (script.strokes[k].edit_level > level)
+      throw InputError("stroke " + std::to_string(k) + ": \"edit_level\" " +
+                       std::to_string(script.strokes[k].edit_level) + " is finer than the painting level " +
+                       std::to_string(level));
   auto runtime = open_device(args);
   Timer setup;
   const auto surface = open_paint_surface(runtime, chosen_storage(args, *runtime), input, level);
   if (!args.flag("--quiet"))
     std::cerr << "meshpaint paint: surface ready in " << format_fixed(setup.ms(), 1) << " ms\n";
-  paint_job(*surface, input.mesh().name, script, model_level, dir, args.flag("--quiet"));
+  paint_job(*surface, input.mesh().name, script, model_level, dir, args.flag("--quiet"), lod);
   if (save.empty())
     return 0;
   Project project = input.project ? *input.project : Project();
