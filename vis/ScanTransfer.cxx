@@ -5,8 +5,11 @@
 #include "core/errors.h"     // for meshpaint::IOError, InputError
 #include "core/format.h"     // for meshpaint::lower_extension
 #include "mesh/base_mesh.h"  // for meshpaint::load_mesh
+#include "mesh/property_ply.h" // for meshpaint::write_property_ply
 
 #include <vtkAlgorithm.h>         // for vtkAlgorithm
+#include <vtkCellData.h>          // for vtkCellData
+#include <vtkIdList.h>            // for vtkIdList
 #include <vtkCellArray.h>         // for vtkCellArray
 #include <vtkFloatArray.h>        // for vtkFloatArray
 #include <vtkGenericCell.h>       // for vtkGenericCell
@@ -73,7 +76,59 @@ vtkSmartPointer<vtkFloatArray> float_array(const char* name, int components, vtk
   return a;
 }
 
+//! One PLY property per component of every array of `data`.
+std::vector<PlyProperty> component_properties(vtkDataSetAttributes* data)
+{
+  std::vector<PlyProperty> out;
+  for (int a = 0; a < data->GetNumberOfArrays(); ++a) {
+    vtkDataArray* array = data->GetArray(a);
+    if (!array)
+      continue; // string and other non-numeric arrays have no PLY type
+    std::string name = array->GetName() ? array->GetName() : "array" + std::to_string(a);
+    for (char& c : name)
+      if (c == ' ')
+        c = '_';
+    const int k = array->GetNumberOfComponents();
+    const bool colour = name == "diffuse" || name == "specular";
+    for (int c = 0; c < k; ++c) {
+      PlyProperty p;
+      p.name = k == 1 ? name
+               : k == 3 ? name + "_" + (colour ? "rgb" : "xyz")[c]
+                        : name + "_" + std::to_string(c);
+      p.integer = array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE;
+      p.values.resize(std::size_t(array->GetNumberOfTuples()));
+      for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
+        p.values[std::size_t(t)] = array->GetComponent(t, c);
+      out.push_back(std::move(p));
+    }
+  }
+  return out;
+}
+
 } // namespace
+
+void write_scan_ply(vtkPolyData* scan, const std::string& path)
+{
+  const vtkIdType others = scan->GetNumberOfVerts() + scan->GetNumberOfLines() + scan->GetNumberOfStrips();
+  if (others > 0)
+    throw InputError("cannot write '" + path + "': the scan has " + std::to_string(others) +
+                     " vertex, line or strip cells, which PLY holds only as polygons; write .vtp instead");
+  std::vector<Vec3> points(std::size_t(scan->GetNumberOfPoints()));
+  for (vtkIdType v = 0; v < scan->GetNumberOfPoints(); ++v) {
+    double x[3];
+    scan->GetPoint(v, x);
+    points[std::size_t(v)] = {float(x[0]), float(x[1]), float(x[2])};
+  }
+  std::vector<std::vector<int>> faces(std::size_t(scan->GetNumberOfPolys()));
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  for (vtkIdType f = 0; f < scan->GetNumberOfPolys(); ++f) {
+    scan->GetCellPoints(f, ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      faces[std::size_t(f)].push_back(int(ids->GetId(k)));
+  }
+  write_property_ply(points, faces, component_properties(scan->GetPointData()),
+                     component_properties(scan->GetCellData()), path);
+}
 
 const std::vector<std::string>& scan_extensions()
 {

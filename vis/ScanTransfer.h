@@ -45,6 +45,16 @@ struct TransferReport
 MESHPAINTVIS_EXPORT TransferReport transfer_to_scan(const PaintedSurface& painted, const WeldedSurface& reference,
                                                     vtkPolyData* scan, bool geometry);
 
+//! Writes a scan as binary PLY through OpenMesh: points in order, polygons,
+//! and every point and cell array as vertex and face properties, one per
+//! component (NAME for one component; NAME_r/_g/_b for diffuse and specular,
+//! NAME_x/_y/_z for other 3-component arrays, NAME_0.. otherwise); integer
+//! arrays as int32, others float32. Atomic.
+//! \throw InputError when the scan has vertex, line or strip cells or a
+//! polygon OpenMesh cannot keep (PLY through OpenMesh holds polygons only);
+//! IOError when writing fails.
+MESHPAINTVIS_EXPORT void write_scan_ply(vtkPolyData* scan, const std::string& path);
+
 } // namespace meshpaint
 
 #endif

@@ -285,14 +285,16 @@ def test_transfer_geometry_carries_the_sculpting_over(bunny_transfer):
     assert near > 0
 
 
-def test_transfer_keeps_every_array_of_a_vtp_scan(plane, tmp_path):
+def scan_with_arrays(plane, tmp_path, id_name):
+    """The plane as a VTP scan with a point array `id_name` (100 + index) and
+    a cell array quality (index / 10), and a painted project p.meshpaint of it."""
     import vtk
     reader = vtk.vtkOBJReader()
     reader.SetFileName(str(plane))
     reader.Update()
     scan = reader.GetOutput()
     ids = vtk.vtkIntArray()
-    ids.SetName("scanner_id")
+    ids.SetName(id_name)
     for i in range(scan.GetNumberOfPoints()):
         ids.InsertNextValue(100 + i)
     scan.GetPointData().AddArray(ids)
@@ -307,6 +309,11 @@ def test_transfer_keeps_every_array_of_a_vtp_scan(plane, tmp_path):
     writer.Write()
     strokes = script(tmp_path, "s.json", [RED, LABEL], level=3)
     assert run("paint", str(plane), "--strokes", str(strokes), "--save", str(tmp_path / "p.meshpaint")).returncode == 0
+    return scan
+
+
+def test_transfer_keeps_every_array_of_a_vtp_scan(plane, tmp_path):
+    scan = scan_with_arrays(plane, tmp_path, "scanner_id")
     r = run("transfer", str(tmp_path / "p.meshpaint"), "--to", str(tmp_path / "scan.vtp"), "-o", str(tmp_path / "o.vtp"))
     assert r.returncode == 0, r.stderr
     out = read_polydata(tmp_path / "o.vtp")
@@ -319,10 +326,63 @@ def test_transfer_keeps_every_array_of_a_vtp_scan(plane, tmp_path):
     assert out.GetPointData().GetArray("label").GetValue(7) == 0
 
 
+def read_ply(path):
+    """Header, vertex properties and faces (with their properties) of a binary little-endian PLY."""
+    import numpy as np
+    data = path.read_bytes()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode().splitlines()
+    assert header[0] == "ply" and header[1] == "format binary_little_endian 1.0", header
+    elements, current = {}, None
+    for line in header[2:]:
+        words = line.split()
+        if words[0] == "element":
+            current = elements.setdefault(words[1], {"count": int(words[2]), "props": []})
+        elif words[0] == "property":
+            current["props"].append(words[1:])
+    types = {"float": "<f4", "int": "<i4", "uchar": "u1"}
+    vertex = elements["vertex"]
+    dtype = np.dtype([(p[1], types[p[0]]) for p in vertex["props"]])
+    vertices = np.frombuffer(data, dtype=dtype, count=vertex["count"], offset=end)
+    at = end + dtype.itemsize * vertex["count"]
+    faces = []
+    for _ in range(elements["face"]["count"]):
+        face = {}
+        for p in elements["face"]["props"]:
+            if p[0] == "list":
+                n = data[at]
+                face[p[3]] = list(np.frombuffer(data, dtype="<i4", count=n, offset=at + 1))
+                at += 1 + 4 * n
+            else:
+                face[p[1]] = np.frombuffer(data, dtype=types[p[0]], count=1, offset=at)[0]
+                at += 4
+        faces.append(face)
+    assert at == len(data)
+    return vertices, faces
+
+
+def test_transfer_to_ply_keeps_every_array_as_properties(plane, tmp_path):
+    import vtk
+    scan = scan_with_arrays(plane, tmp_path, "scanner id")
+    r = run("transfer", str(tmp_path / "p.meshpaint"), "--to", str(tmp_path / "scan.vtp"), "-o", str(tmp_path / "o.ply"))
+    assert r.returncode == 0, r.stderr
+    vertices, faces = read_ply(tmp_path / "o.ply")
+    assert len(vertices) == 25 and len(faces) == 16
+    assert list(vertices["scanner_id"]) == [100 + i for i in range(25)]
+    assert [(vertices[k]["x"], vertices[k]["y"]) for k in range(25)] == [(x, y) for y in range(5) for x in range(5)]
+    assert (vertices["diffuse_r"][6], vertices["diffuse_g"][6], vertices["diffuse_b"][6]) == (1, 0, 0)
+    assert vertices["label"].dtype.kind == "i" and vertices["label"][7] == 0
+    for k in range(16):
+        cell = vtk.vtkIdList()
+        scan.GetCellPoints(k, cell)
+        assert faces[k]["vertex_indices"] == [cell.GetId(i) for i in range(cell.GetNumberOfIds())]
+        assert faces[k]["quality"] == pytest.approx(k / 10)
+
+
 @pytest.mark.parametrize("args, message", [
     (["{plane}", "--to", "{plane}", "-o", "{tmp}/o.vtp"], r"transfer needs a project \(.meshpaint\), not '.*plane.obj'"),
     (["{project}", "-o", "{tmp}/o.vtp"], r"--to SCAN is required"),
-    (["{project}", "--to", "{plane}", "-o", "{tmp}/o.ply"], r"unknown format '.ply' \(.vtp\)"),
+    (["{project}", "--to", "{plane}", "-o", "{tmp}/o.stl"], r"unknown format '.stl' \(.vtp, .ply\)"),
     (["{project}", "--to", "{tmp}/nothing.off", "-o", "{tmp}/o.vtp"], r"cannot open '.*nothing.off': no such file"),
     (["{project}", "--to", "{tmp}/s.json", "-o", "{tmp}/o.vtp"], r"unknown format '.json'"),
 ])

@@ -36,7 +36,7 @@ commands:
   fit SCAN [--base-faces N] [--level L] [--direct] [--passes P] [--quiet] -o PROJECT.meshpaint
                                       a project from a scan: coarse base mesh (decimated),
                                       atlas at level L fitted onto the scan; fit error
-  transfer PROJECT --to SCAN -o OUT.vtp [--geometry] [--quiet]
+  transfer PROJECT --to SCAN -o OUT.{vtp,ply} [--geometry] [--quiet]
                                       the scan with the project's channels as point
                                       arrays (label, diffuse, ...); --geometry: moved
                                       as the surface was sculpted or smoothed

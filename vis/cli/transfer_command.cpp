@@ -17,7 +17,7 @@ namespace meshpaint::cli {
 int transfer_command(const Argv& argv)
 {
   Args args("transfer", argv, {"--geometry", "--quiet"}, {"--to", "-o", "--device", "--storage"});
-  args.expect_positionals(1, 1, "PROJECT --to SCAN -o OUT.vtp [--geometry]");
+  args.expect_positionals(1, 1, "PROJECT --to SCAN -o OUT.{vtp,ply} [--geometry]");
   const std::string path = args.positionals()[0];
   if (!is_project_path(path))
     throw InputError("transfer needs a project (.meshpaint), not '" + path + "'");
@@ -26,9 +26,10 @@ int transfer_command(const Argv& argv)
     throw InputError("--to SCAN is required");
   const std::string out = args.value("-o");
   if (out.empty())
-    throw InputError("-o OUT.vtp is required");
-  if (lower_extension(out) != ".vtp")
-    throw InputError("cannot write '" + out + "': unknown format '" + lower_extension(out) + "' (.vtp)");
+    throw InputError("-o OUT.{vtp,ply} is required");
+  const std::string ext = lower_extension(out);
+  if (ext != ".vtp" && ext != ".ply")
+    throw InputError("cannot write '" + out + "': unknown format '" + ext + "' (.vtp, .ply)");
   const Project project = load_project(path);
   vtkSmartPointer<vtkPolyData> scan = read_scan(scan_path);
   if (!project.scan.path.empty()) {
@@ -42,7 +43,10 @@ int transfer_command(const Argv& argv)
   const PaintedSurface painted = open_project_surface(runtime, project, storage)->painted_surface();
   const WeldedSurface reference = reference_surface(runtime, project, storage);
   const TransferReport r = transfer_to_scan(painted, reference, scan, args.flag("--geometry"));
-  write_vtp(scan, out);
+  if (ext == ".ply")
+    write_scan_ply(scan, out);
+  else
+    write_vtp(scan, out);
   if (!args.flag("--quiet")) {
     const double diagonal = project.mesh.diagonal();
     std::cerr << "meshpaint transfer: " << out << ": " << scan->GetNumberOfPoints() << " scan vertices, "
