@@ -1,19 +1,31 @@
 #include "vtkPaintSurface.h"
 
+#include "PaintingExport.h"    // for meshpaint::export_painting
 #include "RasterIO.h"          // for meshpaint::load_stroke_rasters
 #include "SurfaceConversion.h" // for meshpaint::to_base_mesh, to_polydata
 
-#include "paint/paint_surface.h" // for meshpaint::PaintSurface
+#include "core/errors.h"               // for meshpaint::InputError
+#include "paint/paint_surface.h"       // for meshpaint::PaintSurface
+#include "project/project_surface.h"   // for meshpaint::open_project_surface, capture_surface
+#include "project/vertex_channels.h"   // for meshpaint::vertex_channel, set_vertex_channel
 
 #include <nlohmann/json.hpp> // for nlohmann::json
 
+#include <optional> // for std::optional
+
+#include <vtkAlgorithm.h>         // for vtkAlgorithm::INPUT_IS_OPTIONAL
+#include <vtkDataArray.h>         // for vtkDataArray
+#include <vtkFloatArray.h>        // for vtkFloatArray
 #include <vtkInformation.h>       // for vtkInformation
+#include <vtkIntArray.h>          // for vtkIntArray
 #include <vtkInformationVector.h> // for vtkInformationVector
 #include <vtkObjectFactory.h>     // for vtkStandardNewMacro
 #include <vtkPoints.h>            // for vtkPoints
 #include <vtkPolyData.h>          // for vtkPolyData
 
-#include <vector> // for std::vector
+#include <algorithm> // for std::max
+#include <map>       // for std::map
+#include <vector>    // for std::vector
 
 vtkStandardNewMacro(vtkPaintSurface);
 
@@ -25,6 +37,11 @@ struct vtkPaintSurface::Internals
   vtkMTimeType built_from = 0; // input's modification time the surface was built from
   int built_level = 0;
   std::vector<meshpaint::Stroke> queued;
+  //! The loaded project, without its layers: history, labels, scan and
+  //! reference to carry into the next save.
+  std::optional<meshpaint::Project> project;
+  std::map<std::string, vtkSmartPointer<vtkDataArray>> channels; // arrays handed out by GetChannel
+  std::string history_text;                                      // what GetHistoryJSON() returned
 };
 
 vtkPaintSurface::vtkPaintSurface() : Impl(new Internals) {}
@@ -154,6 +171,136 @@ int vtkPaintSurface::Undo() { return this->Step(true); }
 
 int vtkPaintSurface::Redo() { return this->Step(false); }
 
+int vtkPaintSurface::FillInputPortInformation(int port, vtkInformation* info)
+{
+  // A loaded project takes the input's place.
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return this->Superclass::FillInputPortInformation(port, info);
+}
+
+int vtkPaintSurface::Ready()
+{
+  if (this->Impl->surface && this->Impl->queued.empty() && this->GetNumberOfInputConnections(0) == 0)
+    return 1;
+  const int failed = this->FailedUpdates;
+  this->Update();
+  if (this->FailedUpdates != failed)
+    return 0;
+  if (!this->Impl->surface) {
+    this->LastError = "nothing to paint on: set an input or load a project";
+    return 0;
+  }
+  return 1;
+}
+
+int vtkPaintSurface::SaveProject(const char* path)
+{
+  if (!this->Ready())
+    return 0;
+  return guarded(this->LastError, [&] {
+    Internals& in = *this->Impl;
+    meshpaint::Project p = in.project ? *in.project : meshpaint::Project();
+    p.history = meshpaint::continued_history(p.history, in.surface->history(), in.surface->level());
+    meshpaint::capture_surface(*in.surface, p);
+    meshpaint::save_project(p, path ? path : "");
+  });
+}
+
+const char* vtkPaintSurface::GetHistoryJSON()
+{
+  Internals& in = *this->Impl;
+  in.history_text.clear();
+  if (in.surface)
+    guarded(this->LastError, [&] {
+      in.history_text = meshpaint::continued_history(in.project ? in.project->history : "", in.surface->history(),
+                                                     in.surface->level());
+    });
+  return in.history_text.c_str();
+}
+
+int vtkPaintSurface::LoadProject(const char* path)
+{
+  const int ok = guarded(this->LastError, [&] {
+    meshpaint::Project p = meshpaint::load_project(path ? path : "");
+    auto runtime = meshpaint::Runtime::open(this->Device);
+    auto surface = meshpaint::open_project_surface(runtime, p, meshpaint::default_storage(runtime->info()));
+    Internals& in = *this->Impl;
+    this->RemoveAllInputConnections(0);
+    in.surface = std::move(surface);
+    in.queued.clear();
+    in.built_from = 0;
+    in.built_level = p.level;
+    this->Level = p.level;
+    this->StrokeCount = 0;
+    // Only what the next save carries over; the layers live in the surface.
+    p.positions = {};
+    p.channels = {};
+    in.project = std::move(p);
+  });
+  if (ok)
+    this->Modified();
+  return ok;
+}
+
+int vtkPaintSurface::ExportModel(const char* dir)
+{
+  if (!this->Ready())
+    return 0;
+  return guarded(this->LastError, [&] {
+    const int level = this->Impl->surface->level();
+    const int model_level = this->ModelLevel > 0 ? std::min(this->ModelLevel, level) : std::max(1, level - 2);
+    meshpaint::export_painting(*this->Impl->surface, model_level, dir ? dir : "");
+  });
+}
+
+vtkDataArray* vtkPaintSurface::GetChannel(const char* name)
+{
+  if (!this->Ready())
+    return nullptr;
+  const std::string channel = name ? name : "";
+  vtkSmartPointer<vtkDataArray> array;
+  const int ok = guarded(this->LastError, [&] {
+    const std::vector<float> values = meshpaint::vertex_channel(*this->Impl->surface, channel);
+    const int k = meshpaint::channel_components(channel);
+    if (channel == "label")
+      array = vtkSmartPointer<vtkIntArray>::New();
+    else
+      array = vtkSmartPointer<vtkFloatArray>::New();
+    array->SetName(channel.c_str());
+    array->SetNumberOfComponents(k);
+    array->SetNumberOfTuples(vtkIdType(values.size() / std::size_t(k)));
+    for (std::size_t v = 0; v < values.size(); ++v)
+      array->SetComponent(vtkIdType(v / std::size_t(k)), int(v % std::size_t(k)), values[v]);
+  });
+  if (!ok)
+    return nullptr;
+  this->Impl->channels[channel] = array;
+  return array;
+}
+
+int vtkPaintSurface::SetChannel(const char* name, vtkDataArray* values)
+{
+  if (!this->Ready())
+    return 0;
+  const int ok = guarded(this->LastError, [&] {
+    const std::string channel = name ? name : "";
+    const int k = meshpaint::channel_components(channel);
+    if (!values)
+      throw meshpaint::InputError("SetChannel needs an array");
+    if (values->GetNumberOfComponents() != k)
+      throw meshpaint::InputError("channel '" + channel + "' has " + std::to_string(k) + " component" +
+                                  (k > 1 ? "s" : "") + ", the array " +
+                                  std::to_string(values->GetNumberOfComponents()));
+    std::vector<float> v(std::size_t(values->GetNumberOfTuples()) * std::size_t(k));
+    for (std::size_t i = 0; i < v.size(); ++i)
+      v[i] = float(values->GetComponent(vtkIdType(i / std::size_t(k)), int(i % std::size_t(k))));
+    meshpaint::set_vertex_channel(*this->Impl->surface, channel, v);
+  });
+  if (ok)
+    this->Modified();
+  return ok;
+}
+
 int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                  vtkInformationVector* outputVector)
 {
@@ -162,12 +309,19 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
   const int ok = guarded(this->LastError, [&] {
     Internals& in = *this->Impl;
     // A new input or level starts a new surface; queued strokes go onto it.
-    if (!in.surface || in.built_from != input->GetMTime() || in.built_level != this->Level) {
+    // Without an input, the surface is a loaded project's.
+    if (!input && !in.surface)
+      throw meshpaint::InputError("nothing to paint on: set an input or load a project");
+    if (!in.surface || (input && in.built_from != input->GetMTime()) || in.built_level != this->Level) {
+      if (!input)
+        throw meshpaint::InputError("a loaded project keeps its level " + std::to_string(in.built_level) +
+                                    "; set an input to paint at another");
       auto runtime = meshpaint::Runtime::open(this->Device);
       in.surface = std::make_unique<meshpaint::PaintSurface>(runtime, meshpaint::to_base_mesh(input, "input"),
                                                              this->Level, meshpaint::default_storage(runtime->info()));
       in.built_from = input->GetMTime();
       in.built_level = this->Level;
+      in.project.reset();
       this->StrokeCount = 0;
     }
     for (const meshpaint::Stroke& s : in.queued) {

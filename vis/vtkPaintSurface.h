@@ -8,6 +8,9 @@
  * Normals. Strokes are applied in order; every stroke is one undo step.
  * Methods that can fail return 0 and leave the reason in GetLastError(); the
  * Python package raises it as meshpaint.Error.
+ *
+ * A project (docs/project-format.md) may take the input's place:
+ * LoadProject() continues from one, SaveProject() writes one.
  */
 #ifndef vtkPaintSurface_h
 #define vtkPaintSurface_h
@@ -19,6 +22,7 @@
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
+class vtkDataArray;
 class vtkPoints;
 
 class MESHPAINTVIS_EXPORT vtkPaintSurface : public vtkPolyDataAlgorithm
@@ -80,6 +84,41 @@ public:
   int Undo();
   int Redo();
 
+  //@{
+  /// Projects. SaveProject() paints queued strokes first, then writes the
+  /// surface, its stroke history (the loaded project's, then this filter's)
+  /// and the loaded project's labels and scan. LoadProject() makes the
+  /// project the source: the input connection is dropped, the level becomes
+  /// the project's, and undo starts afresh. Both return 0 on failure.
+  int SaveProject(const char* path);
+  int LoadProject(const char* path);
+  //@}
+
+  /// The strokes applied so far, undo-aware, after those of a loaded
+  /// project: a stroke script (JSON) that replays the painting; empty before
+  /// the first update.
+  const char* GetHistoryJSON();
+
+  //@{
+  /// What `meshpaint paint -o DIR` writes: DIR/surface.vtp, model.obj and
+  /// model.mtl at ModelLevel (0: the painting level - 2, at least 1) and the
+  /// PNG texture maps. Queued strokes are painted first. 0 on failure.
+  int ExportModel(const char* dir);
+  vtkSetClampMacro(ModelLevel, int, 0, 12);
+  vtkGetMacro(ModelLevel, int);
+  //@}
+
+  //@{
+  /// One channel at every output vertex: "diffuse", "specular" (3
+  /// components), "roughness", "displacement", "mask" (floats), "label"
+  /// (ints). GetChannel() returns a new array owned by this filter (valid
+  /// until the next GetChannel() of that name), nullptr on failure;
+  /// SetChannel() writes one back from an array of that shape (any numeric
+  /// type). Setting is not a stroke: no undo step, no history entry.
+  vtkDataArray* GetChannel(const char* name);
+  int SetChannel(const char* name, vtkDataArray* values);
+  //@}
+
   /// Strokes applied so far (queued ones not included).
   vtkGetMacro(StrokeCount, int);
 
@@ -94,8 +133,10 @@ protected:
   vtkPaintSurface();
   ~vtkPaintSurface() override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
 
   int Level = 3;
+  int ModelLevel = 0;
   std::string Device;
   std::string LastError;
   int StrokeCount = 0;
@@ -106,6 +147,9 @@ private:
   void operator=(const vtkPaintSurface&) = delete;
 
   int Step(bool back); // Undo (back) or Redo
+  //! Paints queued strokes (building the surface if needed) by updating; 0
+  //! with LastError set when that fails or there is nothing to paint on.
+  int Ready();
 
   struct Internals;
   std::unique_ptr<Internals> Impl;

@@ -1033,6 +1033,27 @@ void PaintSurface::set_two_sided(bool on)
   undo_ = std::move(fresh);
 }
 
+void PaintSurface::write_channels(const PaintChannels& c)
+{
+  const std::size_t n = atlas_->layout(level_).texels();
+  if (c.diffuse.size() != n || c.specular.size() != n || c.material.size() != n)
+    throw InputError("channel layers of " + std::to_string(c.diffuse.size()) + " texels do not fit a level-" +
+                     std::to_string(level_) + " atlas of " + std::to_string(n));
+  cl::CommandQueue& q = atlas_->runtime().queue();
+  q.enqueueWriteBuffer(device_->diffuse, CL_TRUE, 0, n * sizeof(Float4), c.diffuse.data());
+  q.enqueueWriteBuffer(device_->specular, CL_TRUE, 0, n * sizeof(Float4), c.specular.data());
+  q.enqueueWriteBuffer(device_->material, CL_TRUE, 0, n * sizeof(Float4), c.material.data());
+  if (c.inside_diffuse.empty())
+    return;
+  if (c.inside_diffuse.size() != n || c.inside_specular.size() != n || c.inside_material.size() != n)
+    throw InputError("inside channel layers of " + std::to_string(c.inside_diffuse.size()) +
+                     " texels do not fit a level-" + std::to_string(level_) + " atlas of " + std::to_string(n));
+  set_two_sided(true);
+  q.enqueueWriteBuffer(device_->inside_diffuse, CL_TRUE, 0, n * sizeof(Float4), c.inside_diffuse.data());
+  q.enqueueWriteBuffer(device_->inside_specular, CL_TRUE, 0, n * sizeof(Float4), c.inside_specular.data());
+  q.enqueueWriteBuffer(device_->inside_material, CL_TRUE, 0, n * sizeof(Float4), c.inside_material.data());
+}
+
 namespace {
 
 //! Channels per welded vertex, and the displacement applied along the

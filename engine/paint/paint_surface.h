@@ -107,6 +107,10 @@ public:
   void geometry_changed();
 
   PaintChannels read_channels();
+  //! Replaces every channel (e.g. from a saved project); each layer must
+  //! hold the painting level's texels.
+  //! \throw InputError when a layer has another size.
+  void write_channels(const PaintChannels& channels);
   PaintedSurface painted_surface();
   //! Level of detail: the surface at a coarser level (<= level(), reduced
   //! from the finest), with the finest level's limit normals and channels

@@ -1,33 +1,26 @@
-// meshpaint paint: a stroke script applied headless, the painted surface
-// written with its channels.
+// meshpaint paint: a stroke script applied headless to a mesh or a project,
+// the painted surface written with its channels, and the project saved.
 
 #include "commands.h"
 #include "table.h"
 
+#include "PaintingExport.h"
 #include "RasterIO.h"
 #include "SurfaceConversion.h"
 
 #include "core/errors.h"
 #include "core/format.h"
 #include "core/timer.h"
-#include "paint/model_export.h"
-#include "paint/paint_surface.h"
+#include "project/project_surface.h"
 
-#include <filesystem> // for std::filesystem
-#include <iostream>   // for std::cout, std::cerr
+#include <iostream> // for std::cout, std::cerr
 
 namespace meshpaint::cli {
-void paint_job(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage, const BaseMesh& mesh,
-               const StrokeScript& script, int level, int model_level, const std::string& dir, bool quiet, int lod)
+
+void paint_job(PaintSurface& surface, const std::string& name, const StrokeScript& script, int model_level,
+               const std::string& dir, bool quiet, int lod)
 {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec)
-    throw IOError("cannot create '" + dir + "': " + ec.message());
-  Timer total;
-  PaintSurface surface(runtime, mesh, level, storage);
   surface.undo_log().set_recording(false); // a script never undoes: no snapshots to pay for
-  const double setup_ms = total.ms();
   Table table({"stroke", "tool", "dabs", "on surface", "patches", "ms", "note"});
   Timer progress;
   for (std::size_t k = 0; k < script.strokes.size(); ++k) {
@@ -47,40 +40,48 @@ void paint_job(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage, co
       progress.restart();
     }
   }
-  const std::string out = dir + "/surface.vtp";
-  write_vtp(to_polydata(surface.painted_surface()), out);
-  ExportModel model;
-  TextureMaps maps;
-  build_export(surface, model_level, model, maps);
-  write_texture_maps(maps, dir);
-  write_obj_model(model, maps, dir);
-  if (lod > 0 && lod < level) {
+  std::cout << "painted    " << name << " at level " << surface.level() << ", " << script.strokes.size()
+            << " strokes\n";
+  if (!script.strokes.empty())
+    table.print(std::cout);
+  if (dir.empty())
+    return;
+  const PaintingExportReport written = export_painting(surface, model_level, dir);
+  std::cout << "wrote      " << written.surface_path << ", " << dir << "/model.obj (level " << model_level << ", "
+            << written.model_quads << " quads) with model.mtl and " << written.map_width << "x"
+            << written.map_height << " texture maps\n";
+  if (lod > 0 && lod < surface.level()) {
     const std::string lod_out = dir + "/surface_lod" + std::to_string(lod) + ".vtp";
     write_vtp(to_polydata(surface.painted_surface(lod)), lod_out);
-    std::cout << "wrote      " << lod_out << " (level " << lod << " with the normals of level " << level << ")\n";
+    std::cout << "wrote      " << lod_out << " (level " << lod << " with the normals of level " << surface.level()
+              << ")\n";
   }
-  std::cout << "painted    " << mesh.name << " at level " << level << ", " << script.strokes.size()
-            << " strokes (set-up " << format_fixed(setup_ms, 1) << " ms)\n";
-  table.print(std::cout);
-  std::cout << "wrote      " << out << ", " << dir << "/model.obj (level " << model_level << ", "
-            << model.mesh.quads.size() << " quads) with model.mtl and " << maps.width << "x" << maps.height
-            << " texture maps\n";
 }
 
 int paint_command(const Argv& argv)
 {
   Args args("paint", argv, {"--quiet"},
-            {"--strokes", "--level", "--model-level", "--lod", "-o", "--device", "--storage"});
-  args.expect_positionals(1, 1, "MESH --strokes S.json [--level L] [--model-level M] [--lod L] -o OUTDIR");
-  if (!args.has("--strokes"))
-    throw InputError("--strokes S.json is required");
+            {"--strokes", "--level", "--model-level", "--lod", "-o", "--save", "--labels", "--device", "--storage"});
+  args.expect_positionals(1, 1, "MESH|PROJECT --strokes S.json [--level L] [--model-level M] [--lod L] [-o OUTDIR] "
+                                "[--save P.meshpaint] [--labels labels.json]");
   const std::string dir = args.value("-o");
-  if (dir.empty())
-    throw InputError("-o OUTDIR is required");
+  const std::string save = args.value("--save");
+  if (dir.empty() && save.empty())
+    throw InputError("-o OUTDIR or --save P.meshpaint is required");
+  if (!save.empty() && !is_project_path(save))
+    throw InputError("--save needs a file name ending in .meshpaint, not '" + save + "'");
+  if (!args.has("--strokes") && save.empty())
+    throw InputError("--strokes S.json is required");
   // Everything is checked before anything is painted.
-  StrokeScript script = load_stroke_script(args.value("--strokes"));
-  load_stroke_rasters(script);
-  const int level = args.integer("--level", script.level > 0 ? script.level : 3, 1, kMaxLevel);
+  StrokeScript script;
+  if (args.has("--strokes")) {
+    script = load_stroke_script(args.value("--strokes"));
+    load_stroke_rasters(script);
+  }
+  const std::vector<LabelClass> new_labels =
+    args.has("--labels") ? load_labels(args.value("--labels")) : std::vector<LabelClass>();
+  const MeshOrProject input = open_mesh_or_project(args.positionals()[0]);
+  const int level = input_level(args, input, script.level > 0 ? script.level : 3);
   const int model_level = args.integer("--model-level", std::max(1, level - 2), 1, level);
   const int lod = args.integer("--lod", level, 1, level);
   for (std::size_t k = 0; k < script.strokes.size(); ++k)
@@ -88,10 +89,21 @@ int paint_command(const Argv& argv)
       throw InputError("stroke " + std::to_string(k) + ": \"edit_level\" " +
                        std::to_string(script.strokes[k].edit_level) + " is finer than the painting level " +
                        std::to_string(level));
-  const BaseMesh mesh = load_reported(args.positionals()[0]);
   auto runtime = open_device(args);
-  paint_job(runtime, args.has("--storage") ? parse_storage(args.value("--storage")) : default_storage(runtime->info()),
-            mesh, script, level, model_level, dir, args.flag("--quiet"), lod);
+  Timer setup;
+  const auto surface = open_paint_surface(runtime, chosen_storage(args, *runtime), input, level);
+  if (!args.flag("--quiet"))
+    std::cerr << "meshpaint paint: surface ready in " << format_fixed(setup.ms(), 1) << " ms\n";
+  paint_job(*surface, input.mesh().name, script, model_level, dir, args.flag("--quiet"), lod);
+  if (save.empty())
+    return 0;
+  Project project = input.project ? *input.project : Project();
+  if (args.has("--labels"))
+    project.labels = new_labels;
+  project.history = continued_history(project.history, surface->history(), level);
+  capture_surface(*surface, project);
+  save_project(project, save);
+  std::cout << "saved      " << save << " (level " << level << ", " << project.labels.size() << " labels)\n";
   return 0;
 }
 

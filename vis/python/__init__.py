@@ -38,6 +38,29 @@ class vtkPaintSurface(_wrapped.vtkPaintSurface):
         """Redoes the last undone stroke; raises Error when there is none."""
         self._check(super().Redo())
 
+    def SaveProject(self, path):
+        """Writes the painted surface and its history as a project (.meshpaint)."""
+        self._check(super().SaveProject(str(path)))
+
+    def LoadProject(self, path):
+        """Continues from a project: it replaces the input, the level and the history."""
+        self._check(super().LoadProject(str(path)))
+
+    def ExportModel(self, directory):
+        """Writes surface.vtp, model.obj/.mtl and the PNG maps, as `meshpaint paint -o` does."""
+        self._check(super().ExportModel(str(directory)))
+
+    def GetChannel(self, name):
+        """One channel at every output vertex as a VTK array (numpy: vtk_to_numpy)."""
+        array = super().GetChannel(name)
+        if array is None:
+            raise Error(self.GetLastError())
+        return array
+
+    def SetChannel(self, name, values):
+        """Writes one channel at every output vertex from a VTK array of that shape."""
+        self._check(super().SetChannel(name, values))
+
     def Update(self, *args):
         """Paints the queued strokes; raises Error if this update fails."""
         self.GlobalWarningDisplayOff()
