@@ -495,6 +495,7 @@ StrokeReport PaintSurface::apply(const Stroke& stroke)
       stroke_layers_.push_back(id + kInsideDiffuse - kDiffuse);
   StrokeReport report;
   stretch_ = 1.f;
+  stroke_encoded_ = false;
   try {
     report = apply_dabs(stroke);
   } catch (...) {
@@ -730,8 +731,12 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   if (coarse) {
     if (!multires_)
       multires_ = std::make_unique<Multires>(*atlas_);
-    if (multires_->level() != level)
+    // Encoded afresh by every coarse stroke, so that what a stroke does
+    // depends only on the surface it starts from, never on undo history:
+    // a recorded session replays bit for bit.
+    if (multires_->level() != level || !stroke_encoded_)
       multires_->encode(level);
+    stroke_encoded_ = true;
     changed = multires_->reach(patches);
   } else if (!stroke.target_colour && multires_) {
     multires_->invalidate();

@@ -191,6 +191,7 @@ private:
   int level_;
   std::unique_ptr<Multires> multires_; // details for edits at a coarser level, made on first use
   float stretch_ = 1.f;                // the running stroke's worst Multires::stretch
+  bool stroke_encoded_ = false;        // the running stroke has encoded its details
   std::vector<Stroke> history_, undone_;
   std::unique_ptr<Device> device_;
   BaseMaterial base_material_;
