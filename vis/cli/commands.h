@@ -9,6 +9,9 @@
 #include "mesh/base_mesh.h"
 #include "mesh/welded_surface.h"
 
+#include <vtkPolyData.h>     // for vtkPolyData
+#include <vtkSmartPointer.h> // for vtkSmartPointer
+
 #include <memory> // for std::shared_ptr
 #include <string> // for std::string
 #include <vector> // for std::vector
@@ -37,8 +40,10 @@ std::string strokes_dir();
 
 //! Paints `script` onto `mesh` and writes DIR/surface.vtp and the textured
 //! model (model.obj, model.mtl, PNG maps), printing a table of the strokes.
-void paint_job(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage, const BaseMesh& mesh,
-               const StrokeScript& script, int level, int model_level, const std::string& dir, bool quiet);
+//! Returns the painted surface as written to surface.vtp.
+vtkSmartPointer<vtkPolyData> paint_job(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage,
+                                       const BaseMesh& mesh, const StrokeScript& script, int level, int model_level,
+                                       const std::string& dir, bool quiet);
 
 //! \throw InputError unless the path ends in .obj, .ply or .vtp (any case).
 void check_surface_format(const std::string& path);

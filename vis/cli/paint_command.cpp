@@ -2,10 +2,12 @@
 // written with its channels.
 
 #include "commands.h"
+#include "picture_options.h"
 #include "table.h"
 
 #include "RasterIO.h"
 #include "SurfaceConversion.h"
+#include "SurfaceRendering.h"
 
 #include "core/errors.h"
 #include "core/format.h"
@@ -17,8 +19,9 @@
 #include <iostream>   // for std::cout, std::cerr
 
 namespace meshpaint::cli {
-void paint_job(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage, const BaseMesh& mesh,
-               const StrokeScript& script, int level, int model_level, const std::string& dir, bool quiet)
+vtkSmartPointer<vtkPolyData> paint_job(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage,
+                                       const BaseMesh& mesh, const StrokeScript& script, int level, int model_level,
+                                       const std::string& dir, bool quiet)
 {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
@@ -41,7 +44,8 @@ void paint_job(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage, co
     }
   }
   const std::string out = dir + "/surface.vtp";
-  write_vtp(to_polydata(surface.painted_surface()), out);
+  const vtkSmartPointer<vtkPolyData> painted = to_polydata(surface.painted_surface());
+  write_vtp(painted, out);
   ExportModel model;
   TextureMaps maps;
   build_export(surface, model_level, model, maps);
@@ -53,12 +57,16 @@ void paint_job(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage, co
   std::cout << "wrote      " << out << ", " << dir << "/model.obj (level " << model_level << ", "
             << model.mesh.quads.size() << " quads) with model.mtl and " << maps.width << "x" << maps.height
             << " texture maps\n";
+  return painted;
 }
 
 int paint_command(const Argv& argv)
 {
-  Args args("paint", argv, {"--quiet"}, {"--strokes", "--level", "--model-level", "-o", "--device", "--storage"});
-  args.expect_positionals(1, 1, "MESH --strokes S.json [--level L] [--model-level M] -o OUTDIR");
+  Args args("paint", argv, {"--quiet"},
+            {"--strokes", "--level", "--model-level", "-o", "--device", "--storage", "--screenshot", "--camera",
+             "--size"});
+  args.expect_positionals(1, 1, "MESH --strokes S.json [--level L] [--model-level M] -o OUTDIR "
+                                "[--screenshot OUT.png [--camera AZ,EL,ZOOM] [--size WxH]]");
   if (!args.has("--strokes"))
     throw InputError("--strokes S.json is required");
   const std::string dir = args.value("-o");
@@ -69,10 +77,21 @@ int paint_command(const Argv& argv)
   load_stroke_rasters(script);
   const int level = args.integer("--level", script.level > 0 ? script.level : 3, 1, kMaxLevel);
   const int model_level = args.integer("--model-level", std::max(1, level - 2), 1, level);
+  const PictureOptions picture = picture_options(args);
+  const std::string screenshot = args.value("--screenshot");
+  if (args.has("--screenshot") && lower_extension(screenshot) != ".png")
+    throw InputError("--screenshot must name a .png file, not '" + screenshot + "'");
+  if (!args.has("--screenshot") && (args.has("--camera") || args.has("--size")))
+    throw InputError("--camera and --size need --screenshot OUT.png");
   const BaseMesh mesh = load_reported(args.positionals()[0]);
   auto runtime = open_device(args);
-  paint_job(runtime, args.has("--storage") ? parse_storage(args.value("--storage")) : default_storage(runtime->info()),
-            mesh, script, level, model_level, dir, args.flag("--quiet"));
+  const vtkSmartPointer<vtkPolyData> painted =
+    paint_job(runtime, args.has("--storage") ? parse_storage(args.value("--storage")) : default_storage(runtime->info()),
+              mesh, script, level, model_level, dir, args.flag("--quiet"));
+  if (!screenshot.empty()) {
+    render_screenshot(painted, picture.camera, picture.width, picture.height, screenshot);
+    std::cout << "wrote      " << screenshot << " (" << picture.width << "x" << picture.height << ")\n";
+  }
   return 0;
 }
 
