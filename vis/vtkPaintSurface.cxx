@@ -1,5 +1,6 @@
 #include "vtkPaintSurface.h"
 
+#include "CallGuard.h"         // for meshpaint::guarded
 #include "RasterIO.h"          // for meshpaint::load_stroke_rasters
 #include "SurfaceConversion.h" // for meshpaint::to_base_mesh, to_polydata
 
@@ -37,26 +38,6 @@ void vtkPaintSurface::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Device: " << (this->Device.empty() ? "(default)" : this->Device) << "\n";
   os << indent << "StrokeCount: " << this->StrokeCount << "\n";
 }
-
-namespace {
-
-//! Runs `f`, keeping any exception's message in `error`; 1 on success.
-template <typename F>
-int guarded(std::string& error, F&& f)
-{
-  error.clear();
-  try {
-    f();
-    return 1;
-  } catch (const cl::Error& e) {
-    error = meshpaint::describe(e);
-  } catch (const std::exception& e) {
-    error = e.what();
-  }
-  return 0;
-}
-
-} // namespace
 
 // Each setter writes its stroke-script key; checking happens once, in
 // ApplyStroke(), by the same parser that reads scripts.
@@ -107,7 +88,7 @@ int vtkPaintSurface::ApplyStroke(vtkPoints* path)
 
 int vtkPaintSurface::ApplyStrokes(const char* json)
 {
-  const int ok = guarded(this->LastError, [&] {
+  const int ok = meshpaint::guarded(this->LastError, [&] {
     meshpaint::StrokeScript script = meshpaint::parse_stroke_script(json ? json : "");
     meshpaint::load_stroke_rasters(script);
     if (script.level > 0 && !this->Impl->surface && this->Impl->queued.empty())
@@ -127,7 +108,7 @@ int vtkPaintSurface::Step(bool back)
     return 0;
   }
   bool done = false;
-  const int ok = guarded(this->LastError, [&] {
+  const int ok = meshpaint::guarded(this->LastError, [&] {
     done = back ? this->Impl->surface->undo() : this->Impl->surface->redo();
   });
   if (ok && !done)
@@ -148,7 +129,7 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  const int ok = guarded(this->LastError, [&] {
+  const int ok = meshpaint::guarded(this->LastError, [&] {
     Internals& in = *this->Impl;
     // A new input or level starts a new surface; queued strokes go onto it.
     if (!in.surface || in.built_from != input->GetMTime() || in.built_level != this->Level) {

@@ -26,6 +26,7 @@ int bench_command(const Argv& argv);
 int demo_command(const Argv& argv);
 int devices_command(const Argv& argv);
 int paint_command(const Argv& argv);
+int view_command(const Argv& argv);
 
 //! The device named by --device (or MESHPAINT_DEVICE, or the default).
 std::shared_ptr<Runtime> open_device(const Args& args);

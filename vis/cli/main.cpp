@@ -26,16 +26,21 @@ commands:
   bench subdivide MESH [--level L] [--json] [--repeats N]
                                       kernels against OpenSubdiv's CpuEvaluator (level 3)
   paint MESH --strokes S.json [--level L] [--model-level M] [--quiet] -o OUTDIR
+        [--screenshot OUT.png [--camera AZ,EL,ZOOM] [--size WxH]]
                                       apply a stroke script (docs/strokes.md); writes
                                       OUTDIR/surface.vtp with the paint channels, and
-                                      model.obj + model.mtl + PNG texture maps
+                                      model.obj + model.mtl + PNG texture maps; with
+                                      --screenshot also a rendered picture
+  view MESH [--strokes S.json] [--level L] [-o DIR] [--size WxH]
+                                      the painting window (docs/window.md); saves the
+                                      recorded strokes and the surface into DIR
   bench paint [--json] [--steps N] [--tool sculpt|paint]
                                       brush step times as the paper's Table 1, and
                                       smoothing against VTK and OpenMesh
   devices                             the OpenCL devices (for --device / MESHPAINT_DEVICE)
   help                                this text
 
-options of demo, info, subdivide, paint and bench: --device SEL (gpu, cpu, P:D or part of a
+options of demo, info, subdivide, paint, view and bench: --device SEL (gpu, cpu, P:D or part of a
 name), --storage buffer|image
 )";
 
@@ -70,7 +75,8 @@ int main(int argc, char** argv)
   const Argv rest(argv + std::min(argc, 2), argv + argc);
   static const std::map<std::string, int (*)(const Argv&)> commands = {
     {"info", info_command},   {"subdivide", subdivide_command}, {"bench", bench_command},
-    {"demo", demo_command},   {"devices", devices_command}, {"paint", paint_command}};
+    {"demo", demo_command},   {"devices", devices_command}, {"paint", paint_command},
+    {"view", view_command}};
   try {
     if (command == "help" || command == "--help" || command == "-h") {
       std::cout << kUsage;

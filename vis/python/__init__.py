@@ -8,7 +8,7 @@ command line; everything else is the VTK class itself.
 import vtkmodules.vtkCommonExecutionModel  # noqa: F401  (the base classes' module)
 
 from . import meshpaintVis as _wrapped
-from .meshpaintVis import vtkCatmullClarkAtlasFilter, vtkSurfacePicker  # noqa: F401
+from .meshpaintVis import vtkCatmullClarkAtlasFilter, vtkPaintInteractorStyle, vtkPaintView, vtkSurfacePicker  # noqa: F401
 
 
 class Error(RuntimeError):

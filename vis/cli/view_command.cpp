@@ -1,0 +1,85 @@
+// meshpaint view: the interactive painting window.
+
+#include "commands.h"
+#include "picture_options.h"
+
+#include "RasterIO.h"
+#include "vtkPaintView.h"
+
+#include "core/errors.h"
+#include "core/format.h"
+
+#include <vtkNew.h> // for vtkNew
+
+#include <fstream>  // for std::ifstream
+#include <iostream> // for std::cout
+#include <sstream>  // for std::ostringstream
+
+namespace meshpaint::cli {
+namespace {
+
+//! The finest level up to 3 whose surface has at most about 1.5M quads, so
+//! that a software renderer still draws it interactively.
+int default_view_level(const BaseMesh& mesh)
+{
+  double quads = 0;
+  for (int size : mesh.face_sizes)
+    quads += size; // level 1: one quad per face corner
+  int level = 1;
+  while (level < 3 && quads * 4 <= 1.5e6) {
+    quads *= 4;
+    ++level;
+  }
+  return level;
+}
+
+std::string read_text(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw IOError("cannot open '" + path + "'");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+} // namespace
+
+int view_command(const Argv& argv)
+{
+  Args args("view", argv, {}, {"--strokes", "--level", "-o", "--size", "--device", "--storage"});
+  args.expect_positionals(1, 1, "MESH [--strokes S.json] [--level L] [-o DIR] [--size WxH]");
+  // Everything is checked before the window opens.
+  StrokeScript script;
+  std::string script_text;
+  if (args.has("--strokes")) {
+    script = load_stroke_script(args.value("--strokes"));
+    load_stroke_rasters(script);
+    script_text = read_text(args.value("--strokes"));
+  }
+  const PictureOptions picture = picture_options(args);
+  if (args.has("--storage"))
+    parse_storage(args.value("--storage"));
+  const BaseMesh mesh = load_reported(args.positionals()[0]);
+  const int level = args.integer("--level", script.level > 0 ? script.level : default_view_level(mesh), 1, kMaxLevel);
+
+  vtkNew<vtkPaintView> view;
+  view->SetLevel(level);
+  view->SetDevice(args.value("--device").c_str());
+  view->SetStorage(args.value("--storage").c_str());
+  view->SetSaveDirectory(args.value("-o", mesh.name + "-session").c_str());
+  view->SetSize(picture.width, picture.height);
+  open_device(args); // reports a bad --device like every command
+  if (!view->SetBaseMesh(mesh))
+    throw DeviceError(view->GetLastError());
+  if (!script_text.empty() && !view->ApplyStrokes(script_text.c_str()))
+    throw InputError(view->GetLastError());
+  if (!view->Initialize())
+    throw DeviceError(view->GetLastError());
+  std::cout << "view       " << mesh.name << " at level " << level << "; h in the window lists the keys; saves go to "
+            << view->GetSaveDirectory() << "/\n";
+  view->Start();
+  return 0;
+}
+
+} // namespace meshpaint::cli
