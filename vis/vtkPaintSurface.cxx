@@ -3,6 +3,7 @@
 #include "CallGuard.h"         // for meshpaint::guarded
 #include "RasterIO.h"          // for meshpaint::load_stroke_rasters
 #include "SurfaceConversion.h" // for meshpaint::to_base_mesh, to_polydata
+#include "vtkPaintView.h"      // for vtkPaintView
 
 #include "paint/paint_surface.h" // for meshpaint::PaintSurface
 
@@ -13,6 +14,7 @@
 #include <vtkObjectFactory.h>     // for vtkStandardNewMacro
 #include <vtkPoints.h>            // for vtkPoints
 #include <vtkPolyData.h>          // for vtkPolyData
+#include <vtkSmartPointer.h>      // for vtkSmartPointer
 
 #include <vector> // for std::vector
 
@@ -22,7 +24,8 @@ struct vtkPaintSurface::Internals
 {
   nlohmann::json brush = {{"tool", "paint"}}; // the setters' stroke, without points
   std::string brush_text;
-  std::unique_ptr<meshpaint::PaintSurface> surface;
+  std::shared_ptr<meshpaint::PaintSurface> surface; // shared with the painting window
+  vtkSmartPointer<vtkPaintView> view;
   vtkMTimeType built_from = 0; // input's modification time the surface was built from
   int built_level = 0;
   std::vector<meshpaint::Stroke> queued;
@@ -134,7 +137,7 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
     // A new input or level starts a new surface; queued strokes go onto it.
     if (!in.surface || in.built_from != input->GetMTime() || in.built_level != this->Level) {
       auto runtime = meshpaint::Runtime::open(this->Device);
-      in.surface = std::make_unique<meshpaint::PaintSurface>(runtime, meshpaint::to_base_mesh(input, "input"),
+      in.surface = std::make_shared<meshpaint::PaintSurface>(runtime, meshpaint::to_base_mesh(input, "input"),
                                                              this->Level, meshpaint::default_storage(runtime->info()));
       in.built_from = input->GetMTime();
       in.built_level = this->Level;
@@ -161,4 +164,35 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
     this->Impl->queued.clear();
   }
   return ok;
+}
+
+vtkPaintView* vtkPaintSurface::GetView()
+{
+  Internals& in = *this->Impl;
+  this->Update();
+  if (!in.surface)
+    return nullptr;
+  if (!in.view || !in.view->Shows(in.surface)) {
+    in.view = vtkSmartPointer<vtkPaintView>::New();
+    in.view->SetDevice(this->Device.c_str());
+    in.view->SetSurface(in.surface);
+  }
+  return in.view;
+}
+
+int vtkPaintSurface::View()
+{
+  vtkPaintView* view = this->GetView();
+  if (!view)
+    return 0;
+  view->Start();
+  this->ViewPainted();
+  return 1;
+}
+
+void vtkPaintSurface::ViewPainted()
+{
+  if (this->Impl->surface)
+    this->StrokeCount = int(this->Impl->surface->history().size());
+  this->Modified();
 }

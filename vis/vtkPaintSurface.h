@@ -19,6 +19,7 @@
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
+class vtkPaintView;
 class vtkPoints;
 
 class MESHPAINTVIS_EXPORT vtkPaintSurface : public vtkPolyDataAlgorithm
@@ -78,6 +79,18 @@ public:
   /// or the surface is not painted yet.
   int Undo();
   int Redo();
+
+  //@{
+  /// The painting window on this surface (docs/window.md): GetView()
+  /// updates, then returns the window (made once, kept by this filter; not
+  /// opened) whose strokes go onto this filter's surface, with undo, redo
+  /// and recording shared. View() opens it and returns when it is closed.
+  /// After painting through GetView(), call ViewPainted() so the output
+  /// and StrokeCount follow. 0 / nullptr when the update fails.
+  vtkPaintView* GetView();
+  int View();
+  void ViewPainted();
+  //@}
 
   /// Strokes applied so far (queued ones not included).
   vtkGetMacro(StrokeCount, int);

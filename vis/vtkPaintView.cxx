@@ -29,6 +29,7 @@
 #include <vtkTextActor.h>               // for vtkTextActor
 #include <vtkTextProperty.h>            // for vtkTextProperty
 
+#include <array>      // for std::array
 #include <cmath>      // for std::sqrt
 #include <filesystem> // for std::filesystem
 #include <fstream>    // for std::ofstream
@@ -37,7 +38,7 @@ vtkStandardNewMacro(vtkPaintView);
 
 struct vtkPaintView::Internals
 {
-  std::unique_ptr<meshpaint::PaintSurface> surface;
+  std::shared_ptr<meshpaint::PaintSurface> surface;
   std::unique_ptr<meshpaint::BrushSettings> brush;
   vtkSmartPointer<vtkPolyData> shown; // what the actor draws
   vtkNew<vtkRenderer> renderer;
@@ -51,9 +52,9 @@ struct vtkPaintView::Internals
   vtkNew<vtkTextActor> status;
   vtkNew<vtkTextActor> help;
   bool initialized = false;
-  // The item buffer holds for one camera and one window size.
-  vtkMTimeType captured_camera = 0;
-  int captured_size[2] = {0, 0};
+  // The item buffer holds for one view: camera pose and window size (the
+  // camera's modification time also moves with every clipping-range reset).
+  std::array<double, 13> captured_view{};
   // The running stroke: its path, and the pieces painted for the eye.
   bool painting = false;
   bool ended = false; // reached a silhouette or left the surface
@@ -102,23 +103,35 @@ int vtkPaintView::SetInputData(vtkPolyData* polygons)
 
 int vtkPaintView::SetBaseMesh(const meshpaint::BaseMesh& mesh)
 {
-  Internals& in = *this->Impl;
   return meshpaint::guarded(this->LastError, [&] {
     auto runtime = meshpaint::Runtime::open(this->Device);
     const meshpaint::AtlasStorage storage = this->Storage.empty() ? meshpaint::default_storage(runtime->info())
                                                                   : meshpaint::parse_storage(this->Storage);
-    in.surface = std::make_unique<meshpaint::PaintSurface>(runtime, mesh, this->Level, storage);
-    in.shown = meshpaint::to_polydata(in.surface->painted_surface());
-    double b[6];
-    in.shown->GetBounds(b);
-    const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
-                                      (b[5] - b[4]) * (b[5] - b[4]));
-    in.brush = std::make_unique<meshpaint::BrushSettings>(diagonal);
-    if (in.initialized) {
-      meshpaint::show_materials(in.actor, in.shown);
-      in.picker->Release();
-    }
+    this->SetSurface(std::make_shared<meshpaint::PaintSurface>(runtime, mesh, this->Level, storage));
   });
+}
+
+void vtkPaintView::SetSurface(std::shared_ptr<meshpaint::PaintSurface> surface)
+{
+  Internals& in = *this->Impl;
+  in.surface = std::move(surface);
+  this->Level = in.surface->level();
+  in.shown = meshpaint::to_polydata(in.surface->painted_surface());
+  double b[6];
+  in.shown->GetBounds(b);
+  const double diagonal =
+    std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+  in.brush = std::make_unique<meshpaint::BrushSettings>(diagonal);
+  if (in.initialized) {
+    meshpaint::show_materials(in.actor, in.shown);
+    in.picker->Release();
+  }
+  this->Modified();
+}
+
+bool vtkPaintView::Shows(const std::shared_ptr<meshpaint::PaintSurface>& surface) const
+{
+  return this->Impl->surface == surface;
 }
 
 int vtkPaintView::ApplyStrokes(const char* json)
@@ -221,14 +234,19 @@ bool vtkPaintView::PickFacing(int x, int y, double point[3], double normal[3])
   Internals& in = *this->Impl;
   if (!in.initialized)
     return false;
-  const vtkMTimeType camera = in.renderer->GetActiveCamera()->GetMTime();
+  vtkCamera* camera = in.renderer->GetActiveCamera();
   const int* size = in.window->GetSize();
-  if (!in.picker->IsCaptured() || camera != in.captured_camera || size[0] != in.captured_size[0] ||
-      size[1] != in.captured_size[1]) {
+  std::array<double, 13> view;
+  camera->GetPosition(&view[0]);
+  camera->GetFocalPoint(&view[3]);
+  camera->GetViewUp(&view[6]);
+  view[9] = camera->GetViewAngle();
+  view[10] = camera->GetParallelProjection() ? camera->GetParallelScale() : 0.0;
+  view[11] = size[0];
+  view[12] = size[1];
+  if (!in.picker->IsCaptured() || view != in.captured_view) {
     in.picker->Capture();
-    in.captured_camera = camera;
-    in.captured_size[0] = size[0];
-    in.captured_size[1] = size[1];
+    in.captured_view = view;
   }
   if (!in.picker->Pick(x, y) || in.picker->GetFacing() < this->SilhouetteCosine)
     return false;
@@ -269,8 +287,8 @@ int vtkPaintView::ContinueStroke(int x, int y)
   if (d < 0.5 * in.brush->spacing() * in.brush->radius())
     return 1;
   in.path.push_back(q);
-  this->PaintPiece(false);
-  this->MoveCursor(x, y);
+  this->PlaceCursor(x, y);
+  this->PaintPiece(false); // renders
   return 1;
 }
 
@@ -305,10 +323,16 @@ bool vtkPaintView::IsPainting() const { return this->Impl->painting; }
 
 void vtkPaintView::MoveCursor(int x, int y)
 {
+  const bool was = this->Impl->cursor->GetVisibility() != 0;
+  if (this->PlaceCursor(x, y) || was)
+    this->Render();
+}
+
+bool vtkPaintView::PlaceCursor(int x, int y)
+{
   Internals& in = *this->Impl;
   double p[3], n[3];
   const bool on = this->PickFacing(x, y, p, n);
-  const bool was = in.cursor->GetVisibility() != 0;
   if (on) {
     const double lift = 0.02 * in.brush->radius(); // above the surface, so it is not hidden in it
     in.cursor_shape->SetCenter(p[0] + lift * n[0], p[1] + lift * n[1], p[2] + lift * n[2]);
@@ -316,8 +340,7 @@ void vtkPaintView::MoveCursor(int x, int y)
     in.cursor_shape->SetRadius(in.brush->radius());
   }
   in.cursor->SetVisibility(on);
-  if (on || was)
-    this->Render();
+  return on;
 }
 
 void vtkPaintView::Refresh(bool geometry)

@@ -34,6 +34,7 @@ class vtkSurfacePicker;
 
 namespace meshpaint {
 struct BaseMesh;
+class PaintSurface;
 }
 
 class MESHPAINTVIS_EXPORT vtkPaintView : public vtkObject
@@ -78,6 +79,11 @@ public:
 #ifndef __VTK_WRAP__
   /// The same from an engine mesh (the command line loads and reports it).
   int SetBaseMesh(const meshpaint::BaseMesh& mesh);
+  /// Paints on a surface someone else holds too (vtkPaintSurface::GetView());
+  /// Level becomes the surface's.
+  void SetSurface(std::shared_ptr<meshpaint::PaintSurface> surface);
+  /// True when this view paints on `surface`.
+  bool Shows(const std::shared_ptr<meshpaint::PaintSurface>& surface) const;
 #endif
 
   /// Applies a stroke script's strokes (recorded like any other stroke).
@@ -164,6 +170,8 @@ private:
   int Step(bool back); // Undo (back) or Redo
   //! Result of a look-up at a pixel: on a surface facing the viewer?
   bool PickFacing(int x, int y, double point[3], double normal[3]);
+  //! Puts the cursor at the surface under (x, y), or hides it; true when shown.
+  bool PlaceCursor(int x, int y);
   //! Paints a piece of the running stroke at once, for the eye.
   void PaintPiece(bool first);
   //! Rebuilds what is drawn from the engine; `geometry`: positions changed.

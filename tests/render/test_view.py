@@ -143,3 +143,28 @@ def test_keys_change_the_brush_and_the_help_overlay(tmp_path):
     # the export key writes the textured model
     key(view, "e", ctrl=True)
     assert (tmp_path / "session" / "model.obj").exists()
+
+
+def test_window_of_a_paint_surface_shares_its_strokes(tmp_path):
+    reader = vtk.vtkOBJReader()
+    reader.SetFileName(CUBE)
+    surface = meshpaint.vtkPaintSurface()
+    surface.SetInputConnection(reader.GetOutputPort())
+    surface.SetLevel(4)
+    surface.Update()
+    before = vtk_to_numpy(surface.GetOutput().GetPointData().GetArray("diffuse")).copy()
+    view = surface.GetView()
+    assert view is surface.GetView() and view.GetLevel() == 4
+    view.SetSize(*SIZE)
+    view.OffScreenOn()
+    assert view.Initialize(), view.GetLastError()
+    drag(view, line(180, 150, 220, 150, 8))
+    surface.ViewPainted()
+    surface.Update()
+    assert surface.GetStrokeCount() == 1
+    after = vtk_to_numpy(surface.GetOutput().GetPointData().GetArray("diffuse"))
+    assert (after != before).any()
+    # the window's stroke is the filter's: its undo takes it back
+    surface.Undo()
+    surface.Update()
+    assert (vtk_to_numpy(surface.GetOutput().GetPointData().GetArray("diffuse")) == before).all()
