@@ -15,6 +15,7 @@
 
 #include <vtkActor.h>                   // for vtkActor
 #include <vtkCamera.h>                  // for vtkCamera
+#include <vtkCommand.h>                 // for vtkCommand
 #include <vtkMapper.h>                  // for vtkMapper
 #include <vtkNew.h>                     // for vtkNew
 #include <vtkObjectFactory.h>           // for vtkStandardNewMacro
@@ -40,7 +41,12 @@ struct vtkPaintView::Internals
 {
   std::shared_ptr<meshpaint::PaintSurface> surface;
   std::unique_ptr<meshpaint::BrushSettings> brush;
-  vtkSmartPointer<vtkPolyData> shown; // what the actor draws
+  // The painted surface at the painting level and at the level-of-detail
+  // level, each rebuilt when next shown after a change; `shown` is drawn.
+  vtkSmartPointer<vtkPolyData> full, coarse, shown;
+  bool full_stale = true, coarse_stale = true;
+  bool moving = false; // the camera turns or a stroke is drawn
+  int shown_level = 0;
   vtkNew<vtkRenderer> renderer;
   vtkNew<vtkRenderWindow> window;
   vtkNew<vtkRenderWindowInteractor> interactor;
@@ -116,7 +122,10 @@ void vtkPaintView::SetSurface(std::shared_ptr<meshpaint::PaintSurface> surface)
   Internals& in = *this->Impl;
   in.surface = std::move(surface);
   this->Level = in.surface->level();
-  in.shown = meshpaint::to_polydata(in.surface->painted_surface());
+  in.full_stale = in.coarse_stale = true;
+  in.moving = false;
+  in.shown = this->Surface(this->Level);
+  in.shown_level = this->Level;
   double b[6];
   in.shown->GetBounds(b);
   const double diagonal =
@@ -202,6 +211,8 @@ int vtkPaintView::Initialize()
   in.interactor->SetRenderWindow(in.window);
   in.style->SetView(this);
   in.interactor->SetInteractorStyle(in.style);
+  in.style->AddObserver(vtkCommand::StartInteractionEvent, this, &vtkPaintView::OnCameraInteraction);
+  in.style->AddObserver(vtkCommand::EndInteractionEvent, this, &vtkPaintView::OnCameraInteraction);
   in.picker->SetRenderer(in.renderer);
   in.picker->SetActor(in.actor);
   meshpaint::set_camera(in.renderer, meshpaint::CameraView());
@@ -265,6 +276,7 @@ int vtkPaintView::BeginStroke(int x, int y)
   in.ended = false;
   in.path = {meshpaint::Vec3{float(p[0]), float(p[1]), float(p[2])}};
   in.pieces = 0;
+  in.moving = true;
   this->PaintPiece(true);
   return 1;
 }
@@ -308,6 +320,7 @@ int vtkPaintView::EndStroke()
   if (!in.painting)
     return 0;
   in.painting = false;
+  in.moving = false;
   // The pieces were for the eye: the stroke is the whole path, applied once.
   const int ok = meshpaint::guarded(this->LastError, [&] {
     for (; in.pieces > 0; --in.pieces)
@@ -343,18 +356,64 @@ bool vtkPaintView::PlaceCursor(int x, int y)
   return on;
 }
 
+int vtkPaintView::GetShownLevel() { return this->Impl->shown_level; }
+
+int vtkPaintView::CoarseLevel() const
+{
+  if (this->LodLevel == 0)
+    return this->Level;
+  return this->LodLevel < 0 ? std::max(1, this->Level - 1) : std::min(this->LodLevel, this->Level);
+}
+
+vtkPolyData* vtkPaintView::Surface(int level)
+{
+  Internals& in = *this->Impl;
+  const bool full = level == this->Level;
+  vtkSmartPointer<vtkPolyData>& poly = full ? in.full : in.coarse;
+  bool& stale = full ? in.full_stale : in.coarse_stale;
+  if (stale || !poly) {
+    poly = meshpaint::to_polydata(full ? in.surface->painted_surface() : in.surface->painted_surface(level));
+    stale = false;
+  }
+  return poly;
+}
+
+void vtkPaintView::Show()
+{
+  Internals& in = *this->Impl;
+  const int level = in.moving ? this->CoarseLevel() : this->Level;
+  vtkPolyData* poly = nullptr;
+  if (!meshpaint::guarded(this->LastError, [&] { poly = this->Surface(level); }))
+    return;
+  if (poly != in.shown.GetPointer() && in.initialized)
+    in.actor->GetMapper()->SetInputDataObject(poly);
+  in.shown = poly;
+  in.shown_level = level;
+}
+
 void vtkPaintView::Refresh(bool geometry)
 {
   Internals& in = *this->Impl;
-  if (!meshpaint::guarded(this->LastError, [&] { in.shown = meshpaint::to_polydata(in.surface->painted_surface()); }))
+  if (!in.surface)
     return;
-  if (!in.initialized)
-    return;
-  in.actor->GetMapper()->SetInputDataObject(in.shown);
-  if (geometry)
-    in.picker->Release(); // positions may have moved: capture again at the next pick
+  in.full_stale = in.coarse_stale = true;
+  // Within a stroke the buffers stay: the picker keeps the surface they saw.
+  if (geometry && !in.painting)
+    in.picker->Release();
+  this->Show();
   this->UpdateText();
   this->Render();
+}
+
+void vtkPaintView::OnCameraInteraction(vtkObject*, unsigned long event, void*)
+{
+  Internals& in = *this->Impl;
+  if (in.painting)
+    return;
+  in.moving = event == vtkCommand::StartInteractionEvent;
+  this->Show();
+  if (!in.moving)
+    this->Render(); // the full level, now that the view rests
 }
 
 int vtkPaintView::HandleKey(const char* keysym, bool control, bool shift)
@@ -443,7 +502,7 @@ int vtkPaintView::Save()
       if (!out.flush())
         throw meshpaint::IOError("cannot write '" + dir + "/strokes.json'");
     });
-    meshpaint::write_vtp(in.shown, dir + "/surface.vtp");
+    meshpaint::write_vtp(this->Surface(this->Level), dir + "/surface.vtp");
   });
   this->Message = ok ? "saved " + dir + "/strokes.json and surface.vtp" : this->LastError;
   this->UpdateText();
@@ -484,7 +543,8 @@ void vtkPaintView::UpdateText()
     return;
   const int* size = in.window->GetSize();
   in.help->SetPosition(10, size[1] - 10);
-  std::string text = in.brush->describe() + "\nlevel " + std::to_string(this->Level) + "   strokes " +
+  std::string text = in.brush->describe() + "\nlevel " + std::to_string(this->Level) + " (level of detail " +
+                     std::to_string(this->CoarseLevel()) + ")   strokes " +
                      std::to_string(in.surface ? in.surface->history().size() : 0) + "   h: help";
   if (!this->Message.empty())
     text += "   | " + this->Message;

@@ -66,6 +66,18 @@ public:
   vtkBooleanMacro(OffScreen, bool);
   //@}
 
+  //@{
+  /// Level of detail: while the camera moves or a stroke is drawn, the
+  /// surface is drawn at this coarser level (positions of that level,
+  /// normals and channels of the painting level); the painting level when
+  /// the view rests. -1 (default): Level - 1 (at least 1); 0: off;
+  /// larger than Level: Level.
+  vtkSetClampMacro(LodLevel, int, -1, 12);
+  vtkGetMacro(LodLevel, int);
+  /// The level drawn now.
+  int GetShownLevel();
+  //@}
+
   /// The folder Save() and Export() write to (default "meshpaint-session").
   vtkSetStdStringFromCharMacro(SaveDirectory);
   vtkGetCharFromStdStringMacro(SaveDirectory);
@@ -154,6 +166,7 @@ protected:
   ~vtkPaintView() override;
 
   int Level = 3;
+  int LodLevel = -1;
   std::string Device;
   std::string Storage;
   int Size[2] = {1024, 768};
@@ -176,6 +189,14 @@ private:
   void PaintPiece(bool first);
   //! Rebuilds what is drawn from the engine; `geometry`: positions changed.
   void Refresh(bool geometry);
+  //! The level drawn while moving.
+  int CoarseLevel() const;
+  //! The painted surface at `level` (Level or CoarseLevel()), rebuilt if stale.
+  vtkPolyData* Surface(int level);
+  //! Hands the actor the level that fits the moment.
+  void Show();
+  //! Start and end of a camera interaction: coarse while it lasts.
+  void OnCameraInteraction(vtkObject*, unsigned long event, void*);
   void UpdateText();
 
   struct Internals;

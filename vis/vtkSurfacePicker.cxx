@@ -27,6 +27,9 @@ struct vtkSurfacePicker::Internals
   vtkSmartPointer<vtkActor> actor;
   vtkNew<vtkHardwareSelector> selector;
   bool captured = false;
+  // The surface as it was drawn into the buffers: cell ids refer to it even
+  // if the actor shows another one since (a coarser level while painting).
+  vtkSmartPointer<vtkPolyData> drawn;
   int size[2] = {0, 0};
 };
 
@@ -77,6 +80,7 @@ int vtkSurfacePicker::Capture()
     return 0;
   in.size[0] = size[0];
   in.size[1] = size[1];
+  in.drawn = vtkPolyData::SafeDownCast(in.actor && in.actor->GetMapper() ? in.actor->GetMapper()->GetInput() : nullptr);
   in.selector->SetRenderer(in.renderer);
   in.selector->SetArea(0, 0, unsigned(size[0] - 1), unsigned(size[1] - 1));
   in.captured = in.selector->CaptureBuffers();
@@ -88,6 +92,7 @@ void vtkSurfacePicker::Release()
   if (this->Impl->captured)
     this->Impl->selector->ClearBuffers();
   this->Impl->captured = false;
+  this->Impl->drawn = nullptr;
 }
 
 int vtkSurfacePicker::Pick(int x, int y)
@@ -102,7 +107,7 @@ int vtkSurfacePicker::Pick(int x, int y)
   const vtkHardwareSelector::PixelInformation info = in.selector->GetPixelInformation(pixel, 0, found);
   if (!info.Valid || !in.actor || info.Prop != in.actor.GetPointer() || info.AttributeID < 0)
     return 0;
-  auto* poly = vtkPolyData::SafeDownCast(in.actor->GetMapper() ? in.actor->GetMapper()->GetInput() : nullptr);
+  vtkPolyData* poly = in.drawn;
   if (!poly || info.AttributeID >= poly->GetNumberOfCells())
     return 0;
 

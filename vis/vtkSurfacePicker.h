@@ -8,6 +8,9 @@
  * so brush samples cost nothing like a render. Capture again whenever the
  * camera or the geometry changes.
  *
+ * Picks refer to the surface the actor drew when the buffers were captured,
+ * even if the actor has shown another since.
+ *
  * A pick reports the world point, the interpolated normal (the point array
  * Normals, else the cell's), the cell, and how squarely the surface faces
  * the viewer, so strokes can end at silhouettes.
