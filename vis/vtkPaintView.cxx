@@ -356,6 +356,12 @@ bool vtkPaintView::PlaceCursor(int x, int y)
   return on;
 }
 
+vtkIdType vtkPaintView::GetFaceCount()
+{
+  vtkPolyData* full = this->Impl->surface ? this->Surface(this->Level) : nullptr;
+  return full ? full->GetNumberOfCells() : 0;
+}
+
 int vtkPaintView::GetShownLevel() { return this->Impl->shown_level; }
 
 int vtkPaintView::CoarseLevel() const
@@ -405,15 +411,20 @@ void vtkPaintView::Refresh(bool geometry)
   this->Render();
 }
 
-void vtkPaintView::OnCameraInteraction(vtkObject*, unsigned long event, void*)
+void vtkPaintView::SetMoving(bool moving)
 {
   Internals& in = *this->Impl;
-  if (in.painting)
+  if (in.painting || !in.surface)
     return;
-  in.moving = event == vtkCommand::StartInteractionEvent;
+  in.moving = moving;
   this->Show();
   if (!in.moving)
     this->Render(); // the full level, now that the view rests
+}
+
+void vtkPaintView::OnCameraInteraction(vtkObject*, unsigned long event, void*)
+{
+  this->SetMoving(event == vtkCommand::StartInteractionEvent);
 }
 
 int vtkPaintView::HandleKey(const char* keysym, bool control, bool shift)

@@ -74,8 +74,13 @@ public:
   /// larger than Level: Level.
   vtkSetClampMacro(LodLevel, int, -1, 12);
   vtkGetMacro(LodLevel, int);
+  /// Quads of the painted surface at the painting level.
+  vtkIdType GetFaceCount();
   /// The level drawn now.
   int GetShownLevel();
+  /// Draws as while the camera moves (true) or as at rest (false); the
+  /// interactor style does this itself during camera interaction.
+  void SetMoving(bool moving);
   //@}
 
   /// The folder Save() and Export() write to (default "meshpaint-session").

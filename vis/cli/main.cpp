@@ -37,6 +37,8 @@ commands:
   bench paint [--json] [--steps N] [--tool sculpt|paint]
                                       brush step times as the paper's Table 1, and
                                       smoothing against VTK and OpenMesh
+  bench view [--steps N]              the window's frame times while painting, with and
+                                      without level of detail, and pick latency (needs X)
   devices                             the OpenCL devices (for --device / MESHPAINT_DEVICE)
   help                                this text
 
