@@ -23,7 +23,8 @@ enum class Tool
   Sculpt,  //!< move along the normal at the brush centre
   Inflate, //!< move along each point's own normal
   Flatten, //!< move towards the plane through the centre
-  Smear    //!< drag the colours along the stroke: each dab lays down what the previous one picked up
+  Smear,   //!< drag the colours along the stroke: each dab lays down what the previous one picked up
+  Grab     //!< pull the surface around the first point along the path
 };
 
 //! Name of a tool as the stroke script writes it.
@@ -58,6 +59,11 @@ struct Stroke
   std::shared_ptr<const Raster> pattern_raster; //!< its samples (loaded by the caller)
   std::string stamp_file;                      //!< brush image laid in the tangent plane
   std::shared_ptr<const Raster> stamp;         //!< its samples (loaded by the caller)
+  int edit_level = -1;                  //!< geometry tools: the level edited, finer levels follow; -1: the finest
+
+  //! Same stroke as written in a script (loaded rasters are not compared).
+  bool operator==(const Stroke& o) const;
+  bool operator!=(const Stroke& o) const { return !(*this == o); }
 };
 
 //! A stroke script: an optional atlas level and the strokes in order.
@@ -77,6 +83,12 @@ StrokeScript parse_stroke_script(const std::string& json_text);
 //! names are taken from the script's folder.
 //! \throw IOError when the file cannot be read; InputError as above.
 StrokeScript load_stroke_script(const std::string& path);
+
+//! The script in the stroke-script format; parse_stroke_script() gives back
+//! equal strokes (numbers are written so that they read back exactly).
+std::string stroke_script_json(const StrokeScript& script);
+//! One stroke as a JSON object of the same format.
+std::string stroke_json(const Stroke& stroke);
 
 //! Most dabs one stroke may have; parse_stroke_script() refuses longer ones.
 constexpr std::size_t kMaxDabsPerStroke = 1000000;

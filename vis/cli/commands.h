@@ -44,7 +44,7 @@ std::string strokes_dir();
 //! Returns the painted surface as written to surface.vtp.
 vtkSmartPointer<vtkPolyData> paint_job(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage,
                                        const BaseMesh& mesh, const StrokeScript& script, int level, int model_level,
-                                       const std::string& dir, bool quiet);
+                                       const std::string& dir, bool quiet, int lod = -1);
 
 //! \throw InputError unless the path ends in .obj, .ply or .vtp (any case).
 void check_surface_format(const std::string& path);

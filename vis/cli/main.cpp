@@ -25,7 +25,7 @@ commands:
                                       positions and point array Normals
   bench subdivide MESH [--level L] [--json] [--repeats N]
                                       kernels against OpenSubdiv's CpuEvaluator (level 3)
-  paint MESH --strokes S.json [--level L] [--model-level M] [--quiet] -o OUTDIR
+  paint MESH --strokes S.json [--level L] [--model-level M] [--lod L] [--quiet] -o OUTDIR
         [--screenshot OUT.png [--camera AZ,EL,ZOOM] [--size WxH]]
                                       apply a stroke script (docs/strokes.md); writes
                                       OUTDIR/surface.vtp with the paint channels, and
