@@ -12,8 +12,8 @@
 namespace meshpaint {
 namespace {
 
-const std::array<const char*, 8> kTools = {"paint", "smooth", "blur", "sculpt", "inflate", "flatten", "smear",
-                                           "label"};
+const std::array<const char*, 9> kTools = {"paint", "smooth", "blur", "sculpt", "inflate", "flatten", "grab",
+                                           "smear", "label"};
 const std::array<const char*, 6> kChannels = {"diffuse", "specular", "roughness", "displacement", "mask", "material"};
 const std::array<const char*, 4> kFalloffs = {"constant", "linear", "smoothstep", "gaussian"};
 const std::array<const char*, 5> kOps = {"copy", "over", "max", "add", "subtract"};
@@ -32,9 +32,23 @@ int cycle(int v, const A& list, bool back)
 
 bool is_paint(const std::string& tool) { return tool == "paint"; }
 
+//! Tools that move the surface and so may work at a coarser level.
+bool moves(const std::string& tool)
+{
+  return tool == "smooth" || tool == "sculpt" || tool == "inflate" || tool == "flatten" || tool == "grab";
+}
+
 } // namespace
 
-BrushSettings::BrushSettings(double size) : size_(size > 0 ? size : 1.0), radius_(0.03 * size_) {}
+BrushSettings::BrushSettings(double size, int level)
+  : size_(size > 0 ? size : 1.0), radius_(0.03 * size_), level_(level), edit_level_(level)
+{
+}
+
+bool BrushSettings::coarse_edit() const
+{
+  return moves(kTools[std::size_t(tool_)]) && edit_level_ < level_;
+}
 
 bool BrushSettings::handle_key(const std::string& key, bool shift)
 {
@@ -60,6 +74,10 @@ bool BrushSettings::handle_key(const std::string& key, bool shift)
     mirror_ = mirror_ == 2 ? -1 : mirror_ + 1;
   else if (key == "i" || key == "I")
     inwards_ = !inwards_;
+  else if (key == "l" && !shift)
+    edit_level_ = std::max(1, edit_level_ - 1);
+  else if (key == "L" || (key == "l" && shift))
+    edit_level_ = std::min(level_, edit_level_ + 1);
   else
     return false;
   // Keep the strength on the grid of its steps, so what is shown is what is painted.
@@ -101,6 +119,10 @@ std::string BrushSettings::stroke_json(const std::vector<Vec3>& points) const
   } else if (tool == "flatten") {
     s["amount"] = 0.5;
   }
+  if (tool == "grab")
+    s.erase("mirror");
+  if (coarse_edit())
+    s["edit_level"] = edit_level_;
   return s.dump();
 }
 
@@ -122,6 +144,8 @@ std::string BrushSettings::describe() const
     out << "   label " << swatch_;
   else if (tool == "sculpt" || tool == "inflate")
     out << (inwards_ ? "   inwards" : "   outwards");
+  if (moves(tool))
+    out << "   edit level " << edit_level_ << (edit_level_ < level_ ? " (coarse)" : "");
   out << "\nradius " << format_fixed(radius_, 4) << "   strength " << format_fixed(strength_, 1) << "   falloff "
       << kFalloffs[std::size_t(falloff_)] << "   mirror " << (mirror_ < 0 ? std::string("off") : std::string(1, char('x' + mirror_)));
   return out.str();
@@ -129,7 +153,7 @@ std::string BrushSettings::describe() const
 
 std::string BrushSettings::key_help()
 {
-  return "t / T        next / previous tool (paint smooth blur sculpt inflate flatten smear label)\n"
+  return "t / T        next / previous tool (paint smooth blur sculpt inflate flatten grab smear label)\n"
          "c / C        next / previous channel (diffuse specular roughness displacement mask material)\n"
          "0 .. 9       swatch: colour, value, height or label id\n"
          "[ / ]        smaller / larger brush\n"
@@ -137,7 +161,8 @@ std::string BrushSettings::key_help()
          "f            falloff (constant linear smoothstep gaussian)\n"
          "o            op (copy over max add subtract)\n"
          "m            mirror (off x y z)\n"
-         "i            sculpt and inflate: outwards / inwards";
+         "i            sculpt and inflate: outwards / inwards\n"
+         "l / L        geometry tools: edit a coarser / finer level";
 }
 
 } // namespace meshpaint

@@ -16,8 +16,9 @@ namespace meshpaint {
 class MESHPAINTVIS_EXPORT BrushSettings
 {
 public:
-  //! `size`: the surface's bounding-box diagonal; radius and heights scale with it.
-  explicit BrushSettings(double size);
+  //! `size`: the surface's bounding-box diagonal; radius and heights scale
+  //! with it. `level`: the painting level, the finest edit level.
+  BrushSettings(double size, int level);
 
   //! Applies key `key` (a VTK key symbol such as "t", "bracketleft", "F1");
   //! true when the key is one of the brush's (see key_help()).
@@ -35,6 +36,8 @@ public:
   static std::string key_help();
 
   double radius() const { return radius_; }
+  //! True when strokes edit geometry at a level coarser than the painting level.
+  bool coarse_edit() const;
   double spacing() const { return 0.25; }
   void set_radius(double radius) { radius_ = radius; }
 
@@ -49,6 +52,8 @@ private:
   int op_ = 0;         // copy
   int mirror_ = -1;    // -1 none, 0..2 x, y, z
   bool inwards_ = false; // sculpt, inflate: push in instead of out
+  int level_;            // painting level
+  int edit_level_;       // level geometry tools edit, 1..level_
 };
 
 } // namespace meshpaint

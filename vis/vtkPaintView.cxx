@@ -1,6 +1,7 @@
 #include "vtkPaintView.h"
 
 #include "BrushSettings.h"           // for meshpaint::BrushSettings
+#include "LevelOfDetail.h"           // for meshpaint::coarser_quads
 #include "CallGuard.h"               // for meshpaint::guarded
 #include "RasterIO.h"                // for meshpaint::load_stroke_rasters
 #include "SurfaceConversion.h"       // for meshpaint::to_polydata, to_base_mesh, write_vtp, write_texture_maps
@@ -15,6 +16,8 @@
 
 #include <vtkActor.h>                   // for vtkActor
 #include <vtkCamera.h>                  // for vtkCamera
+#include <vtkCellArray.h>               // for vtkCellArray
+#include <vtkPointData.h>               // for vtkPointData
 #include <vtkCommand.h>                 // for vtkCommand
 #include <vtkMapper.h>                  // for vtkMapper
 #include <vtkNew.h>                     // for vtkNew
@@ -45,6 +48,8 @@ struct vtkPaintView::Internals
   // level, each rebuilt when next shown after a change; `shown` is drawn.
   vtkSmartPointer<vtkPolyData> full, coarse, shown;
   bool full_stale = true, coarse_stale = true;
+  vtkSmartPointer<vtkCellArray> coarse_cells; // the coarse quads, made once per level
+  int coarse_level = 0;
   bool moving = false; // the camera turns or a stroke is drawn
   int shown_level = 0;
   vtkNew<vtkRenderer> renderer;
@@ -130,7 +135,8 @@ void vtkPaintView::SetSurface(std::shared_ptr<meshpaint::PaintSurface> surface)
   in.shown->GetBounds(b);
   const double diagonal =
     std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
-  in.brush = std::make_unique<meshpaint::BrushSettings>(diagonal);
+  in.brush = std::make_unique<meshpaint::BrushSettings>(diagonal, this->Level);
+  in.coarse_cells = nullptr;
   if (in.initialized) {
     meshpaint::show_materials(in.actor, in.shown);
     in.picker->Release();
@@ -277,7 +283,15 @@ int vtkPaintView::BeginStroke(int x, int y)
   in.path = {meshpaint::Vec3{float(p[0]), float(p[1]), float(p[2])}};
   in.pieces = 0;
   in.moving = true;
-  this->PaintPiece(true);
+  // A coarse-level edit is applied on release only: undoing pieces would
+  // start its detail afresh, which a replay would not do.
+  if (in.brush->coarse_edit()) {
+    this->PlaceCursor(x, y);
+    this->Show();
+    this->Render();
+  } else {
+    this->PaintPiece(true);
+  }
   return 1;
 }
 
@@ -300,7 +314,10 @@ int vtkPaintView::ContinueStroke(int x, int y)
     return 1;
   in.path.push_back(q);
   this->PlaceCursor(x, y);
-  this->PaintPiece(false); // renders
+  if (in.brush->coarse_edit())
+    this->Render();
+  else
+    this->PaintPiece(false); // renders
   return 1;
 }
 
@@ -374,14 +391,28 @@ int vtkPaintView::CoarseLevel() const
 vtkPolyData* vtkPaintView::Surface(int level)
 {
   Internals& in = *this->Impl;
-  const bool full = level == this->Level;
-  vtkSmartPointer<vtkPolyData>& poly = full ? in.full : in.coarse;
-  bool& stale = full ? in.full_stale : in.coarse_stale;
-  if (stale || !poly) {
-    poly = meshpaint::to_polydata(full ? in.surface->painted_surface() : in.surface->painted_surface(level));
-    stale = false;
+  if (in.full_stale || !in.full) {
+    in.full = meshpaint::to_polydata(in.surface->painted_surface());
+    in.full_stale = false;
+    in.coarse_stale = true;
   }
-  return poly;
+  if (level == this->Level)
+    return in.full;
+  // A coarser tessellation of the same painted surface: no change to the
+  // atlas (a reduction there would start multiresolution edits afresh).
+  if (in.coarse_stale || !in.coarse || in.coarse_level != level) {
+    const int n = 1 << (this->Level - 1), stride = 1 << (this->Level - level);
+    if (!in.coarse_cells || in.coarse_level != level) {
+      in.coarse_cells = meshpaint::coarser_quads(in.full, n, stride)->GetPolys();
+      in.coarse_level = level;
+    }
+    in.coarse = vtkSmartPointer<vtkPolyData>::New();
+    in.coarse->SetPoints(in.full->GetPoints());
+    in.coarse->GetPointData()->ShallowCopy(in.full->GetPointData());
+    in.coarse->SetPolys(in.coarse_cells);
+    in.coarse_stale = false;
+  }
+  return in.coarse;
 }
 
 void vtkPaintView::Show()
