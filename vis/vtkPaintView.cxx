@@ -16,8 +16,6 @@
 
 #include <vtkActor.h>                   // for vtkActor
 #include <vtkCamera.h>                  // for vtkCamera
-#include <vtkCellArray.h>               // for vtkCellArray
-#include <vtkPointData.h>               // for vtkPointData
 #include <vtkCommand.h>                 // for vtkCommand
 #include <vtkMapper.h>                  // for vtkMapper
 #include <vtkNew.h>                     // for vtkNew
@@ -44,11 +42,11 @@ struct vtkPaintView::Internals
 {
   std::shared_ptr<meshpaint::PaintSurface> surface;
   std::unique_ptr<meshpaint::BrushSettings> brush;
-  // The painted surface at the painting level and at the level-of-detail
-  // level, each rebuilt when next shown after a change; `shown` is drawn.
+  // The painted surface at the painting level, brought up to date when next
+  // shown after a change, and its coarser tessellation for the level of
+  // detail (made once per level, sharing the arrays); `shown` is drawn.
   vtkSmartPointer<vtkPolyData> full, coarse, shown;
-  bool full_stale = true, coarse_stale = true;
-  vtkSmartPointer<vtkCellArray> coarse_cells; // the coarse quads, made once per level
+  bool full_stale = true;
   int coarse_level = 0;
   bool moving = false; // the camera turns or a stroke is drawn
   int shown_level = 0;
@@ -127,7 +125,7 @@ void vtkPaintView::SetSurface(std::shared_ptr<meshpaint::PaintSurface> surface)
   Internals& in = *this->Impl;
   in.surface = std::move(surface);
   this->Level = in.surface->level();
-  in.full_stale = in.coarse_stale = true;
+  in.full = in.coarse = nullptr;
   in.moving = false;
   in.shown = this->Surface(this->Level);
   in.shown_level = this->Level;
@@ -136,7 +134,6 @@ void vtkPaintView::SetSurface(std::shared_ptr<meshpaint::PaintSurface> surface)
   const double diagonal =
     std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
   in.brush = std::make_unique<meshpaint::BrushSettings>(diagonal, this->Level);
-  in.coarse_cells = nullptr;
   if (in.initialized) {
     meshpaint::show_materials(in.actor, in.shown);
     in.picker->Release();
@@ -391,26 +388,23 @@ int vtkPaintView::CoarseLevel() const
 vtkPolyData* vtkPaintView::Surface(int level)
 {
   Internals& in = *this->Impl;
-  if (in.full_stale || !in.full) {
+  if (!in.full) {
     in.full = meshpaint::to_polydata(in.surface->painted_surface());
-    in.full_stale = false;
-    in.coarse_stale = true;
+    in.coarse = nullptr;
+  } else if (in.full_stale) {
+    // Same topology: only the arrays that changed are written (and uploaded).
+    meshpaint::update_polydata(in.full, in.surface->painted_surface());
   }
+  in.full_stale = false;
   if (level == this->Level)
     return in.full;
-  // A coarser tessellation of the same painted surface: no change to the
-  // atlas (a reduction there would start multiresolution edits afresh).
-  if (in.coarse_stale || !in.coarse || in.coarse_level != level) {
+  // A coarser tessellation of the same painted surface, sharing its points
+  // and arrays; the atlas is not touched (a reduction there would start
+  // multiresolution edits afresh).
+  if (!in.coarse || in.coarse_level != level) {
     const int n = 1 << (this->Level - 1), stride = 1 << (this->Level - level);
-    if (!in.coarse_cells || in.coarse_level != level) {
-      in.coarse_cells = meshpaint::coarser_quads(in.full, n, stride)->GetPolys();
-      in.coarse_level = level;
-    }
-    in.coarse = vtkSmartPointer<vtkPolyData>::New();
-    in.coarse->SetPoints(in.full->GetPoints());
-    in.coarse->GetPointData()->ShallowCopy(in.full->GetPointData());
-    in.coarse->SetPolys(in.coarse_cells);
-    in.coarse_stale = false;
+    in.coarse = meshpaint::coarser_quads(in.full, n, stride);
+    in.coarse_level = level;
   }
   return in.coarse;
 }
@@ -433,7 +427,7 @@ void vtkPaintView::Refresh(bool geometry)
   Internals& in = *this->Impl;
   if (!in.surface)
     return;
-  in.full_stale = in.coarse_stale = true;
+  in.full_stale = true;
   // Within a stroke the buffers stay: the picker keeps the surface they saw.
   if (geometry && !in.painting)
     in.picker->Release();

@@ -125,10 +125,27 @@ def test_coarse_level_edits_replay_to_the_same_bits(tmp_path):
     key(view, "bracketright")
     drag(view, line(170, 140, 230, 160, 6))
     # level-of-detail drawing between the strokes leaves the atlas alone
+    drawn = lambda: view.GetPicker().GetActor().GetMapper().GetInput()
+    full = drawn()
     view.SetMoving(True)
     assert view.GetShownLevel() == 3
+    coarse = drawn()
+    # a quarter of the quads, over the very same points and arrays
+    assert coarse.GetNumberOfCells() * 4 == full.GetNumberOfCells() == view.GetFaceCount()
+    assert coarse.GetPoints() is full.GetPoints()
+    assert coarse.GetPointData().GetArray("diffuse") is full.GetPointData().GetArray("diffuse")
+    # the coarse corners are the texels of level 3: as many as its vertices
+    reader = vtk.vtkOBJReader()
+    reader.SetFileName(CUBE)
+    level3 = meshpaint.vtkCatmullClarkAtlasFilter()
+    level3.SetInputConnection(reader.GetOutputPort())
+    level3.SetLevel(3)
+    level3.Update()
+    used = set(vtk_to_numpy(coarse.GetPolys().GetConnectivityArray()).tolist())
+    assert len(used) == level3.GetOutput().GetNumberOfPoints()
+    assert coarse.GetNumberOfCells() == level3.GetOutput().GetNumberOfCells()
     view.SetMoving(False)
-    assert view.GetShownLevel() == 4
+    assert view.GetShownLevel() == 4 and drawn() is full
     drag(view, line(180, 170, 220, 130, 6))
     strokes = json.loads(view.GetRecording())["strokes"]
     assert [s.get("edit_level") for s in strokes] == [2, 2]
