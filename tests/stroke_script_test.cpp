@@ -43,7 +43,16 @@ const char* const kEveryKind = R"({"level": 3, "strokes": [
   {"tool": "inflate", "points": [[0, 1, 0]], "radius": 0.4, "amount": 0.02},
   {"tool": "flatten", "points": [[0, 1, 0]], "radius": 0.4, "amount": 0.3},
   {"tool": "smear", "points": [[0, 1, 0], [0, 0.8, 0.6]], "radius": 0.4, "strength": 0.6},
-  {"tool": "grab", "points": [[0, -1, 0], [0, -1.2, 0.1]], "radius": 0.4, "edit_level": 2}
+  {"tool": "grab", "points": [[0, -1, 0], [0, -1.2, 0.1]], "radius": 0.4, "edit_level": 2},
+  {"tool": "paint", "points": [[0, 0, 1], [0.2, 0, 0.95]], "radius": 0.3, "space": "screen", "backfaces": "paint",
+   "camera": {"position": [0, 0, 5], "focal_point": [0, 0, 0], "view_up": [0, 1, 0], "view_angle": 25},
+   "channels": {"diffuse": [0, 1, 0]}, "pattern": {"type": "turbulence", "coord": "screen", "scale": 2}},
+  {"tool": "paint", "points": [[1, 0, 0]], "radius": 0.3, "space": "tangent", "channels": {"roughness": 0.9}},
+  {"tool": "label", "points": [[0, 0, 1]], "radius": 0.4, "space": "screen", "channels": {"label": 9},
+   "camera": {"position": [0, 0, 5], "focal_point": [0, 0, 0], "view_up": [0, 1, 0]},
+   "spray": {"drops": 16, "size": 0.05, "seed": 7}},
+  {"tool": "paint", "points": [[1, 0, 0]], "radius": 0.05, "space": "parameter", "channels": {"label": 3}},
+  {"tool": "sculpt", "points": [[0, 0, -1]], "radius": 0.3, "space": "tangent", "amount": 0.02}
 ]})";
 
 void expect_round_trip(const StrokeScript& script)
@@ -78,6 +87,20 @@ TEST(StrokeScript, NumbersSurviveExactly)
   s.radius = 0.123456789f;
   s.amount = -2.5e-8f;
   expect_round_trip(script);
+}
+
+TEST(StrokeScript, ABrushKeepsOnlyTheKeysItsToolReads)
+{
+  const std::string brush = drop_meaningless_keys(
+    R"({"tool": "grab", "points": [[0, 0, 0]], "radius": 1, "amount": 0.1, "iterations": 3, "op": "over",
+        "channels": {"diffuse": [1, 0, 0]}, "edit_level": 2})");
+  const StrokeScript script = parse_stroke_script("{\"strokes\": [" + brush + "]}");
+  EXPECT_EQ(script.strokes[0].tool, Tool::Grab);
+  EXPECT_EQ(script.strokes[0].edit_level, 2);
+  // A bad value is not a key to drop: it is still reported.
+  const std::string bad = drop_meaningless_keys(R"({"tool": "sculpt", "points": [[0, 0, 0]], "radius": -1, "amount": 1})");
+  EXPECT_THROW(parse_stroke_script("{\"strokes\": [" + bad + "]}"), InputError);
+  EXPECT_EQ(drop_meaningless_keys("not json"), "not json");
 }
 
 TEST(StrokeScript, HistoryFollowsUndoAndRedo)

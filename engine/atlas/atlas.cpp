@@ -326,19 +326,30 @@ void Atlas::compute_limit()
   limit_current_ = true;
 }
 
-void Atlas::compute_limit_of(int level, const cl::Memory& pos, const cl::Memory& nrm)
+void Atlas::compute_limit_of(int level, const cl::Memory& pos, const cl::Memory& nrm, const PatchSet* set)
 {
   const LevelLayout l = layout(level);
   Kernels& k = *kernels_;
   cl::CommandQueue& q = runtime_->queue();
-  const int edges = int(topology_.edges.size()), rings = int(topology_.rings.size());
+  // Null lists: every patch, edge and ring.
+  const cl::Buffer patch_list = set ? device_ints(runtime_->context(), set->patches) : cl::Buffer(),
+                   edge_list = set ? device_ints(runtime_->context(), set->edges) : cl::Buffer(),
+                   ring_list = set ? device_ints(runtime_->context(), set->rings) : cl::Buffer();
+  const int edges = int(set ? set->edges.size() : topology_.edges.size()),
+            rings = int(set ? set->rings.size() : topology_.rings.size()),
+            patches = int(set ? set->patches.size() : std::size_t(topology_.patch_count));
   const cl::Memory& in = levels_[level - 1].mem();
-  const cl::Buffer all; // null: every patch, edge and ring
-  const auto tiles = range_tiles(l, l.patches);
-  launch(q, k.limit_interior, tiles.first, tiles.second, in, pos, nrm, grid(l), all, l.patches);
-  if (l.n > 1)
-    launch(q, k.limit_edges, range_edges(l.n - 1, edges), kLocalEdges, in, pos, nrm, k.edges, all, edges, grid(l));
-  launch(q, k.limit_corners, range1d(rings), kLocal1D, in, pos, nrm, k.rings, k.slots, all, rings, grid(l));
+  if (patches > 0) {
+    const auto tiles = range_tiles(l, patches);
+    launch(q, k.limit_interior, tiles.first, tiles.second, in, pos, nrm, grid(l), patch_list, patches);
+  }
+  if (l.n > 1 && edges > 0)
+    launch(q, k.limit_edges, range_edges(l.n - 1, edges), kLocalEdges, in, pos, nrm, k.edges, edge_list, edges,
+           grid(l));
+  if (rings > 0)
+    launch(q, k.limit_corners, range1d(rings), kLocal1D, in, pos, nrm, k.rings, k.slots, ring_list, rings, grid(l));
+  if (set)
+    q.finish(); // the lists live until here
 }
 
 PatchSet Atlas::patch_set(const std::vector<int>& patches, Reach reach) const
@@ -381,24 +392,7 @@ void Atlas::update_limit(const PatchSet& set)
     compute_limit(); // everything: no lists to build or upload
     return;
   }
-  const LevelLayout l = layout(max_level_);
-  Kernels& k = *kernels_;
-  cl::CommandQueue& q = runtime_->queue();
-  const cl::Memory &in = levels_[max_level_ - 1].mem(), &pos = limit_positions_->mem(),
-                   &nrm = limit_normals_->mem();
-  const cl::Buffer patches = device_ints(runtime_->context(), set.patches),
-                   edges = device_ints(runtime_->context(), set.edges), rings = device_ints(runtime_->context(), set.rings);
-  if (!set.patches.empty()) {
-    const auto tiles = range_tiles(l, int(set.patches.size()));
-    launch(q, k.limit_interior, tiles.first, tiles.second, in, pos, nrm, grid(l), patches, int(set.patches.size()));
-  }
-  if (l.n > 1 && !set.edges.empty())
-    launch(q, k.limit_edges, range_edges(l.n - 1, int(set.edges.size())), kLocalEdges, in, pos, nrm, k.edges, edges,
-           int(set.edges.size()), grid(l));
-  if (!set.rings.empty())
-    launch(q, k.limit_corners, range1d(int(set.rings.size())), kLocal1D, in, pos, nrm, k.rings, k.slots, rings,
-           int(set.rings.size()), grid(l));
-  q.finish(); // the lists live on this stack frame's buffers only until here
+  compute_limit_of(max_level_, limit_positions_->mem(), limit_normals_->mem(), &set);
 }
 
 const cl::Memory& Atlas::level_layer(int level)

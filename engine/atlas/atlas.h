@@ -116,8 +116,10 @@ public:
   //! Limit positions and normals of the surface at max_level.
   void compute_limit();
   //! The same for the control points of another level, into the given
-  //! layers of that level's layout (the atlas's own limit layers stay).
-  void compute_limit_of(int level, const cl::Memory& positions, const cl::Memory& normals);
+  //! layers of that level's layout (the atlas's own limit layers stay);
+  //! with a set, on its interiors, edges and rings only.
+  void compute_limit_of(int level, const cl::Memory& positions, const cl::Memory& normals,
+                        const PatchSet* set = nullptr);
   //! Waits for every queued kernel.
   void finish();
 

@@ -195,9 +195,10 @@ float Multires::stretch(const std::vector<int>& patches)
   return worst;
 }
 
-void Multires::compute_base_limit()
+void Multires::compute_base_limit(const std::vector<int>& patches)
 {
-  atlas_.compute_limit_of(level_, device_->positions, device_->normals);
+  const PatchSet set = atlas_.patch_set(patches, Reach::Any); // every texel of the tiles
+  atlas_.compute_limit_of(level_, device_->positions, device_->normals, &set);
 }
 
 } // namespace meshpaint

@@ -47,9 +47,10 @@ public:
   //! encode(), over `patches`: how far the edit level undersamples.
   float stretch(const std::vector<int>& patches);
 
-  //! The limit surface of the edit level's control points, which a brush at
-  //! that level weighs and moves them by: smooth, without the details.
-  void compute_base_limit();
+  //! The limit surface of the edit level's control points on the tiles of
+  //! `patches`, which a brush at that level weighs and moves them by:
+  //! smooth, without the details.
+  void compute_base_limit(const std::vector<int>& patches);
   const cl::Memory& base_positions() const;
   const cl::Memory& base_normals() const;
   //! Per-texel brush weights at the edit level.

@@ -5,6 +5,7 @@
 #include "cl/program.h"
 #include "core/errors.h"
 #include "core/timer.h"
+#include "paint/spray.h"
 
 #include <algorithm> // for std::sort, std::max
 #include <optional>  // for std::optional
@@ -46,6 +47,7 @@ struct PaintSurface::Device
 {
   LayerKernels positions, channels;
   cl::Kernel patch_bounds, brush_cull, paint_dab, dab_weights, move_points, dab_pickup;
+  cl::Kernel spray_depth, spray_texel, spray_points;
   cl::Buffer bounds, records, count, active, dab, weights;
   std::size_t record_capacity = 0, active_capacity = 0;
   cl::Buffer diffuse, specular, material, channel_work;
@@ -75,6 +77,9 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     d.dab_weights = cl::Kernel(d.positions.program, "dab_weights");
     d.move_points = cl::Kernel(d.positions.program, "move_points");
     d.dab_pickup = cl::Kernel(d.positions.program, "dab_pickup");
+    d.spray_depth = cl::Kernel(d.positions.program, "spray_depth");
+    d.spray_texel = cl::Kernel(d.positions.program, "spray_texel");
+    d.spray_points = cl::Kernel(d.positions.program, "spray_points");
     const std::size_t bytes = l.texels() * sizeof(Float4);
     d.channel_work = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
     d.weights = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, l.texels() * sizeof(float));
@@ -279,8 +284,11 @@ std::vector<CullRecord> PaintSurface::cull(const Vec3& centre, float radius)
   return out;
 }
 
-std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Vec3* centre_out, Vec3* normal_out)
+std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Vec3* centre_out, Vec3* normal_out,
+                                             float reach, CullRecord* closest)
 {
+  if (!(reach > 0.f))
+    reach = radius;
   // Snap: the closest texel within the radius is the brush centre. A point
   // on the surface needs only a small search; grow it up to the radius.
   const float start = std::min(radius, float(1e-3 * atlas_->base_mesh().diagonal()));
@@ -303,17 +311,19 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
     *centre_out = centre;
   if (normal_out)
     *normal_out = {best->closest_normal[0], best->closest_normal[1], best->closest_normal[2]};
+  if (closest)
+    *closest = *best;
 
   // The brush reaches the patches connected to the centre's patch through
   // sides that themselves come within the radius: never through the air.
   const int start_patch = best->patch;
-  const std::vector<CullRecord> reach = cull(centre, radius);
+  const std::vector<CullRecord> records = cull(centre, reach);
 
   // Flood from the centre's patch over the culled patches; `mark_` holds,
   // per patch, 2 * generation for "culled" and 2 * generation + 1 for
   // "reached", so nothing needs clearing between dabs.
   const std::uint32_t culled = 2 * ++generation_, reached = culled + 1;
-  for (const CullRecord& c : reach) {
+  for (const CullRecord& c : records) {
     mark_[std::size_t(c.patch)] = culled;
     record_slot_[std::size_t(c.patch)] = &c; // for the sides' distances
   }
@@ -332,16 +342,63 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
     ++count;
     const CullRecord& rec = *record_slot_[std::size_t(p)];
     for (int s = 0; s < 4; ++s)
-      if (rec.side_distance[s] <= radius && neighbours_[std::size_t(p)][s] >= 0)
+      if (rec.side_distance[s] <= reach && neighbours_[std::size_t(p)][s] >= 0)
         visit(neighbours_[std::size_t(p)][s]);
   }
   std::vector<int> active;
   active.reserve(count);
-  for (const CullRecord& c : reach)
+  for (const CullRecord& c : records)
     if (mark_[std::size_t(c.patch)] == reached)
       active.push_back(c.patch);
   std::sort(active.begin(), active.end());
   return active;
+}
+
+void PaintSurface::spray(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke,
+                         std::uint64_t index)
+{
+  // Droplets fall evenly on the screen, so the surface gets fewer per area
+  // where it is seen obliquely: by the cosine of the angle to the view.
+  Device& d = *device_;
+  Runtime& rt = atlas_->runtime();
+  const LevelLayout l = atlas_->layout(level_);
+  const int k = stroke.spray_drops;
+  std::vector<cl_float2> drops;
+  for (const auto& o : spray_offsets(stroke.spray_seed, index, k, dab.radius))
+    drops.push_back({{dab.screen_centre[0] + o[0] / dab.centre_depth, dab.screen_centre[1] + o[1] / dab.centre_depth}});
+  const cl::Buffer drop_buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(cl_float2) * drops.size(),
+                               drops.data());
+  cl::Buffer keys(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_uint) * drops.size()),
+    texels(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_int) * drops.size()),
+    points(rt.context(), CL_MEM_WRITE_ONLY, sizeof(cl_float4) * drops.size());
+  cl::CommandQueue& q = rt.queue();
+  q.enqueueFillBuffer(keys, cl_uint(0xffffffffu), 0, sizeof(cl_uint) * drops.size());
+  q.enqueueFillBuffer(texels, cl_int(std::numeric_limits<cl_int>::max()), 0, sizeof(cl_int) * drops.size());
+  q.enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
+  const cl::Buffer list = device_ints(rt.context(), patches);
+  const auto tiles = range_tiles(l, int(patches.size()));
+  const cl::Memory &pos = atlas_->limit_positions_layer(), &nrm = atlas_->limit_normals_layer();
+  launch(q, d.spray_depth, tiles.first, tiles.second, pos, nrm, grid(l), list, int(patches.size()), d.dab, d.bounds,
+         drop_buffer, k, keys);
+  launch(q, d.spray_texel, tiles.first, tiles.second, pos, nrm, grid(l), list, int(patches.size()), d.dab, d.bounds,
+         drop_buffer, k, keys, texels);
+  launch(q, d.spray_points, cl::NDRange(round_up(std::size_t(k), kGroup)), cl::NDRange(kGroup), pos, grid(l), texels, k,
+         points);
+  std::vector<Float4> landed(drops.size());
+  q.enqueueReadBuffer(points, CL_TRUE, 0, sizeof(cl_float4) * landed.size(), landed.data());
+  // Each droplet is a small object-space dab where it landed.
+  Stroke droplet = stroke;
+  droplet.space = SPACE_OBJECT;
+  droplet.has_camera = false;
+  BrushDab drop = dab;
+  drop.radius = stroke.spray_size;
+  for (const Float4& at : landed) {
+    if (at[3] == 0.f)
+      continue;
+    Vec3 normal;
+    const std::vector<int> hit = place(droplet, DabSample{{at[0], at[1], at[2]}, 1.f, {0.f, 0.f, 0.f}}, drop, normal);
+    paint(hit, drop);
+  }
 }
 
 void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
@@ -360,7 +417,8 @@ void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
   rt.queue().enqueueWriteBuffer(d.active, CL_TRUE, 0, sizeof(cl_int) * patches.size(), patches.data());
   rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
   const auto tiles = range_tiles(l, int(patches.size()));
-  launch(rt.queue(), d.paint_dab, tiles.first, tiles.second, atlas_->limit_positions_layer(), grid(l), d.active,
+  launch(rt.queue(), d.paint_dab, tiles.first, tiles.second, atlas_->limit_positions_layer(),
+         atlas_->limit_normals_layer(), grid(l), d.active,
          cl_int(patches.size()), d.dab, d.raster, d.stamp, d.diffuse, d.specular, d.material);
   rt.queue().finish();
 }
@@ -432,6 +490,7 @@ void PaintSurface::smear(const std::vector<int>& patches, BrushDab dab, std::opt
   cl::Buffer partial(rt.context(), CL_MEM_WRITE_ONLY, 3 * groups * sizeof(Float4));
   rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
   launch(rt.queue(), d.dab_pickup, cl::NDRange(groups * items), cl::NDRange(items), atlas_->limit_positions_layer(),
+         atlas_->limit_normals_layer(),
          grid(l), list, count, d.dab, d.stamp, d.diffuse, d.specular, partial, cl::Local(3 * items * sizeof(Float4)));
   std::vector<Float4> sums(3 * groups);
   rt.queue().enqueueReadBuffer(partial, CL_TRUE, 0, sums.size() * sizeof(Float4), sums.data());
@@ -516,6 +575,76 @@ void PaintSurface::stamp_axes(const Vec3& n, const Vec3& heading, BrushDab& dab)
   }
 }
 
+std::vector<int> PaintSurface::place(const Stroke& stroke, const DabSample& sample, BrushDab& dab, Vec3& normal)
+{
+  // A tangent or screen footprint runs further than the radius in space on
+  // surface turned from the brush: the search for it goes that far, at most.
+  const float reach = dab.radius * (stroke.space == SPACE_SCREEN ? 4.f : stroke.space == SPACE_OBJECT ? 1.f : 2.f);
+  Vec3 centre;
+  CullRecord closest{};
+  std::vector<int> patches = brush_patches(sample.centre, dab.radius, &centre, &normal, reach, &closest);
+  if (patches.empty())
+    return patches;
+  for (int k = 0; k < 3; ++k)
+    dab.centre[k] = centre[k];
+  if (!aim(stroke, normal, sample.heading, closest, dab))
+    return {};
+  if (stroke.space == SPACE_PARAMETER)
+    return {closest.patch};
+  return patches;
+}
+
+bool PaintSurface::aim(const Stroke& stroke, const Vec3& normal, const Vec3& heading, const CullRecord& closest,
+                       BrushDab& dab)
+{
+  dab.space = stroke.space;
+  dab.paint_backfaces = stroke.paint_backfaces ? 1 : 0;
+  for (int k = 0; k < 3; ++k)
+    dab.centre_normal[k] = normal[k];
+  stamp_axes(normal, heading, dab);
+  if (stroke.has_camera) {
+    const Camera& c = stroke.camera;
+    const auto sub = [](const Vec3& a, const Vec3& b) { return Vec3{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
+    const auto dot = [](const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+    const auto cross = [](const Vec3& a, const Vec3& b) {
+      return Vec3{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    };
+    const auto unit = [&](Vec3 a) {
+      const float l = std::sqrt(dot(a, a));
+      return Vec3{a[0] / l, a[1] / l, a[2] / l};
+    };
+    const Vec3 dir = unit(sub(c.focal_point, c.position)), right = unit(cross(dir, c.view_up)),
+               up = cross(right, dir);
+    const Vec3 centre{dab.centre[0], dab.centre[1], dab.centre[2]}, v = sub(centre, c.position);
+    const float z = dot(v, dir);
+    for (int k = 0; k < 3; ++k) {
+      dab.eye[k] = c.position[k];
+      dab.view_dir[k] = dir[k];
+      dab.view_right[k] = right[k];
+      dab.view_up[k] = up[k];
+    }
+    dab.focal = float(1.0 / std::tan(0.5 * double(c.view_angle) * M_PI / 180.0));
+    dab.centre_depth = z;
+    dab.screen_centre[0] = dot(v, right) / z;
+    dab.screen_centre[1] = dot(v, up) / z;
+    // Screen strokes end at silhouettes: where the surface under the brush
+    // turns away from the eye, or lies behind it.
+    if (stroke.space == SPACE_SCREEN && (!(z > 0.f) || dot(normal, v) >= 0.f))
+      return false;
+  }
+  if (stroke.space == SPACE_PARAMETER) {
+    const LevelLayout l = atlas_->layout(level_);
+    cl_float4 bound;
+    atlas_->runtime().queue().enqueueReadBuffer(device_->bounds, CL_TRUE, sizeof(cl_float4) * closest.patch,
+                                                sizeof bound, &bound);
+    dab.centre_patch = closest.patch;
+    dab.centre_texel[0] = float(closest.closest_texel % l.tile);
+    dab.centre_texel[1] = float(closest.closest_texel / l.tile);
+    dab.texel_size = float(std::sqrt(2.0) * bound.s[3] / l.n); // the tile's side over its texels
+  }
+  return true;
+}
+
 void PaintSurface::weigh(const cl::Buffer& list, int count, const BrushDab& dab, int level)
 {
   // At a coarser edit level, on the limit of that level's control points.
@@ -523,11 +652,17 @@ void PaintSurface::weigh(const cl::Buffer& list, int count, const BrushDab& dab,
   Runtime& rt = atlas_->runtime();
   const LevelLayout f = atlas_->layout(level_), l = atlas_->layout(level);
   const bool coarse = level < level_;
-  rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
+  const int stride = f.n / l.n;
+  BrushDab at_level = dab; // parameter space counts texels of the level
+  for (float& c : at_level.centre_texel)
+    c /= float(stride);
+  at_level.texel_size *= float(stride);
+  rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof at_level, &at_level);
   const auto tiles = range_tiles(l, count);
   launch(rt.queue(), d.dab_weights, tiles.first, tiles.second,
-         coarse ? multires_->base_positions() : atlas_->limit_positions_layer(), grid(l), list, count, d.dab, d.stamp,
-         d.material, grid(f), f.n / l.n, coarse ? multires_->base_weights() : d.weights);
+         coarse ? multires_->base_positions() : atlas_->limit_positions_layer(),
+         coarse ? multires_->base_normals() : atlas_->limit_normals_layer(), grid(l), list, count, d.dab, d.stamp,
+         d.material, grid(f), stride, coarse ? multires_->base_weights() : d.weights);
 }
 
 void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke,
@@ -558,7 +693,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   const auto tiles = range_tiles(l, count);
   if (reweigh) {
     if (coarse)
-      multires_->compute_base_limit();
+      multires_->compute_base_limit(patches);
     weigh(list, count, dab, level);
   }
   const cl::Buffer& weights = coarse ? multires_->base_weights() : d.weights;
@@ -714,18 +849,15 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
         ++report.dabs;
         if (!(dab.radius > 0.f))
           continue;
-        Vec3 centre, normal;
-        const std::vector<int> patches = brush_patches(dabs[side].centre, dab.radius, &centre, &normal);
+        Vec3 normal;
+        const std::vector<int> patches = place(stroke, dabs[side], dab, normal);
         if (patches.empty())
           continue;
         on_surface = true;
-        dab.centre[0] = centre[0];
-        dab.centre[1] = centre[1];
-        dab.centre[2] = centre[2];
-        if (dab.stamp_size[0] > 0)
-          stamp_axes(normal, dabs[side].heading, dab);
         if (stroke.tool == Tool::Smear)
           smear(patches, dab, carried[side]);
+        else if (stroke.spray_drops > 0)
+          spray(patches, dab, stroke, report.dabs);
         else if (stroke.tool == Tool::Paint || stroke.tool == Tool::Label)
           paint(patches, dab);
         else
@@ -758,14 +890,12 @@ void PaintSurface::grab(const Stroke& stroke, BrushDab& dab, StrokeReport& repor
   dab.strength = stroke.strength * samples.front().pressure;
   if (!(dab.radius > 0.f))
     return;
-  Vec3 centre, normal;
-  const std::vector<int> patches = brush_patches(samples.front().centre, dab.radius, &centre, &normal);
+  Vec3 normal;
+  const std::vector<int> patches = place(stroke, samples.front(), dab, normal);
   if (patches.empty()) {
     report.left_surface = true;
     return;
   }
-  for (int k = 0; k < 3; ++k)
-    dab.centre[k] = centre[k];
   for (std::size_t k = 1; k < samples.size(); ++k) {
     const Vec3& a = samples[k - 1].centre;
     const Vec3& b = samples[k].centre;

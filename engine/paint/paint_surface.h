@@ -75,8 +75,11 @@ public:
   //! closest surface point along the surface within `radius`, sorted. Empty
   //! when no surface is within the radius. `centre` receives the snapped
   //! centre.
+  //! `reach` (default: the radius) bounds the search for connected patches
+  //! when the brush's footprint reaches further than its radius in space
+  //! (tangent and screen brushes); `closest` receives the centre's texel.
   std::vector<int> brush_patches(const Vec3& point, float radius, Vec3* centre = nullptr,
-                                 Vec3* centre_normal = nullptr);
+                                 Vec3* centre_normal = nullptr, float reach = 0.f, CullRecord* closest = nullptr);
 
   //! After positions were written from outside (Atlas::write_positions):
   //! recomputes the limit surface and patch bounds everywhere.
@@ -106,6 +109,9 @@ private:
   std::vector<CullRecord> cull(const Vec3& centre, float radius);
   bool step(bool back); // undo (back) or redo
   void paint(const std::vector<int>& patches, const BrushDab& dab);
+  //! One dab of spray paint: droplets at random points of the brush's disc
+  //! on the screen (seeded by the stroke's seed and the dab's `index`).
+  void spray(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke, std::uint64_t index);
   //! Smooths or moves geometry (or smooths colours) on the patches.
   //! `reweigh` false keeps the weights of the previous call (grab).
   void reshape(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke, const Vec3& normal,
@@ -125,6 +131,12 @@ private:
   void upload_rasters(const Stroke& stroke, BrushDab& dab);
   //! The brush image's axes in the tangent plane at a dab.
   static void stamp_axes(const Vec3& normal, const Vec3& heading, BrushDab& dab);
+  //! The dab's brush space at its centre (camera axes, the centre's texel);
+  //! false where a screen-space stroke meets a silhouette and ends.
+  bool aim(const Stroke& stroke, const Vec3& normal, const Vec3& heading, const CullRecord& closest, BrushDab& dab);
+  //! Finds the dab's site and aims it: the patches it may change, empty
+  //! when it misses the surface (or meets a silhouette).
+  std::vector<int> place(const Stroke& stroke, const DabSample& sample, BrushDab& dab, Vec3& normal);
   //! Layers a snapshot may hold: the finest level's control points and the
   //! three channel layers.
   enum Layer : int

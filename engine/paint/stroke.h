@@ -2,6 +2,7 @@
 #pragma once
 
 #include "atlas_types.h" // for CHANNEL_COUNT, FALLOFF_*, PAINT_OP_*
+#include "core/errors.h"
 #include "core/vec.h"
 #include "paint/raster.h"
 
@@ -29,6 +30,20 @@ enum class Tool
 
 //! Name of a tool as the stroke script writes it.
 const char* tool_name(Tool tool);
+
+//! A view, as VTK's camera gives it: what screen-space brushes and patterns
+//! project with.
+struct Camera
+{
+  Vec3 position{0.f, 0.f, 1.f};
+  Vec3 focal_point{0.f, 0.f, 0.f};
+  Vec3 view_up{0.f, 1.f, 0.f};
+  float view_angle = 30.f; //!< degrees, vertical
+  bool operator==(const Camera& o) const
+  {
+    return position == o.position && focal_point == o.focal_point && view_up == o.view_up && view_angle == o.view_angle;
+  }
+};
 
 struct Stroke
 {
@@ -60,11 +75,41 @@ struct Stroke
   std::string stamp_file;                      //!< brush image laid in the tangent plane
   std::shared_ptr<const Raster> stamp;         //!< its samples (loaded by the caller)
   int edit_level = -1;                  //!< geometry tools: the level edited, finer levels follow; -1: the finest
+  int space = SPACE_OBJECT;             //!< SPACE_*: where the brush measures distance
+  bool paint_backfaces = false;         //!< tangent, screen: also faces turned away from the brush
+  bool has_camera = false;              //!< screen space, screen patterns: `camera` is given
+  Camera camera;
+  int spray_drops = 0;                  //!< screen space: droplets per dab (0: no spray)
+  float spray_size = 0.f;               //!< their radius on the surface, world units
+  unsigned spray_seed = 0;
 
   //! Same stroke as written in a script (loaded rasters are not compared).
   bool operator==(const Stroke& o) const;
   bool operator!=(const Stroke& o) const { return !(*this == o); }
 };
+
+//! A stroke-script error about one key of one stroke.
+class StrokeKeyError : public InputError
+{
+public:
+  StrokeKeyError(const std::string& message, std::string key, bool meaningless)
+    : InputError(message), key_(std::move(key)), meaningless_(meaningless)
+  {
+  }
+  const std::string& key() const { return key_; }
+  //! The key is fine in itself but means nothing for the stroke's tool.
+  bool meaningless() const { return meaningless_; }
+
+private:
+  std::string key_;
+  bool meaningless_;
+};
+
+//! A brush kept as stroke keys (a window's or a setter API's current
+//! settings) as one stroke: the JSON object without the keys that mean
+//! nothing for its tool, e.g. a sculpt "amount" left over under a paint
+//! tool. Other problems are left for parse_stroke_script() to report.
+std::string drop_meaningless_keys(const std::string& stroke_object);
 
 //! A stroke script: an optional atlas level and the strokes in order.
 struct StrokeScript
