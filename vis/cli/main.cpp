@@ -31,7 +31,7 @@ commands:
                                       OUTDIR/surface.vtp with the paint channels, and
                                       model.obj + model.mtl + PNG texture maps; with
                                       --screenshot also a rendered picture
-  view MESH [--strokes S.json] [--level L] [-o DIR] [--size WxH]
+  view MESH [--strokes S.json] [--level L] [--lod L] [-o DIR] [--size WxH]
                                       the painting window (docs/window.md); saves the
                                       recorded strokes and the surface into DIR
   bench paint [--json] [--steps N] [--tool sculpt|paint]

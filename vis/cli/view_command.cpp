@@ -47,8 +47,8 @@ std::string read_text(const std::string& path)
 
 int view_command(const Argv& argv)
 {
-  Args args("view", argv, {}, {"--strokes", "--level", "-o", "--size", "--device", "--storage"});
-  args.expect_positionals(1, 1, "MESH [--strokes S.json] [--level L] [-o DIR] [--size WxH]");
+  Args args("view", argv, {}, {"--strokes", "--level", "--lod", "-o", "--size", "--device", "--storage"});
+  args.expect_positionals(1, 1, "MESH [--strokes S.json] [--level L] [--lod L] [-o DIR] [--size WxH]");
   // Everything is checked before the window opens.
   StrokeScript script;
   std::string script_text;
@@ -63,8 +63,10 @@ int view_command(const Argv& argv)
   const BaseMesh mesh = load_reported(args.positionals()[0]);
   const int level = args.integer("--level", script.level > 0 ? script.level : default_view_level(mesh), 1, kMaxLevel);
 
+  const int lod = args.integer("--lod", std::max(1, level - 1), 0, level);
   vtkNew<vtkPaintView> view;
   view->SetLevel(level);
+  view->SetLodLevel(lod);
   view->SetDevice(args.value("--device").c_str());
   view->SetStorage(args.value("--storage").c_str());
   view->SetSaveDirectory(args.value("-o", mesh.name + "-session").c_str());
@@ -77,7 +79,7 @@ int view_command(const Argv& argv)
   if (!view->Initialize())
     throw DeviceError(view->GetLastError());
   std::cout << "view       " << mesh.name << " at level " << level << "; h in the window lists the keys; saves go to "
-            << view->GetSaveDirectory() << "/\n";
+            << view->GetSaveDirectory() << "/" << std::endl;
   view->Start();
   return 0;
 }
