@@ -218,6 +218,7 @@ int vtkPaintView::Initialize()
   in.style->AddObserver(vtkCommand::EndInteractionEvent, this, &vtkPaintView::OnCameraInteraction);
   in.picker->SetRenderer(in.renderer);
   in.picker->SetActor(in.actor);
+  in.picker->SetPatchResolution(1 << (this->Level - 1)); // captures happen at rest: the full level
   meshpaint::set_camera(in.renderer, meshpaint::CameraView());
   in.interactor->Initialize();
   in.initialized = true;

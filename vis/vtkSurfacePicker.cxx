@@ -3,6 +3,7 @@
 #include <vtkActor.h>            // for vtkActor
 #include <vtkCamera.h>           // for vtkCamera
 #include <vtkCell.h>             // for vtkCell
+#include <vtkCellType.h>         // for VTK_QUAD
 #include <vtkDataArray.h>        // for vtkDataArray
 #include <vtkDataObject.h>       // for vtkDataObject::FIELD_ASSOCIATION_CELLS
 #include <vtkGenericCell.h>      // for vtkGenericCell
@@ -17,7 +18,8 @@
 #include <vtkSmartPointer.h>     // for vtkSmartPointer
 #include <vtkNew.h>              // for vtkNew
 
-#include <vector> // for std::vector
+#include <algorithm> // for std::min, std::max
+#include <vector>    // for std::vector
 
 vtkStandardNewMacro(vtkSurfacePicker);
 
@@ -47,6 +49,8 @@ void vtkSurfacePicker::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Point: " << this->Point[0] << " " << this->Point[1] << " " << this->Point[2] << "\n";
   os << indent << "CellId: " << this->CellId << "\n";
   os << indent << "Facing: " << this->Facing << "\n";
+  os << indent << "PatchResolution: " << this->PatchResolution << "\n";
+  os << indent << "Patch: " << this->Patch << " (" << this->U << ", " << this->V << ")\n";
 }
 
 void vtkSurfacePicker::SetRenderer(vtkRenderer* renderer)
@@ -124,8 +128,6 @@ int vtkSurfacePicker::Pick(int x, int y)
   poly->GetCell(info.AttributeID, cell);
   double t = 0, x_hit[3], pcoords[3];
   int sub_id = 0;
-  // The item buffer knows the cell; the ray may graze past its edge by a
-  // rounding step, so the cell's closest point is the fallback.
   std::vector<double> weights(std::size_t(cell->GetNumberOfPoints()));
   if (!cell->IntersectWithLine(ends[0], ends[1], 1e-6, t, x_hit, pcoords, sub_id)) {
     // The item buffer knows the cell, but the ray may pass its edge by a
@@ -143,10 +145,13 @@ int vtkSurfacePicker::Pick(int x, int y)
   for (int c = 0; c < 3; ++c)
     this->Point[c] = x_hit[c];
 
+  // Parametric coordinates and weights of the hit in its cell.
+  double closest[3], dist2 = 0;
+  cell->EvaluatePosition(x_hit, closest, sub_id, pcoords, dist2, weights.data());
+  for (int c = 0; c < 2; ++c)
+    pcoords[c] = std::min(1.0, std::max(0.0, pcoords[c]));
+
   // Normal: the point normals interpolated at the hit, else the cell's own.
-  double unused[3];
-  int sub = 0;
-  cell->EvaluateLocation(sub, pcoords, unused, weights.data());
   double n[3] = {0, 0, 0};
   if (vtkDataArray* normals = poly->GetPointData()->GetNormals()) {
     for (vtkIdType k = 0; k < cell->GetNumberOfPoints(); ++k) {
@@ -173,5 +178,17 @@ int vtkSurfacePicker::Pick(int x, int y)
   vtkMath::Normalize(to_eye);
   this->Facing = vtkMath::Dot(n, to_eye);
   this->CellId = info.AttributeID;
+  // Quads of a welded level come n x n per patch, row by row, corner 0 at
+  // texel (i, j) and the quad's r, s along the patch's i, j.
+  const vtkIdType res = this->PatchResolution;
+  if (res > 0 && cell->GetCellType() == VTK_QUAD) {
+    const vtkIdType in_patch = this->CellId % (res * res);
+    this->Patch = this->CellId / (res * res);
+    this->U = (double(in_patch % res) + pcoords[0]) / double(res);
+    this->V = (double(in_patch / res) + pcoords[1]) / double(res);
+  } else {
+    this->Patch = -1;
+    this->U = this->V = 0;
+  }
   return 1;
 }

@@ -12,8 +12,9 @@
  * even if the actor has shown another since.
  *
  * A pick reports the world point, the interpolated normal (the point array
- * Normals, else the cell's), the cell, and how squarely the surface faces
- * the viewer, so strokes can end at silhouettes.
+ * Normals, else the cell's), the cell, the atlas patch and (u, v) when the
+ * surface is a welded meshpaint level (SetPatchResolution), and how
+ * squarely the surface faces the viewer, so strokes can end at silhouettes.
  */
 #ifndef vtkSurfacePicker_h
 #define vtkSurfacePicker_h
@@ -47,6 +48,12 @@ public:
   /// no renderer with a window, or nothing could be captured.
   int Capture();
 
+  /// Quads per patch side of the picked surface, n = 2^(level - 1) for a
+  /// welded level of meshpaint (to_polydata, vtkPaintSurface's output): then
+  /// picks also report the patch and (u, v) in it. 0 (default): unknown.
+  vtkSetClampMacro(PatchResolution, int, 0, 4096);
+  vtkGetMacro(PatchResolution, int);
+
   /// Drops the captured buffers (a later Pick() captures again).
   void Release();
 
@@ -66,6 +73,11 @@ public:
   /// Cosine between the normal and the direction to the camera: 1 facing
   /// the viewer, 0 at a silhouette.
   vtkGetMacro(Facing, double);
+  /// The atlas patch and (u, v) in [0, 1]^2 along its texel axes i, j;
+  /// -1 and (0, 0) without a PatchResolution.
+  vtkGetMacro(Patch, vtkIdType);
+  vtkGetMacro(U, double);
+  vtkGetMacro(V, double);
   //@}
 
 protected:
@@ -76,6 +88,9 @@ protected:
   double Normal[3] = {0, 0, 1};
   vtkIdType CellId = -1;
   double Facing = 0;
+  int PatchResolution = 0;
+  vtkIdType Patch = -1;
+  double U = 0, V = 0;
 
 private:
   vtkSurfacePicker(const vtkSurfacePicker&) = delete;

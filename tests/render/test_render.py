@@ -178,3 +178,30 @@ def test_pick_agrees_with_the_screen_position_of_a_known_point():
     assert picker.Pick(int(dx), int(dy)) == 1
     p = picker.GetPoint()
     assert sum((a - b) ** 2 for a, b in zip(p, target)) ** 0.5 < 0.02
+
+
+def test_pick_reports_the_patch_and_its_texel_coordinates():
+    surface, actor, renderer, window = render_cube()
+    renderer.GetActiveCamera().Azimuth(25)
+    renderer.GetActiveCamera().Elevation(15)
+    renderer.ResetCameraClippingRange()
+    window.Render()
+    picker = meshpaint.vtkSurfacePicker()
+    picker.SetRenderer(renderer)
+    picker.SetActor(actor)
+    assert picker.Pick(90, 90) == 1 and picker.GetPatch() == -1  # no resolution given
+    n = 8  # level 4: 2^3 quads per patch side
+    picker.SetPatchResolution(n)
+    seen = set()
+    for x, y in [(90, 90), (110, 70), (70, 95), (100, 100)]:
+        assert picker.Pick(x, y) == 1
+        patch, u, v = picker.GetPatch(), picker.GetU(), picker.GetV()
+        assert 0 <= patch < surface.GetNumberOfCells() // (n * n) and 0 <= u <= 1 and 0 <= v <= 1
+        seen.add(patch)
+        # (patch, u, v) leads back to the picked point on the welded grid
+        i, j = min(int(u * n), n - 1), min(int(v * n), n - 1)
+        cell = surface.GetCell(patch * n * n + j * n + i)
+        point, weights = [0.0] * 3, [0.0] * 4
+        cell.EvaluateLocation(vtk.reference(0), [u * n - i, v * n - j, 0.0], point, weights)
+        assert sum((a - b) ** 2 for a, b in zip(point, picker.GetPoint())) ** 0.5 < 1e-4
+    assert len(seen) > 1
