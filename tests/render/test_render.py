@@ -158,15 +158,21 @@ def test_pick_off_the_surface_and_at_the_silhouette():
     assert picker.GetPoint()[0] > xmax - 0.1
 
 
-def test_pick_agrees_with_the_screen_position_of_a_known_point():
+def turned_picker(azimuth, elevation):
+    """The cube rendered with the camera turned, and a picker on it."""
     surface, actor, renderer, window = render_cube()
-    renderer.GetActiveCamera().Azimuth(30)
-    renderer.GetActiveCamera().Elevation(20)
+    renderer.GetActiveCamera().Azimuth(azimuth)
+    renderer.GetActiveCamera().Elevation(elevation)
     renderer.ResetCameraClippingRange()
     window.Render()
     picker = meshpaint.vtkSurfacePicker()
     picker.SetRenderer(renderer)
     picker.SetActor(actor)
+    return surface, renderer, picker
+
+
+def test_pick_agrees_with_the_screen_position_of_a_known_point():
+    surface, renderer, picker = turned_picker(30, 20)
     picker.Capture()
     # The vertex at the centre of the +z face, projected to the screen and
     # picked there, comes back to within a pixel's width.
@@ -181,14 +187,7 @@ def test_pick_agrees_with_the_screen_position_of_a_known_point():
 
 
 def test_pick_reports_the_patch_and_its_texel_coordinates():
-    surface, actor, renderer, window = render_cube()
-    renderer.GetActiveCamera().Azimuth(25)
-    renderer.GetActiveCamera().Elevation(15)
-    renderer.ResetCameraClippingRange()
-    window.Render()
-    picker = meshpaint.vtkSurfacePicker()
-    picker.SetRenderer(renderer)
-    picker.SetActor(actor)
+    surface, renderer, picker = turned_picker(25, 15)
     assert picker.Pick(90, 90) == 1 and picker.GetPatch() == -1  # no resolution given
     n = 8  # level 4: 2^3 quads per patch side
     picker.SetPatchResolution(n)
