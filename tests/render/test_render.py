@@ -168,6 +168,7 @@ def turned_picker(azimuth, elevation):
     picker = meshpaint.vtkSurfacePicker()
     picker.SetRenderer(renderer)
     picker.SetActor(actor)
+    picker.scene = (actor, window)  # the picker holds neither alive
     return surface, renderer, picker
 
 
