@@ -168,7 +168,7 @@ def turned_picker(azimuth, elevation):
     picker = meshpaint.vtkSurfacePicker()
     picker.SetRenderer(renderer)
     picker.SetActor(actor)
-    picker.scene = (actor, window)  # the picker holds neither alive
+    picker.scene = (actor, window)  # nothing else keeps the window alive
     return surface, renderer, picker
 
 
