@@ -410,10 +410,12 @@ inline int spray_candidate(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const Br
   return *depth > 0.0f && distance(s, drop) * *depth <= reach;
 }
 
-/* Range: (tile, tile * count). keys: one per droplet, preset to UINT_MAX. */
-__kernel void spray_depth(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *list, int count,
-                          __global const BrushDab *dab, __global const float4 *bounds, __global const float2 *drops,
-                          int drop_count, __global uint *keys)
+/* Range: (tile, tile * count). Pass 0: in keys (one per droplet, preset
+ * to UINT_MAX) the least depth; pass 1: in texels (preset to INT_MAX) the
+ * least texel index at that depth. */
+__kernel void spray_pick(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *list, int count,
+                         __global const BrushDab *dab, __global const float4 *bounds, __global const float2 *drops,
+                         int drop_count, int pass, __global uint *keys, __global int *texels)
 {
   int p;
   int2 ij;
@@ -421,23 +423,11 @@ __kernel void spray_depth(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int
     return;
   for (int k = 0; k < drop_count; ++k) {
     float z;
-    if (spray_candidate(pos, nrm, g, dab, bounds, p, ij, drops[k], &z))
+    if (!spray_candidate(pos, nrm, g, dab, bounds, p, ij, drops[k], &z))
+      continue;
+    if (pass == 0)
       atomic_min(&keys[k], as_uint(z)); /* positive floats order as their bits */
-  }
-}
-
-/* Range: as spray_depth. texels: one per droplet, preset to INT_MAX. */
-__kernel void spray_texel(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *list, int count,
-                          __global const BrushDab *dab, __global const float4 *bounds, __global const float2 *drops,
-                          int drop_count, __global const uint *keys, __global int *texels)
-{
-  int p;
-  int2 ij;
-  if (!tile_texel(g, list, count, &p, &ij))
-    return;
-  for (int k = 0; k < drop_count; ++k) {
-    float z;
-    if (spray_candidate(pos, nrm, g, dab, bounds, p, ij, drops[k], &z) && as_uint(z) == keys[k])
+    else if (as_uint(z) == keys[k])
       atomic_min(&texels[k], (p * g.x + ij.y) * g.x + ij.x);
   }
 }

@@ -47,7 +47,7 @@ struct PaintSurface::Device
 {
   LayerKernels positions, channels;
   cl::Kernel patch_bounds, brush_cull, paint_dab, dab_weights, move_points, dab_pickup;
-  cl::Kernel spray_depth, spray_texel, spray_points;
+  cl::Kernel spray_pick, spray_points;
   cl::Buffer bounds, records, count, active, dab, weights;
   std::size_t record_capacity = 0, active_capacity = 0;
   cl::Buffer diffuse, specular, material, channel_work;
@@ -77,8 +77,7 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     d.dab_weights = cl::Kernel(d.positions.program, "dab_weights");
     d.move_points = cl::Kernel(d.positions.program, "move_points");
     d.dab_pickup = cl::Kernel(d.positions.program, "dab_pickup");
-    d.spray_depth = cl::Kernel(d.positions.program, "spray_depth");
-    d.spray_texel = cl::Kernel(d.positions.program, "spray_texel");
+    d.spray_pick = cl::Kernel(d.positions.program, "spray_pick");
     d.spray_points = cl::Kernel(d.positions.program, "spray_points");
     const std::size_t bytes = l.texels() * sizeof(Float4);
     d.channel_work = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
@@ -378,10 +377,9 @@ void PaintSurface::spray(const std::vector<int>& patches, const BrushDab& dab, c
   const cl::Buffer list = device_ints(rt.context(), patches);
   const auto tiles = range_tiles(l, int(patches.size()));
   const cl::Memory &pos = atlas_->limit_positions_layer(), &nrm = atlas_->limit_normals_layer();
-  launch(q, d.spray_depth, tiles.first, tiles.second, pos, nrm, grid(l), list, int(patches.size()), d.dab, d.bounds,
-         drop_buffer, k, keys);
-  launch(q, d.spray_texel, tiles.first, tiles.second, pos, nrm, grid(l), list, int(patches.size()), d.dab, d.bounds,
-         drop_buffer, k, keys, texels);
+  for (const int pass : {0, 1})
+    launch(q, d.spray_pick, tiles.first, tiles.second, pos, nrm, grid(l), list, int(patches.size()), d.dab, d.bounds,
+           drop_buffer, k, pass, keys, texels);
   launch(q, d.spray_points, cl::NDRange(round_up(std::size_t(k), kGroup)), cl::NDRange(kGroup), pos, grid(l), texels, k,
          points);
   std::vector<Float4> landed(drops.size());
@@ -421,6 +419,28 @@ void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
          atlas_->limit_normals_layer(), grid(l), d.active,
          cl_int(patches.size()), d.dab, d.raster, d.stamp, d.diffuse, d.specular, d.material);
   rt.queue().finish();
+}
+
+StrokeReport PaintSurface::apply(const Stroke& stroke, const std::vector<char>& dabs)
+{
+  dab_mask_ = &dabs;
+  try {
+    const StrokeReport r = apply(stroke);
+    dab_mask_ = nullptr;
+    return r;
+  } catch (...) {
+    dab_mask_ = nullptr;
+    throw;
+  }
+}
+
+float PaintSurface::distance_to(const Vec3& point, float radius)
+{
+  Vec3 centre;
+  if (brush_patches(point, radius, &centre).empty())
+    return std::numeric_limits<float>::infinity();
+  const Vec3 d{centre[0] - point[0], centre[1] - point[1], centre[2] - point[2]};
+  return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
 }
 
 StrokeReport PaintSurface::apply(const Stroke& stroke)
@@ -833,7 +853,11 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
       mirror_at = 0.5f * (lo + hi);
     }
     std::optional<std::array<Float4, 2>> carried[2]; // the smear brush's load per side of the mirror
-    for (const DabSample& sample : stroke_samples(stroke)) {
+    const std::vector<DabSample> samples = stroke_samples(stroke);
+    for (std::size_t index = 0; index < samples.size(); ++index) {
+      const DabSample& sample = samples[index];
+      if (dab_mask_ && (index >= dab_mask_->size() || !(*dab_mask_)[index])) // another object's dab
+        continue;
       // The dab, and with a mirror its reflection (heading reflected too).
       std::vector<DabSample> dabs{sample};
       if (stroke.mirror_axis >= 0) {
@@ -865,7 +889,9 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
         ++report.dabs_applied;
         report.patches_touched += patches.size();
       }
-      if (!on_surface && dab.radius > 0.f) { // zero pressure skips a dab, no surface ends the stroke
+      // Zero pressure skips a dab, no surface ends the stroke (in a scene,
+      // the scene decides that).
+      if (!on_surface && dab.radius > 0.f && !dab_mask_) {
         report.left_surface = true;
         break;
       }
@@ -886,6 +912,8 @@ void PaintSurface::grab(const Stroke& stroke, BrushDab& dab, StrokeReport& repor
   if (stroke.points.size() > 1 && samples.back().centre != stroke.points.back()) // the pull ends at the path's end
     samples.push_back({stroke.points.back(), stroke.pressure.empty() ? 1.f : stroke.pressure.back()});
   report.dabs = samples.size();
+  if (dab_mask_ && (dab_mask_->empty() || !dab_mask_->front())) // in a scene, the region is another object's
+    return;
   dab.radius = stroke.radius * samples.front().pressure;
   dab.strength = stroke.strength * samples.front().pressure;
   if (!(dab.radius > 0.f))

@@ -70,6 +70,13 @@ public:
   //! Runs the stroke's dabs in order. A dab whose centre has no surface
   //! within its radius ends the stroke (left_surface).
   StrokeReport apply(const Stroke& stroke);
+  //! The same for the dabs (samples along the path, see stroke_samples())
+  //! whose entry in `dabs` is non-zero only: a scene hands each object its
+  //! dabs. The stroke does not end on its own where it leaves this surface.
+  StrokeReport apply(const Stroke& stroke, const std::vector<char>& dabs);
+  //! Distance from `point` to the closest surface point within `radius`;
+  //! infinity when there is none.
+  float distance_to(const Vec3& point, float radius);
 
   //! The patches one dab at `point` would touch: those connected to the
   //! closest surface point along the surface within `radius`, sorted. Empty
@@ -169,6 +176,7 @@ private:
   std::vector<std::uint32_t> mark_;   // per patch: culled / reached in dab `generation_`
   std::vector<const CullRecord*> record_slot_; // per patch: its record in the current dab
   std::uint32_t generation_ = 0;
+  const std::vector<char>* dab_mask_ = nullptr; // apply(stroke, dabs): the dabs for this surface
 };
 
 } // namespace meshpaint
