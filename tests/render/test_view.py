@@ -7,6 +7,8 @@ import json
 import os
 import subprocess
 
+import pytest
+
 import vtk
 import vtkmodules.vtkInteractionStyle  # noqa: F401  (the interactor's defaults)
 import vtkmodules.vtkRenderingFreeType  # noqa: F401  (on-screen text)
@@ -192,6 +194,18 @@ def test_keys_change_the_brush_and_the_help_overlay(tmp_path):
     # the export key writes the textured model
     key(view, "e", ctrl=True)
     assert (tmp_path / "session" / "model.obj").exists()
+
+
+def test_failures_raise_meshpaint_errors(tmp_path):
+    view = meshpaint.vtkPaintView()
+    with pytest.raises(meshpaint.Error, match="no surface to paint"):
+        view.Initialize()
+    with pytest.raises(meshpaint.Error, match="cannot open '.*no-such.off'"):
+        view.LoadMesh(str(tmp_path / "no-such.off"))
+    view.SetLevel(2)
+    view.LoadMesh(CUBE)
+    with pytest.raises(meshpaint.Error, match='stroke 0: "radius"'):
+        view.ApplyStrokes('{"strokes": [{"points": [[0.5, 0.5, 1]], "radius": -1}]}')
 
 
 def test_window_of_a_paint_surface_shares_its_strokes(tmp_path):
