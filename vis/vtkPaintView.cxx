@@ -90,12 +90,10 @@ void vtkPaintView::PrintSelf(ostream& os, vtkIndent indent)
 
 int vtkPaintView::LoadMesh(const char* path)
 {
-  int ok = 0;
   meshpaint::BaseMesh mesh;
   if (!meshpaint::guarded(this->LastError, [&] { mesh = meshpaint::load_mesh(path ? path : ""); }))
     return 0;
-  ok = this->SetBaseMesh(mesh);
-  return ok;
+  return this->SetBaseMesh(mesh);
 }
 
 int vtkPaintView::SetInputData(vtkPolyData* polygons)
@@ -137,6 +135,7 @@ void vtkPaintView::SetSurface(std::shared_ptr<meshpaint::PaintSurface> surface)
   if (in.initialized) {
     meshpaint::show_materials(in.actor, in.shown);
     in.picker->Release();
+    in.picker->SetPatchResolution(1 << (this->Level - 1));
   }
   this->Modified();
 }
@@ -148,17 +147,25 @@ bool vtkPaintView::Shows(const std::shared_ptr<meshpaint::PaintSurface>& surface
 
 int vtkPaintView::ApplyStrokes(const char* json)
 {
+  meshpaint::StrokeScript script;
+  if (!meshpaint::guarded(this->LastError, [&] {
+        script = meshpaint::parse_stroke_script(json ? json : "");
+        meshpaint::load_stroke_rasters(script);
+      }))
+    return 0;
+  return this->ApplyScript(script);
+}
+
+int vtkPaintView::ApplyScript(const meshpaint::StrokeScript& script)
+{
   Internals& in = *this->Impl;
   const int ok = meshpaint::guarded(this->LastError, [&] {
     if (!in.surface)
       throw meshpaint::InputError("no surface to paint: load a mesh first");
-    meshpaint::StrokeScript script = meshpaint::parse_stroke_script(json ? json : "");
-    meshpaint::load_stroke_rasters(script);
     for (const meshpaint::Stroke& s : script.strokes)
       in.surface->apply(s);
   });
-  if (ok)
-    this->Refresh(true);
+  this->Refresh(true);
   return ok;
 }
 

@@ -35,6 +35,7 @@ class vtkSurfacePicker;
 namespace meshpaint {
 struct BaseMesh;
 class PaintSurface;
+struct StrokeScript;
 }
 
 class MESHPAINTVIS_EXPORT vtkPaintView : public vtkObject
@@ -101,6 +102,8 @@ public:
   void SetSurface(std::shared_ptr<meshpaint::PaintSurface> surface);
   /// True when this view paints on `surface`.
   bool Shows(const std::shared_ptr<meshpaint::PaintSurface>& surface) const;
+  /// Applies a parsed script whose pattern and stamp files are loaded.
+  int ApplyScript(const meshpaint::StrokeScript& script);
 #endif
 
   /// Applies a stroke script's strokes (recorded like any other stroke).

@@ -11,9 +11,7 @@
 
 #include <vtkNew.h> // for vtkNew
 
-#include <fstream>  // for std::ifstream
 #include <iostream> // for std::cout
-#include <sstream>  // for std::ostringstream
 
 namespace meshpaint::cli {
 namespace {
@@ -33,16 +31,6 @@ int default_view_level(const BaseMesh& mesh)
   return level;
 }
 
-std::string read_text(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw IOError("cannot open '" + path + "'");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 } // namespace
 
 int view_command(const Argv& argv)
@@ -51,11 +39,9 @@ int view_command(const Argv& argv)
   args.expect_positionals(1, 1, "MESH [--strokes S.json] [--level L] [--lod L] [-o DIR] [--size WxH]");
   // Everything is checked before the window opens.
   StrokeScript script;
-  std::string script_text;
   if (args.has("--strokes")) {
     script = load_stroke_script(args.value("--strokes"));
     load_stroke_rasters(script);
-    script_text = read_text(args.value("--strokes"));
   }
   const PictureOptions picture = picture_options(args);
   if (args.has("--storage"))
@@ -74,8 +60,8 @@ int view_command(const Argv& argv)
   open_device(args); // reports a bad --device like every command
   if (!view->SetBaseMesh(mesh))
     throw DeviceError(view->GetLastError());
-  if (!script_text.empty() && !view->ApplyStrokes(script_text.c_str()))
-    throw InputError(view->GetLastError());
+  if (!script.strokes.empty() && !view->ApplyScript(script))
+    throw DeviceError(view->GetLastError()); // the script was checked: what fails now is the device
   if (!view->Initialize())
     throw DeviceError(view->GetLastError());
   std::cout << "view       " << mesh.name << " at level " << level << "; h in the window lists the keys; saves go to "
