@@ -5,6 +5,8 @@
 
 #include <algorithm> // for std::min, std::max
 #include <cmath>     // for std::floor
+#include <cstring>   // for std::memcmp, std::memcpy
+#include <stdexcept> // for std::invalid_argument
 
 #include <vtkCellArray.h>          // for vtkCellArray
 #include <vtkFloatArray.h>         // for vtkFloatArray
@@ -84,6 +86,41 @@ vtkSmartPointer<vtkPolyData> to_polydata(const PaintedSurface& s)
   std::copy(s.label.begin(), s.label.end(), label->GetPointer(0));
   pd->AddArray(label);
   return poly;
+}
+
+namespace {
+
+//! Copies `count` values of `from` into `to` (an array of as many values)
+//! unless they are equal already; true when it copied.
+template <typename T>
+bool copy_if_changed(vtkDataArray* to, const T* from, std::size_t count)
+{
+  if (!to || std::size_t(to->GetNumberOfValues()) != count)
+    throw std::invalid_argument("update_polydata: the surface does not match the polydata");
+  T* values = static_cast<T*>(to->GetVoidPointer(0));
+  if (count == 0 || std::memcmp(values, from, count * sizeof(T)) == 0)
+    return false;
+  std::memcpy(values, from, count * sizeof(T));
+  to->Modified();
+  return true;
+}
+
+} // namespace
+
+int update_polydata(vtkPolyData* poly, const PaintedSurface& s)
+{
+  vtkPointData* pd = poly->GetPointData();
+  int changed = 0;
+  changed += copy_if_changed(poly->GetPoints()->GetData(), &s.surface.points[0][0], 3 * s.surface.points.size());
+  if (!s.surface.normals.empty())
+    changed += copy_if_changed(pd->GetNormals(), &s.surface.normals[0][0], 3 * s.surface.normals.size());
+  changed += copy_if_changed(pd->GetArray("diffuse"), &s.diffuse[0][0], 3 * s.diffuse.size());
+  changed += copy_if_changed(pd->GetArray("specular"), &s.specular[0][0], 3 * s.specular.size());
+  changed += copy_if_changed(pd->GetArray("roughness"), s.roughness.data(), s.roughness.size());
+  changed += copy_if_changed(pd->GetArray("displacement"), s.displacement.data(), s.displacement.size());
+  changed += copy_if_changed(pd->GetArray("mask"), s.mask.data(), s.mask.size());
+  changed += copy_if_changed(pd->GetArray("label"), s.label.data(), s.label.size());
+  return changed; // the polydata's time includes its arrays', so renderers notice
 }
 
 BaseMesh to_base_mesh(vtkPolyData* poly, const std::string& name)

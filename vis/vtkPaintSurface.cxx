@@ -1,8 +1,10 @@
 #include "vtkPaintSurface.h"
 
 #include "PaintingExport.h"    // for meshpaint::export_painting
+#include "CallGuard.h"         // for meshpaint::guarded
 #include "RasterIO.h"          // for meshpaint::load_stroke_rasters
 #include "SurfaceConversion.h" // for meshpaint::to_base_mesh, to_polydata
+#include "vtkPaintView.h"      // for vtkPaintView
 
 #include "core/errors.h"               // for meshpaint::InputError
 #include "paint/paint_surface.h"       // for meshpaint::PaintSurface
@@ -22,6 +24,7 @@
 #include <vtkObjectFactory.h>     // for vtkStandardNewMacro
 #include <vtkPoints.h>            // for vtkPoints
 #include <vtkPolyData.h>          // for vtkPolyData
+#include <vtkSmartPointer.h>      // for vtkSmartPointer
 
 #include <algorithm> // for std::max
 #include <map>       // for std::map
@@ -33,7 +36,8 @@ struct vtkPaintSurface::Internals
 {
   nlohmann::json brush = {{"tool", "paint"}}; // the setters' stroke, without points
   std::string brush_text;
-  std::unique_ptr<meshpaint::PaintSurface> surface;
+  std::shared_ptr<meshpaint::PaintSurface> surface; // shared with the painting window
+  vtkSmartPointer<vtkPaintView> view;
   vtkMTimeType built_from = 0; // input's modification time the surface was built from
   int built_level = 0;
   std::vector<meshpaint::Stroke> queued;
@@ -54,26 +58,6 @@ void vtkPaintSurface::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Device: " << (this->Device.empty() ? "(default)" : this->Device) << "\n";
   os << indent << "StrokeCount: " << this->StrokeCount << "\n";
 }
-
-namespace {
-
-//! Runs `f`, keeping any exception's message in `error`; 1 on success.
-template <typename F>
-int guarded(std::string& error, F&& f)
-{
-  error.clear();
-  try {
-    f();
-    return 1;
-  } catch (const cl::Error& e) {
-    error = meshpaint::describe(e);
-  } catch (const std::exception& e) {
-    error = e.what();
-  }
-  return 0;
-}
-
-} // namespace
 
 // Each setter writes its stroke-script key; checking happens once, in
 // ApplyStroke(), by the same parser that reads scripts.
@@ -135,7 +119,7 @@ int vtkPaintSurface::ApplyStroke(vtkPoints* path)
 
 int vtkPaintSurface::ApplyStrokes(const char* json)
 {
-  const int ok = guarded(this->LastError, [&] {
+  const int ok = meshpaint::guarded(this->LastError, [&] {
     meshpaint::StrokeScript script = meshpaint::parse_stroke_script(json ? json : "");
     meshpaint::load_stroke_rasters(script);
     if (script.level > 0 && !this->Impl->surface && this->Impl->queued.empty())
@@ -155,7 +139,7 @@ int vtkPaintSurface::Step(bool back)
     return 0;
   }
   bool done = false;
-  const int ok = guarded(this->LastError, [&] {
+  const int ok = meshpaint::guarded(this->LastError, [&] {
     done = back ? this->Impl->surface->undo() : this->Impl->surface->redo();
   });
   if (ok && !done)
@@ -197,7 +181,7 @@ int vtkPaintSurface::SaveProject(const char* path)
 {
   if (!this->Ready())
     return 0;
-  return guarded(this->LastError, [&] {
+  return meshpaint::guarded(this->LastError, [&] {
     Internals& in = *this->Impl;
     meshpaint::Project p = in.project ? *in.project : meshpaint::Project();
     p.history = meshpaint::continued_history(p.history, in.surface->history(), in.surface->level());
@@ -211,7 +195,7 @@ const char* vtkPaintSurface::GetHistoryJSON()
   Internals& in = *this->Impl;
   in.history_text.clear();
   if (in.surface)
-    guarded(this->LastError, [&] {
+    meshpaint::guarded(this->LastError, [&] {
       in.history_text = meshpaint::continued_history(in.project ? in.project->history : "", in.surface->history(),
                                                      in.surface->level());
     });
@@ -220,7 +204,7 @@ const char* vtkPaintSurface::GetHistoryJSON()
 
 int vtkPaintSurface::LoadProject(const char* path)
 {
-  const int ok = guarded(this->LastError, [&] {
+  const int ok = meshpaint::guarded(this->LastError, [&] {
     meshpaint::Project p = meshpaint::load_project(path ? path : "");
     auto runtime = meshpaint::Runtime::open(this->Device);
     auto surface = meshpaint::open_project_surface(runtime, p, meshpaint::default_storage(runtime->info()));
@@ -246,7 +230,7 @@ int vtkPaintSurface::ExportModel(const char* dir)
 {
   if (!this->Ready())
     return 0;
-  return guarded(this->LastError, [&] {
+  return meshpaint::guarded(this->LastError, [&] {
     const int level = this->Impl->surface->level();
     const int model_level = this->ModelLevel > 0 ? std::min(this->ModelLevel, level) : std::max(1, level - 2);
     meshpaint::export_painting(*this->Impl->surface, model_level, dir ? dir : "");
@@ -259,7 +243,7 @@ vtkDataArray* vtkPaintSurface::GetChannel(const char* name)
     return nullptr;
   const std::string channel = name ? name : "";
   vtkSmartPointer<vtkDataArray> array;
-  const int ok = guarded(this->LastError, [&] {
+  const int ok = meshpaint::guarded(this->LastError, [&] {
     const std::vector<float> values = meshpaint::vertex_channel(*this->Impl->surface, channel);
     const int k = meshpaint::channel_components(channel);
     if (channel == "label")
@@ -282,7 +266,7 @@ int vtkPaintSurface::SetChannel(const char* name, vtkDataArray* values)
 {
   if (!this->Ready())
     return 0;
-  const int ok = guarded(this->LastError, [&] {
+  const int ok = meshpaint::guarded(this->LastError, [&] {
     const std::string channel = name ? name : "";
     const int k = meshpaint::channel_components(channel);
     if (!values)
@@ -306,7 +290,7 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  const int ok = guarded(this->LastError, [&] {
+  const int ok = meshpaint::guarded(this->LastError, [&] {
     Internals& in = *this->Impl;
     // A new input or level starts a new surface; queued strokes go onto it.
     // Without an input, the surface is a loaded project's.
@@ -317,7 +301,7 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
         throw meshpaint::InputError("a loaded project keeps its level " + std::to_string(in.built_level) +
                                     "; set an input to paint at another");
       auto runtime = meshpaint::Runtime::open(this->Device);
-      in.surface = std::make_unique<meshpaint::PaintSurface>(runtime, meshpaint::to_base_mesh(input, "input"),
+      in.surface = std::make_shared<meshpaint::PaintSurface>(runtime, meshpaint::to_base_mesh(input, "input"),
                                                              this->Level, meshpaint::default_storage(runtime->info()));
       in.built_from = input->GetMTime();
       in.built_level = this->Level;
@@ -345,4 +329,35 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
     this->Impl->queued.clear();
   }
   return ok;
+}
+
+vtkPaintView* vtkPaintSurface::GetView()
+{
+  Internals& in = *this->Impl;
+  this->Update();
+  if (!in.surface)
+    return nullptr;
+  if (!in.view || !in.view->Shows(in.surface)) {
+    in.view = vtkSmartPointer<vtkPaintView>::New();
+    in.view->SetDevice(this->Device.c_str());
+    in.view->SetSurface(in.surface);
+  }
+  return in.view;
+}
+
+int vtkPaintSurface::View()
+{
+  vtkPaintView* view = this->GetView();
+  if (!view)
+    return 0;
+  view->Start();
+  this->ViewPainted();
+  return 1;
+}
+
+void vtkPaintSurface::ViewPainted()
+{
+  if (this->Impl->surface)
+    this->StrokeCount = int(this->Impl->surface->history().size());
+  this->Modified();
 }

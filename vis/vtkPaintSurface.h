@@ -23,6 +23,7 @@
 #include <string> // for std::string
 
 class vtkDataArray;
+class vtkPaintView;
 class vtkPoints;
 
 class MESHPAINTVIS_EXPORT vtkPaintSurface : public vtkPolyDataAlgorithm
@@ -117,6 +118,15 @@ public:
   /// type). Setting is not a stroke: no undo step, no history entry.
   vtkDataArray* GetChannel(const char* name);
   int SetChannel(const char* name, vtkDataArray* values);
+  /// The painting window on this surface (docs/window.md): GetView()
+  /// updates, then returns the window (made once, kept by this filter; not
+  /// opened) whose strokes go onto this filter's surface, with undo, redo
+  /// and recording shared. View() opens it and returns when it is closed.
+  /// After painting through GetView(), call ViewPainted() so the output
+  /// and StrokeCount follow. 0 / nullptr when the update fails.
+  vtkPaintView* GetView();
+  int View();
+  void ViewPainted();
   //@}
 
   /// Strokes applied so far (queued ones not included).

@@ -15,21 +15,9 @@ SOURCE = os.environ["MESHPAINT_SOURCE_DIR"]
 BAD = os.path.join(SOURCE, "tests", "bad_input")
 SCANS = os.path.join(SOURCE, "data", "scans")
 
-CUBE_OBJ = """v 0 0 0
-v 1 0 0
-v 1 1 0
-v 0 1 0
-v 0 0 1
-v 1 0 1
-v 1 1 1
-v 0 1 1
-f 1 4 3 2
-f 5 6 7 8
-f 1 2 6 5
-f 2 3 7 6
-f 3 4 8 7
-f 4 1 5 8
-"""
+# The unit cube as quads (also read by the rendering tests).
+with open(os.path.join(SOURCE, "tests", "support", "cube.obj")) as _f:
+    CUBE_OBJ = _f.read()
 
 
 def run(*args):

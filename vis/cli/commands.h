@@ -11,6 +11,9 @@
 #include "mesh/welded_surface.h"
 #include "project/project.h"
 
+#include <vtkPolyData.h>     // for vtkPolyData
+#include <vtkSmartPointer.h> // for vtkSmartPointer
+
 #include <memory>   // for std::shared_ptr, std::unique_ptr
 #include <optional> // for std::optional
 #include <string> // for std::string
@@ -29,6 +32,7 @@ int paint_command(const Argv& argv);
 int stats_command(const Argv& argv);
 int transfer_command(const Argv& argv);
 int fit_command(const Argv& argv);
+int view_command(const Argv& argv);
 
 //! The device named by --device (or MESHPAINT_DEVICE, or the default).
 std::shared_ptr<Runtime> open_device(const Args& args);

@@ -25,12 +25,17 @@ commands:
                                       positions and point array Normals
   bench subdivide MESH [--level L] [--json] [--repeats N]
                                       kernels against OpenSubdiv's CpuEvaluator (level 3)
-  paint MESH --strokes S.json [--level L] [--model-level M] [--quiet] [-o OUTDIR]
+  paint MESH --strokes S.json [--level L] [--model-level M] [--lod L] [--two-sided] [--quiet] [-o OUTDIR]
         [--save P.meshpaint] [--labels labels.json]
+        [--screenshot OUT.png [--camera AZ,EL,ZOOM] [--size WxH]]
                                       apply a stroke script (docs/strokes.md); writes
                                       OUTDIR/surface.vtp with the paint channels, and
                                       model.obj + model.mtl + PNG texture maps; --save:
-                                      the project to continue from
+                                      the project to continue from; --screenshot: a
+                                      rendered picture
+  view MESH [--strokes S.json] [--level L] [--lod L] [-o DIR] [--size WxH]
+                                      the painting window (docs/window.md); saves the
+                                      recorded strokes and the surface into DIR
   stats MESH [--labels labels.json] [--json|--csv] [--level L]
                                       per-label area, centroid and bounds
   fit SCAN [--base-faces N] [--level L] [--direct] [--passes P] [--quiet] -o PROJECT.meshpaint
@@ -43,13 +48,15 @@ commands:
   bench paint [--json] [--steps N] [--tool sculpt|paint]
                                       brush step times as the paper's Table 1, and
                                       smoothing against VTK and OpenMesh
+  bench view [--steps N]              the window's frame times while painting, with and
+                                      without level of detail, and pick latency (needs X)
   devices                             the OpenCL devices (for --device / MESHPAINT_DEVICE)
   help                                this text
 
 MESH: a mesh file (.obj .off .ply .stl) or a project (.meshpaint) for info, subdivide,
 paint and stats
-options of demo, info, subdivide, paint, stats and bench: --device SEL (gpu, cpu, P:D or
-part of a name), --storage buffer|image
+options of demo, info, subdivide, paint, view, stats and bench: --device SEL (gpu, cpu, P:D
+or part of a name), --storage buffer|image
 )";
 
 //! 2: the user's input or the device's limits; 3: the device; 1: a defect.
@@ -85,7 +92,7 @@ int main(int argc, char** argv)
     {"info", info_command},   {"subdivide", subdivide_command}, {"bench", bench_command},
     {"demo", demo_command},   {"devices", devices_command}, {"paint", paint_command},
     {"stats", stats_command}, {"transfer", transfer_command},
-    {"fit", fit_command}};
+    {"fit", fit_command}, {"view", view_command}};
   try {
     if (command == "help" || command == "--help" || command == "-h") {
       std::cout << kUsage;

@@ -2,11 +2,13 @@
 // the painted surface written with its channels, and the project saved.
 
 #include "commands.h"
+#include "picture_options.h"
 #include "table.h"
 
 #include "PaintingExport.h"
 #include "RasterIO.h"
 #include "SurfaceConversion.h"
+#include "SurfaceRendering.h"
 
 #include "core/errors.h"
 #include "core/format.h"
@@ -60,10 +62,12 @@ void paint_job(PaintSurface& surface, const std::string& name, const StrokeScrip
 
 int paint_command(const Argv& argv)
 {
-  Args args("paint", argv, {"--quiet"},
-            {"--strokes", "--level", "--model-level", "--lod", "-o", "--save", "--labels", "--device", "--storage"});
-  args.expect_positionals(1, 1, "MESH|PROJECT --strokes S.json [--level L] [--model-level M] [--lod L] [-o OUTDIR] "
-                                "[--save P.meshpaint] [--labels labels.json]");
+  Args args("paint", argv, {"--quiet", "--two-sided"},
+            {"--strokes", "--level", "--model-level", "--lod", "-o", "--save", "--labels", "--device", "--storage",
+             "--screenshot", "--camera", "--size"});
+  args.expect_positionals(1, 1, "MESH|PROJECT --strokes S.json [--level L] [--model-level M] [--lod L] [--two-sided] "
+                                "[-o OUTDIR] [--save P.meshpaint] [--labels labels.json] "
+                                "[--screenshot OUT.png [--camera AZ,EL,ZOOM] [--size WxH]]");
   const std::string dir = args.value("-o");
   const std::string save = args.value("--save");
   if (dir.empty() && save.empty())
@@ -89,12 +93,25 @@ int paint_command(const Argv& argv)
       throw InputError("stroke " + std::to_string(k) + ": \"edit_level\" " +
                        std::to_string(script.strokes[k].edit_level) + " is finer than the painting level " +
                        std::to_string(level));
+  const PictureOptions picture = picture_options(args);
+  const std::string screenshot = args.value("--screenshot");
+  if (args.has("--screenshot") && lower_extension(screenshot) != ".png")
+    throw InputError("--screenshot must name a .png file, not '" + screenshot + "'");
+  if (!args.has("--screenshot") && (args.has("--camera") || args.has("--size")))
+    throw InputError("--camera and --size need --screenshot OUT.png");
   auto runtime = open_device(args);
   Timer setup;
   const auto surface = open_paint_surface(runtime, chosen_storage(args, *runtime), input, level);
   if (!args.flag("--quiet"))
     std::cerr << "meshpaint paint: surface ready in " << format_fixed(setup.ms(), 1) << " ms\n";
+  if (args.flag("--two-sided"))
+    surface->set_two_sided(true);
   paint_job(*surface, input.mesh().name, script, model_level, dir, args.flag("--quiet"), lod);
+  if (!screenshot.empty()) {
+    render_screenshot(to_polydata(surface->painted_surface()), picture.camera, picture.width, picture.height,
+                      screenshot);
+    std::cout << "wrote      " << screenshot << " (" << picture.width << "x" << picture.height << ")\n";
+  }
   if (save.empty())
     return 0;
   Project project = input.project ? *input.project : Project();
