@@ -5,7 +5,7 @@
 
 #include "atlas/atlas.h"
 #include "cl/runtime.h"
-#include "paint/paint_surface.h"
+#include "paint/paint_scene.h"
 #include "paint/stroke.h"
 #include "mesh/base_mesh.h"
 #include "mesh/welded_surface.h"
@@ -71,8 +71,8 @@ std::string strokes_dir();
 //! printing a table of the strokes.
 //! With `lod` between 1 and the painting level (exclusive), also
 //! DIR/surface_lodL.vtp: the painted surface at that coarser level.
-void paint_job(PaintSurface& surface, const std::string& name, const StrokeScript& script, int model_level,
-               const std::string& dir, bool quiet, int lod = -1);
+void paint_job(PaintScene& scene, const StrokeScript& script, int model_level, const std::string& dir, bool quiet,
+               int lod = -1);
 
 //! \throw InputError unless the path ends in .obj, .ply or .vtp (any case).
 void check_surface_format(const std::string& path);

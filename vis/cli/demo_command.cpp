@@ -60,8 +60,9 @@ int demo_command(const Argv& argv)
   StrokeScript script = load_stroke_script(strokes_dir() + "/bunny_demo.json");
   if (!args.positionals().empty())
     script.strokes.resize(1);
-  PaintSurface painted(runtime, mesh, level, storage);
-  paint_job(painted, mesh.name, script, std::max(1, level - 2), dir + "/painted", true);
+  PaintScene scene;
+  scene.add(std::make_unique<PaintSurface>(runtime, mesh, level, storage), mesh.name);
+  paint_job(scene, script, std::max(1, level - 2), dir + "/painted", true);
   return 0;
 }
 

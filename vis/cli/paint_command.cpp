@@ -15,19 +15,38 @@
 #include "core/timer.h"
 #include "project/project_surface.h"
 
-#include <iostream> // for std::cout, std::cerr
+#include "paint/paint_scene.h"
+
+#include <vtkAppendPolyData.h> // for vtkAppendPolyData
+
+#include <algorithm> // for std::max
+#include <iostream>  // for std::cout, std::cerr
+#include <set>       // for std::set
 
 namespace meshpaint::cli {
 
-void paint_job(PaintSurface& surface, const std::string& name, const StrokeScript& script, int model_level,
-               const std::string& dir, bool quiet, int lod)
+void paint_job(PaintScene& scene, const StrokeScript& script, int model_level, const std::string& dir, bool quiet,
+               int lod)
 {
-  surface.undo_log().set_recording(false); // a script never undoes: no snapshots to pay for
+  std::string names;
+  for (std::size_t o = 0; o < scene.size(); ++o) {
+    scene.surface(o).undo_log().set_recording(false); // a script never undoes: no snapshots to pay for
+    names += (o ? ", " : "") + scene.name(o);
+  }
   Table table({"stroke", "tool", "dabs", "on surface", "patches", "ms", "note"});
   Timer progress;
   for (std::size_t k = 0; k < script.strokes.size(); ++k) {
     const Stroke& stroke = script.strokes[k];
-    const StrokeReport r = surface.apply(stroke);
+    // A scene's stroke: its dabs over every object, its time the sum.
+    StrokeReport r;
+    for (const StrokeReport& o : scene.apply(stroke)) {
+      r.dabs = std::max(r.dabs, o.dabs);
+      r.dabs_applied += o.dabs_applied;
+      r.patches_touched += o.patches_touched;
+      r.ms += o.ms;
+      r.left_surface = r.left_surface || o.left_surface;
+      r.stretch = std::max(r.stretch, o.stretch);
+    }
     std::string note = r.left_surface ? "left the surface" : "";
     if (r.stretch >= kUndersampledStretch) {
       note += std::string(note.empty() ? "" : "; ") + "stretched " + format_fixed(r.stretch, 1) + "x";
@@ -42,21 +61,26 @@ void paint_job(PaintSurface& surface, const std::string& name, const StrokeScrip
       progress.restart();
     }
   }
-  std::cout << "painted    " << name << " at level " << surface.level() << ", " << script.strokes.size()
+  std::cout << "painted    " << names << " at level " << scene.surface(0).level() << ", " << script.strokes.size()
             << " strokes\n";
   if (!script.strokes.empty())
     table.print(std::cout);
   if (dir.empty())
     return;
-  const PaintingExportReport written = export_painting(surface, model_level, dir);
-  std::cout << "wrote      " << written.surface_path << ", " << dir << "/model.obj (level " << model_level << ", "
-            << written.model_quads << " quads) with model.mtl and " << written.map_width << "x"
-            << written.map_height << " texture maps\n";
-  if (lod > 0 && lod < surface.level()) {
-    const std::string lod_out = dir + "/surface_lod" + std::to_string(lod) + ".vtp";
-    write_vtp(to_polydata(surface.painted_surface(lod)), lod_out);
-    std::cout << "wrote      " << lod_out << " (level " << lod << " with the normals of level " << surface.level()
-              << ")\n";
+  // One object writes into DIR; each of several into DIR/<name>.
+  for (std::size_t o = 0; o < scene.size(); ++o) {
+    PaintSurface& surface = scene.surface(o);
+    const std::string out = scene.size() == 1 ? dir : dir + "/" + scene.name(o);
+    const PaintingExportReport written = export_painting(surface, model_level, out);
+    std::cout << "wrote      " << written.surface_path << ", " << out << "/model.obj (level " << model_level << ", "
+              << written.model_quads << " quads) with model.mtl and " << written.map_width << "x"
+              << written.map_height << " texture maps\n";
+    if (lod > 0 && lod < surface.level()) {
+      const std::string lod_out = out + "/surface_lod" + std::to_string(lod) + ".vtp";
+      write_vtp(to_polydata(surface.painted_surface(lod)), lod_out);
+      std::cout << "wrote      " << lod_out << " (level " << lod << " with the normals of level "
+                << surface.level() << ")\n";
+    }
   }
 }
 
@@ -65,7 +89,7 @@ int paint_command(const Argv& argv)
   Args args("paint", argv, {"--quiet", "--two-sided"},
             {"--strokes", "--level", "--model-level", "--lod", "-o", "--save", "--labels", "--device", "--storage",
              "--screenshot", "--camera", "--size"});
-  args.expect_positionals(1, 1, "MESH|PROJECT --strokes S.json [--level L] [--model-level M] [--lod L] [--two-sided] "
+  args.expect_positionals(1, 64, "MESH|PROJECT... --strokes S.json [--level L] [--model-level M] [--lod L] [--two-sided] "
                                 "[-o OUTDIR] [--save P.meshpaint] [--labels labels.json] "
                                 "[--screenshot OUT.png [--camera AZ,EL,ZOOM] [--size WxH]]");
   const std::string dir = args.value("-o");
@@ -84,8 +108,18 @@ int paint_command(const Argv& argv)
   }
   const std::vector<LabelClass> new_labels =
     args.has("--labels") ? load_labels(args.value("--labels")) : std::vector<LabelClass>();
-  const MeshOrProject input = open_mesh_or_project(args.positionals()[0]);
+  const std::vector<std::string>& paths = args.positionals();
+  if (paths.size() > 1 && !save.empty())
+    throw InputError("--save keeps one surface: give one MESH or PROJECT, not " + std::to_string(paths.size()));
+  std::vector<MeshOrProject> inputs;
+  for (const std::string& path : paths)
+    inputs.push_back(open_mesh_or_project(path));
+  const MeshOrProject& input = inputs.front();
   const int level = input_level(args, input, script.level > 0 ? script.level : 3);
+  for (const MeshOrProject& other : inputs)
+    if (input_level(args, other, level) != level)
+      throw InputError("'" + other.path + "' is at level " + std::to_string(input_level(args, other, level)) +
+                       ", '" + input.path + "' at " + std::to_string(level) + ": a scene paints at one level");
   const int model_level = args.integer("--model-level", std::max(1, level - 2), 1, level);
   const int lod = args.integer("--lod", level, 1, level);
   for (std::size_t k = 0; k < script.strokes.size(); ++k)
@@ -101,17 +135,30 @@ int paint_command(const Argv& argv)
     throw InputError("--camera and --size need --screenshot OUT.png");
   auto runtime = open_device(args);
   Timer setup;
-  const auto surface = open_paint_surface(runtime, chosen_storage(args, *runtime), input, level);
+  PaintScene scene;
+  std::set<std::string> taken; // names of the objects' output folders
+  for (const MeshOrProject& in : inputs) {
+    auto surface = open_paint_surface(runtime, chosen_storage(args, *runtime), in, level);
+    if (args.flag("--two-sided"))
+      surface->set_two_sided(true);
+    std::string name = in.mesh().name.empty() ? "object" : in.mesh().name;
+    for (int k = 2; !taken.insert(name).second; ++k)
+      name = in.mesh().name + "_" + std::to_string(k);
+    scene.add(std::move(surface), name);
+  }
   if (!args.flag("--quiet"))
-    std::cerr << "meshpaint paint: surface ready in " << format_fixed(setup.ms(), 1) << " ms\n";
-  if (args.flag("--two-sided"))
-    surface->set_two_sided(true);
-  paint_job(*surface, input.mesh().name, script, model_level, dir, args.flag("--quiet"), lod);
+    std::cerr << "meshpaint paint: " << (inputs.size() == 1 ? "surface" : "surfaces") << " ready in "
+              << format_fixed(setup.ms(), 1) << " ms\n";
+  paint_job(scene, script, model_level, dir, args.flag("--quiet"), lod);
   if (!screenshot.empty()) {
-    render_screenshot(to_polydata(surface->painted_surface()), picture.camera, picture.width, picture.height,
-                      screenshot);
+    auto all = vtkSmartPointer<vtkAppendPolyData>::New();
+    for (std::size_t o = 0; o < scene.size(); ++o)
+      all->AddInputData(to_polydata(scene.surface(o).painted_surface()));
+    all->Update();
+    render_screenshot(all->GetOutput(), picture.camera, picture.width, picture.height, screenshot);
     std::cout << "wrote      " << screenshot << " (" << picture.width << "x" << picture.height << ")\n";
   }
+  PaintSurface* const surface = &scene.surface(0);
   if (save.empty())
     return 0;
   Project project = input.project ? *input.project : Project();
