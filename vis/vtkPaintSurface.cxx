@@ -341,6 +341,8 @@ vtkPaintView* vtkPaintSurface::GetView()
     in.view = vtkSmartPointer<vtkPaintView>::New();
     in.view->SetDevice(this->Device.c_str());
     in.view->SetSurface(in.surface);
+    if (in.project) // saves from the window continue the loaded project
+      in.view->SetProject(*in.project);
   }
   return in.view;
 }

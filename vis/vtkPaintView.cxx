@@ -13,6 +13,8 @@
 #include "core/errors.h"         // for meshpaint::IOError
 #include "paint/model_export.h"  // for meshpaint::build_export, write_obj_model
 #include "paint/paint_surface.h" // for meshpaint::PaintSurface
+#include "project/project.h"         // for meshpaint::Project, save_project
+#include "project/project_surface.h" // for meshpaint::capture_surface, continued_history
 
 #include <vtkActor.h>                   // for vtkActor
 #include <vtkCamera.h>                  // for vtkCamera
@@ -41,6 +43,7 @@ vtkStandardNewMacro(vtkPaintView);
 struct vtkPaintView::Internals
 {
   std::shared_ptr<meshpaint::PaintSurface> surface;
+  std::unique_ptr<meshpaint::Project> project; // where the surface came from, if from a project
   std::unique_ptr<meshpaint::BrushSettings> brush;
   // The painted surface at the painting level, brought up to date when next
   // shown after a change, and its coarser tessellation for the level of
@@ -116,6 +119,14 @@ int vtkPaintView::SetBaseMesh(const meshpaint::BaseMesh& mesh)
                                                                   : meshpaint::parse_storage(this->Storage);
     this->SetSurface(std::make_shared<meshpaint::PaintSurface>(runtime, mesh, this->Level, storage));
   });
+}
+
+void vtkPaintView::SetProject(const meshpaint::Project& project)
+{
+  this->Impl->project = std::make_unique<meshpaint::Project>(project);
+  // The layers live in the surface; a save takes them from there.
+  this->Impl->project->positions.clear();
+  this->Impl->project->channels = meshpaint::PaintChannels();
 }
 
 void vtkPaintView::SetSurface(std::shared_ptr<meshpaint::PaintSurface> surface)
@@ -547,8 +558,15 @@ int vtkPaintView::Save()
         throw meshpaint::IOError("cannot write '" + dir + "/strokes.json'");
     });
     meshpaint::write_vtp(this->Surface(this->Level), dir + "/surface.vtp");
+    if (in.project) {
+      meshpaint::Project p = *in.project;
+      p.history = meshpaint::continued_history(in.project->history, in.surface->history(), this->Level);
+      meshpaint::capture_surface(*in.surface, p);
+      meshpaint::save_project(p, dir + "/surface.meshpaint");
+    }
   });
-  this->Message = ok ? "saved " + dir + "/strokes.json and surface.vtp" : this->LastError;
+  this->Message = ok ? "saved " + dir + "/strokes.json, surface.vtp" + (in.project ? " and surface.meshpaint" : "")
+                     : this->LastError;
   this->UpdateText();
   this->Render();
   return ok;

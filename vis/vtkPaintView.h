@@ -35,6 +35,7 @@ class vtkSurfacePicker;
 namespace meshpaint {
 struct BaseMesh;
 class PaintSurface;
+struct Project;
 struct StrokeScript;
 }
 
@@ -100,6 +101,10 @@ public:
   /// Paints on a surface someone else holds too (vtkPaintSurface::GetView());
   /// Level becomes the surface's.
   void SetSurface(std::shared_ptr<meshpaint::PaintSurface> surface);
+  /// The project the surface came from: Save() then also writes
+  /// SaveDirectory/surface.meshpaint, this project continued (its labels,
+  /// scan and earlier history kept).
+  void SetProject(const meshpaint::Project& project);
   /// True when this view paints on `surface`.
   bool Shows(const std::shared_ptr<meshpaint::PaintSurface>& surface) const;
   /// Applies a parsed script whose pattern and stamp files are loaded.

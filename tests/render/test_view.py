@@ -231,3 +231,31 @@ def test_window_of_a_paint_surface_shares_its_strokes(tmp_path):
     surface.Undo()
     surface.Update()
     assert (vtk_to_numpy(surface.GetOutput().GetPointData().GetArray("diffuse")) == before).all()
+
+
+def test_saving_a_window_on_a_project_continues_the_project(tmp_path):
+    project = tmp_path / "cube.meshpaint"
+    script = tmp_path / "first.json"
+    script.write_text(json.dumps({"strokes": [
+        {"tool": "paint", "points": [[0.5, 0.5, 1]], "radius": 0.2, "channels": {"diffuse": [0, 1, 0]}}]}))
+    r = subprocess.run([BIN, "paint", CUBE, "--strokes", str(script), "--level", "4", "--save", str(project)],
+                       capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stderr
+    surface = meshpaint.vtkPaintSurface()
+    surface.LoadProject(str(project))
+    view = surface.GetView()
+    view.SetSize(*SIZE)
+    view.OffScreenOn()
+    view.SetSaveDirectory(str(tmp_path / "session"))
+    assert view.Initialize(), view.GetLastError()
+    drag(view, line(180, 150, 220, 150, 8))
+    assert view.Save(), view.GetLastError()
+    saved = tmp_path / "session" / "surface.meshpaint"
+    assert saved.exists()
+    # The saved project holds both strokes: the project's and the window's.
+    r = subprocess.run([BIN, "paint", str(saved), "--save", str(tmp_path / "again.meshpaint")],
+                       capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stderr
+    again = meshpaint.vtkPaintSurface()
+    again.LoadProject(str(tmp_path / "again.meshpaint"))
+    assert len(json.loads(again.GetHistoryJSON())["strokes"]) == 2

@@ -33,7 +33,7 @@ commands:
                                       model.obj + model.mtl + PNG texture maps; --save:
                                       the project to continue from; --screenshot: a
                                       rendered picture
-  view MESH [--strokes S.json] [--level L] [--lod L] [-o DIR] [--size WxH]
+  view MESH|PROJECT [--strokes S.json] [--level L] [--lod L] [-o DIR] [--size WxH]
                                       the painting window (docs/window.md); saves the
                                       recorded strokes and the surface into DIR
   stats MESH [--labels labels.json] [--json|--csv] [--level L]
@@ -54,7 +54,7 @@ commands:
   help                                this text
 
 MESH: a mesh file (.obj .off .ply .stl) or a project (.meshpaint) for info, subdivide,
-paint and stats
+paint, view and stats
 options of demo, info, subdivide, paint, view, stats and bench: --device SEL (gpu, cpu, P:D
 or part of a name), --storage buffer|image
 )";

@@ -36,7 +36,7 @@ int default_view_level(const BaseMesh& mesh)
 int view_command(const Argv& argv)
 {
   Args args("view", argv, {}, {"--strokes", "--level", "--lod", "-o", "--size", "--device", "--storage"});
-  args.expect_positionals(1, 1, "MESH [--strokes S.json] [--level L] [--lod L] [-o DIR] [--size WxH]");
+  args.expect_positionals(1, 1, "MESH|PROJECT [--strokes S.json] [--level L] [--lod L] [-o DIR] [--size WxH]");
   // Everything is checked before the window opens.
   StrokeScript script;
   if (args.has("--strokes")) {
@@ -46,8 +46,9 @@ int view_command(const Argv& argv)
   const PictureOptions picture = picture_options(args);
   if (args.has("--storage"))
     parse_storage(args.value("--storage"));
-  const BaseMesh mesh = load_reported(args.positionals()[0]);
-  const int level = args.integer("--level", script.level > 0 ? script.level : default_view_level(mesh), 1, kMaxLevel);
+  const MeshOrProject input = open_mesh_or_project(args.positionals()[0]);
+  const BaseMesh& mesh = input.mesh();
+  const int level = input_level(args, input, script.level > 0 ? script.level : default_view_level(mesh));
 
   const int lod = args.integer("--lod", std::max(1, level - 1), 0, level);
   vtkNew<vtkPaintView> view;
@@ -57,8 +58,12 @@ int view_command(const Argv& argv)
   view->SetStorage(args.value("--storage").c_str());
   view->SetSaveDirectory(args.value("-o", mesh.name + "-session").c_str());
   view->SetSize(picture.width, picture.height);
-  open_device(args); // reports a bad --device like every command
-  if (!view->SetBaseMesh(mesh))
+  const auto runtime = open_device(args); // reports a bad --device like every command
+  if (input.project) { // the project's surface as saved, painted on from here
+    view->SetSurface(open_paint_surface(runtime, chosen_storage(args, *runtime), input, level));
+    view->SetProject(*input.project);
+  }
+  else if (!view->SetBaseMesh(mesh))
     throw DeviceError(view->GetLastError());
   if (!script.strokes.empty() && !view->ApplyScript(script))
     throw DeviceError(view->GetLastError()); // the script was checked: what fails now is the device
