@@ -289,7 +289,7 @@ TEST(StrokeScript, ErrorsNameTheStrokeAndKey)
             "stroke 0: \"backfaces\" has no meaning unless \"space\" is \"screen\" or \"tangent\"");
   EXPECT_EQ(message(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "space": "tangent", "spray": {"drops": 3, "size": 1},
       "channels": {"roughness": 1}}]})"),
-            "stroke 0: \"spray\" belongs to paint and label strokes in screen space");
+            "stroke 0: \"spray\" has no meaning unless a paint or label stroke is in screen space");
   EXPECT_EQ(message(R"({"strokes": [{"colour": [1,0,0]}]})").substr(0, 40), "stroke 0: \"colour\" is not a stroke key (");
   EXPECT_EQ(message(R"({"strokes": [{"points": [[0,0]], "radius": 1}]})"), "stroke 0: \"points\" must be a list of [x, y, z] points");
   EXPECT_EQ(message(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "channels": {"gloss": 1}}]})").substr(0, 51),

@@ -85,6 +85,27 @@ void vtkPaintSurface::SetEditLevel(int v)
     this->Impl->brush.erase("edit_level");
 }
 
+void vtkPaintSurface::SetSpace(const char* v) { this->Impl->brush["space"] = v ? v : ""; }
+void vtkPaintSurface::SetBackfaces(const char* v) { this->Impl->brush["backfaces"] = v ? v : ""; }
+void vtkPaintSurface::SetSide(const char* v) { this->Impl->brush["side"] = v ? v : ""; }
+
+void vtkPaintSurface::SetCamera(double px, double py, double pz, double fx, double fy, double fz, double ux,
+                                double uy, double uz, double view_angle)
+{
+  this->Impl->brush["camera"] = {{"position", {px, py, pz}},
+                                 {"focal_point", {fx, fy, fz}},
+                                 {"view_up", {ux, uy, uz}},
+                                 {"view_angle", view_angle}};
+}
+
+void vtkPaintSurface::SetSpray(int drops, double size, int seed)
+{
+  if (drops > 0)
+    this->Impl->brush["spray"] = {{"drops", drops}, {"size", size}, {"seed", seed}};
+  else
+    this->Impl->brush.erase("spray");
+}
+
 void vtkPaintSurface::SetMirror(const char* v)
 {
   if (v && *v)

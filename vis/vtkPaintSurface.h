@@ -63,6 +63,13 @@ public:
   void SetAmount(double amount);
   void SetIterations(int iterations);
   void SetEditLevel(int level); ///< geometry tools: the level edited; 0 for the painting level
+  void SetSpace(const char* space); ///< "object", "tangent", "screen", "parameter"
+  /// The view of screen-space brushes and patterns (as vtkCamera gives it).
+  void SetCamera(double px, double py, double pz, double fx, double fy, double fz, double ux, double uy, double uz,
+                 double view_angle);
+  void SetBackfaces(const char* policy); ///< "skip" or "paint"
+  void SetSide(const char* side);        ///< two-sided surfaces: "auto", "outside", "inside"
+  void SetSpray(int drops, double size, int seed); ///< screen space; drops 0: no spray
   void SetDiffuse(double r, double g, double b);
   void SetSpecular(double r, double g, double b);
   void SetRoughness(double roughness);

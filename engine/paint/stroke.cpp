@@ -289,7 +289,7 @@ void read_space(const StrokeReader& r, Stroke& s, const std::string& tool, bool 
   }
   if (r.has("spray")) {
     if (s.space != SPACE_SCREEN || (s.tool != Tool::Paint && s.tool != Tool::Label))
-      r.fail("spray", "belongs to paint and label strokes in screen space");
+      r.fail("spray", "has no meaning unless a paint or label stroke is in screen space");
     const json& sp = r.at("spray");
     if (!sp.is_object())
       r.fail("spray", "must be {\"drops\": n, \"size\": radius, \"seed\": k}");

@@ -149,6 +149,23 @@ def test_brush_setters_and_a_vtkpoints_path():
     assert s.GetStrokeCount() == 3
     s.SetEditLevel(0)
     assert "edit_level" not in json.loads(s.GetBrushJSON())
+    # A screen-space spray seen from above: settings of other tools stay in
+    # the brush but not in the stroke.
+    s.SetTool("paint")
+    s.SetDiffuse(1, 1, 0)
+    s.SetSpace("screen")
+    s.SetCamera(0, 0, 5, 0, 0, 0, 0, 1, 0, 30)
+    s.SetBackfaces("skip")
+    s.SetSpray(32, 0.02, 7)
+    top = vtk.vtkPoints()
+    top.InsertNextPoint(0, 0, 0.5)
+    s.ApplyStroke(top)
+    s.Update()
+    assert s.GetStrokeCount() == 4
+    brush = json.loads(s.GetBrushJSON())
+    assert brush["space"] == "screen" and brush["spray"] == {"drops": 32, "size": 0.02, "seed": 7}
+    history = json.loads(s.GetHistoryJSON())["strokes"]
+    assert history[-1]["spray"]["drops"] == 32 and "amount" not in history[-1]
 
 
 def painted_sphere():
