@@ -229,6 +229,12 @@ inline float brush_t(__global const BrushDab *dab, float3 x, float3 nx, int p, i
   }
 }
 
+/* The normal brush_t needs at a texel: only tangent and screen brushes look
+ * at it, so the others skip the load (the branch is the same for every
+ * work item of a dab). */
+#define BRUSH_NORMAL(dab, nrm, g, p, ij) \
+  ((dab)->space == SPACE_TANGENT || (dab)->space == SPACE_SCREEN ? ATLAS_LOAD(nrm, g, p, ij).xyz : (float3)(0.0f))
+
 /* The brush stamp's value at `plane` (brush_t): the image spanning the
  * brush's diameter; 1 without a stamp. */
 inline float stamp_weight(__global const BrushDab *dab, __global const float *stamp, float2 plane)
@@ -305,7 +311,7 @@ __kernel void paint_dab(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *
   const int2 ij = (int2)(i, j);
   const float3 x = ATLAS_LOAD(pos, g, p, ij).xyz;
   float2 plane;
-  const float t = brush_t(dab, x, ATLAS_LOAD(nrm, g, p, ij).xyz, p, ij, g.x - 1, &plane);
+  const float t = brush_t(dab, x, BRUSH_NORMAL(dab, nrm, g, p, ij), p, ij, g.x - 1, &plane);
   if (!(t <= 1.0f))
     return;
   const int k = CHANNEL_INDEX(g.x, p, ij);
@@ -366,7 +372,7 @@ __kernel void dab_pickup(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int 
     const int2 ij = (int2)(r % g.x, r / g.x);
     const float3 x = ATLAS_LOAD(pos, g, p, ij).xyz;
     float2 plane;
-    const float t = brush_t(dab, x, ATLAS_LOAD(nrm, g, p, ij).xyz, p, ij, g.x - 1, &plane);
+    const float t = brush_t(dab, x, BRUSH_NORMAL(dab, nrm, g, p, ij), p, ij, g.x - 1, &plane);
     if (t <= 1.0f) {
       const int k = CHANNEL_INDEX(g.x, p, ij);
       w = falloff_weight(dab->falloff, t) * stamp_weight(dab, stamp, plane);

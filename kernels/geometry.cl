@@ -22,7 +22,7 @@ __kernel void dab_weights(ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g, __glob
     return;
   const float3 x = ATLAS_LOAD(limit_pos, g, p, ij).xyz;
   float2 plane;
-  const float t = brush_t(dab, x, ATLAS_LOAD(limit_nrm, g, p, ij).xyz, p, ij, g.x - 1, &plane);
+  const float t = brush_t(dab, x, BRUSH_NORMAL(dab, limit_nrm, g, p, ij), p, ij, g.x - 1, &plane);
   const int k = WEIGHT_INDEX(g, p, ij);
   weights[k] = t <= 1.0f ? falloff_weight(dab->falloff, t) * dab->strength *
                              (1.0f - material[WEIGHT_INDEX(gm, p, ij * stride)].w) *
