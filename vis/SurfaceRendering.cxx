@@ -4,6 +4,11 @@
 #include "core/errors.h"      // for meshpaint::IOError
 
 #include <vtkActor.h>                   // for vtkActor
+#include <vtkPolyDataMapper.h>          // for vtkPolyDataMapper
+#include <vtkUnsignedCharArray.h>       // for vtkUnsignedCharArray
+
+#include <algorithm> // for std::min
+#include <cmath>     // for std::sin, std::cos
 #include <vtkCamera.h>                  // for vtkCamera
 #include <vtkDataObject.h>              // for vtkDataObject::FIELD_ASSOCIATION_POINTS
 #include <vtkNew.h>                     // for vtkNew
@@ -103,10 +108,54 @@ void write_screenshot(vtkRenderWindow* window, const std::string& path)
   });
 }
 
+void show_scattered_light(vtkActor* actor, vtkPolyData* surface)
+{
+  vtkPointData* pd = surface->GetPointData();
+  vtkDataArray* diffuse = pd->GetArray("diffuse");
+  vtkDataArray* light = pd->GetArray("scattered_light");
+  if (!diffuse || !light) {
+    show_materials(actor, surface);
+    return;
+  }
+  // Extended Reinhard tone mapping, white at 2: bright light saturates
+  // smoothly instead of clipping.
+  const auto tone = [](double x) { return std::min(1.0, x * (1.0 + x / 4.0) / (1.0 + x)); };
+  vtkNew<vtkUnsignedCharArray> colours;
+  colours->SetName("lit");
+  colours->SetNumberOfComponents(3);
+  colours->SetNumberOfTuples(surface->GetNumberOfPoints());
+  for (vtkIdType v = 0; v < surface->GetNumberOfPoints(); ++v) {
+    const double e = 0.15 + 1.6 * light->GetComponent(v, 0);
+    for (int c = 0; c < 3; ++c)
+      colours->SetValue(3 * v + c, static_cast<unsigned char>(255.0 * tone(diffuse->GetComponent(v, c) * e) + 0.5));
+  }
+  vtkNew<vtkPolyData> lit;
+  lit->ShallowCopy(surface);
+  lit->GetPointData()->AddArray(colours);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(lit);
+  mapper->SetScalarModeToUsePointFieldData();
+  mapper->SelectColorArray("lit");
+  mapper->SetColorModeToDirectScalars();
+  mapper->ScalarVisibilityOn();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->LightingOff(); // the light is in the colours
+}
+
+std::array<double, 3> headlight_direction(const CameraView& view)
+{
+  // vtkCamera::Azimuth turns about the view up (+y), then Elevation towards it.
+  const double az = view.azimuth * M_PI / 180.0, el = view.elevation * M_PI / 180.0;
+  return {std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el)};
+}
+
 void render_screenshot(vtkPolyData* surface, const CameraView& view, int width, int height, const std::string& path)
 {
   vtkNew<vtkActor> actor;
-  show_materials(actor, surface);
+  if (surface->GetPointData()->GetArray("scattered_light"))
+    show_scattered_light(actor, surface);
+  else
+    show_materials(actor, surface);
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
   renderer->SetBackground(0.1, 0.1, 0.12);

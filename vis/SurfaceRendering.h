@@ -5,6 +5,7 @@
 
 #include "meshpaintVisModule.h" // for MESHPAINTVIS_EXPORT
 
+#include <array>  // for std::array
 #include <string> // for std::string
 
 class vtkActor;
@@ -28,6 +29,16 @@ struct CameraView
 //! Arrays it lacks fall back to the actor's property.
 MESHPAINTVIS_EXPORT void show_materials(vtkActor* actor, vtkPolyData* surface);
 
+//! The paper's high-quality look (Ritschel et al., section 7): `surface`
+//! drawn with the colour baked from its "diffuse" and "scattered_light"
+//! arrays (ambient plus the light diffused in atlas space, tone-mapped),
+//! VTK's own lighting off. show_materials() where there is no light array.
+MESHPAINTVIS_EXPORT void show_scattered_light(vtkActor* actor, vtkPolyData* surface);
+
+//! The direction towards the camera (VTK's headlight) of `view`, in the
+//! frame of the default camera, which looks down -z with +y up.
+MESHPAINTVIS_EXPORT std::array<double, 3> headlight_direction(const CameraView& view);
+
 //! Resets the camera to the renderer's visible bounds and turns it by `view`.
 MESHPAINTVIS_EXPORT void set_camera(vtkRenderer* renderer, const CameraView& view);
 
@@ -35,8 +46,9 @@ MESHPAINTVIS_EXPORT void set_camera(vtkRenderer* renderer, const CameraView& vie
 //! \throw IOError when the file cannot be written.
 MESHPAINTVIS_EXPORT void write_screenshot(vtkRenderWindow* window, const std::string& path);
 
-//! Renders `surface` offscreen with show_materials() at width x height
-//! pixels and writes the PNG (needs an X display, e.g. under xvfb-run).
+//! Renders `surface` offscreen with show_materials() (show_scattered_light()
+//! when it has a "scattered_light" array) at width x height pixels and
+//! writes the PNG (needs an X display, e.g. under xvfb-run).
 MESHPAINTVIS_EXPORT void render_screenshot(vtkPolyData* surface, const CameraView& view, int width, int height,
                                            const std::string& path);
 

@@ -28,7 +28,8 @@ struct PaintSurface::LayerKernels
   void build(Runtime& rt, AtlasStorage storage)
   {
     program = build_program(rt,
-                            std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "brush.cl", "geometry.cl"},
+                            std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "brush.cl", "geometry.cl",
+                                                     "lighting.cl"},
                             storage_options(storage));
     copy_tiles = cl::Kernel(program, "copy_tiles");
     smooth_interior = cl::Kernel(program, "smooth_interior");
@@ -983,6 +984,49 @@ void PaintSurface::geometry_changed()
   launch(rt.queue(), device_->patch_bounds, cl::NDRange(round_up(l.patches, kGroup)), cl::NDRange(kGroup),
          atlas_->limit_positions_layer(), grid(l), cl::Buffer(), l.patches, device_->bounds);
   rt.queue().finish();
+}
+
+std::vector<float> PaintSurface::scattered_light(const Vec3& light, int passes)
+{
+  Device& d = *device_;
+  Runtime& rt = atlas_->runtime();
+  cl::CommandQueue& q = rt.queue();
+  const LevelLayout l = atlas_->layout(level_);
+  const float len = std::sqrt(light[0] * light[0] + light[1] * light[1] + light[2] * light[2]);
+  if (!(len > 0.f))
+    throw InputError("the light's direction must not be zero");
+  std::vector<Float4> texels(l.texels());
+  try {
+    cl::Kernel irradiance(d.positions.program, "irradiance");
+    const auto tiles = range_tiles(l, l.patches);
+    launch(q, irradiance, tiles.first, tiles.second, atlas_->limit_normals_layer(), grid(l), l.patches,
+           cl_float4{{light[0] / len, light[1] / len, light[2] / len, 0.f}}, d.channel_work);
+    // Diffusion over the whole atlas: the smoothing passes at full weight.
+    q.enqueueFillBuffer(d.weights, 1.f, 0, l.texels() * sizeof(float));
+    cl::Buffer other(rt.context(), CL_MEM_READ_WRITE, l.texels() * sizeof(Float4));
+    const cl::Buffer all; // null lists: every patch, edge and ring
+    const int edges = int(atlas_->topology().edges.size()), rings = int(atlas_->topology().rings.size());
+    cl::Buffer* from = &d.channel_work;
+    cl::Buffer* to = &other;
+    for (int k = 0; k < passes; ++k) {
+      launch(q, d.channels.smooth_interior, tiles.first, tiles.second, *from, *to, grid(l), all, l.patches, d.weights,
+             0.5f);
+      if (l.n > 1)
+        launch(q, d.channels.smooth_edges, cl::NDRange(l.n - 1, round_up(edges, kGroup)), cl::NDRange(1, kGroup), *from,
+               *to, grid(l), atlas_->edge_table(), all, edges, d.weights, 0.5f);
+      launch(q, d.channels.smooth_corners, cl::NDRange(round_up(rings, kGroup)), cl::NDRange(kGroup), *from, *to,
+             grid(l), atlas_->ring_table(), atlas_->slot_table(), all, rings, d.weights, 0.5f);
+      std::swap(from, to);
+    }
+    q.enqueueReadBuffer(*from, CL_TRUE, 0, texels.size() * sizeof(Float4), texels.data());
+  } catch (const cl::Error& e) {
+    throw DeviceError("the subsurface light failed on " + rt.info().name + ": " + describe(e));
+  }
+  const std::vector<int> map = weld_map(atlas_->topology(), l);
+  std::vector<float> out(map.empty() ? 0 : std::size_t(*std::max_element(map.begin(), map.end())) + 1);
+  for (std::size_t t = 0; t < map.size(); ++t)
+    out[std::size_t(map[t])] = texels[t][0];
+  return out;
 }
 
 PaintChannels PaintSurface::read_channels()

@@ -107,6 +107,11 @@ public:
   void geometry_changed();
 
   PaintChannels read_channels();
+  //! Texture-space subsurface lighting (Ritschel et al., section 7): the
+  //! irradiance max(0, n . light) of a directional light at every texel,
+  //! diffused over the atlas by `passes` smoothing passes, per welded vertex
+  //! in the order of painted_surface().
+  std::vector<float> scattered_light(const Vec3& towards_light, int passes);
   //! Replaces every channel (e.g. from a saved project); each layer must
   //! hold the painting level's texels.
   //! \throw InputError when a layer has another size.

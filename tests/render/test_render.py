@@ -205,3 +205,18 @@ def test_pick_reports_the_patch_and_its_texel_coordinates():
         cell.EvaluateLocation(vtk.reference(0), [u * n - i, v * n - j, 0.0], point, weights)
         assert sum((a - b) ** 2 for a, b in zip(point, picker.GetPoint())) ** 0.5 < 1e-4
     assert len(seen) > 1
+
+
+def test_subsurface_light_softens_the_shading(tmp_path):
+    # A cube seen over a corner: its three faces differ in light. Light
+    # diffused in atlas space bleeds across the edges, so the faces differ
+    # less; the background is untouched.
+    import numpy as np
+    plain = paint_picture(tmp_path, [], "--camera", "40,30,1")
+    soft = paint_picture(tmp_path, [], "--camera", "40,30,1", "--subsurface", "200")
+    background = plain[0, 0]
+    on_cube = np.any(plain != background, axis=2) & np.any(soft != background, axis=2)
+    assert on_cube.sum() > 2000
+    assert (soft[0, 0] == background).all()
+    grey = lambda img: img[on_cube].mean(axis=1)
+    assert grey(soft).std() < 0.8 * grey(plain).std(), (grey(soft).std(), grey(plain).std())

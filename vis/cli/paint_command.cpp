@@ -18,6 +18,8 @@
 #include "paint/paint_scene.h"
 
 #include <vtkAppendPolyData.h> // for vtkAppendPolyData
+#include <vtkFloatArray.h>     // for vtkFloatArray
+#include <vtkPointData.h>      // for vtkPointData
 
 #include <algorithm> // for std::max
 #include <iostream>  // for std::cout, std::cerr
@@ -88,10 +90,10 @@ int paint_command(const Argv& argv)
 {
   Args args("paint", argv, {"--quiet", "--two-sided"},
             {"--strokes", "--level", "--model-level", "--lod", "-o", "--save", "--labels", "--device", "--storage",
-             "--screenshot", "--camera", "--size"});
+             "--screenshot", "--camera", "--size", "--subsurface"});
   args.expect_positionals(1, 64, "MESH|PROJECT... --strokes S.json [--level L] [--model-level M] [--lod L] [--two-sided] "
                                 "[-o OUTDIR] [--save P.meshpaint] [--labels labels.json] "
-                                "[--screenshot OUT.png [--camera AZ,EL,ZOOM] [--size WxH]]");
+                                "[--screenshot OUT.png [--camera AZ,EL,ZOOM] [--size WxH] [--subsurface N]]");
   const std::string dir = args.value("-o");
   const std::string save = args.value("--save");
   if (dir.empty() && save.empty())
@@ -131,8 +133,9 @@ int paint_command(const Argv& argv)
   const std::string screenshot = args.value("--screenshot");
   if (args.has("--screenshot") && lower_extension(screenshot) != ".png")
     throw InputError("--screenshot must name a .png file, not '" + screenshot + "'");
-  if (!args.has("--screenshot") && (args.has("--camera") || args.has("--size")))
-    throw InputError("--camera and --size need --screenshot OUT.png");
+  if (!args.has("--screenshot") && (args.has("--camera") || args.has("--size") || args.has("--subsurface")))
+    throw InputError("--camera, --size and --subsurface need --screenshot OUT.png");
+  const int subsurface = args.integer("--subsurface", 0, 0, 10000);
   auto runtime = open_device(args);
   Timer setup;
   PaintScene scene;
@@ -152,8 +155,20 @@ int paint_command(const Argv& argv)
   paint_job(scene, script, model_level, dir, args.flag("--quiet"), lod);
   if (!screenshot.empty()) {
     auto all = vtkSmartPointer<vtkAppendPolyData>::New();
-    for (std::size_t o = 0; o < scene.size(); ++o)
-      all->AddInputData(to_polydata(scene.surface(o).painted_surface()));
+    for (std::size_t o = 0; o < scene.size(); ++o) {
+      vtkSmartPointer<vtkPolyData> poly = to_polydata(scene.surface(o).painted_surface());
+      if (subsurface > 0) { // the light from the camera, diffused over the atlas
+        const auto d = headlight_direction(picture.camera);
+        const std::vector<float> light =
+          scene.surface(o).scattered_light({float(d[0]), float(d[1]), float(d[2])}, subsurface);
+        auto array = vtkSmartPointer<vtkFloatArray>::New();
+        array->SetName("scattered_light");
+        array->SetNumberOfValues(vtkIdType(light.size()));
+        std::copy(light.begin(), light.end(), array->GetPointer(0));
+        poly->GetPointData()->AddArray(array);
+      }
+      all->AddInputData(poly);
+    }
     all->Update();
     render_screenshot(all->GetOutput(), picture.camera, picture.width, picture.height, screenshot);
     std::cout << "wrote      " << screenshot << " (" << picture.width << "x" << picture.height << ")\n";
