@@ -4,7 +4,6 @@
 #include "core/errors.h"      // for meshpaint::IOError
 
 #include <vtkActor.h>                   // for vtkActor
-#include <vtkPolyDataMapper.h>          // for vtkPolyDataMapper
 #include <vtkUnsignedCharArray.h>       // for vtkUnsignedCharArray
 
 #include <algorithm> // for std::min
@@ -41,6 +40,7 @@ void show_materials(vtkActor* actor, vtkPolyData* surface)
   }
   actor->SetMapper(mapper);
   vtkProperty* property = actor->GetProperty();
+  property->LightingOn(); // show_scattered_light() may have turned it off
   property->SetInterpolationToPhong();
   property->SetDiffuse(1.0);
   property->SetAmbient(0.0);
@@ -132,13 +132,14 @@ void show_scattered_light(vtkActor* actor, vtkPolyData* surface)
   vtkNew<vtkPolyData> lit;
   lit->ShallowCopy(surface);
   lit->GetPointData()->AddArray(colours);
-  vtkNew<vtkPolyDataMapper> mapper;
+  vtkNew<vtkOpenGLPolyDataMapper> mapper;
   mapper->SetInputData(lit);
   mapper->SetScalarModeToUsePointFieldData();
   mapper->SelectColorArray("lit");
   mapper->SetColorModeToDirectScalars();
   mapper->ScalarVisibilityOn();
   actor->SetMapper(mapper);
+  actor->GetShaderProperty()->ClearAllShaderReplacements(); // show_materials()'s, for arrays this mapper lacks
   actor->GetProperty()->LightingOff(); // the light is in the colours
 }
 

@@ -17,6 +17,8 @@
 #include "project/project_surface.h" // for meshpaint::capture_surface, continued_history
 
 #include <vtkActor.h>                   // for vtkActor
+#include <vtkFloatArray.h>              // for vtkFloatArray
+#include <vtkPointData.h>               // for vtkPointData
 #include <vtkCamera.h>                  // for vtkCamera
 #include <vtkCommand.h>                 // for vtkCommand
 #include <vtkMapper.h>                  // for vtkMapper
@@ -50,6 +52,7 @@ struct vtkPaintView::Internals
   // detail (made once per level, sharing the arrays); `shown` is drawn.
   vtkSmartPointer<vtkPolyData> full, coarse, shown;
   bool full_stale = true;
+  bool lit = false; // drawn with the subsurface light
   int coarse_level = 0;
   bool moving = false; // the camera turns or a stroke is drawn
   int shown_level = 0;
@@ -220,6 +223,7 @@ int vtkPaintView::Initialize()
                      "Ctrl+S       save strokes.json and surface.vtp\n"
                      "Ctrl+E       export model.obj with texture maps\n"
                      "r            reset the camera\n"
+                     "b            subsurface light at rest (on / off)\n"
                      "h, F1        this help;  q, Escape: quit")
                       .c_str());
   in.help->VisibilityOff();
@@ -435,8 +439,28 @@ void vtkPaintView::Show()
   vtkPolyData* poly = nullptr;
   if (!meshpaint::guarded(this->LastError, [&] { poly = this->Surface(level); }))
     return;
-  if (poly != in.shown.GetPointer() && in.initialized)
+  const bool lit = this->SubsurfacePasses > 0 && level == this->Level && in.initialized;
+  if (lit) { // at rest only: the light follows the camera
+    meshpaint::guarded(this->LastError, [&] {
+      vtkCamera* camera = in.renderer->GetActiveCamera();
+      double eye[3], focus[3];
+      camera->GetPosition(eye);
+      camera->GetFocalPoint(focus);
+      const std::vector<float> light = in.surface->scattered_light(
+        {float(eye[0] - focus[0]), float(eye[1] - focus[1]), float(eye[2] - focus[2])}, this->SubsurfacePasses);
+      auto array = vtkSmartPointer<vtkFloatArray>::New();
+      array->SetName("scattered_light");
+      array->SetNumberOfValues(vtkIdType(light.size()));
+      std::copy(light.begin(), light.end(), array->GetPointer(0));
+      poly->GetPointData()->AddArray(array);
+    });
+    meshpaint::show_scattered_light(in.actor, poly);
+  } else if (in.lit && in.initialized) {
+    meshpaint::show_materials(in.actor, poly);
+  } else if (poly != in.shown.GetPointer() && in.initialized) {
     in.actor->GetMapper()->SetInputDataObject(poly);
+  }
+  in.lit = lit;
   in.shown = poly;
   in.shown_level = level;
 }
@@ -490,6 +514,10 @@ int vtkPaintView::HandleKey(const char* keysym, bool control, bool shift)
       return 0;
   } else if (key == "h" || key == "F1" || key == "question") {
     this->SetHelpVisible(!this->GetHelpVisible());
+  } else if (key == "b") {
+    this->SubsurfacePasses = this->SubsurfacePasses > 0 ? 0 : 60;
+    this->Message = this->SubsurfacePasses > 0 ? "subsurface light on" : "subsurface light off";
+    this->Show();
   } else if (key == "r") {
     meshpaint::set_camera(in.renderer, meshpaint::CameraView());
   } else if (key == "q" || key == "Escape") {

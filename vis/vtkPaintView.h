@@ -74,6 +74,11 @@ public:
   /// normals and channels of the painting level); the painting level when
   /// the view rests. -1 (default): Level - 1 (at least 1); 0: off;
   /// larger than Level: Level.
+  /// The paper's high-quality look at rest: light from the camera diffused
+  /// over the atlas in this many smoothing passes (texture-space subsurface
+  /// lighting, tone-mapped); 0 (default): VTK's lighting. Key b toggles 0 and 60.
+  vtkSetClampMacro(SubsurfacePasses, int, 0, 10000);
+  vtkGetMacro(SubsurfacePasses, int);
   vtkSetClampMacro(LodLevel, int, -1, 12);
   vtkGetMacro(LodLevel, int);
   /// Quads of the painted surface at the painting level.
@@ -180,6 +185,7 @@ protected:
 
   int Level = 3;
   int LodLevel = -1;
+  int SubsurfacePasses = 0;
   std::string Device;
   std::string Storage;
   int Size[2] = {1024, 768};

@@ -259,3 +259,28 @@ def test_saving_a_window_on_a_project_continues_the_project(tmp_path):
     again = meshpaint.vtkPaintSurface()
     again.LoadProject(str(tmp_path / "again.meshpaint"))
     assert len(json.loads(again.GetHistoryJSON())["strokes"]) == 2
+
+
+def test_subsurface_light_key(tmp_path):
+    view = open_view(tmp_path)
+
+    def picture():
+        grab = vtk.vtkWindowToImageFilter()
+        grab.SetInput(view.GetRenderWindow())
+        grab.ReadFrontBufferOff()
+        grab.Update()
+        w, h, _ = grab.GetOutput().GetDimensions()
+        pixels = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(int).reshape(h, w, -1)
+        return pixels[h // 4:3 * h // 4, w // 4:3 * w // 4]  # the surface, away from the on-screen text
+
+    view.Render()
+    plain = picture()
+    key(view, "b")
+    assert view.GetSubsurfacePasses() == 60 and view.GetMessage() == "subsurface light on"
+    view.Render()
+    lit = picture()
+    assert abs(lit - plain).sum() > 0
+    key(view, "b")
+    assert view.GetSubsurfacePasses() == 0
+    view.Render()
+    assert (picture() == plain).all()
