@@ -17,6 +17,7 @@ const std::array<const char*, 9> kTools = {"paint", "smooth", "blur", "sculpt", 
 const std::array<const char*, 6> kChannels = {"diffuse", "specular", "roughness", "displacement", "mask", "material"};
 const std::array<const char*, 4> kFalloffs = {"constant", "linear", "smoothstep", "gaussian"};
 const std::array<const char*, 5> kOps = {"copy", "over", "max", "add", "subtract"};
+const std::array<const char*, 4> kSpaces = {"object", "tangent", "screen", "parameter"};
 // Swatches 0..9 for the colour channels.
 const std::array<std::array<double, 3>, 10> kPalette = {{{0.05, 0.05, 0.05}, {0.85, 0.1, 0.1}, {0.95, 0.55, 0.1},
                                                          {0.95, 0.9, 0.2}, {0.2, 0.7, 0.2}, {0.1, 0.6, 0.7},
@@ -74,6 +75,8 @@ bool BrushSettings::handle_key(const std::string& key, bool shift)
     mirror_ = mirror_ == 2 ? -1 : mirror_ + 1;
   else if (key == "i" || key == "I")
     inwards_ = !inwards_;
+  else if (key == "p" || key == "P")
+    space_ = cycle(space_, kSpaces, shift || key == "P");
   else if (key == "l" && !shift)
     edit_level_ = std::max(1, edit_level_ - 1);
   else if (key == "L" || (key == "l" && shift))
@@ -123,6 +126,14 @@ std::string BrushSettings::stroke_json(const std::vector<Vec3>& points) const
     s.erase("mirror");
   if (coarse_edit())
     s["edit_level"] = edit_level_;
+  if (space_ != 0) {
+    s["space"] = kSpaces[std::size_t(space_)];
+    if (kSpaces[std::size_t(space_)] == std::string("screen") && has_camera_) // the view it is drawn in
+      s["camera"] = {{"position", {camera_.position[0], camera_.position[1], camera_.position[2]}},
+                     {"focal_point", {camera_.focal_point[0], camera_.focal_point[1], camera_.focal_point[2]}},
+                     {"view_up", {camera_.view_up[0], camera_.view_up[1], camera_.view_up[2]}},
+                     {"view_angle", camera_.view_angle}};
+  }
   return s.dump();
 }
 
@@ -147,7 +158,8 @@ std::string BrushSettings::describe() const
   if (moves(tool))
     out << "   edit level " << edit_level_ << (edit_level_ < level_ ? " (coarse)" : "");
   out << "\nradius " << format_fixed(radius_, 4) << "   strength " << format_fixed(strength_, 1) << "   falloff "
-      << kFalloffs[std::size_t(falloff_)] << "   mirror " << (mirror_ < 0 ? std::string("off") : std::string(1, char('x' + mirror_)));
+      << kFalloffs[std::size_t(falloff_)] << "   mirror " << (mirror_ < 0 ? std::string("off") : std::string(1, char('x' + mirror_)))
+      << "   space " << kSpaces[std::size_t(space_)];
   return out.str();
 }
 
@@ -162,6 +174,7 @@ std::string BrushSettings::key_help()
          "o            op (copy over max add subtract)\n"
          "m            mirror (off x y z)\n"
          "i            sculpt and inflate: outwards / inwards\n"
+         "p / P        brush space (object tangent screen parameter)\n"
          "l / L        geometry tools: edit a coarser / finer level";
 }
 

@@ -40,6 +40,12 @@ public:
   bool coarse_edit() const;
   double spacing() const { return 0.25; }
   void set_radius(double radius) { radius_ = radius; }
+  //! The view screen-space strokes are drawn in.
+  void set_camera(const Camera& camera)
+  {
+    camera_ = camera;
+    has_camera_ = true;
+  }
 
 private:
   double size_;
@@ -54,6 +60,9 @@ private:
   bool inwards_ = false; // sculpt, inflate: push in instead of out
   int level_;            // painting level
   int edit_level_;       // level geometry tools edit, 1..level_
+  int space_ = 0;        // object, tangent, screen, parameter
+  Camera camera_;
+  bool has_camera_ = false;
 };
 
 } // namespace meshpaint

@@ -303,6 +303,17 @@ int vtkPaintView::BeginStroke(int x, int y)
   in.path = {meshpaint::Vec3{float(p[0]), float(p[1]), float(p[2])}};
   in.pieces = 0;
   in.moving = true;
+  { // screen-space strokes carry the view they are drawn in
+    vtkCamera* c = in.renderer->GetActiveCamera();
+    meshpaint::Camera camera;
+    for (int k = 0; k < 3; ++k) {
+      camera.position[k] = float(c->GetPosition()[k]);
+      camera.focal_point[k] = float(c->GetFocalPoint()[k]);
+      camera.view_up[k] = float(c->GetViewUp()[k]);
+    }
+    camera.view_angle = float(c->GetViewAngle());
+    in.brush->set_camera(camera);
+  }
   // A coarse-level edit is applied on release only: undoing pieces would
   // start its detail afresh, which a replay would not do.
   if (in.brush->coarse_edit()) {

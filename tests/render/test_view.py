@@ -284,3 +284,21 @@ def test_subsurface_light_key(tmp_path):
     assert view.GetSubsurfacePasses() == 0
     view.Render()
     assert (picture() == plain).all()
+
+
+def test_brush_spaces_from_the_window_replay(tmp_path):
+    view = open_view(tmp_path)
+    key(view, "p")  # tangent
+    drag(view, line(150, 120, 200, 140, 6))
+    key(view, "p")  # screen: the stroke carries the camera
+    key(view, "6")
+    drag(view, line(180, 180, 240, 150, 6))
+    key(view, "p")  # parameter
+    key(view, "3")
+    drag(view, [(200, 150)])
+    live, again = save_and_replay(view, tmp_path)
+    script = json.loads((tmp_path / "session" / "strokes.json").read_text())
+    assert [s.get("space") for s in script["strokes"]] == ["tangent", "screen", "parameter"]
+    assert "camera" in script["strokes"][1]
+    for name in live:
+        assert live[name].tobytes() == again[name].tobytes(), name
