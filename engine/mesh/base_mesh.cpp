@@ -268,6 +268,8 @@ BaseMesh load_mesh(const std::string& path)
   // OpenMesh's text readers skip a vertex written as "nan" or "inf"; say so
   // rather than let the faces after it name the wrong vertices.
   const FileCensus census = take_census(path, ext);
+  if (!census.problem.empty())
+    throw InputError(where + census.problem);
   if (census.nonfinite_line >= 0)
     throw InputError(where + "line " + std::to_string(census.nonfinite_line) + ": non-finite coordinate '" +
                      census.nonfinite_token + "'");

@@ -1,10 +1,15 @@
 #include "mesh/file_census.h"
 
+#include <algorithm> // for std::max
 #include <cctype>  // for std::tolower
+#include <cerrno>  // for errno, ERANGE
+#include <cstdlib> // for std::strtol
 #include <cstdint> // for std::uint32_t
 #include <cstring> // for std::memcpy
 #include <fstream> // for std::ifstream
+#include <set>     // for std::set
 #include <sstream> // for std::istringstream
+#include <vector>  // for std::vector
 
 namespace meshpaint {
 namespace {
@@ -35,25 +40,100 @@ void check_numbers(const std::string& line, long number, FileCensus& c)
 
 bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
 
+//! An OBJ face needs at least one corner, and each corner a vertex index
+//! (OpenMesh asserts on a face without one).
+void check_obj_face(std::istringstream& words, long number, FileCensus& c)
+{
+  std::string corner;
+  int corners = 0;
+  while (words >> corner) {
+    ++corners;
+    const char* text = corner.c_str();
+    char* end = nullptr;
+    errno = 0;
+    const long index = std::strtol(text, &end, 10);
+    if (end == text || index == 0 || errno == ERANGE || (*end != '\0' && *end != '/')) {
+      c.problem = "line " + std::to_string(number) + ": face corner '" + corner + "' has no vertex index";
+      return;
+    }
+  }
+  if (corners == 0)
+    c.problem = "line " + std::to_string(number) + ": a face without vertices";
+}
+
+bool is_ply_type(const std::string& t)
+{
+  static const std::set<std::string> types = {"char",  "uchar",   "short",  "ushort", "int",   "uint",
+                                               "float", "double",  "int8",   "uint8",  "int16", "uint16",
+                                               "int32", "uint32",  "float32", "float64"};
+  return types.count(t) > 0;
+}
+
+//! One PLY header line, as words, checked against the grammar (OpenMesh's
+//! reader crashes on some malformed headers). Returns true at end_header.
+bool check_ply_header_line(const std::vector<std::string>& w, long number, FileCensus& c)
+{
+  const std::string& k = w[0];
+  bool ok = false;
+  if (number == 1)
+    ok = w.size() == 1 && k == "ply";
+  else if (k == "format")
+    ok = w.size() == 3 && (w[1] == "ascii" || w[1] == "binary_little_endian" || w[1] == "binary_big_endian") &&
+         w[2] == "1.0";
+  else if (k == "comment" || k == "obj_info")
+    ok = true;
+  else if (k == "element")
+    ok = w.size() == 3 && w[2].find_first_not_of("0123456789") == std::string::npos && w[2].size() < 10;
+  else if (k == "property")
+    ok = (w.size() == 3 && is_ply_type(w[1])) ||
+         (w.size() == 5 && w[1] == "list" && is_ply_type(w[2]) && is_ply_type(w[3]));
+  else if (k == "end_header")
+    ok = w.size() == 1;
+  if (!ok)
+    c.problem = "line " + std::to_string(number) + ": not a PLY header line";
+  return ok && k == "end_header";
+}
+
+//! Element counts a file of `size` bytes cannot hold (at `min_bytes` per
+//! vertex or face) would make the reader reserve memory for nothing.
+FileCensus& check_counts(long vertices, long faces, long size, long min_bytes, FileCensus& c)
+{
+  for (const auto& [count, what] : {std::pair{vertices, "vertices"}, std::pair{faces, "faces"}})
+    if (count < 0 || count > size / min_bytes + 1) {
+      c.problem = "declares " + std::to_string(count) + " " + what + ", more than its " +
+                  std::to_string(size) + " bytes can hold";
+      break;
+    }
+  return c;
+}
+
 } // namespace
 
 FileCensus take_census(const std::string& path, const std::string& ext)
 {
   FileCensus c;
-  std::ifstream in(path, std::ios::binary);
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in)
     return c;
+  const long file_size = long(in.tellg());
+  in.seekg(0);
   std::string line;
   long number = 0;
 
   if (ext == ".obj") {
     c.declared_faces = 0;
-    while (std::getline(in, line)) {
+    while (std::getline(in, line) && c.problem.empty()) {
       ++number;
-      if (starts_with(line, "f ") || starts_with(line, "f\t"))
+      // OpenMesh reads the keyword as a word, leading blanks skipped.
+      std::istringstream words(line);
+      std::string keyword;
+      words >> keyword;
+      if (keyword == "f") {
         ++c.declared_faces;
-      else if (starts_with(line, "v ") || starts_with(line, "v\t"))
-        check_numbers(line.substr(2), number, c);
+        check_obj_face(words, number, c);
+      } else if (keyword == "v") {
+        check_numbers(line.substr(line.find('v') + 1), number, c);
+      }
     }
   } else if (ext == ".off") {
     long nv = -1, seen_vertices = 0;
@@ -69,40 +149,92 @@ FileCensus take_census(const std::string& path, const std::string& ext)
           return c;
         std::istringstream rest(line.substr(line.find("OFF") + 3));
         long f = -1;
-        if (rest >> nv >> f)
+        const bool counted = bool(rest >> nv);
+        if (counted && rest >> f)
           c.declared_faces = f;
+        if (counted && !check_counts(nv, std::max(f, 0L), file_size, 6, c).problem.empty())
+          return c;
         continue;
       }
       if (nv < 0) {
         std::istringstream counts(line);
         long f = -1;
-        if (!(counts >> nv >> f))
+        const bool counted = bool(counts >> nv);
+        if (!counted || !(counts >> f)) {
+          if (counted)
+            check_counts(nv, 0, file_size, 6, c);
           return c;
+        }
         c.declared_faces = f;
+        if (!check_counts(nv, f, file_size, 6, c).problem.empty())
+          return c;
       } else if (seen_vertices < nv) {
         ++seen_vertices;
         check_numbers(line, number, c);
       } else {
-        break;
+        // A face starts with its corner count, which OpenMesh allocates.
+        std::istringstream words(line);
+        long corners = 0;
+        if (words >> corners && (corners < 1 || corners > nv)) {
+          c.problem = "line " + std::to_string(number) + ": a face of " + std::to_string(corners) +
+                      " corners, but there are only " + std::to_string(nv) + " vertices";
+          return c;
+        }
       }
     }
   } else if (ext == ".ply") {
-    bool ascii = false;
-    long nv = 0;
-    while (std::getline(in, line)) {
+    bool ascii = false, ended = false;
+    long nv = 0, nf = 0;
+    std::vector<std::pair<std::string, long>> elements; // name, count, in file order
+    while (!ended && std::getline(in, line) && c.problem.empty()) {
       ++number;
-      if (starts_with(line, "format ascii"))
-        ascii = true;
+      if (!line.empty() && line.back() == '\r')
+        line.pop_back();
       std::istringstream words(line);
-      std::string a, b;
-      long count = 0;
-      if (words >> a >> b >> count && a == "element")
-        (b == "face" ? c.declared_faces : nv) = count;
-      if (starts_with(line, "end_header"))
+      std::vector<std::string> w;
+      for (std::string word; words >> word;)
+        w.push_back(word);
+      if (w.empty() && number > 1)
+        continue;
+      if (w.empty() || number > 10000) {
+        c.problem = "line " + std::to_string(number) + ": not a PLY header line";
         break;
+      }
+      ended = check_ply_header_line(w, number, c);
+      if (!c.problem.empty())
+        break;
+      if (w[0] == "format")
+        ascii = w[1] == "ascii";
+      if (w[0] == "element") {
+        elements.push_back({w[1], std::stol(w[2])});
+        (w[1] == "face" ? nf : nv) += elements.back().second;
+      }
     }
-    for (long v = 0; ascii && v < nv && std::getline(in, line); ++v)
-      check_numbers(line, ++number, c);
+    if (!c.problem.empty())
+      return c;
+    c.declared_faces = nf;
+    // OpenMesh's PLY reader does not return on a header without its end.
+    if (!ended) {
+      c.problem = "the PLY header has no end_header line";
+      return c;
+    }
+    if (!check_counts(nv, c.declared_faces, file_size, ascii ? 6 : 12, c).problem.empty())
+      return c;
+    // ASCII: one line per element; a face starts with its corner count,
+    // which OpenMesh allocates.
+    for (const auto& [name, count] : elements)
+      for (long k = 0; ascii && k < count && c.problem.empty() && std::getline(in, line); ++k) {
+        ++number;
+        if (name == "vertex") {
+          check_numbers(line, number, c);
+        } else if (name == "face") {
+          std::istringstream words(line);
+          long corners = 0;
+          if (words >> corners && (corners < 0 || corners > nv))
+            c.problem = "line " + std::to_string(number) + ": a face of " + std::to_string(corners) +
+                        " corners, but there are only " + std::to_string(nv) + " vertices";
+        }
+      }
   } else if (ext == ".stl") {
     char header[84];
     in.read(header, 84);

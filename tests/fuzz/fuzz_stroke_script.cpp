@@ -1,0 +1,25 @@
+// libFuzzer target: the stroke-script parser, then the dab positions of every
+// stroke it accepts. Input errors are expected; anything else is a finding.
+#include "core/errors.h"
+#include "paint/stroke.h"
+
+#include <cstddef> // for std::size_t
+#include <cstdint> // for std::uint8_t
+#include <cstdio>  // for std::fprintf
+#include <cstdlib> // for std::abort
+#include <string>  // for std::string
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+  using namespace meshpaint;
+  try {
+    StrokeScript script = parse_stroke_script(std::string(reinterpret_cast<const char*>(data), size));
+    for (const Stroke& stroke : script.strokes)
+      stroke_samples(stroke);
+  } catch (const InputError&) {
+  } catch (const std::exception& e) { // any other exception is a finding: say which
+    std::fprintf(stderr, "unexpected exception: %s\n", e.what());
+    std::abort();
+  }
+  return 0;
+}
