@@ -13,6 +13,10 @@
 
 #pragma OPENCL FP_CONTRACT OFF
 
+/* Texel (p, ij) of grid g in patch-major order: buffers of any per-texel
+ * data (weights, details) and the buffer storage path share it. */
+#define PATCH_MAJOR_INDEX(g, p, ij) (((p) * (g).x + (ij).y) * (g).x + (ij).x)
+
 #ifdef ATLAS_IMAGE
 #define ATLAS_IN __read_only image2d_t
 #define ATLAS_OUT __write_only image2d_t
@@ -21,7 +25,7 @@
 #else
 #define ATLAS_IN __global const float4 *restrict
 #define ATLAS_OUT __global float4 *restrict
-#define ATLAS_INDEX(g, p, ij) (((p) * (g).x + (ij).y) * (g).x + (ij).x)
+#define ATLAS_INDEX(g, p, ij) PATCH_MAJOR_INDEX(g, p, ij)
 #define ATLAS_LOAD(a, g, p, ij) ((a)[ATLAS_INDEX(g, p, ij)])
 #define ATLAS_STORE(a, g, p, ij, v) ((a)[ATLAS_INDEX(g, p, ij)] = (v))
 #endif

@@ -7,13 +7,14 @@
  * patch-major, computed from the limit surface. Built after brush.cl, whose
  * falloff and stamp helpers it shares. */
 
-#define WEIGHT_INDEX(g, p, ij) (((p) * (g).x + (ij).y) * (g).x + (ij).x)
+#define WEIGHT_INDEX(g, p, ij) PATCH_MAJOR_INDEX(g, p, ij)
 
 /* Range: (tile, tile * count). Weight of each texel of the listed patches:
- * falloff x strength x (1 - mask), 0 outside the radius. */
+ * falloff x strength x (1 - mask), 0 outside the radius. The mask lives at
+ * the finest level (grid gm): texel ij of grid g is texel ij * stride there. */
 __kernel void dab_weights(ATLAS_IN limit_pos, int2 g, __global const int *list, int count,
                           __global const BrushDab *dab, __global const float *stamp, __global const float4 *material,
-                          __global float *weights)
+                          int2 gm, int stride, __global float *weights)
 {
   int p;
   int2 ij;
@@ -22,7 +23,8 @@ __kernel void dab_weights(ATLAS_IN limit_pos, int2 g, __global const int *list, 
   const float3 x = ATLAS_LOAD(limit_pos, g, p, ij).xyz;
   const float t = distance(x, vload3(0, dab->centre)) / dab->radius;
   const int k = WEIGHT_INDEX(g, p, ij);
-  weights[k] = t <= 1.0f ? falloff_weight(dab->falloff, t) * dab->strength * (1.0f - material[k].w) *
+  weights[k] = t <= 1.0f ? falloff_weight(dab->falloff, t) * dab->strength *
+                             (1.0f - material[WEIGHT_INDEX(gm, p, ij * stride)].w) *
                              stamp_weight(dab, stamp, x)
                          : 0.0f;
 }

@@ -13,11 +13,11 @@ inline float3 refine_weights(int i)
 }
 
 /* Range: (dst tile, dst tile * patches); texels strictly inside patches. */
-__kernel void subdivide_interior(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, int patches)
+__kernel void subdivide_interior(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, __global const int *list, int patches)
 {
   int p;
   int2 ij;
-  if (!interior_texel(dg, 0, patches, &p, &ij))
+  if (!interior_texel(dg, list, patches, &p, &ij))
     return;
   const int n_src = sg.x - 1;
   const int ci = (ij.x + 1) >> 1, cj = (ij.y + 1) >> 1;
@@ -36,13 +36,13 @@ __kernel void subdivide_interior(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, 
 /* Range: #edges; texels on patch sides, corners excluded, each work item
  * walking one side so that its frames and rows are set up once. */
 __kernel void subdivide_edges(ATLAS_IN src, ATLAS_OUT dst, __global const PatchEdge *edges,
-                              int edge_count, int2 sg, int2 dg)
+                              __global const int *list, int edge_count, int2 sg, int2 dg)
 {
   const int k = get_global_id(0);
   if (k >= edge_count)
     return;
   const int n_src = sg.x - 1;
-  const PatchEdge e = edges[k];
+  const PatchEdge e = edges[LISTED(list, k)];
   EDGE_FRAMES(e, sg);
   const int interior = e.patch[1] >= 0;
   /* Old samples along the side: the side row and the rows on either side. */
@@ -76,12 +76,13 @@ __kernel void subdivide_edges(ATLAS_IN src, ATLAS_OUT dst, __global const PatchE
 
 /* Range: #rings; patch corners, i.e. the level-1 vertices and their copies. */
 __kernel void subdivide_corners(ATLAS_IN src, ATLAS_OUT dst, __global const CornerRing *rings,
-                                __global const CornerSlot *slots, int ring_count, int2 sg, int2 dg)
+                                __global const CornerSlot *slots, __global const int *list, int ring_count, int2 sg,
+                                int2 dg)
 {
   const int k = get_global_id(0);
   if (k >= ring_count)
     return;
-  const CornerRing ring = rings[k];
+  const CornerRing ring = rings[LISTED(list, k)];
   const CornerSlot first = slots[ring.first], last = slots[ring.first + ring.count - 1];
   const float4 v = CORNER_LOAD(src, sg, first, 0, 0);
   float4 r;

@@ -273,7 +273,13 @@ TEST(StrokeScript, ErrorsNameTheStrokeAndKey)
             "stroke 0: \"radius\" must be a number from 1e-30 to 1e+30");
   EXPECT_EQ(message(R"({"strokes": [{"tool": "paint", "points": [[0,0,0]], "radius": 1, "strength": "lots", "channels": {"roughness": 1}}]})"),
             "stroke 0: \"strength\" must be a number from 0 to 1");
-  EXPECT_EQ(message(R"({"strokes": [{"tool": "spray"}]})"), "stroke 0: \"tool\" must be one of paint, label, wash, dip, smooth, blur, sculpt, inflate, flatten, smear");
+  EXPECT_EQ(message(R"({"strokes": [{"tool": "spray"}]})"), "stroke 0: \"tool\" must be one of paint, label, wash, dip, smooth, blur, sculpt, inflate, flatten, smear, grab");
+  EXPECT_EQ(message(R"({"strokes": [{"tool": "paint", "points": [[0,0,0]], "radius": 1, "edit_level": 2, "channels": {"roughness": 1}}]})"),
+            "stroke 0: \"edit_level\" has no meaning for a paint stroke, which does not move the surface");
+  EXPECT_EQ(message(R"({"strokes": [{"tool": "grab", "points": [[0,0,0]], "radius": 1, "mirror": "x"}]})"),
+            "stroke 0: \"mirror\" has no meaning for a grab stroke, which pulls one region");
+  EXPECT_EQ(message(R"({"strokes": [{"tool": "sculpt", "points": [[0,0,0]], "radius": 1, "amount": 1, "edit_level": 0}]})"),
+            "stroke 0: \"edit_level\" must be an integer from 1 to 12");
   EXPECT_EQ(message(R"({"strokes": [{"colour": [1,0,0]}]})").substr(0, 40), "stroke 0: \"colour\" is not a stroke key (");
   EXPECT_EQ(message(R"({"strokes": [{"points": [[0,0]], "radius": 1}]})"), "stroke 0: \"points\" must be a list of [x, y, z] points");
   EXPECT_EQ(message(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "channels": {"gloss": 1}}]})").substr(0, 51),

@@ -76,6 +76,14 @@ void vtkPaintSurface::SetLabel(int v) { this->Impl->brush["channels"]["label"] =
 void vtkPaintSurface::SetMask(double v) { this->Impl->brush["channels"]["mask"] = v; }
 void vtkPaintSurface::ClearChannels() { this->Impl->brush.erase("channels"); }
 
+void vtkPaintSurface::SetEditLevel(int v)
+{
+  if (v > 0)
+    this->Impl->brush["edit_level"] = v;
+  else
+    this->Impl->brush.erase("edit_level");
+}
+
 void vtkPaintSurface::SetMirror(const char* v)
 {
   if (v && *v)
@@ -102,6 +110,9 @@ int vtkPaintSurface::ApplyStroke(vtkPoints* path)
       stroke["points"].push_back({p[0], p[1], p[2]});
     }
   }
+  // Settings of other tools stay in the brush for later; this stroke has
+  // only the keys its own tool reads.
+  stroke = nlohmann::json::parse(meshpaint::drop_meaningless_keys(stroke.dump()));
   return this->ApplyStrokes(nlohmann::json{{"strokes", {stroke}}}.dump().c_str());
 }
 

@@ -57,6 +57,7 @@ public:
   void SetMirror(const char* axis); ///< "x", "y", "z", or "" for none
   void SetAmount(double amount);
   void SetIterations(int iterations);
+  void SetEditLevel(int level); ///< geometry tools: the level edited; 0 for the painting level
   void SetDiffuse(double r, double g, double b);
   void SetSpecular(double r, double g, double b);
   void SetRoughness(double roughness);

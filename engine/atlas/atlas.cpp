@@ -55,6 +55,11 @@ AtlasStorage parse_storage(const std::string& name)
   throw InputError("unknown atlas storage '" + name + "' (buffer or image)");
 }
 
+std::string storage_options(AtlasStorage storage)
+{
+  return std::string("-cl-std=CL1.2") + (storage == AtlasStorage::Image ? " -D ATLAS_IMAGE" : "");
+}
+
 const char* storage_name(AtlasStorage storage)
 {
   return storage == AtlasStorage::Image ? "image" : "buffer";
@@ -184,11 +189,9 @@ Atlas::Atlas(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int max_lev
 
     kernels_ = std::make_unique<Kernels>();
     Kernels& k = *kernels_;
-    const std::string options =
-      std::string("-cl-std=CL1.2") + (storage_ == AtlasStorage::Image ? " -D ATLAS_IMAGE" : "");
     k.program = build_program(*runtime_,
                               {"atlas_types.h", "atlas_access.cl", "subdivide.cl", "limit.cl", "reduce.cl"},
-                              options);
+                              storage_options(storage_));
     k.subdivide_interior = cl::Kernel(k.program, "subdivide_interior");
     k.subdivide_edges = cl::Kernel(k.program, "subdivide_edges");
     k.subdivide_corners = cl::Kernel(k.program, "subdivide_corners");
@@ -231,43 +234,64 @@ Atlas::~Atlas() = default;
 
 LevelLayout Atlas::layout(int level) const { return level_layout(topology_.patch_count, level); }
 
-Atlas::Layer Atlas::make_layer(const LevelLayout& l)
+cl::Memory allocate_layer(Runtime& runtime, const LevelLayout& l, AtlasStorage storage)
 {
   // Zero-filled, so texels of unused image tiles are defined.
-  Layer layer;
   const cl_float4 zero{{0.f, 0.f, 0.f, 0.f}};
-  if (storage_ == AtlasStorage::Image) {
-    layer.image = cl::Image2D(runtime_->context(), CL_MEM_READ_WRITE, cl::ImageFormat(CL_RGBA, CL_FLOAT),
-                              l.width, l.height);
-    runtime_->queue().enqueueFillImage(layer.image, zero, {0, 0, 0},
-                                       {std::size_t(l.width), std::size_t(l.height), 1});
-  } else {
-    layer.buffer = cl::Buffer(runtime_->context(), CL_MEM_READ_WRITE, layer_bytes(l, storage_));
-    runtime_->queue().enqueueFillBuffer(layer.buffer, zero, 0, layer_bytes(l, storage_));
+  if (storage == AtlasStorage::Image) {
+    cl::Image2D image(runtime.context(), CL_MEM_READ_WRITE, cl::ImageFormat(CL_RGBA, CL_FLOAT), l.width, l.height);
+    runtime.queue().enqueueFillImage(image, zero, {0, 0, 0}, {std::size_t(l.width), std::size_t(l.height), 1});
+    return std::move(image);
   }
+  cl::Buffer buffer(runtime.context(), CL_MEM_READ_WRITE, layer_bytes(l, storage));
+  runtime.queue().enqueueFillBuffer(buffer, zero, 0, layer_bytes(l, storage));
+  return std::move(buffer);
+}
+
+Atlas::Layer Atlas::make_layer(const LevelLayout& l)
+{
+  const cl::Memory memory = allocate_layer(*runtime_, l, storage_);
+  Layer layer;
+  if (storage_ == AtlasStorage::Image)
+    layer.image = cl::Image2D(memory(), true);
+  else
+    layer.buffer = cl::Buffer(memory(), true);
   return layer;
 }
 
-void Atlas::subdivide(int from_level, int to_level)
+void Atlas::subdivide(int from_level, int to_level) { subdivide(from_level, to_level, nullptr); }
+
+void Atlas::subdivide(int from_level, int to_level, const PatchSet* set)
 {
   if (from_level < 1 || to_level > max_level_ || from_level > to_level)
     throw InputError("cannot subdivide from level " + std::to_string(from_level) + " to " +
                      std::to_string(to_level) + " (atlas levels 1.." + std::to_string(max_level_) + ")");
   Kernels& k = *kernels_;
   cl::CommandQueue& q = runtime_->queue();
-  const int edges = int(topology_.edges.size()), rings = int(topology_.rings.size());
-  const int patches = topology_.patch_count;
+  // Null lists: every patch, edge and ring.
+  const cl::Buffer patch_list = set ? device_ints(runtime_->context(), set->patches) : cl::Buffer(),
+                   edge_list = set ? device_ints(runtime_->context(), set->edges) : cl::Buffer(),
+                   ring_list = set ? device_ints(runtime_->context(), set->rings) : cl::Buffer();
+  const int edges = int(set ? set->edges.size() : topology_.edges.size()),
+            rings = int(set ? set->rings.size() : topology_.rings.size()),
+            patches = int(set ? set->patches.size() : std::size_t(topology_.patch_count));
   if (to_level == max_level_ && from_level < to_level)
     limit_current_ = false;
   for (int l = from_level; l < to_level; ++l) {
     const LevelLayout s = layout(l), d = layout(l + 1);
     const cl::Memory &in = levels_[l - 1].mem(), &out = levels_[l].mem();
-    const auto tiles = range_tiles(d, d.patches);
-    launch(q, k.subdivide_interior, tiles.first, tiles.second, in, out, grid(s), grid(d), patches);
-    launch(q, k.subdivide_edges, range1d(edges), kLocal1D, in, out, k.edges, edges, grid(s), grid(d));
-    launch(q, k.subdivide_corners, range1d(rings), kLocal1D, in, out, k.rings, k.slots, rings, grid(s),
-           grid(d));
+    if (patches > 0) {
+      const auto tiles = range_tiles(d, patches);
+      launch(q, k.subdivide_interior, tiles.first, tiles.second, in, out, grid(s), grid(d), patch_list, patches);
+    }
+    if (edges > 0)
+      launch(q, k.subdivide_edges, range1d(edges), kLocal1D, in, out, k.edges, edge_list, edges, grid(s), grid(d));
+    if (rings > 0)
+      launch(q, k.subdivide_corners, range1d(rings), kLocal1D, in, out, k.rings, k.slots, ring_list, rings, grid(s),
+             grid(d));
   }
+  if (set)
+    q.finish(); // the lists live until here
 }
 
 void Atlas::reduce(int from_level, int to_level)
@@ -294,23 +318,38 @@ void Atlas::reduce(int from_level, int to_level)
 
 void Atlas::compute_limit()
 {
-  const LevelLayout l = layout(max_level_);
   if (!limit_positions_) {
-    limit_positions_ = std::make_unique<Layer>(make_layer(l));
-    limit_normals_ = std::make_unique<Layer>(make_layer(l));
+    limit_positions_ = std::make_unique<Layer>(make_layer(layout(max_level_)));
+    limit_normals_ = std::make_unique<Layer>(make_layer(layout(max_level_)));
   }
+  compute_limit_of(max_level_, limit_positions_->mem(), limit_normals_->mem());
+  limit_current_ = true;
+}
+
+void Atlas::compute_limit_of(int level, const cl::Memory& pos, const cl::Memory& nrm, const PatchSet* set)
+{
+  const LevelLayout l = layout(level);
   Kernels& k = *kernels_;
   cl::CommandQueue& q = runtime_->queue();
-  const int edges = int(topology_.edges.size()), rings = int(topology_.rings.size());
-  const cl::Memory &in = levels_[max_level_ - 1].mem(), &pos = limit_positions_->mem(),
-                   &nrm = limit_normals_->mem();
-  const cl::Buffer all; // null: every patch, edge and ring
-  const auto tiles = range_tiles(l, l.patches);
-  launch(q, k.limit_interior, tiles.first, tiles.second, in, pos, nrm, grid(l), all, l.patches);
-  if (l.n > 1)
-    launch(q, k.limit_edges, range_edges(l.n - 1, edges), kLocalEdges, in, pos, nrm, k.edges, all, edges, grid(l));
-  launch(q, k.limit_corners, range1d(rings), kLocal1D, in, pos, nrm, k.rings, k.slots, all, rings, grid(l));
-  limit_current_ = true;
+  // Null lists: every patch, edge and ring.
+  const cl::Buffer patch_list = set ? device_ints(runtime_->context(), set->patches) : cl::Buffer(),
+                   edge_list = set ? device_ints(runtime_->context(), set->edges) : cl::Buffer(),
+                   ring_list = set ? device_ints(runtime_->context(), set->rings) : cl::Buffer();
+  const int edges = int(set ? set->edges.size() : topology_.edges.size()),
+            rings = int(set ? set->rings.size() : topology_.rings.size()),
+            patches = int(set ? set->patches.size() : std::size_t(topology_.patch_count));
+  const cl::Memory& in = levels_[level - 1].mem();
+  if (patches > 0) {
+    const auto tiles = range_tiles(l, patches);
+    launch(q, k.limit_interior, tiles.first, tiles.second, in, pos, nrm, grid(l), patch_list, patches);
+  }
+  if (l.n > 1 && edges > 0)
+    launch(q, k.limit_edges, range_edges(l.n - 1, edges), kLocalEdges, in, pos, nrm, k.edges, edge_list, edges,
+           grid(l));
+  if (rings > 0)
+    launch(q, k.limit_corners, range1d(rings), kLocal1D, in, pos, nrm, k.rings, k.slots, ring_list, rings, grid(l));
+  if (set)
+    q.finish(); // the lists live until here
 }
 
 PatchSet Atlas::patch_set(const std::vector<int>& patches, Reach reach) const
@@ -353,24 +392,7 @@ void Atlas::update_limit(const PatchSet& set)
     compute_limit(); // everything: no lists to build or upload
     return;
   }
-  const LevelLayout l = layout(max_level_);
-  Kernels& k = *kernels_;
-  cl::CommandQueue& q = runtime_->queue();
-  const cl::Memory &in = levels_[max_level_ - 1].mem(), &pos = limit_positions_->mem(),
-                   &nrm = limit_normals_->mem();
-  const cl::Buffer patches = device_ints(runtime_->context(), set.patches),
-                   edges = device_ints(runtime_->context(), set.edges), rings = device_ints(runtime_->context(), set.rings);
-  if (!set.patches.empty()) {
-    const auto tiles = range_tiles(l, int(set.patches.size()));
-    launch(q, k.limit_interior, tiles.first, tiles.second, in, pos, nrm, grid(l), patches, int(set.patches.size()));
-  }
-  if (l.n > 1 && !set.edges.empty())
-    launch(q, k.limit_edges, range_edges(l.n - 1, int(set.edges.size())), kLocalEdges, in, pos, nrm, k.edges, edges,
-           int(set.edges.size()), grid(l));
-  if (!set.rings.empty())
-    launch(q, k.limit_corners, range1d(int(set.rings.size())), kLocal1D, in, pos, nrm, k.rings, k.slots, rings,
-           int(set.rings.size()), grid(l));
-  q.finish(); // the lists live on this stack frame's buffers only until here
+  compute_limit_of(max_level_, limit_positions_->mem(), limit_normals_->mem(), &set);
 }
 
 const cl::Memory& Atlas::level_layer(int level)
@@ -392,6 +414,8 @@ const cl::Buffer& Atlas::ring_table() const { return kernels_->rings; }
 const cl::Buffer& Atlas::slot_table() const { return kernels_->slots; }
 
 void Atlas::finish() { runtime_->queue().finish(); }
+
+void Atlas::assume_limit_current() { limit_current_ = limit_positions_ != nullptr; }
 
 std::vector<Float4> Atlas::read_layer(const Layer& layer, const LevelLayout& l)
 {

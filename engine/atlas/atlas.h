@@ -29,6 +29,12 @@ AtlasStorage default_storage(const DeviceInfo& device);
 //! \throw InputError for anything but "buffer" or "image".
 AtlasStorage parse_storage(const std::string& name);
 const char* storage_name(AtlasStorage storage);
+//! Build options of kernels that address atlas layers in `storage`.
+std::string storage_options(AtlasStorage storage);
+
+//! A zero-filled float4 layer of a level in the given storage: scratch and
+//! saved copies of levels, which the atlas's kernels address alike.
+cl::Memory allocate_layer(Runtime& runtime, const LevelLayout& layout, AtlasStorage storage);
 
 //! Device memory an atlas up to `level` needs, checked before allocating.
 struct MemoryPlan
@@ -102,10 +108,18 @@ public:
 
   //! Catmull-Clark kernels: each level l+1 from level l, for from <= l < to.
   void subdivide(int from_level, int to_level);
+  //! The same on a set only (its patches' interiors, its edges and rings),
+  //! at every level; the levels must be current around the set.
+  void subdivide(int from_level, int to_level, const PatchSet* set);
   //! Gaussian reduction kernels: each level l-1 from level l, to <= l-1 < from.
   void reduce(int from_level, int to_level);
   //! Limit positions and normals of the surface at max_level.
   void compute_limit();
+  //! The same for the control points of another level, into the given
+  //! layers of that level's layout (the atlas's own limit layers stay);
+  //! with a set, on its interiors, edges and rings only.
+  void compute_limit_of(int level, const cl::Memory& positions, const cl::Memory& normals,
+                        const PatchSet* set = nullptr);
   //! Waits for every queued kernel.
   void finish();
 
@@ -114,6 +128,10 @@ public:
   //! Recomputes the limit layers on a set only (after editing positions
   //! there): the set's interiors, edges and rings.
   void update_limit(const PatchSet& set);
+  //! After the finest level was rewritten to what it was except on a set
+  //! whose limit the caller recomputes with update_limit(): lets that update
+  //! stay on the set instead of covering everything.
+  void assume_limit_current();
   //! Device layers for kernels of other families (brush.cl, geometry.cl),
   //! which address them with the same storage macros.
   const cl::Memory& level_layer(int level);

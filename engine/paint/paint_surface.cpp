@@ -28,7 +28,7 @@ struct PaintSurface::LayerKernels
   {
     program = build_program(rt,
                             std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "brush.cl", "geometry.cl"},
-                            std::string("-cl-std=CL1.2") + (storage == AtlasStorage::Image ? " -D ATLAS_IMAGE" : ""));
+                            storage_options(storage));
     copy_tiles = cl::Kernel(program, "copy_tiles");
     smooth_interior = cl::Kernel(program, "smooth_interior");
     smooth_edges = cl::Kernel(program, "smooth_edges");
@@ -78,11 +78,7 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     const std::size_t bytes = l.texels() * sizeof(Float4);
     d.channel_work = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
     d.weights = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, l.texels() * sizeof(float));
-    if (storage == AtlasStorage::Image)
-      d.position_work = cl::Image2D(rt.context(), CL_MEM_READ_WRITE, cl::ImageFormat(CL_RGBA, CL_FLOAT), l.width,
-                                    l.height);
-    else
-      d.position_work = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
+    d.position_work = allocate_layer(rt, l, storage);
     d.diffuse = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
     d.specular = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
     d.material = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
@@ -216,9 +212,23 @@ void PaintSurface::remember(const std::vector<int>& patches)
     stroke_before_.layers[k].insert(stroke_before_.layers[k].end(), s.layers[k].begin(), s.layers[k].end());
 }
 
-bool PaintSurface::undo() { return step(true); }
+bool PaintSurface::undo()
+{
+  if (!step(true))
+    return false;
+  undone_.push_back(std::move(history_.back()));
+  history_.pop_back();
+  return true;
+}
 
-bool PaintSurface::redo() { return step(false); }
+bool PaintSurface::redo()
+{
+  if (!step(false))
+    return false;
+  history_.push_back(std::move(undone_.back()));
+  undone_.pop_back();
+  return true;
+}
 
 bool PaintSurface::step(bool back)
 {
@@ -228,6 +238,8 @@ bool PaintSurface::step(bool back)
   const Snapshot& target = back ? undo_.next_undo() : undo_.next_redo();
   Snapshot now = take_snapshot(target.patches, target.layer_ids);
   restore(target);
+  if (multires_)
+    multires_->invalidate();
   if (back)
     undo_.undone(std::move(now));
   else
@@ -357,12 +369,19 @@ StrokeReport PaintSurface::apply(const Stroke& stroke)
 {
   // One undo step per stroke: the tiles its dabs touched, as they were; also
   // when a dab fails halfway, so that what it changed can be undone.
-  const auto finish_stroke = [this] {
+  // Every stroke is one step, also one that changed nothing, so that the
+  // steps and history() stay in step.
+  if (stroke.edit_level > level_)
+    throw InputError("edit_level " + std::to_string(stroke.edit_level) + " is finer than the surface's level " +
+                     std::to_string(level_));
+  const auto finish_stroke = [this, &stroke] {
     for (const int p : stroke_before_.patches)
       in_stroke_[std::size_t(p)] = 0;
-    if (!stroke_before_.patches.empty())
+    if (undo_.recording())
       undo_.record(std::move(stroke_before_));
     stroke_before_ = Snapshot();
+    history_.push_back(stroke);
+    undone_.clear();
   };
   // Only the layers this tool changes go into its undo step.
   switch (stroke.tool) {
@@ -371,12 +390,14 @@ StrokeReport PaintSurface::apply(const Stroke& stroke)
     break;
   case Tool::Sculpt:
   case Tool::Inflate:
-  case Tool::Flatten: stroke_layers_ = {kPositions}; break;
+  case Tool::Flatten:
+  case Tool::Grab: stroke_layers_ = {kPositions}; break;
   case Tool::Blur:
   case Tool::Smear: stroke_layers_ = {kDiffuse, kSpecular}; break;
   default: stroke_layers_ = {kDiffuse, kSpecular, kMaterial}; break;
   }
   StrokeReport report;
+  stretch_ = 1.f;
   try {
     report = apply_dabs(stroke);
   } catch (...) {
@@ -495,39 +516,73 @@ void PaintSurface::stamp_axes(const Vec3& n, const Vec3& heading, BrushDab& dab)
   }
 }
 
-void PaintSurface::weigh(const cl::Buffer& list, int count, const BrushDab& dab)
+void PaintSurface::weigh(const cl::Buffer& list, int count, const BrushDab& dab, int level)
 {
+  // At a coarser edit level, on the limit of that level's control points.
   Device& d = *device_;
   Runtime& rt = atlas_->runtime();
-  const LevelLayout l = atlas_->layout(level_);
+  const LevelLayout f = atlas_->layout(level_), l = atlas_->layout(level);
+  const bool coarse = level < level_;
   rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
   const auto tiles = range_tiles(l, count);
-  launch(rt.queue(), d.dab_weights, tiles.first, tiles.second, atlas_->limit_positions_layer(), grid(l), list, count,
-         d.dab, d.stamp, d.material, d.weights);
+  launch(rt.queue(), d.dab_weights, tiles.first, tiles.second,
+         coarse ? multires_->base_positions() : atlas_->limit_positions_layer(), grid(l), list, count, d.dab, d.stamp,
+         d.material, grid(f), f.n / l.n, coarse ? multires_->base_weights() : d.weights);
 }
 
 void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke,
-                           const Vec3& normal)
+                           const Vec3& normal, bool reweigh)
 {
-  remember(patches);
+  // At a coarser edit level the brush moves that level's control points and
+  // the finest level is rebuilt with its details (Multires); the finest
+  // patches that may change are then more than the brush's.
+  const int level = stroke.edit_level > 0 ? stroke.edit_level : level_;
+  const bool coarse = level < level_;
+  std::vector<int> changed;
+  if (coarse) {
+    if (!multires_)
+      multires_ = std::make_unique<Multires>(*atlas_);
+    if (multires_->level() != level)
+      multires_->encode(level);
+    changed = multires_->reach(patches);
+  } else if (!stroke.target_colour && multires_) {
+    multires_->invalidate();
+  }
+  remember(coarse ? changed : patches);
   Device& d = *device_;
   Runtime& rt = atlas_->runtime();
   cl::CommandQueue& q = rt.queue();
-  const LevelLayout l = atlas_->layout(level_);
+  const LevelLayout l = atlas_->layout(level);
   const int count = int(patches.size());
   const cl::Buffer list = device_ints(rt.context(), patches);
   const auto tiles = range_tiles(l, count);
-  weigh(list, count, dab);
+  if (reweigh) {
+    if (coarse)
+      multires_->compute_base_limit(patches);
+    weigh(list, count, dab, level);
+  }
+  const cl::Buffer& weights = coarse ? multires_->base_weights() : d.weights;
+  const auto geometry_done = [&] {
+    if (coarse) {
+      multires_->reconstruct(changed);
+      stretch_ = std::max(stretch_, multires_->stretch(changed));
+    }
+    refresh_geometry(coarse ? changed : patches);
+  };
 
-  if (stroke.tool == Tool::Sculpt || stroke.tool == Tool::Inflate || stroke.tool == Tool::Flatten) {
+  if (stroke.tool == Tool::Sculpt || stroke.tool == Tool::Inflate || stroke.tool == Tool::Flatten ||
+      stroke.tool == Tool::Grab) {
+    // A grab moves by the path's step (`normal`) times the weight.
     const int mode = stroke.tool == Tool::Inflate ? MOVE_INFLATE : stroke.tool == Tool::Flatten ? MOVE_FLATTEN
                                                                                                  : MOVE_SCULPT;
-    const cl::Memory& pos = atlas_->level_layer(level_);
-    launch(q, d.move_points, tiles.first, tiles.second, pos, d.position_work, atlas_->limit_normals_layer(), grid(l),
-           list, count, d.weights, mode, stroke.amount, cl_float4{{dab.centre[0], dab.centre[1], dab.centre[2], 0.f}},
+    const float amount = stroke.tool == Tool::Grab ? 1.f : stroke.amount;
+    const cl::Memory& pos = atlas_->level_layer(level);
+    const cl::Memory& normals = coarse ? multires_->base_normals() : atlas_->limit_normals_layer();
+    launch(q, d.move_points, tiles.first, tiles.second, pos, d.position_work, normals, grid(l), list, count, weights,
+           mode, amount, cl_float4{{dab.centre[0], dab.centre[1], dab.centre[2], 0.f}},
            cl_float4{{normal[0], normal[1], normal[2], 0.f}});
     launch(q, d.positions.copy_tiles, tiles.first, tiles.second, d.position_work, pos, grid(l), list, count);
-    refresh_geometry(patches);
+    geometry_done();
     return;
   }
 
@@ -541,7 +596,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   if (stroke.target_colour)
     layers = {{&d.channels, &d.diffuse}, {&d.channels, &d.specular}};
   else
-    layers = {{&d.positions, &atlas_->level_layer(level_)}};
+    layers = {{&d.positions, &atlas_->level_layer(level)}};
   std::vector<float> steps;
   for (int i = 0; i < stroke.iterations; ++i) {
     steps.push_back(stroke.lambda);
@@ -557,13 +612,13 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
     const cl::Memory* from = layer;
     const cl::Memory* to = &work;
     for (const float step : steps) {
-      launch(q, k->smooth_interior, tiles.first, tiles.second, *from, *to, grid(l), list, count, d.weights, step);
+      launch(q, k->smooth_interior, tiles.first, tiles.second, *from, *to, grid(l), list, count, weights, step);
       if (edge_count > 0 && l.n > 1)
         launch(q, k->smooth_edges, cl::NDRange(l.n - 1, round_up(edge_count, kGroup)), cl::NDRange(1, kGroup),
-               *from, *to, grid(l), atlas_->edge_table(), edges, edge_count, d.weights, step);
+               *from, *to, grid(l), atlas_->edge_table(), edges, edge_count, weights, step);
       if (ring_count > 0)
         launch(q, k->smooth_corners, cl::NDRange(round_up(ring_count, kGroup)), cl::NDRange(kGroup), *from, *to,
-               grid(l), atlas_->ring_table(), atlas_->slot_table(), rings, ring_count, d.weights, step);
+               grid(l), atlas_->ring_table(), atlas_->slot_table(), rings, ring_count, weights, step);
       std::swap(from, to);
     }
     if (from != layer) // the result is in the work copy
@@ -572,7 +627,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   if (stroke.target_colour)
     q.finish();
   else
-    refresh_geometry(patches);
+    geometry_done();
 }
 
 StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
@@ -622,6 +677,12 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
       paint(all, dab);
       report.dabs = report.dabs_applied = 1;
       report.patches_touched = all.size();
+      report.ms = timer.ms();
+      return report;
+    }
+    if (stroke.tool == Tool::Grab) {
+      grab(stroke, dab, report);
+      report.stretch = stretch_;
       report.ms = timer.ms();
       return report;
     }
@@ -680,12 +741,44 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
   } catch (const cl::Error& e) {
     throw DeviceError("painting failed on " + atlas_->runtime().info().name + ": " + describe(e));
   }
+  report.stretch = stretch_;
   report.ms = timer.ms();
   return report;
 }
 
+void PaintSurface::grab(const Stroke& stroke, BrushDab& dab, StrokeReport& report)
+{
+  // The region under the first point is taken once; every later dab moves
+  // it by the path's step, with the weights it had when taken.
+  std::vector<DabSample> samples = stroke_samples(stroke);
+  if (stroke.points.size() > 1 && samples.back().centre != stroke.points.back()) // the pull ends at the path's end
+    samples.push_back({stroke.points.back(), stroke.pressure.empty() ? 1.f : stroke.pressure.back()});
+  report.dabs = samples.size();
+  dab.radius = stroke.radius * samples.front().pressure;
+  dab.strength = stroke.strength * samples.front().pressure;
+  if (!(dab.radius > 0.f))
+    return;
+  Vec3 centre, normal;
+  const std::vector<int> patches = brush_patches(samples.front().centre, dab.radius, &centre, &normal);
+  if (patches.empty()) {
+    report.left_surface = true;
+    return;
+  }
+  for (int k = 0; k < 3; ++k)
+    dab.centre[k] = centre[k];
+  for (std::size_t k = 1; k < samples.size(); ++k) {
+    const Vec3& a = samples[k - 1].centre;
+    const Vec3& b = samples[k].centre;
+    reshape(patches, dab, stroke, Vec3{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, k == 1);
+    ++report.dabs_applied;
+    report.patches_touched += patches.size();
+  }
+}
+
 void PaintSurface::geometry_changed()
 {
+  if (multires_)
+    multires_->invalidate();
   const LevelLayout l = atlas_->layout(level_);
   Runtime& rt = atlas_->runtime();
   atlas_->compute_limit();
@@ -705,12 +798,16 @@ PaintChannels PaintSurface::read_channels()
   return c;
 }
 
-PaintedSurface PaintSurface::painted_surface()
+namespace {
+
+//! Channels per welded vertex, and the displacement applied along the
+//! normal (P = P0 + h N).
+PaintedSurface painted(WeldedSurface surface, const AtlasTopology& topology, const LevelLayout& layout,
+                       const PaintChannels& c)
 {
   PaintedSurface out;
-  out.surface = level_surface(*atlas_, level_, true);
-  const PaintChannels c = read_channels();
-  const std::vector<int> map = weld_map(atlas_->topology(), atlas_->layout(level_));
+  out.surface = std::move(surface);
+  const std::vector<int> map = weld_map(topology, layout);
   const std::size_t nv = out.surface.points.size();
   out.diffuse.resize(nv);
   out.specular.resize(nv);
@@ -731,6 +828,44 @@ PaintedSurface PaintSurface::painted_surface()
     for (int k = 0; k < 3; ++k)
       out.surface.points[v][k] += out.displacement[v] * out.surface.normals[v][k];
   return out;
+}
+
+} // namespace
+
+PaintedSurface PaintSurface::painted_surface()
+{
+  return painted(level_surface(*atlas_, level_, true), atlas_->topology(), atlas_->layout(level_), read_channels());
+}
+
+PaintedSurface PaintSurface::painted_surface(int level)
+{
+  if (level == level_)
+    return painted_surface();
+  if (level < 1 || level > level_)
+    throw InputError("no level of detail " + std::to_string(level) + ": the surface has levels 1.." +
+                     std::to_string(level_));
+  // Reducing rewrites the levels below the finest, which hold the base of
+  // a coarse edit: its details are made again on the next one.
+  atlas_->reduce(level_, level);
+  if (multires_)
+    multires_->invalidate();
+  const LevelLayout c = atlas_->layout(level), f = atlas_->layout(level_);
+  const int stride = f.n / c.n;
+  const std::vector<Float4> positions = atlas_->read_positions(level), normals = atlas_->read_limit_normals();
+  const PaintChannels fine = read_channels();
+  std::vector<Float4> coarse_normals(c.texels());
+  PaintChannels coarse{std::vector<Float4>(c.texels()), std::vector<Float4>(c.texels()),
+                       std::vector<Float4>(c.texels())};
+  for (int p = 0; p < c.patches; ++p)
+    for (int j = 0; j < c.tile; ++j)
+      for (int i = 0; i < c.tile; ++i) {
+        const std::size_t at = c.index(p, i, j), from = f.index(p, i * stride, j * stride);
+        coarse_normals[at] = normals[from];
+        coarse.diffuse[at] = fine.diffuse[from];
+        coarse.specular[at] = fine.specular[from];
+        coarse.material[at] = fine.material[from];
+      }
+  return painted(weld(atlas_->topology(), c, positions, &coarse_normals), atlas_->topology(), c, coarse);
 }
 
 } // namespace meshpaint

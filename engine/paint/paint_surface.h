@@ -3,6 +3,7 @@
 #pragma once
 
 #include "atlas/atlas.h"
+#include "atlas/multires.h"
 #include "mesh/welded_surface.h"
 #include "paint/stroke.h"
 #include "paint/undo_log.h"
@@ -40,6 +41,7 @@ struct StrokeReport
   std::size_t dabs_applied = 0;    //!< those on the surface
   std::size_t patches_touched = 0; //!< summed over dabs
   bool left_surface = false;       //!< the stroke ended where it left the surface
+  float stretch = 1.f;             //!< edits at a coarser level: worst growth of a patch's sampling (Multires::stretch)
   double ms = 0;                   //!< wall time, device work included
 };
 
@@ -82,6 +84,14 @@ public:
 
   PaintChannels read_channels();
   PaintedSurface painted_surface();
+  //! Level of detail: the surface at a coarser level (<= level(), reduced
+  //! from the finest), with the finest level's limit normals and channels
+  //! at the matching texels.
+  PaintedSurface painted_surface(int level);
+
+  //! The strokes applied so far, in order; undo() takes the last one off,
+  //! redo() puts it back.
+  const std::vector<Stroke>& history() const { return history_; }
 
   //! Undo and redo whole strokes; false when there is nothing to undo
   //! (redo). Undoing everything gives back the channels bit for bit.
@@ -97,9 +107,14 @@ private:
   bool step(bool back); // undo (back) or redo
   void paint(const std::vector<int>& patches, const BrushDab& dab);
   //! Smooths or moves geometry (or smooths colours) on the patches.
-  void reshape(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke, const Vec3& normal);
-  //! Weights of the dab on the patches' texels, into the weight buffer.
-  void weigh(const cl::Buffer& list, int count, const BrushDab& dab);
+  //! `reweigh` false keeps the weights of the previous call (grab).
+  void reshape(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke, const Vec3& normal,
+               bool reweigh = true);
+  //! The grab tool: the region under the stroke's first point pulled along it.
+  void grab(const Stroke& stroke, BrushDab& dab, StrokeReport& report);
+  //! Weights of the dab on the patches' texels at `level`, into the weight
+  //! buffer of that level.
+  void weigh(const cl::Buffer& list, int count, const BrushDab& dab, int level);
   //! After positions changed on `patches`: limit surface and bounds there.
   void refresh_geometry(const std::vector<int>& patches);
   StrokeReport apply_dabs(const Stroke& stroke);
@@ -129,6 +144,9 @@ private:
 
   std::unique_ptr<Atlas> atlas_;
   int level_;
+  std::unique_ptr<Multires> multires_; // details for edits at a coarser level, made on first use
+  float stretch_ = 1.f;                // the running stroke's worst Multires::stretch
+  std::vector<Stroke> history_, undone_;
   std::unique_ptr<Device> device_;
   BaseMaterial base_material_;
   UndoLog undo_;

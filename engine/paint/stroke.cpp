@@ -25,7 +25,7 @@ public:
 
   [[noreturn]] void fail(const std::string& key, const std::string& what) const
   {
-    throw InputError(where_ + "\"" + key + "\" " + what);
+    throw StrokeKeyError(where_ + "\"" + key + "\" " + what, key, what.rfind("has no meaning", 0) == 0);
   }
 
   bool has(const std::string& key) const { return j_.contains(key); }
@@ -220,16 +220,16 @@ Stroke read_stroke(const json& j, std::size_t index)
   static const std::set<std::string> known = {
     "tool",   "points", "radius",   "strength",   "falloff", "spacing", "op",     "channels", "alphas",
     "pressure", "mirror", "amount", "iterations", "target", "method",  "lambda", "mu",
-    "mode",     "coefficient", "pattern", "stroke", "stamp"};
+    "mode",     "coefficient", "pattern", "stroke", "stamp", "edit_level"};
   const StrokeReader r(j, index);
   for (const auto& item : j.items())
     if (!known.count(item.key()))
       r.fail(item.key(), "is not a stroke key (tool, points, radius, strength, falloff, spacing, op, "
                          "channels, alphas, pressure, mirror, amount, iterations, target, method, lambda, mu, "
-                         "mode, coefficient, pattern, stroke, stamp)");
+                         "mode, coefficient, pattern, stroke, stamp, edit_level)");
   Stroke s;
-  static const std::vector<std::string> tools = {"paint", "label",   "wash",    "dip",     "smooth",
-                                                 "blur",  "sculpt",  "inflate", "flatten", "smear"};
+  static const std::vector<std::string> tools = {"paint",  "label",   "wash",    "dip",   "smooth", "blur",
+                                                 "sculpt", "inflate", "flatten", "smear", "grab"};
   std::string tool = r.word("tool", "paint", tools);
   s.tool = Tool(std::find(tools.begin(), tools.end(), tool) - tools.begin());
   // The paint equation's filtering ops are brushes of their own: "op":
@@ -258,6 +258,15 @@ Stroke read_stroke(const json& j, std::size_t index)
       r.fail(key, std::string("has no meaning for a ") + tool + " stroke");
   if (s.tool != Tool::Smooth && r.has("target"))
     r.fail("target", "has no meaning for a " + tool + " stroke");
+  if (r.has("edit_level")) {
+    const bool shapes = moves || s.tool == Tool::Grab || (s.tool == Tool::Smooth && !s.target_colour);
+    if (!shapes)
+      r.fail("edit_level", "has no meaning for a " + tool + " stroke, which does not move the surface");
+    if (!r.at("edit_level").is_number_integer() || r.at("edit_level").get<long long>() < 1 ||
+        r.at("edit_level").get<long long>() > 12)
+      r.fail("edit_level", "must be an integer from 1 to 12");
+    s.edit_level = r.at("edit_level").get<int>();
+  }
   if (moves) {
     const bool flatten = s.tool == Tool::Flatten;
     s.amount = float(flatten ? r.number("amount", 0.5, 0.0, 1.0) : r.number("amount", 0.0, -1e30, 1e30));
@@ -288,6 +297,8 @@ Stroke read_stroke(const json& j, std::size_t index)
   s.op = op == "over" ? PAINT_OP_OVER : op == "max" ? PAINT_OP_MAX : op == "add" ? PAINT_OP_ADD
          : op == "subtract" ? PAINT_OP_SUBTRACT : PAINT_OP_COPY;
   s.spacing = float(r.number("spacing", 0.25, 0.01, 100.0));
+  if (r.has("mirror") && s.tool == Tool::Grab)
+    r.fail("mirror", "has no meaning for a grab stroke, which pulls one region");
   if (r.has("mirror"))
     s.mirror_axis = r.word("mirror", "x", {"x", "y", "z"})[0] - 'x';
   read_channels(r, s);
@@ -409,9 +420,21 @@ Stroke read_stroke(const json& j, std::size_t index)
 
 const char* tool_name(Tool tool)
 {
-  static const char* const names[] = {"paint", "label",  "wash",    "dip",     "smooth",
-                                     "blur",  "sculpt", "inflate", "flatten", "smear"};
+  static const char* const names[] = {"paint",  "label",   "wash",    "dip",   "smooth", "blur",
+                                     "sculpt", "inflate", "flatten", "smear", "grab"};
   return names[int(tool)];
+}
+
+bool Stroke::operator==(const Stroke& o) const
+{
+  return tool == o.tool && points == o.points && pressure == o.pressure && radius == o.radius &&
+         strength == o.strength && falloff == o.falloff && spacing == o.spacing && op == o.op && value == o.value &&
+         alpha == o.alpha && mirror_axis == o.mirror_axis && amount == o.amount && iterations == o.iterations &&
+         target_colour == o.target_colour && taubin == o.taubin && lambda == o.lambda && mu == o.mu &&
+         remover == o.remover && specular_coefficient == o.specular_coefficient && pattern == o.pattern &&
+         pattern_coord == o.pattern_coord && matte == o.matte && octaves == o.octaves &&
+         pattern_transform == o.pattern_transform && pattern_file == o.pattern_file && stamp_file == o.stamp_file &&
+         edit_level == o.edit_level;
 }
 
 StrokeScript parse_stroke_script(const std::string& text)
@@ -442,6 +465,29 @@ StrokeScript parse_stroke_script(const std::string& text)
   for (std::size_t k = 0; k < j["strokes"].size(); ++k)
     script.strokes.push_back(read_stroke(j["strokes"][k], k));
   return script;
+}
+
+std::string drop_meaningless_keys(const std::string& stroke_object)
+{
+  json stroke;
+  try {
+    stroke = json::parse(stroke_object);
+  } catch (const json::parse_error&) {
+    return stroke_object;
+  }
+  for (std::size_t tries = 0; stroke.is_object() && tries <= stroke.size(); ++tries) {
+    try {
+      read_stroke(stroke, 0);
+      break;
+    } catch (const StrokeKeyError& e) {
+      if (!e.meaningless() || !stroke.contains(e.key()))
+        break;
+      stroke.erase(e.key());
+    } catch (const InputError&) {
+      break;
+    }
+  }
+  return stroke.dump();
 }
 
 StrokeScript load_stroke_script(const std::string& path)

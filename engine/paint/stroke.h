@@ -2,6 +2,7 @@
 #pragma once
 
 #include "atlas_types.h" // for CHANNEL_COUNT, FALLOFF_*, PAINT_OP_*
+#include "core/errors.h"
 #include "core/vec.h"
 #include "paint/raster.h"
 
@@ -23,7 +24,8 @@ enum class Tool
   Sculpt,  //!< move along the normal at the brush centre
   Inflate, //!< move along each point's own normal
   Flatten, //!< move towards the plane through the centre
-  Smear    //!< drag the colours along the stroke: each dab lays down what the previous one picked up
+  Smear,   //!< drag the colours along the stroke: each dab lays down what the previous one picked up
+  Grab     //!< pull the surface around the first point along the path
 };
 
 //! Name of a tool as the stroke script writes it.
@@ -58,7 +60,35 @@ struct Stroke
   std::shared_ptr<const Raster> pattern_raster; //!< its samples (loaded by the caller)
   std::string stamp_file;                      //!< brush image laid in the tangent plane
   std::shared_ptr<const Raster> stamp;         //!< its samples (loaded by the caller)
+  int edit_level = -1;                  //!< geometry tools: the level edited, finer levels follow; -1: the finest
+
+  //! Same stroke as written in a script (loaded rasters are not compared).
+  bool operator==(const Stroke& o) const;
+  bool operator!=(const Stroke& o) const { return !(*this == o); }
 };
+
+//! A stroke-script error about one key of one stroke.
+class StrokeKeyError : public InputError
+{
+public:
+  StrokeKeyError(const std::string& message, std::string key, bool meaningless)
+    : InputError(message), key_(std::move(key)), meaningless_(meaningless)
+  {
+  }
+  const std::string& key() const { return key_; }
+  //! The key is fine in itself but means nothing for the stroke's tool.
+  bool meaningless() const { return meaningless_; }
+
+private:
+  std::string key_;
+  bool meaningless_;
+};
+
+//! A brush kept as stroke keys (a window's or a setter API's current
+//! settings) as one stroke: the JSON object without the keys that mean
+//! nothing for its tool, e.g. a sculpt "amount" left over under a paint
+//! tool. Other problems are left for parse_stroke_script() to report.
+std::string drop_meaningless_keys(const std::string& stroke_object);
 
 //! A stroke script: an optional atlas level and the strokes in order.
 struct StrokeScript
@@ -77,6 +107,12 @@ StrokeScript parse_stroke_script(const std::string& json_text);
 //! names are taken from the script's folder.
 //! \throw IOError when the file cannot be read; InputError as above.
 StrokeScript load_stroke_script(const std::string& path);
+
+//! The script in the stroke-script format; parse_stroke_script() gives back
+//! equal strokes (numbers are written so that they read back exactly).
+std::string stroke_script_json(const StrokeScript& script);
+//! One stroke as a JSON object of the same format.
+std::string stroke_json(const Stroke& stroke);
 
 //! Most dabs one stroke may have; parse_stroke_script() refuses longer ones.
 constexpr std::size_t kMaxDabsPerStroke = 1000000;

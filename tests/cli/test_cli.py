@@ -218,6 +218,34 @@ def test_paint_writes_channels(plane, tmp_path):
     assert red > 10 and labelled > 5
 
 
+def test_paint_coarse_edit_level_and_lod(plane, tmp_path):
+    script = tmp_path / "s.json"
+    script.write_text(json.dumps({"level": 4, "strokes": [
+        {"tool": "grab", "points": [[2, 2, 0], [2, 2, 0.4]], "radius": 1.2, "edit_level": 2},
+        {"tool": "sculpt", "points": [[2, 2, 0.4]], "radius": 0.6, "amount": 0.05},
+        {"tool": "grab", "points": [[1, 1, 0], [1, 1, 6]], "radius": 0.5, "edit_level": 1}]}))
+    out = tmp_path / "out"
+    r = run("paint", str(plane), "--strokes", str(script), "--lod", "2", "-o", str(out), "--quiet")
+    assert r.returncode == 0, r.stderr
+    assert re.search(r"warning: stroke 2: edit level 1 undersamples the surface", r.stderr), r.stderr
+    assert "stretched" in r.stdout
+    full, lod = read_polydata(out / "surface.vtp"), read_polydata(out / "surface_lod2.vtp")
+    assert 0 < lod.GetNumberOfPoints() < full.GetNumberOfPoints()
+    assert lod.GetPointData().GetArray("Normals") is not None
+    top = max(full.GetPoint(i)[2] for i in range(full.GetNumberOfPoints()))
+    assert top > 0.3
+
+
+def test_paint_refuses_an_edit_level_finer_than_the_painting_level(plane, tmp_path):
+    script = tmp_path / "s.json"
+    script.write_text(json.dumps({"strokes": [
+        {"tool": "sculpt", "points": [[2, 2, 0]], "radius": 1, "amount": 0.1, "edit_level": 4}]}))
+    out = tmp_path / "out"
+    r = run("paint", str(plane), "--strokes", str(script), "--level", "3", "-o", str(out))
+    assert r.returncode == 2 and not out.exists()
+    assert r.stderr.strip() == 'meshpaint paint: stroke 0: "edit_level" 4 is finer than the painting level 3', r.stderr
+
+
 @pytest.mark.parametrize("stroke,message", [
     ({"tool": "paint", "points": [[1, 1, 0]], "radius": 0, "channels": {"diffuse": [1, 0, 0]}},
      r"stroke 1: \"radius\" must be a number"),

@@ -137,3 +137,15 @@ def test_brush_setters_and_a_vtkpoints_path():
     s.ApplyStroke(path)
     s.Update()
     assert s.GetStrokeCount() == 2
+    # A grab at a coarser edit level: the finest level follows.
+    s.SetTool("grab")
+    s.SetEditLevel(1)
+    assert json.loads(s.GetBrushJSON())["edit_level"] == 1
+    pull = vtk.vtkPoints()
+    pull.InsertNextPoint(0.3, 0, 0.4)
+    pull.InsertNextPoint(0.3, 0, 0.6)
+    s.ApplyStroke(pull)
+    s.Update()
+    assert s.GetStrokeCount() == 3
+    s.SetEditLevel(0)
+    assert "edit_level" not in json.loads(s.GetBrushJSON())

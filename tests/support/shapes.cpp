@@ -158,6 +158,42 @@ BaseMesh two_components()
   return make_base_mesh(pts, faces, "two_components");
 }
 
+BaseMesh noisy_sphere(int n, float noise)
+{
+  std::map<std::array<int, 3>, int> index;
+  std::vector<Vec3> pts;
+  std::vector<std::vector<int>> faces;
+  const auto vertex = [&](std::array<int, 3> g) {
+    auto [it, fresh] = index.emplace(g, int(pts.size()));
+    if (fresh) {
+      const double x = 2.0 * g[0] / n - 1, y = 2.0 * g[1] / n - 1, z = 2.0 * g[2] / n - 1;
+      const double len = std::sqrt(x * x + y * y + z * z);
+      const double r = 1.0 + noise * std::sin(12.9898 * pts.size() + 78.233);
+      pts.push_back({float(r * x / len), float(r * y / len), float(r * z / len)});
+    }
+    return it->second;
+  };
+  for (int a = 0; a < 3; ++a)
+    for (int side : {0, n}) {
+      const int b = (a + 1) % 3, c = (a + 2) % 3;
+      for (int u = 0; u < n; ++u)
+        for (int v = 0; v < n; ++v) {
+          std::vector<int> f;
+          for (auto [du, dv] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+            std::array<int, 3> g{};
+            g[a] = side;
+            g[b] = u + du;
+            g[c] = v + dv;
+            f.push_back(vertex(g));
+          }
+          if (side == 0)
+            std::swap(f[1], f[3]);
+          faces.push_back(f);
+        }
+    }
+  return make_base_mesh(pts, faces, "noisy_sphere");
+}
+
 BaseMesh flat_grid(int n)
 {
   std::vector<Vec3> pts;

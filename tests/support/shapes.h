@@ -30,6 +30,10 @@ BaseMesh two_components();
 //! affine control net), corner at the origin.
 BaseMesh flat_grid(int n);
 
+//! A cube of 6 x n x n quads pushed onto the unit sphere, with a
+//! deterministic radial noise of relative amplitude `noise`.
+BaseMesh noisy_sphere(int n, float noise);
+
 //! Every shape above, by name.
 std::vector<std::string> shape_names();
 BaseMesh shape(const std::string& name);

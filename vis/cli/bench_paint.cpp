@@ -19,6 +19,7 @@
 #include <vtkSmoothPolyDataFilter.h> // for vtkSmoothPolyDataFilter
 
 #include <algorithm> // for std::nth_element
+#include <array>     // for std::array
 #include <cmath>     // for std::sqrt
 #include <iostream>  // for std::cout
 
@@ -50,6 +51,26 @@ float radius_for(const std::vector<Float4>& texels, const Vec3& centre, double f
   const std::size_t k = std::min(d.size() - 1, std::size_t(fraction * double(d.size())));
   std::nth_element(d.begin(), d.begin() + long(k), d.end());
   return d[k];
+}
+
+//! Median step time of a brush at each coverage: a warm-up, then `steps`.
+std::array<double, 3> step_times(PaintSurface& surface, Stroke s, const std::vector<Float4>& texels, int steps)
+{
+  std::array<double, 3> ms{};
+  for (int c = 0; c < 3; ++c) {
+    s.radius = radius_for(texels, s.points.front(), kCoverage[c]);
+    surface.apply(s); // warm-up (and, at a coarse edit level, the details' encoding)
+    std::vector<double> t;
+    for (int k = 0; k < steps; ++k)
+      t.push_back(surface.apply(s).ms);
+    ms[std::size_t(c)] = median(t);
+  }
+  return ms;
+}
+
+std::string json_list(const std::array<double, 3>& v)
+{
+  return "[" + std::to_string(v[0]) + "," + std::to_string(v[1]) + "," + std::to_string(v[2]) + "]";
 }
 
 struct SmoothingResult
@@ -132,7 +153,8 @@ int bench_paint(const Args& args)
 
   Table table({"faces", "mesh", "1% ms", "10% ms", "50% ms", "paper ms (1/10/50%)", "speed-up (1/10/50%)"});
   Table smoothing({"vertices", "mesh", "meshpaint ms", "VTK ms", "OpenMesh ms", "vs VTK", "vs OpenMesh"});
-  std::string json_rows, json_smooth;
+  Table coarse({"faces", "mesh", "edit level", "1% ms", "10% ms", "50% ms"});
+  std::string json_rows, json_smooth, json_coarse;
   for (const Row& row : kRows) {
     const BaseMesh mesh = load_mesh(scans_dir() + "/" + row.mesh);
     PaintSurface surface(runtime, mesh, row.level, storage);
@@ -141,22 +163,14 @@ int bench_paint(const Args& args)
     const Vec3 at = surface.atlas().base_mesh().points[surface.atlas().base_mesh().vertex_count() / 2];
     const std::size_t faces = std::size_t(surface.atlas().topology().patch_count) * surface.atlas().layout(row.level).n *
                               surface.atlas().layout(row.level).n;
-    double ms[3];
-    for (int c = 0; c < 3; ++c) {
-      Stroke s;
-      s.tool = tool == "paint" ? Tool::Paint : Tool::Sculpt;
-      s.points = {at};
-      s.radius = radius_for(texels, at, kCoverage[c]);
-      s.falloff = FALLOFF_SMOOTHSTEP;
-      s.amount = float(1e-4 * mesh.diagonal());
-      s.value[CHANNEL_DIFFUSE] = {0.9f, 0.2f, 0.1f, 1.f};
-      s.alpha[CHANNEL_DIFFUSE] = 0.5f;
-      surface.apply(s); // warm-up
-      std::vector<double> t;
-      for (int k = 0; k < steps; ++k)
-        t.push_back(surface.apply(s).ms);
-      ms[c] = median(t);
-    }
+    Stroke s;
+    s.tool = tool == "paint" ? Tool::Paint : Tool::Sculpt;
+    s.points = {at};
+    s.falloff = FALLOFF_SMOOTHSTEP;
+    s.amount = float(1e-4 * mesh.diagonal());
+    s.value[CHANNEL_DIFFUSE] = {0.9f, 0.2f, 0.1f, 1.f};
+    s.alpha[CHANNEL_DIFFUSE] = 0.5f;
+    const std::array<double, 3> ms = step_times(surface, s, texels, steps);
     const std::string name = row.mesh.substr(0, row.mesh.find('.')) + " L" + std::to_string(row.level);
     table.add({grouped(faces), name, format_fixed(ms[0], 2), format_fixed(ms[1], 2), format_fixed(ms[2], 2),
                format_fixed(row.paper_ms[0], 0) + "/" + format_fixed(row.paper_ms[1], 0) + "/" +
@@ -164,10 +178,18 @@ int bench_paint(const Args& args)
                format_fixed(row.paper_ms[0] / ms[0], 1) + "x/" + format_fixed(row.paper_ms[1] / ms[1], 1) + "x/" +
                  format_fixed(row.paper_ms[2] / ms[2], 1) + "x"});
     json_rows += std::string(json_rows.empty() ? "" : ",") + "{\"mesh\":" + json_string(name) +
-                 ",\"faces\":" + std::to_string(faces) + ",\"ms\":[" + std::to_string(ms[0]) + "," +
-                 std::to_string(ms[1]) + "," + std::to_string(ms[2]) + "],\"paper_ms\":[" +
+                 ",\"faces\":" + std::to_string(faces) + ",\"ms\":" + json_list(ms) + ",\"paper_ms\":[" +
                  std::to_string(row.paper_ms[0]) + "," + std::to_string(row.paper_ms[1]) + "," +
                  std::to_string(row.paper_ms[2]) + "]}";
+    // Multiresolution: a sculpt step at the coarsest edit level, with the
+    // finest level rebuilt and its details carried along.
+    Stroke m = s;
+    m.tool = Tool::Sculpt;
+    m.edit_level = 1;
+    const std::array<double, 3> mr = step_times(surface, m, texels, steps);
+    coarse.add({grouped(faces), name, "1", format_fixed(mr[0], 2), format_fixed(mr[1], 2), format_fixed(mr[2], 2)});
+    json_coarse += std::string(json_coarse.empty() ? "" : ",") + "{\"mesh\":" + json_string(name) +
+                   ",\"faces\":" + std::to_string(faces) + ",\"edit_level\":1,\"ms\":" + json_list(mr) + "}";
     if (row.level >= 2) {
       const SmoothingResult r = bench_smoothing(surface, 10, 3);
       smoothing.add({grouped(r.vertices), name, format_fixed(r.meshpaint_ms, 2), format_fixed(r.vtk_ms, 2),
@@ -182,7 +204,7 @@ int bench_paint(const Args& args)
   if (json) {
     std::cout << "{\"tool\":" << json_string(tool) << ",\"steps\":" << steps << ",\"device\":"
               << json_string(runtime->info().name) << ",\"brush\":[" << json_rows << "],\"smoothing\":["
-              << json_smooth << "]}\n";
+              << json_smooth << "],\"coarse_edit\":[" << json_coarse << "]}\n";
     return 0;
   }
   std::cout << "meshpaint bench paint: one " << tool << " brush step (culling, weights, transformation"
@@ -193,6 +215,11 @@ int bench_paint(const Args& args)
   std::cout << "\n  the paper's figures (GeForce 7800) include rendering at 800x600\n\n"
             << "full-surface Laplacian smoothing, per iteration (10 iterations, median of 3)\n\n";
   smoothing.print(std::cout);
+  std::cout << "\nmultiresolution: one sculpt step at edit level 1, the finest level rebuilt with its details\n"
+            << "(weights on the edit level, its control points moved, subdivision to the finest level,\n"
+            << "details decoded on the reach of the brush, limit normals and bounds), median of " << steps
+            << "\n\n";
+  coarse.print(std::cout);
   return 0;
 }
 

@@ -38,7 +38,8 @@ std::string strokes_dir();
 //! Paints `script` onto `mesh` and writes DIR/surface.vtp and the textured
 //! model (model.obj, model.mtl, PNG maps), printing a table of the strokes.
 void paint_job(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage, const BaseMesh& mesh,
-               const StrokeScript& script, int level, int model_level, const std::string& dir, bool quiet);
+               const StrokeScript& script, int level, int model_level, const std::string& dir, bool quiet,
+               int lod = -1);
 
 //! \throw InputError unless the path ends in .obj, .ply or .vtp (any case).
 void check_surface_format(const std::string& path);

@@ -1,0 +1,204 @@
+#include "atlas/multires.h"
+
+#include "cl/launch.h"
+#include "cl/program.h"
+#include "core/errors.h"
+
+#include <algorithm> // for std::max
+
+namespace meshpaint {
+namespace {
+
+constexpr std::size_t kGroup = 64;
+
+} // namespace
+
+struct Multires::Device
+{
+  cl::Program program;
+  cl::Kernel encode, decode_interior, decode_edges, decode_corners, copy_level, patch_extent;
+  cl::Memory saved;     // S, the finest level as it stands (decoding writes here first)
+  cl::Buffer details;   // per finest texel: (t, b, n) coordinates of S - U
+  cl::Buffer weights;   // edit-level weights
+  cl::Memory positions, normals; // edit-level limit (layers of the finest size, used in part)
+  cl::Buffer extent;    // per patch
+};
+
+Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Device>())
+{
+  Runtime& rt = atlas_.runtime();
+  const LevelLayout f = atlas_.layout(atlas_.max_level());
+  Device& d = *device_;
+  try {
+    d.program = build_program(rt, std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "detail.cl"},
+                              storage_options(atlas_.storage()));
+    d.encode = cl::Kernel(d.program, "encode_details");
+    d.decode_interior = cl::Kernel(d.program, "decode_interior");
+    d.decode_edges = cl::Kernel(d.program, "decode_edges");
+    d.decode_corners = cl::Kernel(d.program, "decode_corners");
+    d.copy_level = cl::Kernel(d.program, "copy_level");
+    d.patch_extent = cl::Kernel(d.program, "patch_extent");
+    d.saved = allocate_layer(rt, f, atlas_.storage());
+    d.positions = allocate_layer(rt, f, atlas_.storage());
+    d.normals = allocate_layer(rt, f, atlas_.storage());
+    d.details = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, f.texels() * sizeof(cl_float4));
+    d.weights = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, f.texels() * sizeof(float));
+    d.extent = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, std::max(f.patches, 1) * sizeof(float));
+  } catch (const cl::Error& e) {
+    throw DeviceError("cannot set up multiresolution editing on " + rt.info().name + ": " + describe(e));
+  }
+}
+
+Multires::~Multires() = default;
+
+std::vector<Float4> Multires::read_details()
+{
+  std::vector<Float4> out(atlas_.layout(atlas_.max_level()).texels());
+  atlas_.runtime().queue().enqueueReadBuffer(device_->details, CL_TRUE, 0, out.size() * sizeof(Float4), out.data());
+  return out;
+}
+
+const cl::Buffer& Multires::base_weights() const { return device_->weights; }
+const cl::Memory& Multires::base_positions() const { return device_->positions; }
+const cl::Memory& Multires::base_normals() const { return device_->normals; }
+
+void Multires::copy_level(const cl::Memory& from, const cl::Memory& to, const std::vector<int>* patches)
+{
+  const LevelLayout f = atlas_.layout(atlas_.max_level());
+  const int count = patches ? int(patches->size()) : f.patches;
+  if (count == 0)
+    return;
+  const cl::Buffer list = patches ? device_ints(atlas_.runtime().context(), *patches) : cl::Buffer();
+  const auto tiles = range_tiles(f, count);
+  launch(atlas_.runtime().queue(), device_->copy_level, tiles.first, tiles.second, from, to, grid(f), list, count);
+  if (patches)
+    atlas_.runtime().queue().finish(); // the list lives until here
+}
+
+void Multires::encode(int level)
+{
+  const int finest = atlas_.max_level();
+  if (level < 1 || level >= finest)
+    throw InputError("cannot edit at level " + std::to_string(level) + ": the surface's levels below its finest are 1.." +
+                     std::to_string(finest - 1));
+  Device& d = *device_;
+  cl::CommandQueue& q = atlas_.runtime().queue();
+  const LevelLayout f = atlas_.layout(finest);
+  const cl::Memory& fine = atlas_.level_layer(finest);
+  try {
+    copy_level(fine, d.saved);
+    atlas_.reduce(finest, level);
+    atlas_.subdivide(level, finest);
+    atlas_.compute_limit();
+    const auto tiles = range_tiles(f, f.patches);
+    launch(q, d.encode, tiles.first, tiles.second, d.saved, fine, atlas_.limit_normals_layer(), grid(f), f.patches,
+           d.details);
+    copy_level(d.saved, fine);
+    atlas_.compute_limit();
+    launch(q, d.patch_extent, cl::NDRange(round_up(f.patches, kGroup)), cl::NDRange(kGroup), fine, grid(f),
+           cl::Buffer(), f.patches, d.extent);
+    extent_.resize(std::size_t(f.patches));
+    q.enqueueReadBuffer(d.extent, CL_TRUE, 0, extent_.size() * sizeof(float), extent_.data());
+  } catch (const cl::Error& e) {
+    level_ = -1;
+    throw DeviceError("encoding details failed on " + atlas_.runtime().info().name + ": " + describe(e));
+  }
+  level_ = level;
+}
+
+std::vector<int> Multires::reach(const std::vector<int>& patches) const
+{
+  // Each level of subdivision spreads a change by one face of that level:
+  // less than two faces of the edit level in all, plus the limit stencil.
+  return grow(patches, atlas_.layout(level_).n >= 4 ? 1 : 2);
+}
+
+std::vector<int> Multires::grow(const std::vector<int>& patches, int rings) const
+{
+  const AtlasTopology& topo = atlas_.topology();
+  std::vector<char> in(std::size_t(topo.patch_count), 0);
+  std::vector<int> out = patches;
+  for (const int p : out)
+    in[std::size_t(p)] = 1;
+  std::size_t from = 0;
+  for (int r = 0; r < rings; ++r) {
+    const std::size_t to = out.size();
+    for (std::size_t k = from; k < to; ++k)
+      for (int c = 0; c < 4; ++c) {
+        const CornerRing& ring = topo.rings[std::size_t(topo.patch_corners[std::size_t(out[k])][c])];
+        for (int m = 0; m < ring.count; ++m) {
+          const int q = topo.slots[std::size_t(ring.first + m)].patch;
+          if (!in[std::size_t(q)]) {
+            in[std::size_t(q)] = 1;
+            out.push_back(q);
+          }
+        }
+      }
+    from = to;
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+void Multires::reconstruct(const std::vector<int>& affected)
+{
+  Device& d = *device_;
+  Runtime& rt = atlas_.runtime();
+  cl::CommandQueue& q = rt.queue();
+  const int finest = atlas_.max_level();
+  const LevelLayout f = atlas_.layout(finest);
+  const cl::Memory& fine = atlas_.level_layer(finest);
+  // Levels above the edit level hold up(base) (encode() made them so, and
+  // every reconstruction keeps them so on what it changes): subdividing the
+  // affected set is enough. It writes U' into the finest level there, and
+  // into the stored copies its sides and corners have in the patches around.
+  const PatchSet reached = atlas_.patch_set(affected, Reach::Any);
+  atlas_.subdivide(level_, finest, &reached);
+  // The limit layers still describe S, which the finest level is again
+  // outside `affected` once decoded; their normals of U' are needed on it.
+  atlas_.assume_limit_current();
+  const PatchSet set = atlas_.patch_set(affected, Reach::All);
+  atlas_.update_limit(set);
+  const cl::Buffer patches = device_ints(rt.context(), set.patches), edges = device_ints(rt.context(), set.edges),
+                   rings = device_ints(rt.context(), set.rings);
+  const cl::Memory& normals = atlas_.limit_normals_layer();
+  const auto tiles = range_tiles(f, int(set.patches.size()));
+  launch(q, d.decode_interior, tiles.first, tiles.second, fine, normals, grid(f), patches, int(set.patches.size()),
+         d.details, d.saved);
+  if (f.n > 1 && !set.edges.empty())
+    launch(q, d.decode_edges, cl::NDRange(f.n - 1, round_up(set.edges.size(), kGroup)), cl::NDRange(1, kGroup), fine,
+           normals, grid(f), atlas_.edge_table(), edges, int(set.edges.size()), d.details, d.saved);
+  if (!set.rings.empty())
+    launch(q, d.decode_corners, cl::NDRange(round_up(set.rings.size(), kGroup)), cl::NDRange(kGroup), fine, normals,
+           grid(f), atlas_.ring_table(), atlas_.slot_table(), rings, int(set.rings.size()), d.details, d.saved);
+  const std::vector<int> touched = grow(affected, 1);
+  copy_level(d.saved, fine, &touched);
+  q.finish(); // the lists live until here
+}
+
+float Multires::stretch(const std::vector<int>& patches)
+{
+  if (patches.empty())
+    return 1.f;
+  Device& d = *device_;
+  Runtime& rt = atlas_.runtime();
+  const LevelLayout f = atlas_.layout(atlas_.max_level());
+  const cl::Buffer list = device_ints(rt.context(), patches);
+  launch(rt.queue(), d.patch_extent, cl::NDRange(round_up(patches.size(), kGroup)), cl::NDRange(kGroup),
+         atlas_.level_layer(f.level), grid(f), list, int(patches.size()), d.extent);
+  std::vector<float> now(patches.size());
+  rt.queue().enqueueReadBuffer(d.extent, CL_TRUE, 0, now.size() * sizeof(float), now.data());
+  float worst = 1.f;
+  for (std::size_t k = 0; k < patches.size(); ++k)
+    if (extent_[std::size_t(patches[k])] > 0.f)
+      worst = std::max(worst, now[k] / extent_[std::size_t(patches[k])]);
+  return worst;
+}
+
+void Multires::compute_base_limit(const std::vector<int>& patches)
+{
+  const PatchSet set = atlas_.patch_set(patches, Reach::Any); // every texel of the tiles
+  atlas_.compute_limit_of(level_, device_->positions, device_->normals, &set);
+}
+
+} // namespace meshpaint

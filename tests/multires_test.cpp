@@ -1,0 +1,357 @@
+// Multiresolution editing: details S - up(down(S)) in local frames, edits at
+// a coarse level that carry the fine detail along, and the grab tool.
+
+#include "atlas/multires.h"
+#include "core/errors.h"
+#include "paint/paint_surface.h"
+#include "support/copies.h"
+#include "support/runtime.h"
+#include "support/shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm> // for std::sort
+#include <array>   // for std::array
+#include <cmath>   // for std::sqrt, std::sin, std::cos
+#include <cstdio>  // for std::printf
+#include <cstring> // for std::memcmp
+#include <numeric> // for std::iota
+
+namespace meshpaint {
+namespace {
+
+constexpr int kLevel = 5;
+
+double length(const Vec3& v) { return std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]); }
+
+double distance(const Float4& a, const Float4& b)
+{
+  return std::sqrt(double(a[0] - b[0]) * (a[0] - b[0]) + double(a[1] - b[1]) * (a[1] - b[1]) +
+                   double(a[2] - b[2]) * (a[2] - b[2]));
+}
+
+//! Fine bumps along the radius, a function of the position so that every
+//! stored copy of a texel moves alike.
+void add_bumps(std::vector<Float4>& texels, float height)
+{
+  for (Float4& t : texels) {
+    const double r = std::sqrt(double(t[0]) * t[0] + double(t[1]) * t[1] + double(t[2]) * t[2]);
+    const double h = height * std::sin(48.0 * t[0]) * std::sin(48.0 * t[1]) * std::sin(48.0 * t[2]);
+    for (int k = 0; k < 3; ++k)
+      t[k] = float(t[k] * (1.0 + h / r));
+  }
+}
+
+std::vector<int> every_patch(const Atlas& atlas)
+{
+  std::vector<int> all(std::size_t(atlas.topology().patch_count));
+  std::iota(all.begin(), all.end(), 0);
+  return all;
+}
+
+bool same_bits(const std::vector<Float4>& a, const std::vector<Float4>& b)
+{
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Float4)) == 0;
+}
+
+//! A bumpy sphere at level 5 in an atlas of its own.
+struct BumpyAtlas
+{
+  Atlas atlas{test::runtime(), test::noisy_sphere(3, 0.f), kLevel, AtlasStorage::Buffer};
+  std::vector<Float4> fine;
+  double diagonal = atlas.base_mesh().diagonal();
+
+  BumpyAtlas()
+  {
+    atlas.subdivide(1, kLevel);
+    fine = atlas.read_positions(kLevel);
+    add_bumps(fine, 0.02f);
+    atlas.write_positions(kLevel, fine);
+    atlas.compute_limit();
+  }
+};
+
+TEST(Multires, WithoutAnEditReconstructionGivesTheFineSurfaceBack)
+{
+  for (const int edit : {1, 2, 3}) {
+    BumpyAtlas b;
+    Multires multires(b.atlas);
+    multires.encode(edit);
+    EXPECT_TRUE(same_bits(b.atlas.read_positions(kLevel), b.fine)) << "encoding changed the finest level";
+    multires.reconstruct(every_patch(b.atlas));
+    const std::vector<Float4> back = b.atlas.read_positions(kLevel);
+    double worst = 0;
+    for (std::size_t t = 0; t < back.size(); ++t)
+      worst = std::max(worst, distance(back[t], b.fine[t]));
+    EXPECT_LT(worst, 1e-5 * b.diagonal) << "edit level " << edit;
+    EXPECT_EQ(test::differing_copies(b.atlas.topology(), b.atlas.layout(kLevel), back), 0u);
+  }
+}
+
+TEST(Multires, DetailsFollowARigidMotionOfTheBase)
+{
+  BumpyAtlas b;
+  Multires multires(b.atlas);
+  multires.encode(2);
+  // 40 degrees about (1, 2, 3), then a shift.
+  const double angle = 40.0 * M_PI / 180.0, n = std::sqrt(14.0);
+  const double x = 1 / n, y = 2 / n, z = 3 / n, c = std::cos(angle), s = std::sin(angle);
+  const double r[3][3] = {{c + x * x * (1 - c), x * y * (1 - c) - z * s, x * z * (1 - c) + y * s},
+                          {y * x * (1 - c) + z * s, c + y * y * (1 - c), y * z * (1 - c) - x * s},
+                          {z * x * (1 - c) - y * s, z * y * (1 - c) + x * s, c + z * z * (1 - c)}};
+  const double shift[3] = {0.5, -1.25, 2.0};
+  const auto move = [&](const Float4& p) {
+    Float4 q = p;
+    for (int i = 0; i < 3; ++i)
+      q[i] = float(r[i][0] * p[0] + r[i][1] * p[1] + r[i][2] * p[2] + shift[i]);
+    return q;
+  };
+  std::vector<Float4> base = b.atlas.read_positions(2);
+  for (Float4& p : base)
+    p = move(p);
+  b.atlas.write_positions(2, base);
+  multires.reconstruct(every_patch(b.atlas));
+  const std::vector<Float4> moved = b.atlas.read_positions(kLevel);
+  double worst = 0;
+  for (std::size_t t = 0; t < moved.size(); ++t)
+    worst = std::max(worst, distance(moved[t], move(b.fine[t])));
+  EXPECT_LT(worst, 1e-4 * b.diagonal);
+}
+
+TEST(Multires, RebuildingTheReachEqualsRebuildingEverything)
+{
+  BumpyAtlas b;
+  Multires multires(b.atlas);
+  multires.encode(2);
+  // Move the base near one point, smoothly, the same for every copy.
+  std::vector<Float4> base = b.atlas.read_positions(2);
+  const Float4 at = base[base.size() / 3];
+  for (Float4& p : base) {
+    const double d = distance(p, at);
+    if (d < 0.5)
+      for (int k = 0; k < 3; ++k)
+        p[k] += float(0.2 * (1 - d / 0.5) * (k == 2 ? 1.0 : 0.3));
+  }
+  b.atlas.write_positions(2, base);
+  std::vector<int> moved;
+  const LevelLayout l2 = b.atlas.layout(2);
+  for (int p = 0; p < l2.patches; ++p)
+    for (int t = 0; t < l2.tile * l2.tile; ++t)
+      if (distance(base[l2.index(p, 0, 0) + std::size_t(t)], at) < 0.6) {
+        moved.push_back(p);
+        break;
+      }
+  multires.reconstruct(multires.reach(moved));
+  const std::vector<Float4> local = b.atlas.read_positions(kLevel);
+  multires.reconstruct(every_patch(b.atlas));
+  const std::vector<Float4> global = b.atlas.read_positions(kLevel);
+  double worst = 0;
+  for (std::size_t t = 0; t < local.size(); ++t)
+    worst = std::max(worst, distance(local[t], global[t]));
+  EXPECT_LT(worst, 1e-6 * b.diagonal);
+  EXPECT_FALSE(same_bits(local, b.fine));
+  EXPECT_EQ(test::differing_copies(b.atlas.topology(), b.atlas.layout(kLevel), local), 0u);
+}
+
+Stroke coarse_inflate(const Vec3& centre, float radius, float amount, int edit_level)
+{
+  Stroke s;
+  s.tool = Tool::Inflate;
+  s.points = {centre};
+  s.radius = radius;
+  s.falloff = FALLOFF_SMOOTHSTEP;
+  s.amount = amount;
+  s.edit_level = edit_level;
+  return s;
+}
+
+//! Heights of the fine detail: the normal coordinate of the details over
+//! `level`, less its mean over each patch (which holds the slow part that
+//! changes with the curvature of the base).
+std::vector<double> bump_heights(Atlas& atlas, int level)
+{
+  Multires probe(atlas);
+  probe.encode(level);
+  const std::vector<Float4> details = probe.read_details();
+  const LevelLayout l = atlas.layout(atlas.max_level());
+  const std::size_t per_patch = std::size_t(l.tile) * l.tile;
+  std::vector<double> h(details.size());
+  for (std::size_t p = 0; p < std::size_t(l.patches); ++p) {
+    double mean = 0;
+    for (std::size_t t = p * per_patch; t < (p + 1) * per_patch; ++t)
+      mean += details[t][2];
+    mean /= double(per_patch);
+    for (std::size_t t = p * per_patch; t < (p + 1) * per_patch; ++t)
+      h[t] = details[t][2] - mean;
+  }
+  return h;
+}
+
+//! Root mean square and the 5% and 95% quantiles.
+std::array<double, 3> spread(std::vector<double> v)
+{
+  double sum = 0;
+  for (const double x : v)
+    sum += x * x;
+  std::sort(v.begin(), v.end());
+  return {std::sqrt(sum / double(v.size())), v[v.size() / 20], v[v.size() - 1 - v.size() / 20]};
+}
+
+TEST(Multires, ACoarseEditKeepsTheBumpsAndMakesTheEdit)
+{
+  // A bumpy sphere whose top is pulled up at edit level 2 (bump wavelength
+  // about half a face of that level). Where the pull moved the surface, the
+  // distribution of bump heights after must match the one before: RMS and
+  // the 5% and 95% quantiles within 10% of the RMS.
+  PaintSurface surface(test::runtime(), test::noisy_sphere(3, 0.f), kLevel, AtlasStorage::Buffer);
+  Atlas& atlas = surface.atlas();
+  std::vector<Float4> fine = atlas.read_positions(kLevel);
+  add_bumps(fine, 0.02f);
+  atlas.write_positions(kLevel, fine);
+  surface.geometry_changed();
+  const std::vector<double> heights_before = bump_heights(atlas, 2);
+  const std::vector<Float4> before = atlas.read_limit_positions();
+
+  const Vec3 centre{0.f, 0.f, 1.f};
+  const float radius = 1.2f, lift = 0.4f;
+  Stroke grab;
+  grab.tool = Tool::Grab;
+  grab.points = {centre, {centre[0], centre[1], centre[2] + lift}};
+  grab.radius = radius;
+  grab.edit_level = 2;
+  const StrokeReport report = surface.apply(grab);
+  EXPECT_GE(report.dabs_applied, 1u);
+  const std::vector<Float4> after = atlas.read_limit_positions();
+  const std::vector<double> heights_after = bump_heights(atlas, 2);
+
+  std::vector<double> h0, h1;
+  for (std::size_t t = 0; t < before.size(); ++t)
+    if (distance(after[t], before[t]) > 0.5 * lift) {
+      h0.push_back(heights_before[t]);
+      h1.push_back(heights_after[t]);
+    }
+  ASSERT_GT(h0.size(), 1000u);
+  const auto s0 = spread(h0), s1 = spread(h1);
+  std::printf("bump heights where moved (%zu texels): RMS %.4g -> %.4g, 5%% %.4g -> %.4g, 95%% %.4g -> %.4g\n",
+              h0.size(), s0[0], s1[0], s0[1], s1[1], s0[2], s1[2]);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(s1[k], s0[k], 0.1 * s0[0]) << "measure " << k;
+
+  // The pull itself: the top moved up by the lift (weight 1 at the centre),
+  // nothing far from the brush moved at all, and the copies agree.
+  std::size_t top = 0;
+  for (std::size_t t = 0; t < before.size(); ++t)
+    if (before[t][2] > before[top][2])
+      top = t;
+  EXPECT_NEAR(after[top][2] - before[top][2], lift, 0.05 * lift);
+  for (std::size_t t = 0; t < before.size(); ++t)
+    if (distance(before[t], {centre[0], centre[1], centre[2], 0.f}) > radius + 1.0)
+      ASSERT_EQ(std::memcmp(&before[t], &after[t], sizeof(Float4)), 0) << "texel " << t;
+  EXPECT_EQ(test::differing_copies(atlas.topology(), atlas.layout(kLevel), atlas.read_positions(kLevel)), 0u);
+  EXPECT_LT(report.stretch, 2.f);
+}
+
+TEST(Multires, UndoOfCoarseAndFineEditsIsBitExact)
+{
+  PaintSurface surface(test::runtime(), test::noisy_sphere(3, 0.02f), 4, AtlasStorage::Buffer);
+  const std::vector<Float4> start = surface.atlas().read_positions(4);
+  const std::vector<Float4> start_limit = surface.atlas().read_limit_positions();
+  surface.apply(coarse_inflate({0.f, 0.f, 1.f}, 0.6f, 0.2f, 2));
+  const StrokeScript script = parse_stroke_script(R"({"strokes": [
+      {"tool": "smooth", "points": [[1, 0, 0]], "radius": 0.5, "edit_level": 3, "iterations": 3},
+      {"tool": "sculpt", "points": [[0, 1, 0]], "radius": 0.4, "amount": 0.1},
+      {"tool": "grab", "points": [[0, 0, -1], [0.1, 0, -1.3]], "radius": 0.5, "edit_level": 2}]})");
+  for (const Stroke& s : script.strokes)
+    surface.apply(s);
+  const std::vector<Float4> edited = surface.atlas().read_positions(4);
+  EXPECT_FALSE(same_bits(edited, start));
+  for (int k = 0; k < 4; ++k)
+    ASSERT_TRUE(surface.undo());
+  EXPECT_TRUE(same_bits(surface.atlas().read_positions(4), start));
+  EXPECT_TRUE(same_bits(surface.atlas().read_limit_positions(), start_limit));
+  for (int k = 0; k < 4; ++k)
+    ASSERT_TRUE(surface.redo());
+  EXPECT_TRUE(same_bits(surface.atlas().read_positions(4), edited));
+}
+
+TEST(Multires, BufferAndImageStorageAgreeBitForBit)
+{
+  std::vector<Float4> result[2];
+  for (const AtlasStorage storage : {AtlasStorage::Buffer, AtlasStorage::Image}) {
+    PaintSurface surface(test::runtime(), test::noisy_sphere(3, 0.02f), 4, storage);
+    surface.apply(coarse_inflate({0.f, 0.f, 1.f}, 0.6f, 0.2f, 2));
+    Stroke grab = coarse_inflate({1.f, 0.f, 0.f}, 0.5f, 0.f, 1);
+    grab.tool = Tool::Grab;
+    grab.points.push_back({1.2f, 0.1f, 0.f});
+    surface.apply(grab);
+    result[storage == AtlasStorage::Image] = surface.atlas().read_positions(4);
+  }
+  EXPECT_TRUE(same_bits(result[0], result[1]));
+}
+
+TEST(Multires, GrabPullsTheRegionAlongThePath)
+{
+  for (const int edit_level : {-1, 2}) {
+    PaintSurface surface(test::runtime(), test::flat_grid(8), 4, AtlasStorage::Buffer);
+    const std::vector<Float4> before = surface.atlas().read_limit_positions();
+    Stroke grab;
+    grab.tool = Tool::Grab;
+    grab.points = {{4.f, 4.f, 0.f}, {4.f, 4.f, 0.5f}, {4.f, 4.f, 1.f}};
+    grab.radius = 2.f;
+    grab.falloff = FALLOFF_CONSTANT;
+    grab.edit_level = edit_level;
+    const StrokeReport report = surface.apply(grab);
+    EXPECT_GT(report.dabs_applied, 1u);
+    const std::vector<Float4> after = surface.atlas().read_limit_positions();
+    for (std::size_t t = 0; t < before.size(); ++t) {
+      const double from_centre = std::hypot(before[t][0] - 4.0, before[t][1] - 4.0);
+      if (from_centre < 0.5)
+        ASSERT_NEAR(after[t][2], 1.0, edit_level < 0 ? 1e-5 : 0.05) << "texel " << t << " at " << from_centre;
+      if (from_centre > 3.5)
+        ASSERT_EQ(after[t][2], before[t][2]) << "texel " << t << " at " << from_centre;
+    }
+  }
+}
+
+TEST(Multires, StretchTellsWhenTheEditLevelIsTooCoarse)
+{
+  PaintSurface surface(test::runtime(), test::flat_grid(8), 4, AtlasStorage::Buffer);
+  Stroke pull;
+  pull.tool = Tool::Grab;
+  pull.points = {{4.f, 4.f, 0.f}, {4.f, 4.f, 0.05f}};
+  pull.radius = 1.5f;
+  pull.edit_level = 1;
+  EXPECT_LT(surface.apply(pull).stretch, 1.2f);
+  pull.points = {{4.f, 4.f, 0.05f}, {4.f, 4.f, 6.f}};
+  EXPECT_GT(surface.apply(pull).stretch, 2.f);
+}
+
+TEST(Multires, EditLevelFinerThanTheSurfaceIsRefused)
+{
+  PaintSurface surface(test::runtime(), test::flat_grid(4), 3, AtlasStorage::Buffer);
+  Stroke s = coarse_inflate({2.f, 2.f, 0.f}, 1.f, 0.1f, 4);
+  EXPECT_THROW(surface.apply(s), InputError);
+  EXPECT_TRUE(surface.history().empty());
+}
+
+TEST(Multires, LevelOfDetailCarriesTheFinestNormals)
+{
+  PaintSurface surface(test::runtime(), test::noisy_sphere(3, 0.f), 4, AtlasStorage::Buffer);
+  const PaintedSurface full = surface.painted_surface();
+  EXPECT_EQ(surface.painted_surface(4).surface.points.size(), full.surface.points.size());
+  for (const int lod : {1, 2, 3}) {
+    const PaintedSurface coarse = surface.painted_surface(lod);
+    const LevelLayout l = surface.atlas().layout(lod);
+    EXPECT_EQ(coarse.surface.quads.size(), std::size_t(l.patches) * l.n * l.n);
+    EXPECT_LT(coarse.surface.points.size(), full.surface.points.size());
+    ASSERT_EQ(coarse.surface.normals.size(), coarse.surface.points.size());
+    for (const Vec3& n : coarse.surface.normals)
+      ASSERT_NEAR(length(n), 1.0, 1e-5);
+    // Every coarse vertex has the normal of some finest vertex.
+    ASSERT_EQ(coarse.diffuse.size(), coarse.surface.points.size());
+  }
+  EXPECT_THROW(surface.painted_surface(5), InputError);
+}
+
+} // namespace
+} // namespace meshpaint
