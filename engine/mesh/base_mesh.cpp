@@ -4,13 +4,13 @@
 #include "core/format.h"
 #include "mesh/file_census.h"
 #include "mesh/openmesh_types.h"
+#include "mesh/quiet_openmesh.h"
 
 #include <OpenMesh/Core/IO/IOManager.hh>          // for OpenMesh::IO::IOManager
 #include <OpenMesh/Core/IO/importer/ImporterT.hh> // for OpenMesh::IO::ImporterT
-#include <OpenMesh/Core/System/omstream.hh>       // for omerr, omlog, omout
 
 #include <algorithm>  // for std::transform, std::min, std::max
-#include <cmath>      // for std::isfinite, std::sqrt
+#include <cmath>      // for std::isfinite, std::sqrt, std::fabs
 #include <filesystem> // for std::filesystem
 #include <map>        // for std::map
 #include <numeric>    // for std::iota
@@ -60,24 +60,6 @@ public:
 private:
   PolyMesh& mesh_;
   std::size_t faces_ = 0;
-};
-
-//! Silences OpenMesh's own console messages while it runs; our errors say it.
-class QuietOpenMesh
-{
-public:
-  QuietOpenMesh()
-  {
-    omerr().disable();
-    omlog().disable();
-    omout().disable();
-  }
-  ~QuietOpenMesh()
-  {
-    omerr().enable();
-    omlog().enable();
-    omout().enable();
-  }
 };
 
 std::string vertex_text(const Vec3& p)
@@ -156,6 +138,10 @@ BaseMesh finish(const PolyMesh& om, const ImportReport& report, const std::strin
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
       throw InputError(where + "vertex " + std::to_string(v) + " has a non-finite coordinate " +
                        vertex_text({p[0], p[1], p[2]}));
+    if (std::max({std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2])}) > kMaxCoordinate)
+      throw InputError(where + "vertex " + std::to_string(v) + " has a coordinate beyond +-1e15 " +
+                       vertex_text({p[0], p[1], p[2]}) + ": limit normals would overflow single precision; "
+                       "scale the mesh down");
     if (remap[v] < 0) {
       ++mesh.report.isolated_vertices_removed;
       continue;

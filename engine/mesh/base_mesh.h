@@ -41,11 +41,15 @@ struct BaseMesh
   double diagonal() const;
 };
 
+//! Largest coordinate magnitude accepted: limit normals (cross products of
+//! tangents, then their squared length) overflow single precision near 1e19.
+constexpr float kMaxCoordinate = 1e15f;
+
 //! Builds a base mesh from points and faces, checking and repairing as
 //! load_mesh does.
 //! Faces with fewer than three distinct vertices are dropped and counted.
 //! \throw InputError naming the first problem (no faces, non-finite
-//! coordinate, index out of range).
+//! coordinate or one beyond kMaxCoordinate, index out of range).
 BaseMesh make_base_mesh(std::vector<Vec3> points, const std::vector<std::vector<int>>& faces,
                         const std::string& name = "mesh");
 

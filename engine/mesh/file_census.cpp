@@ -71,7 +71,7 @@ bool is_ply_type(const std::string& t)
 
 //! One PLY header line, as words, checked against the grammar (OpenMesh's
 //! reader crashes on some malformed headers). Returns true at end_header.
-bool check_ply_header_line(const std::vector<std::string>& w, long number, FileCensus& c)
+bool check_ply_header_line(const std::vector<std::string>& w, long number, bool in_element, FileCensus& c)
 {
   const std::string& k = w[0];
   bool ok = false;
@@ -84,9 +84,9 @@ bool check_ply_header_line(const std::vector<std::string>& w, long number, FileC
     ok = true;
   else if (k == "element")
     ok = w.size() == 3 && w[2].find_first_not_of("0123456789") == std::string::npos && w[2].size() < 10;
-  else if (k == "property")
-    ok = (w.size() == 3 && is_ply_type(w[1])) ||
-         (w.size() == 5 && w[1] == "list" && is_ply_type(w[2]) && is_ply_type(w[3]));
+  else if (k == "property") // OpenMesh leaks on a property outside an element
+    ok = in_element && ((w.size() == 3 && is_ply_type(w[1])) ||
+         (w.size() == 5 && w[1] == "list" && is_ply_type(w[2]) && is_ply_type(w[3])));
   else if (k == "end_header")
     ok = w.size() == 1;
   if (!ok)
@@ -136,7 +136,7 @@ FileCensus take_census(const std::string& path, const std::string& ext)
       }
     }
   } else if (ext == ".off") {
-    long nv = -1, seen_vertices = 0;
+    long nv = -1, seen_vertices = 0, face_lines = 0;
     while (std::getline(in, line)) {
       ++number;
       const std::size_t hash = line.find('#');
@@ -145,11 +145,21 @@ FileCensus take_census(const std::string& path, const std::string& ext)
       if (line.find_first_not_of(" \t\r") == std::string::npos)
         continue;
       if (number == 1 && line.find("OFF") != std::string::npos) {
-        if (line.find("BINARY") != std::string::npos)
+        if (line.find("BINARY") != std::string::npos) {
+          // Three 32-bit counts (vertices, faces, edges) follow the line.
+          std::int32_t counts[3] = {0, 0, 0};
+          if (!in.read(reinterpret_cast<char*>(counts), sizeof counts))
+            c.problem = "the binary OFF header is truncated";
+          else
+            check_counts(counts[0], counts[1], file_size, 12, c);
+          c.declared_faces = counts[1];
           return c;
+        }
         std::istringstream rest(line.substr(line.find("OFF") + 3));
-        long f = -1;
-        const bool counted = bool(rest >> nv);
+        long f = -1, v = -1;
+        const bool counted = bool(rest >> v);
+        if (counted)
+          nv = v;
         if (counted && rest >> f)
           c.declared_faces = f;
         if (counted && !check_counts(nv, std::max(f, 0L), file_size, 6, c).problem.empty())
@@ -158,8 +168,10 @@ FileCensus take_census(const std::string& path, const std::string& ext)
       }
       if (nv < 0) {
         std::istringstream counts(line);
-        long f = -1;
-        const bool counted = bool(counts >> nv);
+        long f = -1, v = -1;
+        const bool counted = bool(counts >> v);
+        if (counted)
+          nv = v;
         if (!counted || !(counts >> f)) {
           if (counted)
             check_counts(nv, 0, file_size, 6, c);
@@ -173,6 +185,7 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         check_numbers(line, number, c);
       } else {
         // A face starts with its corner count, which OpenMesh allocates.
+        ++face_lines;
         std::istringstream words(line);
         long corners = 0;
         if (words >> corners && (corners < 1 || corners > nv)) {
@@ -182,6 +195,13 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         }
       }
     }
+    // A text OFF file that ends early: OpenMesh would make up the rest.
+    if (nv > seen_vertices)
+      c.problem = "declares " + std::to_string(nv) + " vertices, but the file ends after " +
+                  std::to_string(seen_vertices) + " (truncated?)";
+    else if (c.declared_faces > face_lines)
+      c.problem = "declares " + std::to_string(c.declared_faces) + " faces, but the file ends after " +
+                  std::to_string(face_lines) + " (truncated?)";
   } else if (ext == ".ply") {
     bool ascii = false, ended = false;
     long nv = 0, nf = 0;
@@ -200,7 +220,7 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         c.problem = "line " + std::to_string(number) + ": not a PLY header line";
         break;
       }
-      ended = check_ply_header_line(w, number, c);
+      ended = check_ply_header_line(w, number, !elements.empty(), c);
       if (!c.problem.empty())
         break;
       if (w[0] == "format")
