@@ -70,6 +70,32 @@ def test_awkward_meshes_give_finite_limit_surfaces(name, tmp_path):
     assert poly.GetNumberOfCells() > 0
 
 
+def run_with_memory(cap, *args):
+    env = dict(os.environ, MESHPAINT_DEVICE_MEMORY=cap)
+    return subprocess.run([BIN, *args], capture_output=True, text=True, timeout=600, env=env)
+
+
+def test_memory_cap_refuses_a_level_before_allocating(tmp_path):
+    out = tmp_path / "x.obj"
+    r = run_with_memory("64M", "subdivide", os.path.join(SCANS, "bunny00.off"), "--level", "6", "-o", str(out))
+    assert r.returncode == 2, r.stderr
+    assert re.fullmatch(r"meshpaint subdivide: level 6 of 'bunny00' needs .* \(64\.0 MiB\); "
+                        r"the largest level that fits is 1", r.stderr.strip()), r.stderr
+    assert not out.exists()
+    # the level it names does fit under the same cap
+    r = run_with_memory("64M", "subdivide", os.path.join(SCANS, "bunny00.off"), "--level", "1", "-o", str(out))
+    assert r.returncode == 0, r.stderr
+    r = run_with_memory("64M", "devices")
+    assert "64.0 MiB" in r.stdout
+
+
+def test_memory_cap_must_be_a_size(tmp_path):
+    r = run_with_memory("lots", "subdivide", os.path.join(SCANS, "bunny00.off"), "--level", "2",
+                        "-o", str(tmp_path / "x.obj"))
+    assert r.returncode == 2
+    assert r.stderr.strip() == "meshpaint subdivide: MESHPAINT_DEVICE_MEMORY must be a size such as 512M or 2G, not 'lots'"
+
+
 def test_unknown_device_is_a_device_error(tmp_path):
     r = run("info", os.path.join(SCANS, "bunny00.off"), "--device", "no-such-device")
     # info still reports the mesh and says there is no such device
