@@ -14,6 +14,7 @@ struct ImportReport
 {
   std::size_t faces_skipped_by_reader = 0;     //!< listed in the file, never delivered
   std::size_t degenerate_faces_dropped = 0;    //!< faces naming one vertex twice
+  std::size_t duplicate_faces_dropped = 0;     //!< faces with the corners of an earlier face (either orientation)
   std::size_t nonmanifold_faces_detached = 0;  //!< faces OpenMesh could not join to their neighbours
   std::size_t nonmanifold_vertices_split = 0;  //!< extra surface sheets at one vertex
   std::size_t isolated_vertices_removed = 0;   //!< vertices used by no face
