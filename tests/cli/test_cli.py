@@ -89,6 +89,22 @@ def test_memory_cap_refuses_a_level_before_allocating(tmp_path):
     assert "64.0 MiB" in r.stdout
 
 
+def test_memory_cap_counts_the_paint_layers(tmp_path):
+    # Level 2 of the bunny fits as an atlas under 200 MiB, not with its paint layers.
+    strokes = os.path.join(SOURCE, "data", "strokes", "bunny_demo.json")
+    out = tmp_path / "painted"
+    r = run_with_memory("200M", "paint", os.path.join(SCANS, "bunny00.off"), "--strokes", strokes, "--level", "2",
+                        "-o", str(out))
+    assert r.returncode == 2, r.stderr
+    assert re.fullmatch(r"meshpaint paint: painting level 2 of 'bunny00' needs .* with its paint layers, .*"
+                        r"\(200\.0 MiB\); the largest level that fits for painting is 1", r.stderr.strip()), r.stderr
+    assert not (out / "surface.vtp").exists()
+    r = run_with_memory("200M", "paint", os.path.join(SCANS, "bunny00.off"), "--strokes", strokes, "--level", "1",
+                        "--model-level", "1", "-o", str(out))
+    assert r.returncode == 0, r.stderr
+    assert (out / "surface.vtp").exists()
+
+
 def test_memory_cap_must_be_a_size(tmp_path):
     r = run_with_memory("lots", "subdivide", os.path.join(SCANS, "bunny00.off"), "--level", "2",
                         "-o", str(tmp_path / "x.obj"))
