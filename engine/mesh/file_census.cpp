@@ -1,6 +1,6 @@
 #include "mesh/file_census.h"
 
-#include <algorithm> // for std::max
+#include <algorithm> // for std::max, std::all_of
 #include <cctype>  // for std::tolower
 #include <cerrno>  // for errno, ERANGE
 #include <cstdlib> // for std::strtol
@@ -21,6 +21,16 @@ bool nonfinite_word(std::string w)
   for (char& c : w)
     c = char(std::tolower(static_cast<unsigned char>(c)));
   return w.rfind("nan", 0) == 0 || w.rfind("inf", 0) == 0;
+}
+
+//! A word from the file for a message: quoted when it is short text,
+//! described otherwise (binary garbage is not echoed).
+std::string shown(const std::string& word)
+{
+  const bool text = word.size() <= 24 && std::all_of(word.begin(), word.end(), [](char ch) {
+                      return std::isprint(static_cast<unsigned char>(ch)) != 0;
+                    });
+  return text ? "'" + word + "'" : "a " + std::to_string(word.size()) + "-byte word that is not text";
 }
 
 //! Records the first non-finite number among the words of a coordinate line.
@@ -53,7 +63,7 @@ void check_obj_face(std::istringstream& words, long number, FileCensus& c)
     errno = 0;
     const long index = std::strtol(text, &end, 10);
     if (end == text || index == 0 || errno == ERANGE || (*end != '\0' && *end != '/')) {
-      c.problem = "line " + std::to_string(number) + ": face corner '" + corner + "' has no vertex index";
+      c.problem = "line " + std::to_string(number) + ": face corner " + shown(corner) + " has no vertex index";
       return;
     }
   }
@@ -92,6 +102,75 @@ bool check_ply_header_line(const std::vector<std::string>& w, long number, bool 
   if (!ok)
     c.problem = "line " + std::to_string(number) + ": not a PLY header line";
   return ok && k == "end_header";
+}
+
+//! The next word as an element count; false when there is none. A word
+//! that is not a non-negative number is a problem (OpenMesh would read a
+//! wrapped or partial value and reserve for it).
+bool read_count(std::istream& words, long& value, long number, FileCensus& c)
+{
+  std::string word;
+  if (!(words >> word))
+    return false;
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtol(word.c_str(), &end, 10);
+  if (end == word.c_str() || *end || errno == ERANGE || value < 0) {
+    c.problem = "line " + std::to_string(number) + ": " + shown(word) + " is not a count";
+    return false;
+  }
+  return true;
+}
+
+struct PlyElement
+{
+  std::string name;
+  long count = 0;
+  std::vector<bool> lists; //!< per property: a list (count, then items)
+};
+
+//! Walks an ASCII PLY body word by word, as the header lays it out: a
+//! non-finite vertex coordinate is noted, and a list count (which OpenMesh
+//! allocates) must be a number from 0 to the vertex count.
+void check_ply_ascii_body(std::istream& in, long& number, const std::vector<PlyElement>& elements, long nv,
+                          FileCensus& c)
+{
+  std::string line, word;
+  std::istringstream words;
+  const auto next = [&]() {
+    while (!(words >> word)) {
+      if (!std::getline(in, line))
+        return false;
+      ++number;
+      words.clear();
+      words.str(line);
+    }
+    return true;
+  };
+  for (const PlyElement& e : elements)
+    for (long k = 0; k < e.count; ++k)
+      for (const bool list : e.lists) {
+        if (!next())
+          return; // ends early: the reader delivers fewer faces, which is counted
+        if (!list) {
+          if (e.name == "vertex" && c.nonfinite_line < 0 && nonfinite_word(word)) {
+            c.nonfinite_line = number;
+            c.nonfinite_token = word;
+          }
+          continue;
+        }
+        char* end = nullptr;
+        errno = 0;
+        const long n = std::strtol(word.c_str(), &end, 10);
+        if (end == word.c_str() || *end || errno == ERANGE || n < 0 || n > nv) {
+          c.problem = "line " + std::to_string(number) + ": a " + e.name + " list of " + shown(word) +
+                      " items, but there are " + std::to_string(nv) + " vertices";
+          return;
+        }
+        for (long i = 0; i < n; ++i)
+          if (!next())
+            return;
+      }
 }
 
 //! Element counts a file of `size` bytes cannot hold (at `min_bytes` per
@@ -157,23 +236,24 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         }
         std::istringstream rest(line.substr(line.find("OFF") + 3));
         long f = -1, v = -1;
-        const bool counted = bool(rest >> v);
+        const bool counted = read_count(rest, v, number, c);
         if (counted)
           nv = v;
-        if (counted && rest >> f)
+        if (counted && read_count(rest, f, number, c))
           c.declared_faces = f;
-        if (counted && !check_counts(nv, std::max(f, 0L), file_size, 6, c).problem.empty())
+        if (!c.problem.empty() ||
+            (counted && !check_counts(nv, std::max(f, 0L), file_size, 6, c).problem.empty()))
           return c;
         continue;
       }
       if (nv < 0) {
         std::istringstream counts(line);
         long f = -1, v = -1;
-        const bool counted = bool(counts >> v);
+        const bool counted = read_count(counts, v, number, c);
         if (counted)
           nv = v;
-        if (!counted || !(counts >> f)) {
-          if (counted)
+        if (!counted || !read_count(counts, f, number, c)) {
+          if (counted && c.problem.empty())
             check_counts(nv, 0, file_size, 6, c);
           return c;
         }
@@ -205,7 +285,7 @@ FileCensus take_census(const std::string& path, const std::string& ext)
   } else if (ext == ".ply") {
     bool ascii = false, ended = false;
     long nv = 0, nf = 0;
-    std::vector<std::pair<std::string, long>> elements; // name, count, in file order
+    std::vector<PlyElement> elements; // in file order
     while (!ended && std::getline(in, line) && c.problem.empty()) {
       ++number;
       if (!line.empty() && line.back() == '\r')
@@ -226,9 +306,18 @@ FileCensus take_census(const std::string& path, const std::string& ext)
       if (w[0] == "format")
         ascii = w[1] == "ascii";
       if (w[0] == "element") {
-        elements.push_back({w[1], std::stol(w[2])});
-        (w[1] == "face" ? nf : nv) += elements.back().second;
+        // OpenMesh reads vertices and faces; other elements would shift
+        // what it reads after them.
+        if (w[1] != "vertex" && w[1] != "face") {
+          c.problem = "line " + std::to_string(number) + ": PLY element " + shown(w[1]) +
+                      " is not read (only vertex and face)";
+          break;
+        }
+        elements.push_back({w[1], std::stol(w[2]), {}});
+        (w[1] == "face" ? nf : nv) += elements.back().count;
       }
+      if (w[0] == "property")
+        elements.back().lists.push_back(w[1] == "list");
     }
     if (!c.problem.empty())
       return c;
@@ -240,21 +329,8 @@ FileCensus take_census(const std::string& path, const std::string& ext)
     }
     if (!check_counts(nv, c.declared_faces, file_size, ascii ? 6 : 12, c).problem.empty())
       return c;
-    // ASCII: one line per element; a face starts with its corner count,
-    // which OpenMesh allocates.
-    for (const auto& [name, count] : elements)
-      for (long k = 0; ascii && k < count && c.problem.empty() && std::getline(in, line); ++k) {
-        ++number;
-        if (name == "vertex") {
-          check_numbers(line, number, c);
-        } else if (name == "face") {
-          std::istringstream words(line);
-          long corners = 0;
-          if (words >> corners && (corners < 0 || corners > nv))
-            c.problem = "line " + std::to_string(number) + ": a face of " + std::to_string(corners) +
-                        " corners, but there are only " + std::to_string(nv) + " vertices";
-        }
-      }
+    if (ascii)
+      check_ply_ascii_body(in, number, elements, nv, c);
   } else if (ext == ".stl") {
     char header[84];
     in.read(header, 84);
