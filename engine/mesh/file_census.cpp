@@ -27,7 +27,7 @@ bool nonfinite_word(std::string w)
 //! described otherwise (binary garbage is not echoed).
 std::string shown(const std::string& word)
 {
-  const bool text = word.size() <= 24 && std::all_of(word.begin(), word.end(), [](char ch) {
+  const bool text = word.size() <= 40 && std::all_of(word.begin(), word.end(), [](char ch) {
                       return std::isprint(static_cast<unsigned char>(ch)) != 0;
                     });
   return text ? "'" + word + "'" : "a " + std::to_string(word.size()) + "-byte word that is not text";
