@@ -3,7 +3,7 @@
 #include <algorithm> // for std::max, std::all_of
 #include <cctype>  // for std::tolower
 #include <cerrno>  // for errno, ERANGE
-#include <cstdlib> // for std::strtol
+#include <cstdlib> // for std::strtol, std::strtod
 #include <cstdint> // for std::uint32_t
 #include <cstring> // for std::memcpy
 #include <fstream> // for std::ifstream
@@ -104,6 +104,26 @@ bool check_ply_header_line(const std::vector<std::string>& w, long number, bool 
   return ok && k == "end_header";
 }
 
+//! The words of a line, each of which must be a whole number (OpenMesh's
+//! text readers read numbers, so "0-3" would be two); at least one.
+std::vector<std::string> numeric_words(const std::string& line, long number, FileCensus& c)
+{
+  std::istringstream words(line);
+  std::vector<std::string> out;
+  for (std::string w; words >> w;) {
+    char* end = nullptr;
+    std::strtod(w.c_str(), &end);
+    if (end == w.c_str() || *end) {
+      c.problem = "line " + std::to_string(number) + ": " + shown(w) + " is not a number";
+      return out;
+    }
+    out.push_back(w);
+  }
+  if (out.empty())
+    c.problem = "line " + std::to_string(number) + ": an empty line";
+  return out;
+}
+
 //! The next word as an element count; false when there is none. A word
 //! that is not a non-negative number is a problem (OpenMesh would read a
 //! wrapped or partial value and reserve for it).
@@ -156,6 +176,13 @@ void check_ply_ascii_body(std::istream& in, long& number, const std::vector<PlyE
           if (e.name == "vertex" && c.nonfinite_line < 0 && nonfinite_word(word)) {
             c.nonfinite_line = number;
             c.nonfinite_token = word;
+            return;
+          }
+          char* end = nullptr;
+          std::strtod(word.c_str(), &end);
+          if (end == word.c_str() || *end) {
+            c.problem = "line " + std::to_string(number) + ": " + shown(word) + " is not a number";
+            return;
           }
           continue;
         }
@@ -167,9 +194,17 @@ void check_ply_ascii_body(std::istream& in, long& number, const std::vector<PlyE
                       " items, but there are " + std::to_string(nv) + " vertices";
           return;
         }
-        for (long i = 0; i < n; ++i)
+        for (long i = 0; i < n; ++i) {
           if (!next())
             return;
+          const char* text = word.c_str();
+          char* end = nullptr;
+          std::strtol(text, &end, 10);
+          if (end == text || *end) {
+            c.problem = "line " + std::to_string(number) + ": " + shown(word) + " is not a vertex index";
+            return;
+          }
+        }
       }
 }
 
@@ -216,6 +251,7 @@ FileCensus take_census(const std::string& path, const std::string& ext)
     }
   } else if (ext == ".off") {
     long nv = -1, seen_vertices = 0, face_lines = 0;
+    bool plain_off = false; // "OFF": vertices are x y z only
     while (std::getline(in, line)) {
       ++number;
       const std::size_t hash = line.find('#');
@@ -224,6 +260,7 @@ FileCensus take_census(const std::string& path, const std::string& ext)
       if (line.find_first_not_of(" \t\r") == std::string::npos)
         continue;
       if (number == 1 && line.find("OFF") != std::string::npos) {
+        plain_off = line.compare(line.find_first_not_of(" \t"), 3, "OFF") == 0;
         if (line.find("BINARY") != std::string::npos) {
           // Three 32-bit counts (vertices, faces, edges) follow the line.
           std::int32_t counts[3] = {0, 0, 0};
@@ -263,14 +300,31 @@ FileCensus take_census(const std::string& path, const std::string& ext)
       } else if (seen_vertices < nv) {
         ++seen_vertices;
         check_numbers(line, number, c);
+        // OpenMesh reads numbers across line ends: a vertex line must hold
+        // its three coordinates (exactly three in plain OFF), all numbers,
+        // or what follows is read out of step.
+        const std::vector<std::string> w = numeric_words(line, number, c);
+        if (c.problem.empty() && (w.size() < 3 || (plain_off && w.size() != 3)))
+          c.problem = "line " + std::to_string(number) + ": a vertex of " + std::to_string(w.size()) +
+                      " numbers (x y z" + (plain_off ? ")" : " and its colour, normal or texture coordinates)");
+        if (!c.problem.empty())
+          return c;
       } else {
-        // A face starts with its corner count, which OpenMesh allocates.
+        // A face starts with its corner count, which OpenMesh allocates,
+        // then names that many vertices.
         ++face_lines;
-        std::istringstream words(line);
-        long corners = 0;
-        if (words >> corners && (corners < 1 || corners > nv)) {
-          c.problem = "line " + std::to_string(number) + ": a face of " + std::to_string(corners) +
+        const std::vector<std::string> w = numeric_words(line, number, c);
+        if (!c.problem.empty())
+          return c;
+        const long corners = std::strtol(w[0].c_str(), nullptr, 10);
+        if (corners < 1 || corners > nv) {
+          c.problem = "line " + std::to_string(number) + ": a face of " + w[0] +
                       " corners, but there are only " + std::to_string(nv) + " vertices";
+          return c;
+        }
+        if (long(w.size()) < corners + 1) {
+          c.problem = "line " + std::to_string(number) + ": a face of " + w[0] + " corners names only " +
+                      std::to_string(w.size() - 1) + " vertices";
           return c;
         }
       }
