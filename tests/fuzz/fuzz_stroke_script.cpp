@@ -1,5 +1,7 @@
 // libFuzzer target: the stroke-script parser, then the dab positions of every
-// stroke it accepts. Input errors are expected; anything else is a finding.
+// stroke it accepts, and the round trip through stroke_script_json(): what
+// was accepted is written, read back and written again to the same text.
+// Input errors are expected; anything else is a finding.
 #include "core/errors.h"
 #include "paint/stroke.h"
 
@@ -16,6 +18,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     StrokeScript script = parse_stroke_script(std::string(reinterpret_cast<const char*>(data), size));
     for (const Stroke& stroke : script.strokes)
       stroke_samples(stroke);
+    const std::string written = stroke_script_json(script);
+    if (stroke_script_json(parse_stroke_script(written)) != written) {
+      std::fprintf(stderr, "the script does not read back as written:\n%s\n", written.c_str());
+      std::abort();
+    }
   } catch (const InputError&) {
   } catch (const std::exception& e) { // any other exception is a finding: say which
     std::fprintf(stderr, "unexpected exception: %s\n", e.what());
