@@ -278,6 +278,8 @@ FileCensus take_census(const std::string& path, const std::string& ext)
           nv = v;
         if (counted && read_count(rest, f, number, c))
           c.declared_faces = f;
+        else if (counted && c.problem.empty())
+          c.problem = "line " + std::to_string(number) + ": the vertex count without the face count";
         if (!c.problem.empty() ||
             (counted && !check_counts(nv, std::max(f, 0L), file_size, 6, c).problem.empty()))
           return c;
@@ -290,8 +292,9 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         if (counted)
           nv = v;
         if (!counted || !read_count(counts, f, number, c)) {
+          // OpenMesh would take the face count from the lines that follow.
           if (counted && c.problem.empty())
-            check_counts(nv, 0, file_size, 6, c);
+            c.problem = "line " + std::to_string(number) + ": the vertex count without the face count";
           return c;
         }
         c.declared_faces = f;
