@@ -1,15 +1,16 @@
 #include "mesh/file_census.h"
 
 #include <algorithm> // for std::max, std::all_of
-#include <cctype>  // for std::tolower
-#include <cerrno>  // for errno, ERANGE
-#include <cstdlib> // for std::strtol, std::strtod
-#include <cstdint> // for std::uint32_t
-#include <cstring> // for std::memcpy
-#include <fstream> // for std::ifstream
-#include <set>     // for std::set
-#include <sstream> // for std::istringstream
-#include <vector>  // for std::vector
+#include <cctype>    // for std::tolower, std::isprint
+#include <cerrno>    // for errno, ERANGE
+#include <cmath>     // for std::isfinite, std::fabs
+#include <cstdint>   // for std::int32_t, std::uint32_t
+#include <cstdlib>   // for std::strtol, std::strtod
+#include <cstring>   // for std::memcpy
+#include <fstream>   // for std::ifstream
+#include <set>       // for std::set
+#include <sstream>   // for std::istringstream
+#include <vector>    // for std::vector
 
 namespace meshpaint {
 namespace {
@@ -104,17 +105,29 @@ bool check_ply_header_line(const std::vector<std::string>& w, long number, bool 
   return ok && k == "end_header";
 }
 
-//! The words of a line, each of which must be a whole number (OpenMesh's
-//! text readers read numbers, so "0-3" would be two); at least one.
-std::vector<std::string> numeric_words(const std::string& line, long number, FileCensus& c)
+//! Whether a word is one whole number of magnitude at most `limit` (or a
+//! nan/inf, which the census reports on its own). OpenMesh's text readers
+//! read numbers: "0-3" would be two, and one too large for its type stops
+//! the stream, so that everything after it is read out of step.
+bool is_number(const std::string& w, double limit)
+{
+  char* end = nullptr;
+  const double v = std::strtod(w.c_str(), &end);
+  return end != w.c_str() && !*end && (!std::isfinite(v) || std::fabs(v) <= limit);
+}
+
+//! A number OpenMesh reads as a float, and as an int.
+constexpr double kFloatWord = 3.4e38, kIntWord = 2147483647.0;
+
+//! The words of a line, each a number within `limit` (see is_number); at
+//! least one.
+std::vector<std::string> numeric_words(const std::string& line, long number, double limit, FileCensus& c)
 {
   std::istringstream words(line);
   std::vector<std::string> out;
   for (std::string w; words >> w;) {
-    char* end = nullptr;
-    std::strtod(w.c_str(), &end);
-    if (end == w.c_str() || *end) {
-      c.problem = "line " + std::to_string(number) + ": " + shown(w) + " is not a number";
+    if (!is_number(w, limit)) {
+      c.problem = "line " + std::to_string(number) + ": " + shown(w) + " is not a number that fits";
       return out;
     }
     out.push_back(w);
@@ -178,10 +191,8 @@ void check_ply_ascii_body(std::istream& in, long& number, const std::vector<PlyE
             c.nonfinite_token = word;
             return;
           }
-          char* end = nullptr;
-          std::strtod(word.c_str(), &end);
-          if (end == word.c_str() || *end) {
-            c.problem = "line " + std::to_string(number) + ": " + shown(word) + " is not a number";
+          if (!is_number(word, kFloatWord)) {
+            c.problem = "line " + std::to_string(number) + ": " + shown(word) + " is not a number that fits";
             return;
           }
           continue;
@@ -199,8 +210,8 @@ void check_ply_ascii_body(std::istream& in, long& number, const std::vector<PlyE
             return;
           const char* text = word.c_str();
           char* end = nullptr;
-          std::strtol(text, &end, 10);
-          if (end == text || *end) {
+          const long index = std::strtol(text, &end, 10);
+          if (end == text || *end || index < 0 || index > long(kIntWord)) {
             c.problem = "line " + std::to_string(number) + ": " + shown(word) + " is not a vertex index";
             return;
           }
@@ -306,7 +317,7 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         // OpenMesh reads numbers across line ends: a vertex line must hold
         // its three coordinates (exactly three in plain OFF), all numbers,
         // or what follows is read out of step.
-        const std::vector<std::string> w = numeric_words(line, number, c);
+        const std::vector<std::string> w = numeric_words(line, number, kFloatWord, c);
         if (c.problem.empty() && (w.size() < 3 || (plain_off && w.size() != 3)))
           c.problem = "line " + std::to_string(number) + ": a vertex of " + std::to_string(w.size()) +
                       " numbers (x y z" + (plain_off ? ")" : " and its colour, normal or texture coordinates)");
@@ -316,7 +327,7 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         // A face starts with its corner count, which OpenMesh allocates,
         // then names that many vertices.
         ++face_lines;
-        const std::vector<std::string> w = numeric_words(line, number, c);
+        const std::vector<std::string> w = numeric_words(line, number, kIntWord, c);
         if (!c.problem.empty())
           return c;
         const long corners = std::strtol(w[0].c_str(), nullptr, 10);
