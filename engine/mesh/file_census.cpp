@@ -265,6 +265,18 @@ FileCensus take_census(const std::string& path, const std::string& ext)
     bool plain_off = false; // "OFF": vertices are x y z only
     while (std::getline(in, line)) {
       ++number;
+      // OpenMesh looks for BINARY anywhere in the header line, comment or not.
+      const bool binary = number == 1 && line.find("BINARY") != std::string::npos;
+      if (binary) {
+        // Three 32-bit counts (vertices, faces, edges) follow the line.
+        std::int32_t counts[3] = {0, 0, 0};
+        if (!in.read(reinterpret_cast<char*>(counts), sizeof counts))
+          c.problem = "the binary OFF header is truncated";
+        else
+          check_counts(counts[0], counts[1], file_size, 12, c);
+        c.declared_faces = counts[1];
+        return c;
+      }
       const std::size_t hash = line.find('#');
       if (hash != std::string::npos)
         line.erase(hash);
@@ -272,16 +284,6 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         continue;
       if (number == 1 && line.find("OFF") != std::string::npos) {
         plain_off = line.compare(line.find_first_not_of(" \t"), 3, "OFF") == 0;
-        if (line.find("BINARY") != std::string::npos) {
-          // Three 32-bit counts (vertices, faces, edges) follow the line.
-          std::int32_t counts[3] = {0, 0, 0};
-          if (!in.read(reinterpret_cast<char*>(counts), sizeof counts))
-            c.problem = "the binary OFF header is truncated";
-          else
-            check_counts(counts[0], counts[1], file_size, 12, c);
-          c.declared_faces = counts[1];
-          return c;
-        }
         std::istringstream rest(line.substr(line.find("OFF") + 3));
         long f = -1, v = -1;
         const bool counted = read_count(rest, v, number, c);
