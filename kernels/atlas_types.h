@@ -72,6 +72,7 @@ typedef struct {
 
 #define PATTERN_COORD_POSITION 0 /* the surface point: solid textures */
 #define PATTERN_COORD_UV 1       /* the patch parameters (u, v, 0) */
+#define PATTERN_COORD_SCREEN 2   /* the view plane: (x, y, 0), the view's half angle at 1 */
 
 #define MATTE_SELF 0   /* the pattern value is the pigment's coverage */
 #define MATTE_OPAQUE 1 /* full coverage; the pattern value shades the pigment */
@@ -96,6 +97,17 @@ typedef struct {
   mp_int raster_size[4];          /* pattern image or volume: width, height, depth, channels */
   mp_int stamp_size[2];           /* brush stamp: width, height; 0: none */
   float stamp_u[4], stamp_v[4];   /* the stamp's axes in the tangent plane at the centre */
+  mp_int space;                   /* SPACE_* */
+  mp_int paint_backfaces;         /* tangent, screen: 0 skips faces turned away from the brush */
+  float centre_normal[4];         /* the surface normal at the centre */
+  float eye[4], view_right[4], view_up[4], view_dir[4]; /* screen: the camera and its unit axes */
+  float screen_centre[2];         /* screen: the centre on the view plane, (x / z, y / z) */
+  float centre_depth;             /* screen: the centre's distance along view_dir */
+  float focal;                    /* screen: 1 / tan(view angle / 2) */
+  mp_int centre_patch;            /* parameter: the patch under the centre */
+  float centre_texel[2];          /* parameter: the centre in its texels */
+  float texel_size;               /* parameter: world units per texel there */
+  float side_sign;                /* 1 painting the outside, -1 the inside: the side a normal points to */
 } BrushDab;
 
 /* What the culling kernel reports for a patch that reaches into the brush:
@@ -109,6 +121,12 @@ typedef struct {
   float closest_position[4];      /* that texel on the limit surface */
   float closest_normal[4];        /* and its limit normal */
 } CullRecord;
+
+/* Brush spaces: where the brush's distance to its centre is measured. */
+#define SPACE_OBJECT 0    /* in space: a ball around the centre */
+#define SPACE_TANGENT 1   /* in the tangent plane at the centre: the stamp projected along the normal */
+#define SPACE_SCREEN 2    /* on the view plane, scaled to world units at the centre's depth */
+#define SPACE_PARAMETER 3 /* in the parameters of the centre's patch: a square of texels */
 
 /* Geometry tools: how a dab moves control points. */
 #define MOVE_SCULPT 0   /* along the normal at the brush centre */

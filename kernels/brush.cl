@@ -185,15 +185,64 @@ inline float4 pattern_sample(__global const BrushDab *dab, __global const float 
   }
 }
 
-/* The brush stamp's value at x: the image laid in the tangent plane at the
- * centre, spanning the brush's diameter; 1 without a stamp. */
-inline float stamp_weight(__global const BrushDab *dab, __global const float *stamp, float3 x)
+/* Screen coordinates (x / z, y / z) of x and its depth z along the view. */
+inline float2 screen_point(__global const BrushDab *dab, float3 x, float *z)
+{
+  const float3 v = x - vload3(0, dab->eye);
+  *z = dot(v, vload3(0, dab->view_dir));
+  return (float2)(dot(v, vload3(0, dab->view_right)), dot(v, vload3(0, dab->view_up))) / *z;
+}
+
+/* Where texel ij of patch p (position x, normal nx) lies in the dab's brush
+ * space: returns distance / radius, above 1 outside the brush (also on faces
+ * the back-face policy skips), and in `plane` the offset from the centre on
+ * the brush plane in world units, where the stamp lies. */
+inline float brush_t(__global const BrushDab *dab, float3 x, float3 nx, int p, int2 ij, int n, float2 *plane)
+{
+  const float3 d = x - vload3(0, dab->centre);
+  nx *= dab->side_sign;
+  switch (dab->space) {
+  case SPACE_SCREEN: {
+    if (!dab->paint_backfaces && dot(nx, x - vload3(0, dab->eye)) > 0.0f)
+      return INFINITY;
+    float z;
+    const float2 s = screen_point(dab, x, &z);
+    if (!(z > 0.0f))
+      return INFINITY;
+    *plane = (s - vload2(0, dab->screen_centre)) * dab->centre_depth;
+    return length(*plane) / dab->radius;
+  }
+  case SPACE_PARAMETER:
+    /* Inside the centre's patch: its sides belong to the patches across too. */
+    if (p != dab->centre_patch || ij.x <= 0 || ij.y <= 0 || ij.x >= n || ij.y >= n)
+      return INFINITY;
+    *plane = ((float2)((float)ij.x, (float)ij.y) - vload2(0, dab->centre_texel)) * dab->texel_size;
+    return fmax(fabs((*plane).x), fabs((*plane).y)) / dab->radius;
+  case SPACE_TANGENT:
+    if (!dab->paint_backfaces && dot(nx, vload3(0, dab->centre_normal)) < 0.0f)
+      return INFINITY;
+    *plane = (float2)(dot(d, vload3(0, dab->stamp_u)), dot(d, vload3(0, dab->stamp_v)));
+    return length(*plane) / dab->radius;
+  default:
+    *plane = (float2)(dot(d, vload3(0, dab->stamp_u)), dot(d, vload3(0, dab->stamp_v)));
+    return length(d) / dab->radius;
+  }
+}
+
+/* The normal brush_t needs at a texel: only tangent and screen brushes look
+ * at it, so the others skip the load (the branch is the same for every
+ * work item of a dab). */
+#define BRUSH_NORMAL(dab, nrm, g, p, ij) \
+  ((dab)->space == SPACE_TANGENT || (dab)->space == SPACE_SCREEN ? ATLAS_LOAD(nrm, g, p, ij).xyz : (float3)(0.0f))
+
+/* The brush stamp's value at `plane` (brush_t): the image spanning the
+ * brush's diameter; 1 without a stamp. */
+inline float stamp_weight(__global const BrushDab *dab, __global const float *stamp, float2 plane)
 {
   if (dab->stamp_size[0] == 0)
     return 1.0f;
-  const float3 d = x - vload3(0, dab->centre);
-  const float u = 0.5f + 0.5f * dot(d, vload3(0, dab->stamp_u)) / dab->radius;
-  const float v = 0.5f + 0.5f * dot(d, vload3(0, dab->stamp_v)) / dab->radius;
+  const float u = 0.5f + 0.5f * plane.x / dab->radius;
+  const float v = 0.5f + 0.5f * plane.y / dab->radius;
   if (u < 0.0f || u >= 1.0f || v < 0.0f || v >= 1.0f)
     return 0.0f;
   const int4 size = (int4)(dab->stamp_size[0], dab->stamp_size[1], 1, 1);
@@ -203,7 +252,13 @@ inline float stamp_weight(__global const BrushDab *dab, __global const float *st
 /* Where texel (i, j) of a patch sits in pattern space. */
 inline float3 pattern_point(__global const BrushDab *dab, float3 x, int2 ij, int n)
 {
-  const float3 c = dab->pattern_coord == PATTERN_COORD_UV ? (float3)((float)ij.x / n, (float)ij.y / n, 0.0f) : x;
+  float3 c = x;
+  if (dab->pattern_coord == PATTERN_COORD_UV) {
+    c = (float3)((float)ij.x / n, (float)ij.y / n, 0.0f);
+  } else if (dab->pattern_coord == PATTERN_COORD_SCREEN) {
+    float z;
+    c = (float3)(dab->focal * screen_point(dab, x, &z), 0.0f);
+  }
   __global const float *m = dab->pattern_transform;
   return (float3)(m[0] * c.x + m[1] * c.y + m[2] * c.z + m[3], m[4] * c.x + m[5] * c.y + m[6] * c.z + m[7],
                   m[8] * c.x + m[9] * c.y + m[10] * c.z + m[11]);
@@ -244,7 +299,7 @@ inline float4 paint_blend(__global const BrushDab *dab, int c, float4 surface, f
 
 /* Range: (tile, tile * #active). Every texel of the active patches, all
  * stored copies included, so copies stay identical. */
-__kernel void paint_dab(ATLAS_IN pos, int2 g, __global const int *active, int active_count,
+__kernel void paint_dab(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *active, int active_count,
                         __global const BrushDab *dab, __global const float *raster, __global const float *stamp,
                         __global float4 *diffuse, __global float4 *specular, __global float4 *material)
 {
@@ -255,12 +310,13 @@ __kernel void paint_dab(ATLAS_IN pos, int2 g, __global const int *active, int ac
   const int p = active[a];
   const int2 ij = (int2)(i, j);
   const float3 x = ATLAS_LOAD(pos, g, p, ij).xyz;
-  const float t = distance(x, vload3(0, dab->centre)) / dab->radius;
+  float2 plane;
+  const float t = brush_t(dab, x, BRUSH_NORMAL(dab, nrm, g, p, ij), p, ij, g.x - 1, &plane);
   if (!(t <= 1.0f))
     return;
   const int k = CHANNEL_INDEX(g.x, p, ij);
   float4 m = material[k];
-  float w = falloff_weight(dab->falloff, t) * dab->strength * (1.0f - m.w) * stamp_weight(dab, stamp, x);
+  float w = falloff_weight(dab->falloff, t) * dab->strength * (1.0f - m.w) * stamp_weight(dab, stamp, plane);
   float3 shade = (float3)(1.0f);
   if (dab->pattern != PATTERN_NONE) {
     const float4 v = pattern_sample(dab, raster, pattern_point(dab, x, ij, g.x - 1));
@@ -302,7 +358,8 @@ __kernel void paint_dab(ATLAS_IN pos, int2 g, __global const int *active, int ac
  * and specular under the dab and of the weights, for the smear brush's
  * pickup. partial: 3 float4 per group (diffuse * w, specular * w,
  * (w, 0, 0, 0)). */
-__kernel void dab_pickup(ATLAS_IN pos, int2 g, __global const int *list, int count, __global const BrushDab *dab,
+__kernel void dab_pickup(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *list, int count,
+                         __global const BrushDab *dab,
                          __global const float *stamp, __global const float4 *diffuse,
                          __global const float4 *specular, __global float4 *partial, __local float4 *scratch)
 {
@@ -314,10 +371,11 @@ __kernel void dab_pickup(ATLAS_IN pos, int2 g, __global const int *list, int cou
     const int p = list[a];
     const int2 ij = (int2)(r % g.x, r / g.x);
     const float3 x = ATLAS_LOAD(pos, g, p, ij).xyz;
-    const float t = distance(x, vload3(0, dab->centre)) / dab->radius;
+    float2 plane;
+    const float t = brush_t(dab, x, BRUSH_NORMAL(dab, nrm, g, p, ij), p, ij, g.x - 1, &plane);
     if (t <= 1.0f) {
       const int k = CHANNEL_INDEX(g.x, p, ij);
-      w = falloff_weight(dab->falloff, t) * stamp_weight(dab, stamp, x);
+      w = falloff_weight(dab->falloff, t) * stamp_weight(dab, stamp, plane);
       d = w * diffuse[k];
       s = w * specular[k];
     }
@@ -340,4 +398,58 @@ __kernel void dab_pickup(ATLAS_IN pos, int2 g, __global const int *list, int cou
     partial[3 * group + 1] = sb;
     partial[3 * group + 2] = sc;
   }
+}
+
+/* Spray paint (Hanrahan and Haeberli): droplets at random points of the
+ * brush's disc on the screen, each landing on the nearest surface seen
+ * there. Three passes over the texels of the listed patches, front-facing
+ * ones within a texel's width of a droplet's screen point (drops: screen
+ * x / z, y / z): the least depth per droplet, then the least texel index at
+ * that depth, then its position (w = 1; 0 where the droplet hit nothing). */
+inline int spray_candidate(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const BrushDab *dab,
+                           __global const float4 *bounds, int p, int2 ij, float2 drop, float *depth)
+{
+  const float3 x = ATLAS_LOAD(pos, g, p, ij).xyz;
+  if (dab->side_sign * dot(ATLAS_LOAD(nrm, g, p, ij).xyz, x - vload3(0, dab->eye)) > 0.0f)
+    return 0;
+  const float2 s = screen_point(dab, x, depth);
+  const float reach = 1.5f * M_SQRT2_F * bounds[p].w / (float)(g.x - 1); /* about a texel */
+  return *depth > 0.0f && distance(s, drop) * *depth <= reach;
+}
+
+/* Range: (tile, tile * count). Pass 0: in keys (one per droplet, preset
+ * to UINT_MAX) the least depth; pass 1: in texels (preset to INT_MAX) the
+ * least texel index at that depth. */
+__kernel void spray_pick(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *list, int count,
+                         __global const BrushDab *dab, __global const float4 *bounds, __global const float2 *drops,
+                         int drop_count, int pass, __global uint *keys, __global int *texels)
+{
+  int p;
+  int2 ij;
+  if (!tile_texel(g, list, count, &p, &ij))
+    return;
+  for (int k = 0; k < drop_count; ++k) {
+    float z;
+    if (!spray_candidate(pos, nrm, g, dab, bounds, p, ij, drops[k], &z))
+      continue;
+    if (pass == 0)
+      atomic_min(&keys[k], as_uint(z)); /* positive floats order as their bits */
+    else if (as_uint(z) == keys[k])
+      atomic_min(&texels[k], (p * g.x + ij.y) * g.x + ij.x);
+  }
+}
+
+/* Range: drop_count. */
+__kernel void spray_points(ATLAS_IN pos, int2 g, __global const int *texels, int drop_count, __global float4 *points)
+{
+  const int k = get_global_id(0);
+  if (k >= drop_count)
+    return;
+  const int t = texels[k];
+  if (t == INT_MAX) {
+    points[k] = (float4)(0.0f);
+    return;
+  }
+  const int tile_texels = g.x * g.x, p = t / tile_texels, r = t - p * tile_texels;
+  points[k] = (float4)(ATLAS_LOAD(pos, g, p, (int2)(r % g.x, r / g.x)).xyz, 1.0f);
 }

@@ -1,24 +1,31 @@
 /* Multiresolution editing (Ritschel et al. 2006, section 6, after Zorin et
  * al. 1997): the finest level S is kept as a smooth surface U = up(down(S))
- * plus details S - U, stored as coordinates in a local frame of U (a tangent,
- * the bitangent and the limit normal), so that they follow when U moves.
+ * plus details S - U, stored as coordinates in a local frame of U (a normal,
+ * a tangent and the bitangent), so that they follow when U moves.
  * Details are per texel, patch-major. Every stored copy of a side or corner
  * texel decodes in one frame (the first patch's), so the copies stay equal. */
 
-/* Orthonormal frame of texel ij of patch p: n the limit normal, t the
- * patch's first parameter direction (the second where the first vanishes)
- * with the normal projected out, b = n x t. */
-inline void detail_frame(ATLAS_IN pos, ATLAS_IN nrm, int2 g, int p, int2 ij, float3 *t, float3 *b, float3 *n)
+/* Orthonormal frame of texel ij of patch p from the control points around
+ * it in its tile (differences along the patch parameters, one-sided at the
+ * tile's border): n across them, t the first parameter direction (the
+ * second where the first vanishes) with n taken out, b = n x t. Only the
+ * smooth surface U is framed, and each texel is encoded and decoded in the
+ * frame of one tile, so a frame need not agree across tiles: it must only
+ * turn with the surface. */
+inline void detail_frame(ATLAS_IN pos, int2 g, int p, int2 ij, float3 *t, float3 *b, float3 *n)
 {
   const int last = g.x - 1;
-  *n = ATLAS_LOAD(nrm, g, p, ij).xyz;
-  float3 u = (float3)(0.0f);
-  for (int axis = 0; axis < 2 && !(dot(u, u) > 1e-30f); ++axis) {
+  float3 d[2];
+  for (int axis = 0; axis < 2; ++axis) {
     const int2 step = axis == 0 ? (int2)(1, 0) : (int2)(0, 1);
     const int2 lo = clamp(ij - step, (int2)(0), (int2)(last)), hi = clamp(ij + step, (int2)(0), (int2)(last));
-    const float3 d = ATLAS_LOAD(pos, g, p, hi).xyz - ATLAS_LOAD(pos, g, p, lo).xyz;
-    u = d - dot(d, *n) * *n;
+    d[axis] = ATLAS_LOAD(pos, g, p, hi).xyz - ATLAS_LOAD(pos, g, p, lo).xyz;
   }
+  const float3 c = cross(d[0], d[1]);
+  *n = dot(c, c) > 1e-30f ? normalize(c) : (float3)(0.0f, 0.0f, 1.0f);
+  float3 u = (float3)(0.0f);
+  for (int axis = 0; axis < 2 && !(dot(u, u) > 1e-30f); ++axis)
+    u = d[axis] - dot(d[axis], *n) * *n;
   if (!(dot(u, u) > 1e-30f)) /* a collapsed tile: any direction across the normal */
     u = fabs((*n).x) < 0.9f ? (float3)(1.0f, 0.0f, 0.0f) - (*n).x * *n : (float3)(0.0f, 1.0f, 0.0f) - (*n).y * *n;
   *t = normalize(u);
@@ -26,24 +33,23 @@ inline void detail_frame(ATLAS_IN pos, ATLAS_IN nrm, int2 g, int p, int2 ij, flo
 }
 
 /* Range: (tile, tile * count), every patch. details = frame(U)^T (S - U). */
-__kernel void encode_details(ATLAS_IN fine, ATLAS_IN smooth, ATLAS_IN nrm, int2 g, int count,
-                             __global float4 *details)
+__kernel void encode_details(ATLAS_IN fine, ATLAS_IN smooth, int2 g, int count, __global float4 *details)
 {
   int p;
   int2 ij;
   if (!tile_texel(g, 0, count, &p, &ij))
     return;
   float3 t, b, n;
-  detail_frame(smooth, nrm, g, p, ij, &t, &b, &n);
+  detail_frame(smooth, g, p, ij, &t, &b, &n);
   const float3 d = ATLAS_LOAD(fine, g, p, ij).xyz - ATLAS_LOAD(smooth, g, p, ij).xyz;
   details[PATCH_MAJOR_INDEX(g, p, ij)] = (float4)(dot(d, t), dot(d, b), dot(d, n), 0.0f);
 }
 
 /* U + frame(U) details at texel ij of patch p. */
-inline float4 decoded(ATLAS_IN smooth, ATLAS_IN nrm, int2 g, int p, int2 ij, __global const float4 *details)
+inline float4 decoded(ATLAS_IN smooth, int2 g, int p, int2 ij, __global const float4 *details)
 {
   float3 t, b, n;
-  detail_frame(smooth, nrm, g, p, ij, &t, &b, &n);
+  detail_frame(smooth, g, p, ij, &t, &b, &n);
   const float4 s = ATLAS_LOAD(smooth, g, p, ij);
   const float4 d = details[PATCH_MAJOR_INDEX(g, p, ij)];
   return (float4)(s.xyz + (d.x * t + d.y * b + d.z * n), s.w);
@@ -53,17 +59,17 @@ inline float4 decoded(ATLAS_IN smooth, ATLAS_IN nrm, int2 g, int p, int2 ij, __g
  * layer holding S: the texels of the listed patches, sides and corners are
  * rebuilt; the rest keep S. Range: (tile, tile * count); texels strictly
  * inside the listed patches. */
-__kernel void decode_interior(ATLAS_IN smooth, ATLAS_IN nrm, int2 g, __global const int *list, int count,
+__kernel void decode_interior(ATLAS_IN smooth, int2 g, __global const int *list, int count,
                               __global const float4 *details, ATLAS_OUT fine)
 {
   int p;
   int2 ij;
   if (interior_texel(g, list, count, &p, &ij))
-    ATLAS_STORE(fine, g, p, ij, decoded(smooth, nrm, g, p, ij, details));
+    ATLAS_STORE(fine, g, p, ij, decoded(smooth, g, p, ij, details));
 }
 
 /* Range: (n - 1, count); the listed patch sides, in the first patch's frame. */
-__kernel void decode_edges(ATLAS_IN smooth, ATLAS_IN nrm, int2 g, __global const PatchEdge *edges,
+__kernel void decode_edges(ATLAS_IN smooth, int2 g, __global const PatchEdge *edges,
                            __global const int *list, int count, __global const float4 *details, ATLAS_OUT fine)
 {
   const int t = get_global_id(0) + 1, k = get_global_id(1);
@@ -71,11 +77,11 @@ __kernel void decode_edges(ATLAS_IN smooth, ATLAS_IN nrm, int2 g, __global const
     return;
   const PatchEdge e = edges[list[k]];
   const Frame f = side_frame(e.patch[0], e.side[0], g.x - 1);
-  EDGE_STORE(fine, g, e, t, decoded(smooth, nrm, g, e.patch[0], f.o + t * f.dt, details));
+  EDGE_STORE(fine, g, e, t, decoded(smooth, g, e.patch[0], f.o + t * f.dt, details));
 }
 
 /* Range: count; every copy of the listed corners, in the first slot's frame. */
-__kernel void decode_corners(ATLAS_IN smooth, ATLAS_IN nrm, int2 g, __global const CornerRing *rings,
+__kernel void decode_corners(ATLAS_IN smooth, int2 g, __global const CornerRing *rings,
                              __global const CornerSlot *slots, __global const int *list, int count,
                              __global const float4 *details, ATLAS_OUT fine)
 {
@@ -84,7 +90,7 @@ __kernel void decode_corners(ATLAS_IN smooth, ATLAS_IN nrm, int2 g, __global con
     return;
   const CornerRing ring = rings[list[k]];
   const CornerSlot first = slots[ring.first];
-  const float4 v = decoded(smooth, nrm, g, first.patch, side_frame(first.patch, first.corner, g.x - 1).o, details);
+  const float4 v = decoded(smooth, g, first.patch, side_frame(first.patch, first.corner, g.x - 1).o, details);
   for (int m = 0; m < ring.count; ++m)
     CORNER_STORE(fine, g, slots[ring.first + m], v);
 }

@@ -12,7 +12,7 @@
 /* Range: (tile, tile * count). Weight of each texel of the listed patches:
  * falloff x strength x (1 - mask), 0 outside the radius. The mask lives at
  * the finest level (grid gm): texel ij of grid g is texel ij * stride there. */
-__kernel void dab_weights(ATLAS_IN limit_pos, int2 g, __global const int *list, int count,
+__kernel void dab_weights(ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g, __global const int *list, int count,
                           __global const BrushDab *dab, __global const float *stamp, __global const float4 *material,
                           int2 gm, int stride, __global float *weights)
 {
@@ -21,11 +21,12 @@ __kernel void dab_weights(ATLAS_IN limit_pos, int2 g, __global const int *list, 
   if (!tile_texel(g, list, count, &p, &ij))
     return;
   const float3 x = ATLAS_LOAD(limit_pos, g, p, ij).xyz;
-  const float t = distance(x, vload3(0, dab->centre)) / dab->radius;
+  float2 plane;
+  const float t = brush_t(dab, x, BRUSH_NORMAL(dab, limit_nrm, g, p, ij), p, ij, g.x - 1, &plane);
   const int k = WEIGHT_INDEX(g, p, ij);
   weights[k] = t <= 1.0f ? falloff_weight(dab->falloff, t) * dab->strength *
                              (1.0f - material[WEIGHT_INDEX(gm, p, ij * stride)].w) *
-                             stamp_weight(dab, stamp, x)
+                             stamp_weight(dab, stamp, plane)
                          : 0.0f;
 }
 

@@ -280,6 +280,16 @@ TEST(StrokeScript, ErrorsNameTheStrokeAndKey)
             "stroke 0: \"mirror\" has no meaning for a grab stroke, which pulls one region");
   EXPECT_EQ(message(R"({"strokes": [{"tool": "sculpt", "points": [[0,0,0]], "radius": 1, "amount": 1, "edit_level": 0}]})"),
             "stroke 0: \"edit_level\" must be an integer from 1 to 12");
+  EXPECT_EQ(message(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "space": "screen", "channels": {"roughness": 1}}]})"),
+            "stroke 0: \"camera\" is required for a screen-space brush or pattern: the view it is drawn in");
+  EXPECT_EQ(message(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "space": "screen", "channels": {"roughness": 1},
+      "camera": {"position": [0,0,1], "focal_point": [0,0,1], "view_up": [0,1,0]}}]})"),
+            "stroke 0: \"camera\" \"focal_point\" must differ from \"position\"");
+  EXPECT_EQ(message(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "backfaces": "paint", "channels": {"roughness": 1}}]})"),
+            "stroke 0: \"backfaces\" has no meaning unless \"space\" is \"screen\" or \"tangent\"");
+  EXPECT_EQ(message(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "space": "tangent", "spray": {"drops": 3, "size": 1},
+      "channels": {"roughness": 1}}]})"),
+            "stroke 0: \"spray\" has no meaning unless a paint or label stroke is in screen space");
   EXPECT_EQ(message(R"({"strokes": [{"colour": [1,0,0]}]})").substr(0, 40), "stroke 0: \"colour\" is not a stroke key (");
   EXPECT_EQ(message(R"({"strokes": [{"points": [[0,0]], "radius": 1}]})"), "stroke 0: \"points\" must be a list of [x, y, z] points");
   EXPECT_EQ(message(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "channels": {"gloss": 1}}]})").substr(0, 51),

@@ -43,7 +43,16 @@ const char* const kEveryKind = R"({"level": 3, "strokes": [
   {"tool": "inflate", "points": [[0, 1, 0]], "radius": 0.4, "amount": 0.02},
   {"tool": "flatten", "points": [[0, 1, 0]], "radius": 0.4, "amount": 0.3},
   {"tool": "smear", "points": [[0, 1, 0], [0, 0.8, 0.6]], "radius": 0.4, "strength": 0.6},
-  {"tool": "grab", "points": [[0, -1, 0], [0, -1.2, 0.1]], "radius": 0.4, "edit_level": 2}
+  {"tool": "grab", "points": [[0, -1, 0], [0, -1.2, 0.1]], "radius": 0.4, "edit_level": 2},
+  {"tool": "paint", "points": [[0, 0, 1], [0.2, 0, 0.95]], "radius": 0.3, "space": "screen", "backfaces": "paint",
+   "camera": {"position": [0, 0, 5], "focal_point": [0, 0, 0], "view_up": [0, 1, 0], "view_angle": 25},
+   "channels": {"diffuse": [0, 1, 0]}, "pattern": {"type": "turbulence", "coord": "screen", "scale": 2}},
+  {"tool": "paint", "points": [[1, 0, 0]], "radius": 0.3, "space": "tangent", "channels": {"roughness": 0.9}},
+  {"tool": "label", "points": [[0, 0, 1]], "radius": 0.4, "space": "screen", "channels": {"label": 9},
+   "camera": {"position": [0, 0, 5], "focal_point": [0, 0, 0], "view_up": [0, 1, 0]},
+   "spray": {"drops": 16, "size": 0.05, "seed": 7}},
+  {"tool": "paint", "points": [[1, 0, 0]], "radius": 0.05, "space": "parameter", "channels": {"label": 3}},
+  {"tool": "sculpt", "points": [[0, 0, -1]], "radius": 0.3, "space": "tangent", "amount": 0.02}
 ]})";
 
 void expect_round_trip(const StrokeScript& script)
@@ -114,6 +123,24 @@ TEST(StrokeScript, HistoryFollowsUndoAndRedo)
   surface.apply(script.strokes[2]);
   EXPECT_FALSE(surface.redo());
   EXPECT_EQ(surface.history().size(), 3u);
+}
+
+TEST(StrokeScript, ReplayAfterUndoingBetweenCoarseStrokesIsExact)
+{
+  const StrokeScript script = parse_stroke_script(R"({"strokes": [
+      {"tool": "inflate", "points": [[0, 0, 1]], "radius": 0.6, "amount": 0.1, "edit_level": 1},
+      {"tool": "grab", "points": [[1, 0, 0], [1.2, 0, 0.1]], "radius": 0.5, "edit_level": 1},
+      {"tool": "sculpt", "points": [[0, 1, 0]], "radius": 0.5, "amount": 0.05, "edit_level": 1}]})");
+  PaintSurface live(test::runtime(), test::noisy_sphere(3, 0.02f), 3, AtlasStorage::Buffer);
+  live.apply(script.strokes[0]);
+  live.apply(script.strokes[1]);
+  ASSERT_TRUE(live.undo());
+  live.apply(script.strokes[2]);
+  PaintSurface replay(test::runtime(), test::noisy_sphere(3, 0.02f), 3, AtlasStorage::Buffer);
+  for (const Stroke& s : parse_stroke_script(stroke_script_json({3, live.history()})).strokes)
+    replay.apply(s);
+  const std::vector<Float4> a = live.atlas().read_positions(3), b = replay.atlas().read_positions(3);
+  EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(Float4)), 0);
 }
 
 TEST(StrokeScript, ReplayingTheHistoryGivesTheSameSurface)

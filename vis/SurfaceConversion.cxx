@@ -5,6 +5,8 @@
 
 #include <algorithm> // for std::min, std::max
 #include <cmath>     // for std::floor
+#include <cstring>   // for std::memcmp, std::memcpy
+#include <stdexcept> // for std::invalid_argument
 
 #include <vtkCellArray.h>          // for vtkCellArray
 #include <vtkFloatArray.h>         // for vtkFloatArray
@@ -64,8 +66,14 @@ vtkSmartPointer<vtkPolyData> to_polydata(const PaintedSurface& s)
   vtkPointData* pd = poly->GetPointData();
   pd->AddArray(vec3_array(s.diffuse, "diffuse"));
   pd->AddArray(vec3_array(s.specular, "specular"));
+  if (!s.inside_diffuse.empty()) { // two-sided
+    pd->AddArray(vec3_array(s.inside_diffuse, "inside_diffuse"));
+    pd->AddArray(vec3_array(s.inside_specular, "inside_specular"));
+  }
   for (const auto& [values, name] : {std::pair{&s.roughness, "roughness"}, std::pair{&s.displacement, "displacement"},
-                                     std::pair{&s.mask, "mask"}}) {
+                                     std::pair{&s.mask, "mask"}, std::pair{&s.inside_roughness, "inside_roughness"}}) {
+    if (values->empty())
+      continue;
     auto a = vtkSmartPointer<vtkFloatArray>::New();
     a->SetName(name);
     a->SetNumberOfValues(vtkIdType(values->size()));
@@ -78,6 +86,41 @@ vtkSmartPointer<vtkPolyData> to_polydata(const PaintedSurface& s)
   std::copy(s.label.begin(), s.label.end(), label->GetPointer(0));
   pd->AddArray(label);
   return poly;
+}
+
+namespace {
+
+//! Copies `count` values of `from` into `to` (an array of as many values)
+//! unless they are equal already; true when it copied.
+template <typename T>
+bool copy_if_changed(vtkDataArray* to, const T* from, std::size_t count)
+{
+  if (!to || std::size_t(to->GetNumberOfValues()) != count)
+    throw std::invalid_argument("update_polydata: the surface does not match the polydata");
+  T* values = static_cast<T*>(to->GetVoidPointer(0));
+  if (count == 0 || std::memcmp(values, from, count * sizeof(T)) == 0)
+    return false;
+  std::memcpy(values, from, count * sizeof(T));
+  to->Modified();
+  return true;
+}
+
+} // namespace
+
+int update_polydata(vtkPolyData* poly, const PaintedSurface& s)
+{
+  vtkPointData* pd = poly->GetPointData();
+  int changed = 0;
+  changed += copy_if_changed(poly->GetPoints()->GetData(), &s.surface.points[0][0], 3 * s.surface.points.size());
+  if (!s.surface.normals.empty())
+    changed += copy_if_changed(pd->GetNormals(), &s.surface.normals[0][0], 3 * s.surface.normals.size());
+  changed += copy_if_changed(pd->GetArray("diffuse"), &s.diffuse[0][0], 3 * s.diffuse.size());
+  changed += copy_if_changed(pd->GetArray("specular"), &s.specular[0][0], 3 * s.specular.size());
+  changed += copy_if_changed(pd->GetArray("roughness"), s.roughness.data(), s.roughness.size());
+  changed += copy_if_changed(pd->GetArray("displacement"), s.displacement.data(), s.displacement.size());
+  changed += copy_if_changed(pd->GetArray("mask"), s.mask.data(), s.mask.size());
+  changed += copy_if_changed(pd->GetArray("label"), s.label.data(), s.label.size());
+  return changed; // the polydata's time includes its arrays', so renderers notice
 }
 
 BaseMesh to_base_mesh(vtkPolyData* poly, const std::string& name)
@@ -135,6 +178,11 @@ void write_texture_maps(const TextureMaps& maps, const std::string& dir)
   write_png(maps.diffuse, maps.width, maps.height, 3, false, 0.f, 1.f, dir + "/diffuse.png");
   write_png(maps.specular, maps.width, maps.height, 3, false, 0.f, 1.f, dir + "/specular.png");
   write_png(maps.roughness, maps.width, maps.height, 1, false, 0.f, 1.f, dir + "/roughness.png");
+  if (!maps.inside_diffuse.empty()) {
+    write_png(maps.inside_diffuse, maps.width, maps.height, 3, false, 0.f, 1.f, dir + "/inside_diffuse.png");
+    write_png(maps.inside_specular, maps.width, maps.height, 3, false, 0.f, 1.f, dir + "/inside_specular.png");
+    write_png(maps.inside_roughness, maps.width, maps.height, 1, false, 0.f, 1.f, dir + "/inside_roughness.png");
+  }
   const float range = maps.displacement_max - maps.displacement_min;
   write_png(maps.displacement, maps.width, maps.height, 1, true, maps.displacement_min,
             range > 0.f ? 1.f / range : 0.f, dir + "/displacement.png");

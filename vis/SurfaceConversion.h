@@ -23,6 +23,13 @@ MESHPAINTVIS_EXPORT vtkSmartPointer<vtkPolyData> to_polydata(const WeldedSurface
 //! roughness, displacement, mask (floats), label (int) and Normals.
 MESHPAINTVIS_EXPORT vtkSmartPointer<vtkPolyData> to_polydata(const PaintedSurface& surface);
 
+//! Writes `surface` into `poly`, made by to_polydata() from a surface of the
+//! same topology, changing only the arrays whose contents differ (points,
+//! Normals, channels) and marking only those modified, so that a renderer
+//! uploads only what changed. Returns how many arrays changed.
+//! \throw std::invalid_argument when the sizes do not match.
+MESHPAINTVIS_EXPORT int update_polydata(vtkPolyData* poly, const PaintedSurface& surface);
+
 //! The polygons of `poly` (other cells ignored) as a checked base mesh.
 //! \throw InputError as make_base_mesh does.
 MESHPAINTVIS_EXPORT BaseMesh to_base_mesh(vtkPolyData* poly, const std::string& name);

@@ -1,19 +1,34 @@
 #include "vtkPaintSurface.h"
 
+#include "PaintingExport.h"    // for meshpaint::export_painting
+#include "CallGuard.h"         // for meshpaint::guarded
 #include "RasterIO.h"          // for meshpaint::load_stroke_rasters
 #include "SurfaceConversion.h" // for meshpaint::to_base_mesh, to_polydata
+#include "vtkPaintView.h"      // for vtkPaintView
 
-#include "paint/paint_surface.h" // for meshpaint::PaintSurface
+#include "core/errors.h"               // for meshpaint::InputError
+#include "paint/paint_surface.h"       // for meshpaint::PaintSurface
+#include "project/project_surface.h"   // for meshpaint::open_project_surface, capture_surface
+#include "project/vertex_channels.h"   // for meshpaint::vertex_channel, set_vertex_channel
 
 #include <nlohmann/json.hpp> // for nlohmann::json
 
+#include <optional> // for std::optional
+
+#include <vtkAlgorithm.h>         // for vtkAlgorithm::INPUT_IS_OPTIONAL
+#include <vtkDataArray.h>         // for vtkDataArray
+#include <vtkFloatArray.h>        // for vtkFloatArray
 #include <vtkInformation.h>       // for vtkInformation
+#include <vtkIntArray.h>          // for vtkIntArray
 #include <vtkInformationVector.h> // for vtkInformationVector
 #include <vtkObjectFactory.h>     // for vtkStandardNewMacro
 #include <vtkPoints.h>            // for vtkPoints
 #include <vtkPolyData.h>          // for vtkPolyData
+#include <vtkSmartPointer.h>      // for vtkSmartPointer
 
-#include <vector> // for std::vector
+#include <algorithm> // for std::max
+#include <map>       // for std::map
+#include <vector>    // for std::vector
 
 vtkStandardNewMacro(vtkPaintSurface);
 
@@ -21,10 +36,16 @@ struct vtkPaintSurface::Internals
 {
   nlohmann::json brush = {{"tool", "paint"}}; // the setters' stroke, without points
   std::string brush_text;
-  std::unique_ptr<meshpaint::PaintSurface> surface;
+  std::shared_ptr<meshpaint::PaintSurface> surface; // shared with the painting window
+  vtkSmartPointer<vtkPaintView> view;
   vtkMTimeType built_from = 0; // input's modification time the surface was built from
   int built_level = 0;
   std::vector<meshpaint::Stroke> queued;
+  //! The loaded project, without its layers: history, labels, scan and
+  //! reference to carry into the next save.
+  std::optional<meshpaint::Project> project;
+  std::map<std::string, vtkSmartPointer<vtkDataArray>> channels; // arrays handed out by GetChannel
+  std::string history_text;                                      // what GetHistoryJSON() returned
 };
 
 vtkPaintSurface::vtkPaintSurface() : Impl(new Internals) {}
@@ -37,26 +58,6 @@ void vtkPaintSurface::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Device: " << (this->Device.empty() ? "(default)" : this->Device) << "\n";
   os << indent << "StrokeCount: " << this->StrokeCount << "\n";
 }
-
-namespace {
-
-//! Runs `f`, keeping any exception's message in `error`; 1 on success.
-template <typename F>
-int guarded(std::string& error, F&& f)
-{
-  error.clear();
-  try {
-    f();
-    return 1;
-  } catch (const cl::Error& e) {
-    error = meshpaint::describe(e);
-  } catch (const std::exception& e) {
-    error = e.what();
-  }
-  return 0;
-}
-
-} // namespace
 
 // Each setter writes its stroke-script key; checking happens once, in
 // ApplyStroke(), by the same parser that reads scripts.
@@ -82,6 +83,27 @@ void vtkPaintSurface::SetEditLevel(int v)
     this->Impl->brush["edit_level"] = v;
   else
     this->Impl->brush.erase("edit_level");
+}
+
+void vtkPaintSurface::SetSpace(const char* v) { this->Impl->brush["space"] = v ? v : ""; }
+void vtkPaintSurface::SetBackfaces(const char* v) { this->Impl->brush["backfaces"] = v ? v : ""; }
+void vtkPaintSurface::SetSide(const char* v) { this->Impl->brush["side"] = v ? v : ""; }
+
+void vtkPaintSurface::SetCamera(double px, double py, double pz, double fx, double fy, double fz, double ux,
+                                double uy, double uz, double view_angle)
+{
+  this->Impl->brush["camera"] = {{"position", {px, py, pz}},
+                                 {"focal_point", {fx, fy, fz}},
+                                 {"view_up", {ux, uy, uz}},
+                                 {"view_angle", view_angle}};
+}
+
+void vtkPaintSurface::SetSpray(int drops, double size, int seed)
+{
+  if (drops > 0)
+    this->Impl->brush["spray"] = {{"drops", drops}, {"size", size}, {"seed", seed}};
+  else
+    this->Impl->brush.erase("spray");
 }
 
 void vtkPaintSurface::SetMirror(const char* v)
@@ -118,7 +140,7 @@ int vtkPaintSurface::ApplyStroke(vtkPoints* path)
 
 int vtkPaintSurface::ApplyStrokes(const char* json)
 {
-  const int ok = guarded(this->LastError, [&] {
+  const int ok = meshpaint::guarded(this->LastError, [&] {
     meshpaint::StrokeScript script = meshpaint::parse_stroke_script(json ? json : "");
     meshpaint::load_stroke_rasters(script);
     if (script.level > 0 && !this->Impl->surface && this->Impl->queued.empty())
@@ -138,7 +160,7 @@ int vtkPaintSurface::Step(bool back)
     return 0;
   }
   bool done = false;
-  const int ok = guarded(this->LastError, [&] {
+  const int ok = meshpaint::guarded(this->LastError, [&] {
     done = back ? this->Impl->surface->undo() : this->Impl->surface->redo();
   });
   if (ok && !done)
@@ -154,20 +176,157 @@ int vtkPaintSurface::Undo() { return this->Step(true); }
 
 int vtkPaintSurface::Redo() { return this->Step(false); }
 
+int vtkPaintSurface::FillInputPortInformation(int port, vtkInformation* info)
+{
+  // A loaded project takes the input's place.
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return this->Superclass::FillInputPortInformation(port, info);
+}
+
+int vtkPaintSurface::Ready()
+{
+  if (this->Impl->surface && this->Impl->queued.empty() && this->GetNumberOfInputConnections(0) == 0)
+    return 1;
+  const int failed = this->FailedUpdates;
+  this->Update();
+  if (this->FailedUpdates != failed)
+    return 0;
+  if (!this->Impl->surface) {
+    this->LastError = "nothing to paint on: set an input or load a project";
+    return 0;
+  }
+  return 1;
+}
+
+int vtkPaintSurface::SaveProject(const char* path)
+{
+  if (!this->Ready())
+    return 0;
+  return meshpaint::guarded(this->LastError, [&] {
+    Internals& in = *this->Impl;
+    meshpaint::Project p = in.project ? *in.project : meshpaint::Project();
+    p.history = meshpaint::continued_history(p.history, in.surface->history(), in.surface->level());
+    meshpaint::capture_surface(*in.surface, p);
+    meshpaint::save_project(p, path ? path : "");
+  });
+}
+
+const char* vtkPaintSurface::GetHistoryJSON()
+{
+  Internals& in = *this->Impl;
+  in.history_text.clear();
+  if (in.surface)
+    meshpaint::guarded(this->LastError, [&] {
+      in.history_text = meshpaint::continued_history(in.project ? in.project->history : "", in.surface->history(),
+                                                     in.surface->level());
+    });
+  return in.history_text.c_str();
+}
+
+int vtkPaintSurface::LoadProject(const char* path)
+{
+  const int ok = meshpaint::guarded(this->LastError, [&] {
+    meshpaint::Project p = meshpaint::load_project(path ? path : "");
+    auto runtime = meshpaint::Runtime::open(this->Device);
+    auto surface = meshpaint::open_project_surface(runtime, p, meshpaint::default_storage(runtime->info()));
+    Internals& in = *this->Impl;
+    this->RemoveAllInputConnections(0);
+    in.surface = std::move(surface);
+    in.queued.clear();
+    in.built_from = 0;
+    in.built_level = p.level;
+    this->Level = p.level;
+    this->StrokeCount = 0;
+    // Only what the next save carries over; the layers live in the surface.
+    p.positions = {};
+    p.channels = {};
+    in.project = std::move(p);
+  });
+  if (ok)
+    this->Modified();
+  return ok;
+}
+
+int vtkPaintSurface::ExportModel(const char* dir)
+{
+  if (!this->Ready())
+    return 0;
+  return meshpaint::guarded(this->LastError, [&] {
+    const int level = this->Impl->surface->level();
+    const int model_level = this->ModelLevel > 0 ? std::min(this->ModelLevel, level) : std::max(1, level - 2);
+    meshpaint::export_painting(*this->Impl->surface, model_level, dir ? dir : "");
+  });
+}
+
+vtkDataArray* vtkPaintSurface::GetChannel(const char* name)
+{
+  if (!this->Ready())
+    return nullptr;
+  const std::string channel = name ? name : "";
+  vtkSmartPointer<vtkDataArray> array;
+  const int ok = meshpaint::guarded(this->LastError, [&] {
+    const std::vector<float> values = meshpaint::vertex_channel(*this->Impl->surface, channel);
+    const int k = meshpaint::channel_components(channel);
+    if (channel == "label")
+      array = vtkSmartPointer<vtkIntArray>::New();
+    else
+      array = vtkSmartPointer<vtkFloatArray>::New();
+    array->SetName(channel.c_str());
+    array->SetNumberOfComponents(k);
+    array->SetNumberOfTuples(vtkIdType(values.size() / std::size_t(k)));
+    for (std::size_t v = 0; v < values.size(); ++v)
+      array->SetComponent(vtkIdType(v / std::size_t(k)), int(v % std::size_t(k)), values[v]);
+  });
+  if (!ok)
+    return nullptr;
+  this->Impl->channels[channel] = array;
+  return array;
+}
+
+int vtkPaintSurface::SetChannel(const char* name, vtkDataArray* values)
+{
+  if (!this->Ready())
+    return 0;
+  const int ok = meshpaint::guarded(this->LastError, [&] {
+    const std::string channel = name ? name : "";
+    const int k = meshpaint::channel_components(channel);
+    if (!values)
+      throw meshpaint::InputError("SetChannel needs an array");
+    if (values->GetNumberOfComponents() != k)
+      throw meshpaint::InputError("channel '" + channel + "' has " + std::to_string(k) + " component" +
+                                  (k > 1 ? "s" : "") + ", the array " +
+                                  std::to_string(values->GetNumberOfComponents()));
+    std::vector<float> v(std::size_t(values->GetNumberOfTuples()) * std::size_t(k));
+    for (std::size_t i = 0; i < v.size(); ++i)
+      v[i] = float(values->GetComponent(vtkIdType(i / std::size_t(k)), int(i % std::size_t(k))));
+    meshpaint::set_vertex_channel(*this->Impl->surface, channel, v);
+  });
+  if (ok)
+    this->Modified();
+  return ok;
+}
+
 int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                  vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  const int ok = guarded(this->LastError, [&] {
+  const int ok = meshpaint::guarded(this->LastError, [&] {
     Internals& in = *this->Impl;
     // A new input or level starts a new surface; queued strokes go onto it.
-    if (!in.surface || in.built_from != input->GetMTime() || in.built_level != this->Level) {
+    // Without an input, the surface is a loaded project's.
+    if (!input && !in.surface)
+      throw meshpaint::InputError("nothing to paint on: set an input or load a project");
+    if (!in.surface || (input && in.built_from != input->GetMTime()) || in.built_level != this->Level) {
+      if (!input)
+        throw meshpaint::InputError("a loaded project keeps its level " + std::to_string(in.built_level) +
+                                    "; set an input to paint at another");
       auto runtime = meshpaint::Runtime::open(this->Device);
-      in.surface = std::make_unique<meshpaint::PaintSurface>(runtime, meshpaint::to_base_mesh(input, "input"),
+      in.surface = std::make_shared<meshpaint::PaintSurface>(runtime, meshpaint::to_base_mesh(input, "input"),
                                                              this->Level, meshpaint::default_storage(runtime->info()));
       in.built_from = input->GetMTime();
       in.built_level = this->Level;
+      in.project.reset();
       this->StrokeCount = 0;
     }
     for (const meshpaint::Stroke& s : in.queued) {
@@ -191,4 +350,37 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
     this->Impl->queued.clear();
   }
   return ok;
+}
+
+vtkPaintView* vtkPaintSurface::GetView()
+{
+  Internals& in = *this->Impl;
+  this->Update();
+  if (!in.surface)
+    return nullptr;
+  if (!in.view || !in.view->Shows(in.surface)) {
+    in.view = vtkSmartPointer<vtkPaintView>::New();
+    in.view->SetDevice(this->Device.c_str());
+    in.view->SetSurface(in.surface);
+    if (in.project) // saves from the window continue the loaded project
+      in.view->SetProject(*in.project);
+  }
+  return in.view;
+}
+
+int vtkPaintSurface::View()
+{
+  vtkPaintView* view = this->GetView();
+  if (!view)
+    return 0;
+  view->Start();
+  this->ViewPainted();
+  return 1;
+}
+
+void vtkPaintSurface::ViewPainted()
+{
+  if (this->Impl->surface)
+    this->StrokeCount = int(this->Impl->surface->history().size());
+  this->Modified();
 }

@@ -8,6 +8,9 @@
  * Normals. Strokes are applied in order; every stroke is one undo step.
  * Methods that can fail return 0 and leave the reason in GetLastError(); the
  * Python package raises it as meshpaint.Error.
+ *
+ * A project (docs/project-format.md) may take the input's place:
+ * LoadProject() continues from one, SaveProject() writes one.
  */
 #ifndef vtkPaintSurface_h
 #define vtkPaintSurface_h
@@ -19,6 +22,8 @@
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
+class vtkDataArray;
+class vtkPaintView;
 class vtkPoints;
 
 class MESHPAINTVIS_EXPORT vtkPaintSurface : public vtkPolyDataAlgorithm
@@ -58,6 +63,13 @@ public:
   void SetAmount(double amount);
   void SetIterations(int iterations);
   void SetEditLevel(int level); ///< geometry tools: the level edited; 0 for the painting level
+  void SetSpace(const char* space); ///< "object", "tangent", "screen", "parameter"
+  /// The view of screen-space brushes and patterns (as vtkCamera gives it).
+  void SetCamera(double px, double py, double pz, double fx, double fy, double fz, double ux, double uy, double uz,
+                 double view_angle);
+  void SetBackfaces(const char* policy); ///< "skip" or "paint"
+  void SetSide(const char* side);        ///< two-sided surfaces: "auto", "outside", "inside"
+  void SetSpray(int drops, double size, int seed); ///< screen space; drops 0: no spray
   void SetDiffuse(double r, double g, double b);
   void SetSpecular(double r, double g, double b);
   void SetRoughness(double roughness);
@@ -80,6 +92,50 @@ public:
   int Undo();
   int Redo();
 
+  //@{
+  /// Projects. SaveProject() paints queued strokes first, then writes the
+  /// surface, its stroke history (the loaded project's, then this filter's)
+  /// and the loaded project's labels and scan. LoadProject() makes the
+  /// project the source: the input connection is dropped, the level becomes
+  /// the project's, and undo starts afresh. Both return 0 on failure.
+  int SaveProject(const char* path);
+  int LoadProject(const char* path);
+  //@}
+
+  /// The strokes applied so far, undo-aware, after those of a loaded
+  /// project: a stroke script (JSON) that replays the painting; empty before
+  /// the first update.
+  const char* GetHistoryJSON();
+
+  //@{
+  /// What `meshpaint paint -o DIR` writes: DIR/surface.vtp, model.obj and
+  /// model.mtl at ModelLevel (0: the painting level - 2, at least 1) and the
+  /// PNG texture maps. Queued strokes are painted first. 0 on failure.
+  int ExportModel(const char* dir);
+  vtkSetClampMacro(ModelLevel, int, 0, 12);
+  vtkGetMacro(ModelLevel, int);
+  //@}
+
+  //@{
+  /// One channel at every output vertex: "diffuse", "specular" (3
+  /// components), "roughness", "displacement", "mask" (floats), "label"
+  /// (ints). GetChannel() returns a new array owned by this filter (valid
+  /// until the next GetChannel() of that name), nullptr on failure;
+  /// SetChannel() writes one back from an array of that shape (any numeric
+  /// type). Setting is not a stroke: no undo step, no history entry.
+  vtkDataArray* GetChannel(const char* name);
+  int SetChannel(const char* name, vtkDataArray* values);
+  /// The painting window on this surface (docs/window.md): GetView()
+  /// updates, then returns the window (made once, kept by this filter; not
+  /// opened) whose strokes go onto this filter's surface, with undo, redo
+  /// and recording shared. View() opens it and returns when it is closed.
+  /// After painting through GetView(), call ViewPainted() so the output
+  /// and StrokeCount follow. 0 / nullptr when the update fails.
+  vtkPaintView* GetView();
+  int View();
+  void ViewPainted();
+  //@}
+
   /// Strokes applied so far (queued ones not included).
   vtkGetMacro(StrokeCount, int);
 
@@ -94,8 +150,10 @@ protected:
   vtkPaintSurface();
   ~vtkPaintSurface() override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
 
   int Level = 3;
+  int ModelLevel = 0;
   std::string Device;
   std::string LastError;
   int StrokeCount = 0;
@@ -106,6 +164,9 @@ private:
   void operator=(const vtkPaintSurface&) = delete;
 
   int Step(bool back); // Undo (back) or Redo
+  //! Paints queued strokes (building the surface if needed) by updating; 0
+  //! with LastError set when that fails or there is nothing to paint on.
+  int Ready();
 
   struct Internals;
   std::unique_ptr<Internals> Impl;

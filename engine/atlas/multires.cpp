@@ -86,15 +86,14 @@ void Multires::encode(int level)
   const LevelLayout f = atlas_.layout(finest);
   const cl::Memory& fine = atlas_.level_layer(finest);
   try {
+    atlas_.limit_positions_layer(); // current before, so that it is current after
     copy_level(fine, d.saved);
     atlas_.reduce(finest, level);
     atlas_.subdivide(level, finest);
-    atlas_.compute_limit();
     const auto tiles = range_tiles(f, f.patches);
-    launch(q, d.encode, tiles.first, tiles.second, d.saved, fine, atlas_.limit_normals_layer(), grid(f), f.patches,
-           d.details);
+    launch(q, d.encode, tiles.first, tiles.second, d.saved, fine, grid(f), f.patches, d.details);
     copy_level(d.saved, fine);
-    atlas_.compute_limit();
+    atlas_.assume_limit_current(); // the finest level is S again, and so is its limit
     launch(q, d.patch_extent, cl::NDRange(round_up(f.patches, kGroup)), cl::NDRange(kGroup), fine, grid(f),
            cl::Buffer(), f.patches, d.extent);
     extent_.resize(std::size_t(f.patches));
@@ -155,22 +154,20 @@ void Multires::reconstruct(const std::vector<int>& affected)
   const PatchSet reached = atlas_.patch_set(affected, Reach::Any);
   atlas_.subdivide(level_, finest, &reached);
   // The limit layers still describe S, which the finest level is again
-  // outside `affected` once decoded; their normals of U' are needed on it.
+  // outside `affected` once decoded; the caller updates them on it.
   atlas_.assume_limit_current();
   const PatchSet set = atlas_.patch_set(affected, Reach::All);
-  atlas_.update_limit(set);
   const cl::Buffer patches = device_ints(rt.context(), set.patches), edges = device_ints(rt.context(), set.edges),
                    rings = device_ints(rt.context(), set.rings);
-  const cl::Memory& normals = atlas_.limit_normals_layer();
   const auto tiles = range_tiles(f, int(set.patches.size()));
-  launch(q, d.decode_interior, tiles.first, tiles.second, fine, normals, grid(f), patches, int(set.patches.size()),
-         d.details, d.saved);
+  launch(q, d.decode_interior, tiles.first, tiles.second, fine, grid(f), patches, int(set.patches.size()), d.details,
+         d.saved);
   if (f.n > 1 && !set.edges.empty())
     launch(q, d.decode_edges, cl::NDRange(f.n - 1, round_up(set.edges.size(), kGroup)), cl::NDRange(1, kGroup), fine,
-           normals, grid(f), atlas_.edge_table(), edges, int(set.edges.size()), d.details, d.saved);
+           grid(f), atlas_.edge_table(), edges, int(set.edges.size()), d.details, d.saved);
   if (!set.rings.empty())
-    launch(q, d.decode_corners, cl::NDRange(round_up(set.rings.size(), kGroup)), cl::NDRange(kGroup), fine, normals,
-           grid(f), atlas_.ring_table(), atlas_.slot_table(), rings, int(set.rings.size()), d.details, d.saved);
+    launch(q, d.decode_corners, cl::NDRange(round_up(set.rings.size(), kGroup)), cl::NDRange(kGroup), fine, grid(f),
+           atlas_.ring_table(), atlas_.slot_table(), rings, int(set.rings.size()), d.details, d.saved);
   const std::vector<int> touched = grow(affected, 1);
   copy_level(d.saved, fine, &touched);
   q.finish(); // the lists live until here

@@ -32,6 +32,12 @@ void build_export(PaintSurface& surface, int model_level, ExportModel& model, Te
   maps.specular.assign(3 * pixels, 0.f);
   maps.roughness.assign(pixels, 0.f);
   maps.displacement.assign(pixels, 0.f);
+  const bool two_sided = !ch.inside_diffuse.empty();
+  if (two_sided) {
+    maps.inside_diffuse.assign(3 * pixels, 0.f);
+    maps.inside_specular.assign(3 * pixels, 0.f);
+    maps.inside_roughness.assign(pixels, 0.f);
+  }
   maps.displacement_min = maps.displacement_max = ch.material.empty() ? 0.f : ch.material[0][1];
   for (const Float4& m : ch.material) {
     maps.displacement_min = std::min(maps.displacement_min, m[1]);
@@ -49,6 +55,13 @@ void build_export(PaintSurface& surface, int model_level, ExportModel& model, Te
         }
         maps.roughness[px] = ch.material[t][0];
         maps.displacement[px] = ch.material[t][1];
+        if (two_sided) {
+          for (int c = 0; c < 3; ++c) {
+            maps.inside_diffuse[3 * px + c] = ch.inside_diffuse[t][c];
+            maps.inside_specular[3 * px + c] = ch.inside_specular[t][c];
+          }
+          maps.inside_roughness[px] = ch.inside_material[t][0];
+        }
       }
   }
 
@@ -114,6 +127,11 @@ void write_obj_model(const ExportModel& model, const TextureMaps& maps, const st
                  "newmtl painted\nKa 0 0 0\nKd 1 1 1\nKs 1 1 1\nillum 2\n"
                  "map_Kd diffuse.png\nmap_Ks specular.png\nmap_Pr roughness.png\ndisp displacement.png\n",
                  double(maps.displacement_min), double(range));
+    if (!maps.inside_diffuse.empty())
+      std::fprintf(f.get(), "\n# the inside of the two-sided surface\n"
+                            "newmtl inside\nKa 0 0 0\nKd 1 1 1\nKs 1 1 1\nillum 2\n"
+                            "map_Kd inside_diffuse.png\nmap_Ks inside_specular.png\nmap_Pr inside_roughness.png\n"
+                            "disp displacement.png\n");
     if (std::ferror(f.get()))
       throw IOError("cannot write '" + dir + "/model.mtl'");
   });
@@ -124,10 +142,14 @@ void write_obj_model(const ExportModel& model, const TextureMaps& maps, const st
                  model.mesh.level, model.mesh.points.size(), model.mesh.quads.size());
     for (const Vec3& p : model.mesh.points)
       std::fprintf(out, "v %.9g %.9g %.9g\n", double(p[0]), double(p[1]), double(p[2]));
-    for (const Vec3& n : model.mesh.normals)
-      std::fprintf(out, "vn %.7g %.7g %.7g\n", double(n[0]), double(n[1]), double(n[2]));
+    const bool two_sided = !maps.inside_diffuse.empty();
+    for (const float sign : {1.f, -1.f}) // the inside faces the other way
+      if (sign > 0.f || two_sided)
+        for (const Vec3& n : model.mesh.normals)
+          std::fprintf(out, "vn %.7g %.7g %.7g\n", double(sign * n[0]), double(sign * n[1]), double(sign * n[2]));
     for (const auto& uv : model.uvs)
       std::fprintf(out, "vt %.9g %.9g\n", double(uv[0]), double(uv[1]));
+    const int nv = int(model.mesh.normals.size());
     for (std::size_t q = 0; q < model.mesh.quads.size(); ++q) {
       std::fprintf(out, "f");
       for (int k = 0; k < 4; ++k) {
@@ -135,6 +157,17 @@ void write_obj_model(const ExportModel& model, const TextureMaps& maps, const st
         std::fprintf(out, " %d/%zu/%d", v, 4 * q + k + 1, v);
       }
       std::fprintf(out, "\n");
+    }
+    if (two_sided) {
+      std::fprintf(out, "usemtl inside\n");
+      for (std::size_t q = 0; q < model.mesh.quads.size(); ++q) {
+        std::fprintf(out, "f");
+        for (int k = 3; k >= 0; --k) {
+          const int v = model.mesh.quads[q][std::size_t(k)] + 1;
+          std::fprintf(out, " %d/%zu/%d", v, 4 * q + std::size_t(k) + 1, v + nv);
+        }
+        std::fprintf(out, "\n");
+      }
     }
     if (std::ferror(out))
       throw IOError("cannot write '" + dir + "/model.obj'");

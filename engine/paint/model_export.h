@@ -22,6 +22,8 @@ struct TextureMaps
   std::vector<float> diffuse, specular;        //!< rgb per pixel, 0..1
   std::vector<float> roughness, displacement;  //!< one value per pixel
   float displacement_min = 0.f, displacement_max = 0.f;
+  //! Two-sided surfaces: the inside's maps; empty otherwise.
+  std::vector<float> inside_diffuse, inside_specular, inside_roughness;
 };
 
 struct ExportModel
@@ -37,7 +39,9 @@ void build_export(PaintSurface& surface, int model_level, ExportModel& model, Te
 
 //! Writes DIR/model.obj and DIR/model.mtl (atomically) naming the maps
 //! diffuse.png, specular.png, roughness.png and displacement.png; the MTL
-//! records how displacement pixels map back to world units.
+//! records how displacement pixels map back to world units. A two-sided
+//! surface gets a second material, `inside`, with the inside_*.png maps,
+//! on a second copy of the faces turned the other way.
 //! \throw IOError when a file cannot be written.
 void write_obj_model(const ExportModel& model, const TextureMaps& maps, const std::string& dir);
 

@@ -6,6 +6,7 @@
 #include "core/errors.h"
 #include "core/format.h"
 #include "core/timer.h"
+#include "paint/spray.h"
 
 #include <algorithm> // for std::sort, std::max
 #include <optional>  // for std::optional
@@ -86,9 +87,11 @@ struct PaintSurface::Device
 {
   LayerKernels positions, channels;
   cl::Kernel patch_bounds, brush_cull, paint_dab, dab_weights, move_points, dab_pickup;
+  cl::Kernel spray_pick, spray_points;
   cl::Buffer bounds, records, count, active, dab, weights;
   std::size_t record_capacity = 0, active_capacity = 0;
   cl::Buffer diffuse, specular, material, channel_work;
+  cl::Buffer inside_diffuse, inside_specular, inside_material; // two-sided surfaces
   cl::Buffer raster, stamp; // the stroke's pattern samples and brush image (one float when none)
   cl::Memory position_work; // a scratch copy of the finest level, same storage
 };
@@ -116,6 +119,8 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     d.dab_weights = cl::Kernel(d.positions.program, "dab_weights");
     d.move_points = cl::Kernel(d.positions.program, "move_points");
     d.dab_pickup = cl::Kernel(d.positions.program, "dab_pickup");
+    d.spray_pick = cl::Kernel(d.positions.program, "spray_pick");
+    d.spray_points = cl::Kernel(d.positions.program, "spray_points");
     const std::size_t bytes = l.texels() * sizeof(Float4);
     d.channel_work = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
     d.weights = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, l.texels() * sizeof(float));
@@ -156,6 +161,9 @@ std::pair<PaintSurface::LayerKernels*, const cl::Memory*> PaintSurface::layer(in
   case kPositions: return {&d.positions, &atlas_->level_layer(level_)};
   case kDiffuse: return {&d.channels, &d.diffuse};
   case kSpecular: return {&d.channels, &d.specular};
+  case kInsideDiffuse: return {&d.channels, &d.inside_diffuse};
+  case kInsideSpecular: return {&d.channels, &d.inside_specular};
+  case kInsideMaterial: return {&d.channels, &d.inside_material};
   default: return {&d.channels, &d.material};
   }
 }
@@ -320,8 +328,11 @@ std::vector<CullRecord> PaintSurface::cull(const Vec3& centre, float radius)
   return out;
 }
 
-std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Vec3* centre_out, Vec3* normal_out)
+std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Vec3* centre_out, Vec3* normal_out,
+                                             float reach, CullRecord* closest)
 {
+  if (!(reach > 0.f))
+    reach = radius;
   // Snap: the closest texel within the radius is the brush centre. A point
   // on the surface needs only a small search; grow it up to the radius.
   const float start = std::min(radius, float(1e-3 * atlas_->base_mesh().diagonal()));
@@ -344,17 +355,19 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
     *centre_out = centre;
   if (normal_out)
     *normal_out = {best->closest_normal[0], best->closest_normal[1], best->closest_normal[2]};
+  if (closest)
+    *closest = *best;
 
   // The brush reaches the patches connected to the centre's patch through
   // sides that themselves come within the radius: never through the air.
   const int start_patch = best->patch;
-  const std::vector<CullRecord> reach = cull(centre, radius);
+  const std::vector<CullRecord> records = cull(centre, reach);
 
   // Flood from the centre's patch over the culled patches; `mark_` holds,
   // per patch, 2 * generation for "culled" and 2 * generation + 1 for
   // "reached", so nothing needs clearing between dabs.
   const std::uint32_t culled = 2 * ++generation_, reached = culled + 1;
-  for (const CullRecord& c : reach) {
+  for (const CullRecord& c : records) {
     mark_[std::size_t(c.patch)] = culled;
     record_slot_[std::size_t(c.patch)] = &c; // for the sides' distances
   }
@@ -373,22 +386,79 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
     ++count;
     const CullRecord& rec = *record_slot_[std::size_t(p)];
     for (int s = 0; s < 4; ++s)
-      if (rec.side_distance[s] <= radius && neighbours_[std::size_t(p)][s] >= 0)
+      if (rec.side_distance[s] <= reach && neighbours_[std::size_t(p)][s] >= 0)
         visit(neighbours_[std::size_t(p)][s]);
   }
   std::vector<int> active;
   active.reserve(count);
-  for (const CullRecord& c : reach)
+  for (const CullRecord& c : records)
     if (mark_[std::size_t(c.patch)] == reached)
       active.push_back(c.patch);
   std::sort(active.begin(), active.end());
   return active;
 }
 
+void PaintSurface::spray(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke,
+                         std::uint64_t index)
+{
+  // Droplets fall evenly on the screen, so the surface gets fewer per area
+  // where it is seen obliquely: by the cosine of the angle to the view.
+  Device& d = *device_;
+  Runtime& rt = atlas_->runtime();
+  const LevelLayout l = atlas_->layout(level_);
+  const int k = stroke.spray_drops;
+  std::vector<cl_float2> drops;
+  for (const auto& o : spray_offsets(stroke.spray_seed, index, k, dab.radius))
+    drops.push_back({{dab.screen_centre[0] + o[0] / dab.centre_depth, dab.screen_centre[1] + o[1] / dab.centre_depth}});
+  const cl::Buffer drop_buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(cl_float2) * drops.size(),
+                               drops.data());
+  cl::Buffer keys(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_uint) * drops.size()),
+    texels(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_int) * drops.size()),
+    points(rt.context(), CL_MEM_WRITE_ONLY, sizeof(cl_float4) * drops.size());
+  cl::CommandQueue& q = rt.queue();
+  q.enqueueFillBuffer(keys, cl_uint(0xffffffffu), 0, sizeof(cl_uint) * drops.size());
+  q.enqueueFillBuffer(texels, cl_int(std::numeric_limits<cl_int>::max()), 0, sizeof(cl_int) * drops.size());
+  q.enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
+  const cl::Buffer list = device_ints(rt.context(), patches);
+  const auto tiles = range_tiles(l, int(patches.size()));
+  const cl::Memory &pos = atlas_->limit_positions_layer(), &nrm = atlas_->limit_normals_layer();
+  for (const int pass : {0, 1})
+    launch(q, d.spray_pick, tiles.first, tiles.second, pos, nrm, grid(l), list, int(patches.size()), d.dab, d.bounds,
+           drop_buffer, k, pass, keys, texels);
+  launch(q, d.spray_points, cl::NDRange(round_up(std::size_t(k), kGroup)), cl::NDRange(kGroup), pos, grid(l), texels, k,
+         points);
+  std::vector<Float4> landed(drops.size());
+  q.enqueueReadBuffer(points, CL_TRUE, 0, sizeof(cl_float4) * landed.size(), landed.data());
+  // Each droplet is a small object-space dab where it landed.
+  Stroke droplet = stroke;
+  droplet.space = SPACE_OBJECT;
+  droplet.has_camera = false;
+  BrushDab drop = dab;
+  drop.radius = stroke.spray_size;
+  for (const Float4& at : landed) {
+    if (at[3] == 0.f)
+      continue;
+    Vec3 normal;
+    const std::vector<int> hit = place(droplet, DabSample{{at[0], at[1], at[2]}, 1.f, {0.f, 0.f, 0.f}}, drop, normal);
+    paint(hit, drop);
+  }
+}
+
 void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
 {
   if (patches.empty())
     return;
+  if (inside_ && (dab.alpha[CHANNEL_LABEL] > 0.f || dab.alpha[CHANNEL_DISPLACEMENT] > 0.f)) {
+    // Labels and displacement belong to the surface, not to one side.
+    BrushDab shared = dab, sided = dab;
+    for (int c = 0; c < CHANNEL_COUNT; ++c)
+      (c == CHANNEL_LABEL || c == CHANNEL_DISPLACEMENT ? sided : shared).alpha[c] = 0.f;
+    inside_ = false;
+    paint(patches, shared);
+    inside_ = true;
+    paint(patches, sided);
+    return;
+  }
   remember(patches);
   Device& d = *device_;
   Runtime& rt = atlas_->runtime();
@@ -401,9 +471,32 @@ void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
   rt.queue().enqueueWriteBuffer(d.active, CL_TRUE, 0, sizeof(cl_int) * patches.size(), patches.data());
   rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
   const auto tiles = range_tiles(l, int(patches.size()));
-  launch(rt.queue(), d.paint_dab, tiles.first, tiles.second, atlas_->limit_positions_layer(), grid(l), d.active,
-         cl_int(patches.size()), d.dab, d.raster, d.stamp, d.diffuse, d.specular, d.material);
+  launch(rt.queue(), d.paint_dab, tiles.first, tiles.second, atlas_->limit_positions_layer(),
+         atlas_->limit_normals_layer(), grid(l), d.active,
+         cl_int(patches.size()), d.dab, d.raster, d.stamp, diffuse_buffer(), specular_buffer(), material_buffer());
   rt.queue().finish();
+}
+
+StrokeReport PaintSurface::apply(const Stroke& stroke, const std::vector<char>& dabs)
+{
+  dab_mask_ = &dabs;
+  try {
+    const StrokeReport r = apply(stroke);
+    dab_mask_ = nullptr;
+    return r;
+  } catch (...) {
+    dab_mask_ = nullptr;
+    throw;
+  }
+}
+
+float PaintSurface::distance_to(const Vec3& point, float radius)
+{
+  Vec3 centre;
+  if (brush_patches(point, radius, &centre).empty())
+    return std::numeric_limits<float>::infinity();
+  const Vec3 d{centre[0] - point[0], centre[1] - point[1], centre[2] - point[2]};
+  return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
 }
 
 StrokeReport PaintSurface::apply(const Stroke& stroke)
@@ -421,6 +514,7 @@ StrokeReport PaintSurface::apply(const Stroke& stroke)
     if (undo_.recording())
       undo_.record(std::move(stroke_before_));
     stroke_before_ = Snapshot();
+    inside_ = false;
     history_.push_back(stroke);
     undone_.clear();
   };
@@ -437,8 +531,12 @@ StrokeReport PaintSurface::apply(const Stroke& stroke)
   case Tool::Smear: stroke_layers_ = {kDiffuse, kSpecular}; break;
   default: stroke_layers_ = {kDiffuse, kSpecular, kMaterial}; break;
   }
+  if (two_sided_ && stroke_layers_.front() != kPositions) // either side may change
+    for (const int id : std::vector<int>(stroke_layers_))
+      stroke_layers_.push_back(id + kInsideDiffuse - kDiffuse);
   StrokeReport report;
   stretch_ = 1.f;
+  stroke_encoded_ = false;
   try {
     report = apply_dabs(stroke);
   } catch (...) {
@@ -473,7 +571,9 @@ void PaintSurface::smear(const std::vector<int>& patches, BrushDab dab, std::opt
   cl::Buffer partial(rt.context(), CL_MEM_WRITE_ONLY, 3 * groups * sizeof(Float4));
   rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
   launch(rt.queue(), d.dab_pickup, cl::NDRange(groups * items), cl::NDRange(items), atlas_->limit_positions_layer(),
-         grid(l), list, count, d.dab, d.stamp, d.diffuse, d.specular, partial, cl::Local(3 * items * sizeof(Float4)));
+         atlas_->limit_normals_layer(),
+         grid(l), list, count, d.dab, d.stamp, diffuse_buffer(), specular_buffer(), partial,
+         cl::Local(3 * items * sizeof(Float4)));
   std::vector<Float4> sums(3 * groups);
   rt.queue().enqueueReadBuffer(partial, CL_TRUE, 0, sums.size() * sizeof(Float4), sums.data());
   double acc[2][4] = {}, weight = 0;
@@ -557,6 +657,89 @@ void PaintSurface::stamp_axes(const Vec3& n, const Vec3& heading, BrushDab& dab)
   }
 }
 
+std::vector<int> PaintSurface::place(const Stroke& stroke, const DabSample& sample, BrushDab& dab, Vec3& normal)
+{
+  // A tangent or screen footprint runs further than the radius in space on
+  // surface turned from the brush: the search for it goes that far, at most.
+  const float reach = dab.radius * (stroke.space == SPACE_SCREEN ? 4.f : stroke.space == SPACE_OBJECT ? 1.f : 2.f);
+  Vec3 centre;
+  CullRecord closest{};
+  std::vector<int> patches = brush_patches(sample.centre, dab.radius, &centre, &normal, reach, &closest);
+  if (patches.empty())
+    return patches;
+  for (int k = 0; k < 3; ++k)
+    dab.centre[k] = centre[k];
+  if (!aim(stroke, sample.centre, normal, sample.heading, closest, dab))
+    return {};
+  if (stroke.space == SPACE_PARAMETER)
+    return {closest.patch};
+  return patches;
+}
+
+bool PaintSurface::aim(const Stroke& stroke, const Vec3& point, const Vec3& normal, const Vec3& heading,
+                       const CullRecord& closest, BrushDab& dab)
+{
+  // The side a two-sided surface is painted on: the one the eye sees for a
+  // screen brush, else the one the stroke's point lies on.
+  const bool colours = stroke.tool == Tool::Paint || stroke.tool == Tool::Wash || stroke.tool == Tool::Dip ||
+                       stroke.tool == Tool::Smear || stroke.tool == Tool::Blur ||
+                       (stroke.tool == Tool::Smooth && stroke.target_colour);
+  inside_ = false;
+  if (two_sided_ && colours) {
+    const Vec3 from = stroke.space == SPACE_SCREEN && stroke.has_camera ? stroke.camera.position : point;
+    const float seen = (from[0] - dab.centre[0]) * normal[0] + (from[1] - dab.centre[1]) * normal[1] +
+                       (from[2] - dab.centre[2]) * normal[2];
+    inside_ = stroke.side == 2 || (stroke.side == 0 && seen < 0.f);
+  }
+  dab.side_sign = inside_ ? -1.f : 1.f;
+  dab.space = stroke.space;
+  dab.paint_backfaces = stroke.paint_backfaces ? 1 : 0;
+  for (int k = 0; k < 3; ++k)
+    dab.centre_normal[k] = normal[k];
+  stamp_axes(normal, heading, dab);
+  if (stroke.has_camera) {
+    const Camera& c = stroke.camera;
+    const auto sub = [](const Vec3& a, const Vec3& b) { return Vec3{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
+    const auto dot = [](const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+    const auto cross = [](const Vec3& a, const Vec3& b) {
+      return Vec3{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    };
+    const auto unit = [&](Vec3 a) {
+      const float l = std::sqrt(dot(a, a));
+      return Vec3{a[0] / l, a[1] / l, a[2] / l};
+    };
+    const Vec3 dir = unit(sub(c.focal_point, c.position)), right = unit(cross(dir, c.view_up)),
+               up = cross(right, dir);
+    const Vec3 centre{dab.centre[0], dab.centre[1], dab.centre[2]}, v = sub(centre, c.position);
+    const float z = dot(v, dir);
+    for (int k = 0; k < 3; ++k) {
+      dab.eye[k] = c.position[k];
+      dab.view_dir[k] = dir[k];
+      dab.view_right[k] = right[k];
+      dab.view_up[k] = up[k];
+    }
+    dab.focal = float(1.0 / std::tan(0.5 * double(c.view_angle) * M_PI / 180.0));
+    dab.centre_depth = z;
+    dab.screen_centre[0] = dot(v, right) / z;
+    dab.screen_centre[1] = dot(v, up) / z;
+    // Screen strokes end at silhouettes: where the surface under the brush
+    // turns away from the eye, or lies behind it.
+    if (stroke.space == SPACE_SCREEN && (!(z > 0.f) || dab.side_sign * dot(normal, v) >= 0.f))
+      return false;
+  }
+  if (stroke.space == SPACE_PARAMETER) {
+    const LevelLayout l = atlas_->layout(level_);
+    cl_float4 bound;
+    atlas_->runtime().queue().enqueueReadBuffer(device_->bounds, CL_TRUE, sizeof(cl_float4) * closest.patch,
+                                                sizeof bound, &bound);
+    dab.centre_patch = closest.patch;
+    dab.centre_texel[0] = float(closest.closest_texel % l.tile);
+    dab.centre_texel[1] = float(closest.closest_texel / l.tile);
+    dab.texel_size = float(std::sqrt(2.0) * bound.s[3] / l.n); // the tile's side over its texels
+  }
+  return true;
+}
+
 void PaintSurface::weigh(const cl::Buffer& list, int count, const BrushDab& dab, int level)
 {
   // At a coarser edit level, on the limit of that level's control points.
@@ -564,11 +747,17 @@ void PaintSurface::weigh(const cl::Buffer& list, int count, const BrushDab& dab,
   Runtime& rt = atlas_->runtime();
   const LevelLayout f = atlas_->layout(level_), l = atlas_->layout(level);
   const bool coarse = level < level_;
-  rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
+  const int stride = f.n / l.n;
+  BrushDab at_level = dab; // parameter space counts texels of the level
+  for (float& c : at_level.centre_texel)
+    c /= float(stride);
+  at_level.texel_size *= float(stride);
+  rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof at_level, &at_level);
   const auto tiles = range_tiles(l, count);
   launch(rt.queue(), d.dab_weights, tiles.first, tiles.second,
-         coarse ? multires_->base_positions() : atlas_->limit_positions_layer(), grid(l), list, count, d.dab, d.stamp,
-         d.material, grid(f), f.n / l.n, coarse ? multires_->base_weights() : d.weights);
+         coarse ? multires_->base_positions() : atlas_->limit_positions_layer(),
+         coarse ? multires_->base_normals() : atlas_->limit_normals_layer(), grid(l), list, count, d.dab, d.stamp,
+         material_buffer(), grid(f), stride, coarse ? multires_->base_weights() : d.weights);
 }
 
 void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke,
@@ -583,8 +772,12 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   if (coarse) {
     if (!multires_)
       multires_ = std::make_unique<Multires>(*atlas_);
-    if (multires_->level() != level)
+    // Encoded afresh by every coarse stroke, so that what a stroke does
+    // depends only on the surface it starts from, never on undo history:
+    // a recorded session replays bit for bit.
+    if (multires_->level() != level || !stroke_encoded_)
       multires_->encode(level);
+    stroke_encoded_ = true;
     changed = multires_->reach(patches);
   } else if (!stroke.target_colour && multires_) {
     multires_->invalidate();
@@ -635,7 +828,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   const int edge_count = int(set.edges.size()), ring_count = int(set.rings.size());
   std::vector<std::pair<LayerKernels*, const cl::Memory*>> layers;
   if (stroke.target_colour)
-    layers = {{&d.channels, &d.diffuse}, {&d.channels, &d.specular}};
+    layers = {{&d.channels, &diffuse_buffer()}, {&d.channels, &specular_buffer()}};
   else
     layers = {{&d.positions, &atlas_->level_layer(level)}};
   std::vector<float> steps;
@@ -676,6 +869,7 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
   Timer timer;
   StrokeReport report;
   BrushDab dab{};
+  dab.side_sign = 1.f;
   dab.falloff = stroke.falloff;
   dab.op = stroke.op;
   for (int c = 0; c < CHANNEL_COUNT; ++c) {
@@ -715,6 +909,7 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
       dab.radius = std::numeric_limits<float>::infinity();
       dab.strength = stroke.strength;
       dab.falloff = FALLOFF_CONSTANT;
+      inside_ = two_sided_ && stroke.side == 2; // a wash covers the outside unless told
       paint(all, dab);
       report.dabs = report.dabs_applied = 1;
       report.patches_touched = all.size();
@@ -739,7 +934,11 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
       mirror_at = 0.5f * (lo + hi);
     }
     std::optional<std::array<Float4, 2>> carried[2]; // the smear brush's load per side of the mirror
-    for (const DabSample& sample : stroke_samples(stroke)) {
+    const std::vector<DabSample> samples = stroke_samples(stroke);
+    for (std::size_t index = 0; index < samples.size(); ++index) {
+      const DabSample& sample = samples[index];
+      if (dab_mask_ && (index >= dab_mask_->size() || !(*dab_mask_)[index])) // another object's dab
+        continue;
       // The dab, and with a mirror its reflection (heading reflected too).
       std::vector<DabSample> dabs{sample};
       if (stroke.mirror_axis >= 0) {
@@ -755,18 +954,15 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
         ++report.dabs;
         if (!(dab.radius > 0.f))
           continue;
-        Vec3 centre, normal;
-        const std::vector<int> patches = brush_patches(dabs[side].centre, dab.radius, &centre, &normal);
+        Vec3 normal;
+        const std::vector<int> patches = place(stroke, dabs[side], dab, normal);
         if (patches.empty())
           continue;
         on_surface = true;
-        dab.centre[0] = centre[0];
-        dab.centre[1] = centre[1];
-        dab.centre[2] = centre[2];
-        if (dab.stamp_size[0] > 0)
-          stamp_axes(normal, dabs[side].heading, dab);
         if (stroke.tool == Tool::Smear)
           smear(patches, dab, carried[side]);
+        else if (stroke.spray_drops > 0)
+          spray(patches, dab, stroke, report.dabs);
         else if (stroke.tool == Tool::Paint || stroke.tool == Tool::Label)
           paint(patches, dab);
         else
@@ -774,7 +970,9 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
         ++report.dabs_applied;
         report.patches_touched += patches.size();
       }
-      if (!on_surface && dab.radius > 0.f) { // zero pressure skips a dab, no surface ends the stroke
+      // Zero pressure skips a dab, no surface ends the stroke (in a scene,
+      // the scene decides that).
+      if (!on_surface && dab.radius > 0.f && !dab_mask_) {
         report.left_surface = true;
         break;
       }
@@ -795,18 +993,18 @@ void PaintSurface::grab(const Stroke& stroke, BrushDab& dab, StrokeReport& repor
   if (stroke.points.size() > 1 && samples.back().centre != stroke.points.back()) // the pull ends at the path's end
     samples.push_back({stroke.points.back(), stroke.pressure.empty() ? 1.f : stroke.pressure.back()});
   report.dabs = samples.size();
+  if (dab_mask_ && (dab_mask_->empty() || !dab_mask_->front())) // in a scene, the region is another object's
+    return;
   dab.radius = stroke.radius * samples.front().pressure;
   dab.strength = stroke.strength * samples.front().pressure;
   if (!(dab.radius > 0.f))
     return;
-  Vec3 centre, normal;
-  const std::vector<int> patches = brush_patches(samples.front().centre, dab.radius, &centre, &normal);
+  Vec3 normal;
+  const std::vector<int> patches = place(stroke, samples.front(), dab, normal);
   if (patches.empty()) {
     report.left_surface = true;
     return;
   }
-  for (int k = 0; k < 3; ++k)
-    dab.centre[k] = centre[k];
   for (std::size_t k = 1; k < samples.size(); ++k) {
     const Vec3& a = samples[k - 1].centre;
     const Vec3& b = samples[k].centre;
@@ -836,7 +1034,70 @@ PaintChannels PaintSurface::read_channels()
   q.enqueueReadBuffer(device_->diffuse, CL_TRUE, 0, n * sizeof(Float4), c.diffuse.data());
   q.enqueueReadBuffer(device_->specular, CL_TRUE, 0, n * sizeof(Float4), c.specular.data());
   q.enqueueReadBuffer(device_->material, CL_TRUE, 0, n * sizeof(Float4), c.material.data());
+  if (two_sided_) {
+    for (auto [from, to] : {std::pair{&device_->inside_diffuse, &c.inside_diffuse},
+                            std::pair{&device_->inside_specular, &c.inside_specular},
+                            std::pair{&device_->inside_material, &c.inside_material}}) {
+      to->resize(n);
+      q.enqueueReadBuffer(*from, CL_TRUE, 0, n * sizeof(Float4), to->data());
+    }
+  }
   return c;
+}
+
+cl::Buffer& PaintSurface::diffuse_buffer() { return inside_ ? device_->inside_diffuse : device_->diffuse; }
+cl::Buffer& PaintSurface::specular_buffer() { return inside_ ? device_->inside_specular : device_->specular; }
+cl::Buffer& PaintSurface::material_buffer() { return inside_ ? device_->inside_material : device_->material; }
+
+void PaintSurface::set_two_sided(bool on)
+{
+  if (on == two_sided_)
+    return;
+  Device& d = *device_;
+  Runtime& rt = atlas_->runtime();
+  const std::size_t bytes = atlas_->layout(level_).texels() * sizeof(Float4);
+  if (on) {
+    try {
+      d.inside_diffuse = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
+      d.inside_specular = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
+      d.inside_material = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
+      const auto f4 = [](const Float4& v) { return cl_float4{{v[0], v[1], v[2], v[3]}}; };
+      rt.queue().enqueueFillBuffer(d.inside_diffuse, f4(base_material_.diffuse), 0, bytes);
+      rt.queue().enqueueFillBuffer(d.inside_specular, f4(base_material_.specular), 0, bytes);
+      rt.queue().enqueueFillBuffer(d.inside_material, cl_float4{{base_material_.roughness, 0.f, 0.f, 0.f}}, 0, bytes);
+      rt.queue().finish();
+    } catch (const cl::Error& e) {
+      throw DeviceError("cannot add the inside channels on " + rt.info().name + ": " + describe(e));
+    }
+  } else {
+    d.inside_diffuse = d.inside_specular = d.inside_material = cl::Buffer();
+  }
+  two_sided_ = on;
+  // Steps recorded for the other number of layers cannot be undone.
+  UndoLog fresh(undo_.budget());
+  fresh.set_recording(undo_.recording());
+  undo_ = std::move(fresh);
+}
+
+void PaintSurface::write_channels(const PaintChannels& c)
+{
+  const std::size_t n = atlas_->layout(level_).texels();
+  if (c.diffuse.size() != n || c.specular.size() != n || c.material.size() != n)
+    throw InputError("channel layers of " + std::to_string(c.diffuse.size()) + " texels do not fit a level-" +
+                     std::to_string(level_) + " atlas of " + std::to_string(n));
+  cl::CommandQueue& q = atlas_->runtime().queue();
+  q.enqueueWriteBuffer(device_->diffuse, CL_TRUE, 0, n * sizeof(Float4), c.diffuse.data());
+  q.enqueueWriteBuffer(device_->specular, CL_TRUE, 0, n * sizeof(Float4), c.specular.data());
+  q.enqueueWriteBuffer(device_->material, CL_TRUE, 0, n * sizeof(Float4), c.material.data());
+  if (c.inside_diffuse.empty())
+    return;
+  if (c.inside_diffuse.size() != n || c.inside_specular.size() != n || c.inside_material.size() != n)
+    throw InputError("inside channel layers of " + std::to_string(c.inside_diffuse.size()) +
+                     " texels do not fit a level-" + std::to_string(level_) + " atlas of " + std::to_string(n));
+  set_two_sided(true);
+  q.enqueueWriteBuffer(device_->inside_diffuse, CL_TRUE, 0, n * sizeof(Float4), c.inside_diffuse.data());
+  q.enqueueWriteBuffer(device_->inside_specular, CL_TRUE, 0, n * sizeof(Float4), c.inside_specular.data());
+  q.enqueueWriteBuffer(device_->inside_material, CL_TRUE, 0, n * sizeof(Float4), c.inside_material.data());
 }
 
 namespace {
@@ -864,6 +1125,17 @@ PaintedSurface painted(WeldedSurface surface, const AtlasTopology& topology, con
     out.displacement[v] = c.material[t][1];
     out.label[v] = int(c.material[t][2]);
     out.mask[v] = c.material[t][3];
+  }
+  if (!c.inside_diffuse.empty()) {
+    out.inside_diffuse.resize(nv);
+    out.inside_specular.resize(nv);
+    out.inside_roughness.resize(nv);
+    for (std::size_t t = 0; t < map.size(); ++t) {
+      const int v = map[t];
+      out.inside_diffuse[v] = {c.inside_diffuse[t][0], c.inside_diffuse[t][1], c.inside_diffuse[t][2]};
+      out.inside_specular[v] = {c.inside_specular[t][0], c.inside_specular[t][1], c.inside_specular[t][2]};
+      out.inside_roughness[v] = c.inside_material[t][0];
+    }
   }
   for (std::size_t v = 0; v < nv; ++v)
     for (int k = 0; k < 3; ++k)
@@ -895,17 +1167,23 @@ PaintedSurface PaintSurface::painted_surface(int level)
   const std::vector<Float4> positions = atlas_->read_positions(level), normals = atlas_->read_limit_normals();
   const PaintChannels fine = read_channels();
   std::vector<Float4> coarse_normals(c.texels());
-  PaintChannels coarse{std::vector<Float4>(c.texels()), std::vector<Float4>(c.texels()),
-                       std::vector<Float4>(c.texels())};
-  for (int p = 0; p < c.patches; ++p)
-    for (int j = 0; j < c.tile; ++j)
-      for (int i = 0; i < c.tile; ++i) {
-        const std::size_t at = c.index(p, i, j), from = f.index(p, i * stride, j * stride);
-        coarse_normals[at] = normals[from];
-        coarse.diffuse[at] = fine.diffuse[from];
-        coarse.specular[at] = fine.specular[from];
-        coarse.material[at] = fine.material[from];
-      }
+  PaintChannels coarse;
+  const auto sampled = [&](const std::vector<Float4>& from, std::vector<Float4>& to) {
+    if (from.empty())
+      return;
+    to.resize(c.texels());
+    for (int p = 0; p < c.patches; ++p)
+      for (int j = 0; j < c.tile; ++j)
+        for (int i = 0; i < c.tile; ++i)
+          to[c.index(p, i, j)] = from[f.index(p, i * stride, j * stride)];
+  };
+  sampled(normals, coarse_normals);
+  sampled(fine.diffuse, coarse.diffuse);
+  sampled(fine.specular, coarse.specular);
+  sampled(fine.material, coarse.material);
+  sampled(fine.inside_diffuse, coarse.inside_diffuse);
+  sampled(fine.inside_specular, coarse.inside_specular);
+  sampled(fine.inside_material, coarse.inside_material);
   return painted(weld(atlas_->topology(), c, positions, &coarse_normals), atlas_->topology(), c, coarse);
 }
 

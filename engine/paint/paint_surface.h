@@ -22,6 +22,10 @@ struct PaintChannels
   std::vector<Float4> diffuse;  //!< rgb
   std::vector<Float4> specular; //!< rgb
   std::vector<Float4> material; //!< (roughness, displacement, label, mask)
+  //! Two-sided surfaces: the inside's diffuse, specular and material (of
+  //! which roughness and mask count; displacement and labels are the
+  //! surface's, in `material`). Empty otherwise.
+  std::vector<Float4> inside_diffuse, inside_specular, inside_material;
 };
 
 //! The welded limit surface with its channels per vertex; points are
@@ -32,6 +36,9 @@ struct PaintedSurface
   std::vector<Vec3> diffuse, specular;
   std::vector<float> roughness, displacement, mask;
   std::vector<int> label;
+  //! Two-sided surfaces: the inside's channels; empty otherwise.
+  std::vector<Vec3> inside_diffuse, inside_specular;
+  std::vector<float> inside_roughness;
 };
 
 //! What one stroke did.
@@ -67,22 +74,43 @@ public:
   Atlas& atlas() { return *atlas_; }
   int level() const { return level_; }
 
+  //! Two-sided materials: an inside set of diffuse, specular and roughness
+  //! (starting as the base material), painted where the brush sees the
+  //! surface from behind (Stroke::side). Off by default; turning it on
+  //! starts a fresh undo history.
+  void set_two_sided(bool on);
+  bool two_sided() const { return two_sided_; }
+
   //! Runs the stroke's dabs in order. A dab whose centre has no surface
   //! within its radius ends the stroke (left_surface).
   StrokeReport apply(const Stroke& stroke);
+  //! The same for the dabs (samples along the path, see stroke_samples())
+  //! whose entry in `dabs` is non-zero only: a scene hands each object its
+  //! dabs. The stroke does not end on its own where it leaves this surface.
+  StrokeReport apply(const Stroke& stroke, const std::vector<char>& dabs);
+  //! Distance from `point` to the closest surface point within `radius`;
+  //! infinity when there is none.
+  float distance_to(const Vec3& point, float radius);
 
   //! The patches one dab at `point` would touch: those connected to the
   //! closest surface point along the surface within `radius`, sorted. Empty
   //! when no surface is within the radius. `centre` receives the snapped
   //! centre.
+  //! `reach` (default: the radius) bounds the search for connected patches
+  //! when the brush's footprint reaches further than its radius in space
+  //! (tangent and screen brushes); `closest` receives the centre's texel.
   std::vector<int> brush_patches(const Vec3& point, float radius, Vec3* centre = nullptr,
-                                 Vec3* centre_normal = nullptr);
+                                 Vec3* centre_normal = nullptr, float reach = 0.f, CullRecord* closest = nullptr);
 
   //! After positions were written from outside (Atlas::write_positions):
   //! recomputes the limit surface and patch bounds everywhere.
   void geometry_changed();
 
   PaintChannels read_channels();
+  //! Replaces every channel (e.g. from a saved project); each layer must
+  //! hold the painting level's texels.
+  //! \throw InputError when a layer has another size.
+  void write_channels(const PaintChannels& channels);
   PaintedSurface painted_surface();
   //! Level of detail: the surface at a coarser level (<= level(), reduced
   //! from the finest), with the finest level's limit normals and channels
@@ -106,6 +134,9 @@ private:
   std::vector<CullRecord> cull(const Vec3& centre, float radius);
   bool step(bool back); // undo (back) or redo
   void paint(const std::vector<int>& patches, const BrushDab& dab);
+  //! One dab of spray paint: droplets at random points of the brush's disc
+  //! on the screen (seeded by the stroke's seed and the dab's `index`).
+  void spray(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke, std::uint64_t index);
   //! Smooths or moves geometry (or smooths colours) on the patches.
   //! `reweigh` false keeps the weights of the previous call (grab).
   void reshape(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke, const Vec3& normal,
@@ -125,6 +156,13 @@ private:
   void upload_rasters(const Stroke& stroke, BrushDab& dab);
   //! The brush image's axes in the tangent plane at a dab.
   static void stamp_axes(const Vec3& normal, const Vec3& heading, BrushDab& dab);
+  //! The dab's brush space at its centre (camera axes, the centre's texel);
+  //! false where a screen-space stroke meets a silhouette and ends.
+  bool aim(const Stroke& stroke, const Vec3& point, const Vec3& normal, const Vec3& heading, const CullRecord& closest,
+           BrushDab& dab);
+  //! Finds the dab's site and aims it: the patches it may change, empty
+  //! when it misses the surface (or meets a silhouette).
+  std::vector<int> place(const Stroke& stroke, const DabSample& sample, BrushDab& dab, Vec3& normal);
   //! Layers a snapshot may hold: the finest level's control points and the
   //! three channel layers.
   enum Layer : int
@@ -132,8 +170,15 @@ private:
     kPositions,
     kDiffuse,
     kSpecular,
-    kMaterial
+    kMaterial,
+    kInsideDiffuse,
+    kInsideSpecular,
+    kInsideMaterial
   };
+  //! The channel buffers a dab writes: the side it paints.
+  cl::Buffer& diffuse_buffer();
+  cl::Buffer& specular_buffer();
+  cl::Buffer& material_buffer();
   struct LayerKernels;
   std::pair<LayerKernels*, const cl::Memory*> layer(int id);
   //! The given layers' tiles of `patches`, from the device.
@@ -146,6 +191,7 @@ private:
   int level_;
   std::unique_ptr<Multires> multires_; // details for edits at a coarser level, made on first use
   float stretch_ = 1.f;                // the running stroke's worst Multires::stretch
+  bool stroke_encoded_ = false;        // the running stroke has encoded its details
   std::vector<Stroke> history_, undone_;
   std::unique_ptr<Device> device_;
   BaseMaterial base_material_;
@@ -157,6 +203,9 @@ private:
   std::vector<std::uint32_t> mark_;   // per patch: culled / reached in dab `generation_`
   std::vector<const CullRecord*> record_slot_; // per patch: its record in the current dab
   std::uint32_t generation_ = 0;
+  const std::vector<char>* dab_mask_ = nullptr; // apply(stroke, dabs): the dabs for this surface
+  bool two_sided_ = false;
+  bool inside_ = false; // the running dab paints the inside
 };
 
 } // namespace meshpaint

@@ -182,7 +182,8 @@ void read_pattern(const StrokeReader& r, Stroke& s)
       r.fail("pattern", "\"file\" must be a file name");
     s.pattern_file = p["file"].get<std::string>();
   }
-  s.pattern_coord = word("coord", {"position", "uv"}, "position") == "uv" ? PATTERN_COORD_UV : PATTERN_COORD_POSITION;
+  const std::string coord = word("coord", {"position", "uv", "screen"}, "position");
+  s.pattern_coord = coord == "uv" ? PATTERN_COORD_UV : coord == "screen" ? PATTERN_COORD_SCREEN : PATTERN_COORD_POSITION;
   s.matte = word("matte", {"self", "opaque"}, "self") == "opaque" ? MATTE_OPAQUE : MATTE_SELF;
   double scale = 1.0;
   if (p.contains("scale")) {
@@ -213,6 +214,103 @@ void read_pattern(const StrokeReader& r, Stroke& s)
     m = float(m * scale);
 }
 
+//! "camera": {"position": [x, y, z], "focal_point": [...], "view_up": [...], "view_angle": degrees}
+Camera read_camera(const StrokeReader& r)
+{
+  const json& c = r.at("camera");
+  const char* const shape = "must be {\"position\": [x, y, z], \"focal_point\": [x, y, z], \"view_up\": [x, y, z], "
+                            "\"view_angle\": degrees}";
+  if (!c.is_object())
+    r.fail("camera", shape);
+  for (const auto& item : c.items())
+    if (item.key() != "position" && item.key() != "focal_point" && item.key() != "view_up" &&
+        item.key() != "view_angle")
+      r.fail("camera", "has an unknown key \"" + item.key() + "\" (position, focal_point, view_up, view_angle)");
+  Camera cam;
+  for (const auto& [key, target] : {std::pair<const char*, Vec3*>{"position", &cam.position},
+                                    {"focal_point", &cam.focal_point}, {"view_up", &cam.view_up}}) {
+    if (!c.contains(key))
+      r.fail("camera", shape);
+    const json& v = c.at(key);
+    if (!v.is_array() || v.size() != 3)
+      r.fail("camera", std::string("\"") + key + "\" must be [x, y, z]");
+    for (int k = 0; k < 3; ++k) {
+      if (!v[k].is_number() || !std::isfinite(v[k].get<double>()))
+        r.fail("camera", std::string("\"") + key + "\" must hold finite numbers");
+      (*target)[k] = v[k].get<float>();
+    }
+  }
+  if (c.contains("view_angle")) {
+    const json& a = c.at("view_angle");
+    if (!a.is_number() || !(a.get<double>() > 0) || !(a.get<double>() < 180))
+      r.fail("camera", "\"view_angle\" must be a number of degrees between 0 and 180");
+    cam.view_angle = a.get<float>();
+  }
+  const Vec3 d{cam.focal_point[0] - cam.position[0], cam.focal_point[1] - cam.position[1],
+               cam.focal_point[2] - cam.position[2]};
+  const Vec3 x{d[1] * cam.view_up[2] - d[2] * cam.view_up[1], d[2] * cam.view_up[0] - d[0] * cam.view_up[2],
+               d[0] * cam.view_up[1] - d[1] * cam.view_up[0]};
+  if (!(d[0] * d[0] + d[1] * d[1] + d[2] * d[2] > 0.f))
+    r.fail("camera", "\"focal_point\" must differ from \"position\"");
+  if (!(x[0] * x[0] + x[1] * x[1] + x[2] * x[2] > 0.f))
+    r.fail("camera", "\"view_up\" must not be parallel to the direction of view");
+  return cam;
+}
+
+//! "space", "camera", "backfaces" and "spray": how the brush meets the surface.
+void read_space(const StrokeReader& r, Stroke& s, const std::string& tool, bool everywhere)
+{
+  const std::string space = r.word("space", "object", {"object", "tangent", "screen", "parameter"});
+  if (everywhere && r.has("space"))
+    r.fail("space", "has no meaning for a " + tool + ", which covers everything at once");
+  s.space = space == "tangent" ? SPACE_TANGENT : space == "screen" ? SPACE_SCREEN
+            : space == "parameter" ? SPACE_PARAMETER : SPACE_OBJECT;
+  const bool screen = s.space == SPACE_SCREEN || s.pattern_coord == PATTERN_COORD_SCREEN;
+  if (screen && !r.has("camera"))
+    r.fail("camera", "is required for a screen-space brush or pattern: the view it is drawn in");
+  if (r.has("camera")) {
+    if (!screen)
+      r.fail("camera", "has no meaning unless \"space\" is \"screen\" or the pattern's \"coord\" is \"screen\"");
+    s.camera = read_camera(r);
+    s.has_camera = true;
+  }
+  if (r.has("backfaces")) {
+    if (s.space != SPACE_SCREEN && s.space != SPACE_TANGENT)
+      r.fail("backfaces", "has no meaning unless \"space\" is \"screen\" or \"tangent\"");
+    s.paint_backfaces = r.word("backfaces", "skip", {"skip", "paint"}) == "paint";
+  }
+  if (r.has("side")) {
+    const bool colours = s.tool == Tool::Paint || s.tool == Tool::Wash || s.tool == Tool::Dip ||
+                         s.tool == Tool::Smear || s.tool == Tool::Blur || (s.tool == Tool::Smooth && s.target_colour);
+    if (!colours)
+      r.fail("side", "has no meaning for a " + tool + " stroke: only colours and roughness have two sides");
+    const std::string side = r.word("side", "auto", {"auto", "outside", "inside"});
+    s.side = side == "outside" ? 1 : side == "inside" ? 2 : 0;
+  }
+  if (r.has("spray")) {
+    if (s.space != SPACE_SCREEN || (s.tool != Tool::Paint && s.tool != Tool::Label))
+      r.fail("spray", "has no meaning unless a paint or label stroke is in screen space");
+    const json& sp = r.at("spray");
+    if (!sp.is_object())
+      r.fail("spray", "must be {\"drops\": n, \"size\": radius, \"seed\": k}");
+    for (const auto& item : sp.items())
+      if (item.key() != "drops" && item.key() != "size" && item.key() != "seed")
+        r.fail("spray", "has an unknown key \"" + item.key() + "\" (drops, size, seed)");
+    if (!sp.contains("drops") || !sp["drops"].is_number_integer() || sp["drops"].get<long long>() < 1 ||
+        sp["drops"].get<long long>() > 4096)
+      r.fail("spray", "\"drops\" must be an integer from 1 to 4096 (droplets per dab)");
+    if (!sp.contains("size") || !sp["size"].is_number() || !(sp["size"].get<double>() > 0) ||
+        !std::isfinite(sp["size"].get<double>()))
+      r.fail("spray", "\"size\" must be a positive number (a droplet's radius in world units)");
+    if (sp.contains("seed") && (!sp["seed"].is_number_integer() || sp["seed"].get<long long>() < 0 ||
+                                sp["seed"].get<long long>() > 4294967295LL))
+      r.fail("spray", "\"seed\" must be an integer from 0 to 4294967295");
+    s.spray_drops = sp["drops"].get<int>();
+    s.spray_size = sp["size"].get<float>();
+    s.spray_seed = sp.contains("seed") ? sp["seed"].get<unsigned>() : 0u;
+  }
+}
+
 Stroke read_stroke(const json& j, std::size_t index)
 {
   if (!j.is_object())
@@ -220,13 +318,13 @@ Stroke read_stroke(const json& j, std::size_t index)
   static const std::set<std::string> known = {
     "tool",   "points", "radius",   "strength",   "falloff", "spacing", "op",     "channels", "alphas",
     "pressure", "mirror", "amount", "iterations", "target", "method",  "lambda", "mu",
-    "mode",     "coefficient", "pattern", "stroke", "stamp", "edit_level"};
+    "mode",     "coefficient", "pattern", "stroke", "stamp", "edit_level", "space", "camera", "backfaces", "spray", "side"};
   const StrokeReader r(j, index);
   for (const auto& item : j.items())
     if (!known.count(item.key()))
       r.fail(item.key(), "is not a stroke key (tool, points, radius, strength, falloff, spacing, op, "
                          "channels, alphas, pressure, mirror, amount, iterations, target, method, lambda, mu, "
-                         "mode, coefficient, pattern, stroke, stamp, edit_level)");
+                         "mode, coefficient, pattern, stroke, stamp, edit_level, space, camera, backfaces, spray, side)");
   Stroke s;
   static const std::vector<std::string> tools = {"paint",  "label",   "wash",    "dip",   "smooth", "blur",
                                                  "sculpt", "inflate", "flatten", "smear", "grab"};
@@ -367,6 +465,7 @@ Stroke read_stroke(const json& j, std::size_t index)
     r.fail("pattern", "has no meaning for a " + tool + " stroke");
   if (r.has("pattern"))
     read_pattern(r, s);
+  read_space(r, s, tool, everywhere);
   if (s.tool == Tool::Dip && s.pattern == PATTERN_NONE)
     r.fail("pattern", "is required for a dip: the 3D matte to dip through, e.g. {\"type\": \"bath\"}");
   if (r.has("mode") && (!paints || s.tool == Tool::Label))
@@ -434,7 +533,9 @@ bool Stroke::operator==(const Stroke& o) const
          remover == o.remover && specular_coefficient == o.specular_coefficient && pattern == o.pattern &&
          pattern_coord == o.pattern_coord && matte == o.matte && octaves == o.octaves &&
          pattern_transform == o.pattern_transform && pattern_file == o.pattern_file && stamp_file == o.stamp_file &&
-         edit_level == o.edit_level;
+         edit_level == o.edit_level && space == o.space && paint_backfaces == o.paint_backfaces &&
+         has_camera == o.has_camera && (!has_camera || camera == o.camera) && spray_drops == o.spray_drops &&
+         spray_size == o.spray_size && spray_seed == o.spray_seed && side == o.side;
 }
 
 StrokeScript parse_stroke_script(const std::string& text)

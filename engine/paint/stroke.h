@@ -31,6 +31,20 @@ enum class Tool
 //! Name of a tool as the stroke script writes it.
 const char* tool_name(Tool tool);
 
+//! A view, as VTK's camera gives it: what screen-space brushes and patterns
+//! project with.
+struct Camera
+{
+  Vec3 position{0.f, 0.f, 1.f};
+  Vec3 focal_point{0.f, 0.f, 0.f};
+  Vec3 view_up{0.f, 1.f, 0.f};
+  float view_angle = 30.f; //!< degrees, vertical
+  bool operator==(const Camera& o) const
+  {
+    return position == o.position && focal_point == o.focal_point && view_up == o.view_up && view_angle == o.view_angle;
+  }
+};
+
 struct Stroke
 {
   Tool tool = Tool::Paint;
@@ -61,6 +75,14 @@ struct Stroke
   std::string stamp_file;                      //!< brush image laid in the tangent plane
   std::shared_ptr<const Raster> stamp;         //!< its samples (loaded by the caller)
   int edit_level = -1;                  //!< geometry tools: the level edited, finer levels follow; -1: the finest
+  int space = SPACE_OBJECT;             //!< SPACE_*: where the brush measures distance
+  bool paint_backfaces = false;         //!< tangent, screen: also faces turned away from the brush
+  bool has_camera = false;              //!< screen space, screen patterns: `camera` is given
+  Camera camera;
+  int side = 0;                         //!< two-sided surfaces: 0 the side the brush sees, 1 outside, 2 inside
+  int spray_drops = 0;                  //!< screen space: droplets per dab (0: no spray)
+  float spray_size = 0.f;               //!< their radius on the surface, world units
+  unsigned spray_seed = 0;
 
   //! Same stroke as written in a script (loaded rasters are not compared).
   bool operator==(const Stroke& o) const;

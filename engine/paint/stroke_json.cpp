@@ -41,8 +41,9 @@ void write_channels(const Stroke& s, json& j)
 json pattern_object(const Stroke& s)
 {
   static const char* const types[] = {"", "noise", "turbulence", "marble", "bath", "image", "volume"};
+  static const char* const coords[] = {"position", "uv", "screen"};
   json p = {{"type", types[s.pattern]},
-            {"coord", s.pattern_coord == PATTERN_COORD_UV ? "uv" : "position"},
+            {"coord", coords[s.pattern_coord]},
             {"matte", s.matte == MATTE_OPAQUE ? "opaque" : "self"},
             {"octaves", s.octaves}};
   json rows = json::array();
@@ -74,6 +75,20 @@ json stroke_object(const Stroke& s)
   }
   if (s.edit_level > 0)
     j["edit_level"] = s.edit_level;
+  static const char* const spaces[] = {"object", "tangent", "screen", "parameter"};
+  if (s.space != SPACE_OBJECT)
+    j["space"] = spaces[s.space];
+  if (s.has_camera)
+    j["camera"] = {{"position", {s.camera.position[0], s.camera.position[1], s.camera.position[2]}},
+                   {"focal_point", {s.camera.focal_point[0], s.camera.focal_point[1], s.camera.focal_point[2]}},
+                   {"view_up", {s.camera.view_up[0], s.camera.view_up[1], s.camera.view_up[2]}},
+                   {"view_angle", s.camera.view_angle}};
+  if (s.paint_backfaces)
+    j["backfaces"] = "paint";
+  if (s.side > 0)
+    j["side"] = s.side == 1 ? "outside" : "inside";
+  if (s.spray_drops > 0)
+    j["spray"] = {{"drops", s.spray_drops}, {"size", s.spray_size}, {"seed", s.spray_seed}};
   if (paints) {
     j["op"] = ops[s.op];
     if (s.remover) {

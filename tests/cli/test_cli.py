@@ -15,21 +15,9 @@ SOURCE = os.environ["MESHPAINT_SOURCE_DIR"]
 BAD = os.path.join(SOURCE, "tests", "bad_input")
 SCANS = os.path.join(SOURCE, "data", "scans")
 
-CUBE_OBJ = """v 0 0 0
-v 1 0 0
-v 1 1 0
-v 0 1 0
-v 0 0 1
-v 1 0 1
-v 1 1 1
-v 0 1 1
-f 1 4 3 2
-f 5 6 7 8
-f 1 2 6 5
-f 2 3 7 6
-f 3 4 8 7
-f 4 1 5 8
-"""
+# The unit cube as quads (also read by the rendering tests).
+with open(os.path.join(SOURCE, "tests", "support", "cube.obj")) as _f:
+    CUBE_OBJ = _f.read()
 
 
 def run(*args):
@@ -294,6 +282,33 @@ def test_paint_coarse_edit_level_and_lod(plane, tmp_path):
     assert lod.GetPointData().GetArray("Normals") is not None
     top = max(full.GetPoint(i)[2] for i in range(full.GetNumberOfPoints()))
     assert top > 0.3
+
+
+def test_paint_a_scene_of_two_objects(plane, tmp_path):
+    # A second plate beside the first, touching it along x = 4.
+    right = tmp_path / "right.obj"
+    right.write_text("".join(f"v {x + 4} {y} 0\n" for y in range(5) for x in range(5)) + PLANE_OBJ.split("\n", 25)[25])
+    script = tmp_path / "s.json"
+    script.write_text(json.dumps({"level": 3, "strokes": [
+        {"tool": "paint", "points": [[2, 2, 0], [6, 2, 0]], "radius": 0.5, "falloff": "constant", "space": "tangent",
+         "channels": {"diffuse": [1, 0, 0]}},
+        {"tool": "paint", "points": [[4.2, 3.05, 0]], "radius": 0.3, "space": "parameter", "falloff": "constant",
+         "channels": {"diffuse": [0, 0, 1]}}]}))
+    out = tmp_path / "out"
+    r = run("paint", str(plane), str(right), "--strokes", str(script), "-o", str(out), "--quiet", "--two-sided")
+    assert r.returncode == 0, r.stderr
+    counts = {}
+    for name in ("plane", "right"):
+        poly = read_polydata(out / name / "surface.vtp")
+        d = poly.GetPointData().GetArray("diffuse")
+        assert poly.GetPointData().GetArray("inside_diffuse") is not None
+        assert (out / name / "inside_diffuse.png").exists()
+        counts[name] = (sum(d.GetTuple3(i) == (1.0, 0.0, 0.0) for i in range(poly.GetNumberOfPoints())),
+                        sum(d.GetTuple3(i) == (0.0, 0.0, 1.0) for i in range(poly.GetNumberOfPoints())))
+    assert counts["plane"][0] > 10 and counts["right"][0] > 10  # the stroke crosses the contact
+    assert counts["plane"][1] == 0 and counts["right"][1] > 0   # a parameter-space dab paints one object
+    r = run("paint", str(plane), str(right), "--strokes", str(script), "--save", str(tmp_path / "p.meshpaint"))
+    assert r.returncode == 2 and "--save keeps one surface" in r.stderr
 
 
 def test_paint_refuses_an_edit_level_finer_than_the_painting_level(plane, tmp_path):

@@ -149,3 +149,106 @@ def test_brush_setters_and_a_vtkpoints_path():
     assert s.GetStrokeCount() == 3
     s.SetEditLevel(0)
     assert "edit_level" not in json.loads(s.GetBrushJSON())
+    # A screen-space spray seen from above: settings of other tools stay in
+    # the brush but not in the stroke.
+    s.SetTool("paint")
+    s.SetDiffuse(1, 1, 0)
+    s.SetSpace("screen")
+    s.SetCamera(0, 0, 5, 0, 0, 0, 0, 1, 0, 30)
+    s.SetBackfaces("skip")
+    s.SetSpray(32, 0.02, 7)
+    top = vtk.vtkPoints()
+    top.InsertNextPoint(0, 0, 0.5)
+    s.ApplyStroke(top)
+    s.Update()
+    assert s.GetStrokeCount() == 4
+    brush = json.loads(s.GetBrushJSON())
+    assert brush["space"] == "screen" and brush["spray"] == {"drops": 32, "size": 0.02, "seed": 7}
+    history = json.loads(s.GetHistoryJSON())["strokes"]
+    assert history[-1]["spray"]["drops"] == 32 and "amount" not in history[-1]
+
+
+def painted_sphere():
+    source = sphere()
+    s = meshpaint.vtkPaintSurface()
+    s.SetInputConnection(source.GetOutputPort())
+    s.SetLevel(2)
+    s.ApplyStrokes(json.dumps({"strokes": [
+        {"points": [[0, 0, 0.5]], "radius": 0.2, "falloff": "constant", "channels": {"diffuse": [1, 0, 0]}},
+        {"tool": "sculpt", "points": [[0, 0, 0.5]], "radius": 0.3, "amount": 0.05}]}))
+    s.Update()
+    return source, s
+
+
+def arrays(poly):
+    pd = poly.GetPointData()
+    return {pd.GetArrayName(k): vtk_to_numpy(pd.GetArray(k)).copy() for k in range(pd.GetNumberOfArrays())}
+
+
+def test_save_and_load_a_project(tmp_path):
+    source, s = painted_sphere()
+    before = s.GetOutput()
+    s.SaveProject(tmp_path / "p.meshpaint")
+    t = meshpaint.vtkPaintSurface()
+    t.LoadProject(tmp_path / "p.meshpaint")
+    assert t.GetLevel() == 2
+    t.Update()
+    after = t.GetOutput()
+    assert np.array_equal(vtk_to_numpy(after.GetPoints().GetData()), vtk_to_numpy(before.GetPoints().GetData()))
+    for name, values in arrays(before).items():
+        assert np.array_equal(arrays(after)[name], values), name
+    # continuing: one more stroke, saved again with the whole history
+    t.ApplyStrokes('{"strokes": [{"tool": "label", "points": [[0, 0, -0.5]], "radius": 0.2, "channels": {"label": 2}}]}')
+    t.SaveProject(tmp_path / "q.meshpaint")
+    u = meshpaint.vtkPaintSurface()
+    u.LoadProject(tmp_path / "q.meshpaint")
+    history = json.loads(u.GetHistoryJSON())
+    assert [st.get("tool", "paint") for st in history["strokes"]] == ["paint", "sculpt", "label"]
+    assert history["level"] == 2
+    with pytest.raises(meshpaint.Error, match="truncated project"):
+        data = (tmp_path / "q.meshpaint").read_bytes()
+        (tmp_path / "bad.meshpaint").write_bytes(data[:-5])
+        meshpaint.vtkPaintSurface().LoadProject(tmp_path / "bad.meshpaint")
+
+
+def test_export_model_writes_what_the_cli_writes(tmp_path):
+    source, s = painted_sphere()
+    s.ExportModel(tmp_path / "out")
+    for name in ("surface.vtp", "model.obj", "model.mtl", "diffuse.png", "specular.png", "roughness.png",
+                 "displacement.png"):
+        assert (tmp_path / "out" / name).exists(), name
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(str(tmp_path / "out" / "surface.vtp"))
+    reader.Update()
+    assert np.array_equal(arrays(reader.GetOutput())["diffuse"], arrays(s.GetOutput())["diffuse"])
+
+
+def test_channels_round_trip_through_numpy():
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    source, s = painted_sphere()
+    diffuse = vtk_to_numpy(s.GetChannel("diffuse")).copy()
+    assert np.array_equal(diffuse, arrays(s.GetOutput())["diffuse"])
+    label = vtk_to_numpy(s.GetChannel("label"))
+    assert label.dtype == np.int32 and not label.any()
+    # paint every vertex below the equator green from numpy, and label it 7
+    points = vtk_to_numpy(s.GetOutput().GetPoints().GetData())
+    below = points[:, 2] < 0
+    diffuse[below] = [0, 1, 0]
+    s.SetChannel("diffuse", numpy_to_vtk(diffuse, deep=True))
+    s.SetChannel("label", numpy_to_vtk(np.where(below, 7, 0).astype(np.int32), deep=True))
+    s.Update()
+    out = arrays(s.GetOutput())
+    assert np.array_equal(out["diffuse"], diffuse.astype(np.float32))
+    assert np.array_equal(out["label"] == 7, below)
+    assert np.array_equal(vtk_to_numpy(s.GetChannel("diffuse")), out["diffuse"])
+    with pytest.raises(meshpaint.Error, match="unknown channel 'colour'"):
+        s.GetChannel("colour")
+    with pytest.raises(meshpaint.Error, match="channel 'diffuse' has 3 components, the array 1"):
+        s.SetChannel("diffuse", numpy_to_vtk(np.zeros(len(points), dtype=np.float32), deep=True))
+    with pytest.raises(meshpaint.Error, match=r"channel 'roughness' needs \d+ values of 1 component, not 3 numbers"):
+        s.SetChannel("roughness", numpy_to_vtk(np.zeros(3, dtype=np.float32), deep=True))
+
+
+def test_nothing_to_paint_on():
+    with pytest.raises(meshpaint.Error, match="nothing to paint on: set an input or load a project"):
+        meshpaint.vtkPaintSurface().SaveProject("x.meshpaint")

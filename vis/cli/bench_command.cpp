@@ -134,6 +134,7 @@ int bench_subdivide(const Args& args)
 } // namespace
 
 int bench_paint(const Args& args);
+int bench_view(const Args& args);
 
 int bench_command(const Argv& argv)
 {
@@ -143,8 +144,10 @@ int bench_command(const Argv& argv)
     return bench_subdivide(args);
   if (what == "paint")
     return bench_paint(args);
+  if (what == "view")
+    return bench_view(args);
   throw InputError("usage: meshpaint bench subdivide MESH [--level L] [--json] [--repeats N] | "
-                   "meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint]");
+                   "meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint] | meshpaint bench view [--steps N]");
 }
 
 } // namespace meshpaint::cli

@@ -5,11 +5,17 @@
 
 #include "atlas/atlas.h"
 #include "cl/runtime.h"
+#include "paint/paint_scene.h"
 #include "paint/stroke.h"
 #include "mesh/base_mesh.h"
 #include "mesh/welded_surface.h"
+#include "project/project.h"
 
-#include <memory> // for std::shared_ptr
+#include <vtkPolyData.h>     // for vtkPolyData
+#include <vtkSmartPointer.h> // for vtkSmartPointer
+
+#include <memory>   // for std::shared_ptr, std::unique_ptr
+#include <optional> // for std::optional
 #include <string> // for std::string
 #include <vector> // for std::vector
 
@@ -23,6 +29,10 @@ int bench_command(const Argv& argv);
 int demo_command(const Argv& argv);
 int devices_command(const Argv& argv);
 int paint_command(const Argv& argv);
+int stats_command(const Argv& argv);
+int transfer_command(const Argv& argv);
+int fit_command(const Argv& argv);
+int view_command(const Argv& argv);
 
 //! The device named by --device (or MESHPAINT_DEVICE, or the default).
 std::shared_ptr<Runtime> open_device(const Args& args);
@@ -30,15 +40,38 @@ std::shared_ptr<Runtime> open_device(const Args& args);
 //! Loads a mesh and reports on stderr what import repaired.
 BaseMesh load_reported(const std::string& path);
 
+//! What the commands that take a mesh take: a mesh file, or a project.
+struct MeshOrProject
+{
+  std::string path;
+  BaseMesh loaded;                //!< the mesh file's mesh; empty for a project
+  std::optional<Project> project; //!< set when `path` named a project
+  //! The base mesh either way (a project's in atlas order).
+  const BaseMesh& mesh() const { return project ? project->mesh : loaded; }
+};
+//! Loads PATH as a project when it ends in .meshpaint, else as a mesh
+//! (reporting repairs).
+MeshOrProject open_mesh_or_project(const std::string& path);
+//! The level to work at: a project's own level (a differing --level is an
+//! error), else --level, else `fallback`.
+int input_level(const Args& args, const MeshOrProject& input, int fallback);
+//! A painting surface at `level`: the project's state, or the fresh mesh.
+std::unique_ptr<PaintSurface> open_paint_surface(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage,
+                                                 const MeshOrProject& input, int level);
+//! --storage when given, else the device's default.
+AtlasStorage chosen_storage(const Args& args, const Runtime& runtime);
+
 //! Where the set-up script puts the scans (data/scans in the source tree).
 std::string scans_dir();
 //! The bundled stroke scripts (data/strokes in the source tree).
 std::string strokes_dir();
 
-//! Paints `script` onto `mesh` and writes DIR/surface.vtp and the textured
-//! model (model.obj, model.mtl, PNG maps), printing a table of the strokes.
-void paint_job(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage, const BaseMesh& mesh,
-               const StrokeScript& script, int level, int model_level, const std::string& dir, bool quiet,
+//! Paints `script` onto the surface and, unless DIR is empty, writes
+//! DIR/surface.vtp and the textured model (model.obj, model.mtl, PNG maps),
+//! printing a table of the strokes.
+//! With `lod` between 1 and the painting level (exclusive), also
+//! DIR/surface_lodL.vtp: the painted surface at that coarser level.
+void paint_job(PaintScene& scene, const StrokeScript& script, int model_level, const std::string& dir, bool quiet,
                int lod = -1);
 
 //! \throw InputError unless the path ends in .obj, .ply or .vtp (any case).

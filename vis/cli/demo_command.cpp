@@ -35,8 +35,7 @@ int demo_command(const Argv& argv)
   os << "loaded     " << path << ": " << mesh.vertex_count() << " vertices, " << mesh.face_count()
      << " faces (" << format_fixed(t.ms(), 1) << " ms)\n";
   auto runtime = open_device(args);
-  const AtlasStorage storage =
-    args.has("--storage") ? parse_storage(args.value("--storage")) : default_storage(runtime->info());
+  const AtlasStorage storage = chosen_storage(args, *runtime);
   os << "device     " << runtime->info().summary() << ", " << storage_name(storage) << " storage\n";
   t.restart();
   Atlas atlas(runtime, mesh, level, storage);
@@ -61,7 +60,9 @@ int demo_command(const Argv& argv)
   StrokeScript script = load_stroke_script(strokes_dir() + "/bunny_demo.json");
   if (!args.positionals().empty())
     script.strokes.resize(1);
-  paint_job(runtime, storage, mesh, script, level, std::max(1, level - 2), dir + "/painted", true);
+  PaintScene scene;
+  scene.add(std::make_unique<PaintSurface>(runtime, mesh, level, storage), mesh.name);
+  paint_job(scene, script, std::max(1, level - 2), dir + "/painted", true);
   return 0;
 }
 

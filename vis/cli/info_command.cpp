@@ -5,7 +5,9 @@
 #include "core/errors.h"
 #include "core/format.h"
 #include "mesh/mesh_stats.h"
+#include "project/project_surface.h"
 
+#include <cstdio>   // for std::snprintf
 #include <iostream> // for std::cout
 
 namespace meshpaint::cli {
@@ -22,14 +24,22 @@ std::string histogram(const std::map<int, std::size_t>& h, const std::map<int, s
   return out;
 }
 
+std::string hex32(std::uint32_t v)
+{
+  char text[9];
+  std::snprintf(text, sizeof text, "%08x", v);
+  return text;
+}
+
 } // namespace
 
 int info_command(const Argv& argv)
 {
   Args args("info", argv, {}, {"--device", "--storage"});
-  args.expect_positionals(1, 1, "MESH");
+  args.expect_positionals(1, 1, "MESH|PROJECT");
   const std::string path = args.positionals()[0];
-  const BaseMesh mesh = load_reported(path);
+  const MeshOrProject input = open_mesh_or_project(path);
+  const BaseMesh& mesh = input.mesh();
   const MeshStats s = compute_stats(mesh);
   std::ostream& os = std::cout;
 
@@ -52,6 +62,19 @@ int info_command(const Argv& argv)
   for (std::size_t r = 1; r < repairs.size(); ++r)
     os << "             " << repairs[r] << "\n";
 
+  if (input.project) {
+    const Project& p = *input.project;
+    std::string names;
+    for (const LabelClass& c : p.labels)
+      names += (names.empty() ? " (" : ", ") + std::to_string(c.id) + " " + c.name;
+    os << "project      level " << p.level << ", " << grouped(p.positions.size()) << " texels, " << p.labels.size()
+       << " labels" << (names.empty() ? "" : names + ")") << "\n";
+    os << "history      " << stroke_history(p.history).strokes.size() << " strokes\n";
+    os << "scan         "
+       << (p.scan.path.empty() ? std::string("none")
+                               : p.scan.path + ", " + grouped(p.scan.bytes) + " bytes, CRC-32 " + hex32(p.scan.crc32))
+       << "\n";
+  }
   const AtlasTopology topo = atlas_topology_of(mesh);
   os << "atlas        " << grouped(topo.patch_count) << " patches (quads after the first Catmull-Clark step), "
      << grouped(topo.rings.size()) << " corner rings, " << grouped(topo.edges.size()) << " patch edges\n";

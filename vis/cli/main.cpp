@@ -25,18 +25,38 @@ commands:
                                       positions and point array Normals
   bench subdivide MESH [--level L] [--json] [--repeats N]
                                       kernels against OpenSubdiv's CpuEvaluator (level 3)
-  paint MESH --strokes S.json [--level L] [--model-level M] [--quiet] -o OUTDIR
+  paint MESH --strokes S.json [--level L] [--model-level M] [--lod L] [--two-sided] [--quiet] [-o OUTDIR]
+        [--save P.meshpaint] [--labels labels.json]
+        [--screenshot OUT.png [--camera AZ,EL,ZOOM] [--size WxH]]
                                       apply a stroke script (docs/strokes.md); writes
                                       OUTDIR/surface.vtp with the paint channels, and
-                                      model.obj + model.mtl + PNG texture maps
+                                      model.obj + model.mtl + PNG texture maps; --save:
+                                      the project to continue from; --screenshot: a
+                                      rendered picture
+  view MESH|PROJECT [--strokes S.json] [--level L] [--lod L] [-o DIR] [--size WxH]
+                                      the painting window (docs/window.md); saves the
+                                      recorded strokes and the surface into DIR
+  stats MESH [--labels labels.json] [--json|--csv] [--level L]
+                                      per-label area, centroid and bounds
+  fit SCAN [--base-faces N] [--level L] [--direct] [--passes P] [--quiet] -o PROJECT.meshpaint
+                                      a project from a scan: coarse base mesh (decimated),
+                                      atlas at level L fitted onto the scan; fit error
+  transfer PROJECT --to SCAN -o OUT.{vtp,ply} [--geometry] [--quiet]
+                                      the scan with the project's channels as point
+                                      arrays (label, diffuse, ...); --geometry: moved
+                                      as the surface was sculpted or smoothed
   bench paint [--json] [--steps N] [--tool sculpt|paint]
                                       brush step times as the paper's Table 1, and
                                       smoothing against VTK and OpenMesh
+  bench view [--steps N]              the window's frame times while painting, with and
+                                      without level of detail, and pick latency (needs X)
   devices                             the OpenCL devices (for --device / MESHPAINT_DEVICE)
   help                                this text
 
-options of demo, info, subdivide, paint and bench: --device SEL (gpu, cpu, P:D or part of a
-name), --storage buffer|image
+MESH: a mesh file (.obj .off .ply .stl) or a project (.meshpaint) for info, subdivide,
+paint, view and stats
+options of demo, info, subdivide, paint, view, stats and bench: --device SEL (gpu, cpu, P:D
+or part of a name), --storage buffer|image
 )";
 
 //! 2: the user's input or the device's limits; 3: the device; 1: a defect.
@@ -70,7 +90,9 @@ int main(int argc, char** argv)
   const Argv rest(argv + std::min(argc, 2), argv + argc);
   static const std::map<std::string, int (*)(const Argv&)> commands = {
     {"info", info_command},   {"subdivide", subdivide_command}, {"bench", bench_command},
-    {"demo", demo_command},   {"devices", devices_command}, {"paint", paint_command}};
+    {"demo", demo_command},   {"devices", devices_command}, {"paint", paint_command},
+    {"stats", stats_command}, {"transfer", transfer_command},
+    {"fit", fit_command}, {"view", view_command}};
   try {
     if (command == "help" || command == "--help" || command == "-h") {
       std::cout << kUsage;

@@ -1,38 +1,52 @@
-// meshpaint paint: a stroke script applied headless, the painted surface
-// written with its channels.
+// meshpaint paint: a stroke script applied headless to a mesh or a project,
+// the painted surface written with its channels, and the project saved.
 
 #include "commands.h"
+#include "picture_options.h"
 #include "table.h"
 
+#include "PaintingExport.h"
 #include "RasterIO.h"
 #include "SurfaceConversion.h"
+#include "SurfaceRendering.h"
 
 #include "core/errors.h"
 #include "core/format.h"
 #include "core/timer.h"
-#include "paint/model_export.h"
-#include "paint/paint_surface.h"
+#include "project/project_surface.h"
 
-#include <filesystem> // for std::filesystem
-#include <iostream>   // for std::cout, std::cerr
+#include "paint/paint_scene.h"
+
+#include <vtkAppendPolyData.h> // for vtkAppendPolyData
+
+#include <algorithm> // for std::max
+#include <iostream>  // for std::cout, std::cerr
+#include <set>       // for std::set
 
 namespace meshpaint::cli {
-void paint_job(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage, const BaseMesh& mesh,
-               const StrokeScript& script, int level, int model_level, const std::string& dir, bool quiet, int lod)
+
+void paint_job(PaintScene& scene, const StrokeScript& script, int model_level, const std::string& dir, bool quiet,
+               int lod)
 {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec)
-    throw IOError("cannot create '" + dir + "': " + ec.message());
-  Timer total;
-  PaintSurface surface(runtime, mesh, level, storage);
-  surface.undo_log().set_recording(false); // a script never undoes: no snapshots to pay for
-  const double setup_ms = total.ms();
+  std::string names;
+  for (std::size_t o = 0; o < scene.size(); ++o) {
+    scene.surface(o).undo_log().set_recording(false); // a script never undoes: no snapshots to pay for
+    names += (o ? ", " : "") + scene.name(o);
+  }
   Table table({"stroke", "tool", "dabs", "on surface", "patches", "ms", "note"});
   Timer progress;
   for (std::size_t k = 0; k < script.strokes.size(); ++k) {
     const Stroke& stroke = script.strokes[k];
-    const StrokeReport r = surface.apply(stroke);
+    // A scene's stroke: its dabs over every object, its time the sum.
+    StrokeReport r;
+    for (const StrokeReport& o : scene.apply(stroke)) {
+      r.dabs = std::max(r.dabs, o.dabs);
+      r.dabs_applied += o.dabs_applied;
+      r.patches_touched += o.patches_touched;
+      r.ms += o.ms;
+      r.left_surface = r.left_surface || o.left_surface;
+      r.stretch = std::max(r.stretch, o.stretch);
+    }
     std::string note = r.left_surface ? "left the surface" : "";
     if (r.stretch >= kUndersampledStretch) {
       note += std::string(note.empty() ? "" : "; ") + "stretched " + format_fixed(r.stretch, 1) + "x";
@@ -47,40 +61,65 @@ void paint_job(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage, co
       progress.restart();
     }
   }
-  const std::string out = dir + "/surface.vtp";
-  write_vtp(to_polydata(surface.painted_surface()), out);
-  ExportModel model;
-  TextureMaps maps;
-  build_export(surface, model_level, model, maps);
-  write_texture_maps(maps, dir);
-  write_obj_model(model, maps, dir);
-  if (lod > 0 && lod < level) {
-    const std::string lod_out = dir + "/surface_lod" + std::to_string(lod) + ".vtp";
-    write_vtp(to_polydata(surface.painted_surface(lod)), lod_out);
-    std::cout << "wrote      " << lod_out << " (level " << lod << " with the normals of level " << level << ")\n";
+  std::cout << "painted    " << names << " at level " << scene.surface(0).level() << ", " << script.strokes.size()
+            << " strokes\n";
+  if (!script.strokes.empty())
+    table.print(std::cout);
+  if (dir.empty())
+    return;
+  // One object writes into DIR; each of several into DIR/<name>.
+  for (std::size_t o = 0; o < scene.size(); ++o) {
+    PaintSurface& surface = scene.surface(o);
+    const std::string out = scene.size() == 1 ? dir : dir + "/" + scene.name(o);
+    const PaintingExportReport written = export_painting(surface, model_level, out);
+    std::cout << "wrote      " << written.surface_path << ", " << out << "/model.obj (level " << model_level << ", "
+              << written.model_quads << " quads) with model.mtl and " << written.map_width << "x"
+              << written.map_height << " texture maps\n";
+    if (lod > 0 && lod < surface.level()) {
+      const std::string lod_out = out + "/surface_lod" + std::to_string(lod) + ".vtp";
+      write_vtp(to_polydata(surface.painted_surface(lod)), lod_out);
+      std::cout << "wrote      " << lod_out << " (level " << lod << " with the normals of level "
+                << surface.level() << ")\n";
+    }
   }
-  std::cout << "painted    " << mesh.name << " at level " << level << ", " << script.strokes.size()
-            << " strokes (set-up " << format_fixed(setup_ms, 1) << " ms)\n";
-  table.print(std::cout);
-  std::cout << "wrote      " << out << ", " << dir << "/model.obj (level " << model_level << ", "
-            << model.mesh.quads.size() << " quads) with model.mtl and " << maps.width << "x" << maps.height
-            << " texture maps\n";
 }
 
 int paint_command(const Argv& argv)
 {
-  Args args("paint", argv, {"--quiet"},
-            {"--strokes", "--level", "--model-level", "--lod", "-o", "--device", "--storage"});
-  args.expect_positionals(1, 1, "MESH --strokes S.json [--level L] [--model-level M] [--lod L] -o OUTDIR");
-  if (!args.has("--strokes"))
-    throw InputError("--strokes S.json is required");
+  Args args("paint", argv, {"--quiet", "--two-sided"},
+            {"--strokes", "--level", "--model-level", "--lod", "-o", "--save", "--labels", "--device", "--storage",
+             "--screenshot", "--camera", "--size"});
+  args.expect_positionals(1, 64, "MESH|PROJECT... --strokes S.json [--level L] [--model-level M] [--lod L] [--two-sided] "
+                                "[-o OUTDIR] [--save P.meshpaint] [--labels labels.json] "
+                                "[--screenshot OUT.png [--camera AZ,EL,ZOOM] [--size WxH]]");
   const std::string dir = args.value("-o");
-  if (dir.empty())
-    throw InputError("-o OUTDIR is required");
+  const std::string save = args.value("--save");
+  if (dir.empty() && save.empty())
+    throw InputError("-o OUTDIR or --save P.meshpaint is required");
+  if (!save.empty() && !is_project_path(save))
+    throw InputError("--save needs a file name ending in .meshpaint, not '" + save + "'");
+  if (!args.has("--strokes") && save.empty())
+    throw InputError("--strokes S.json is required");
   // Everything is checked before anything is painted.
-  StrokeScript script = load_stroke_script(args.value("--strokes"));
-  load_stroke_rasters(script);
-  const int level = args.integer("--level", script.level > 0 ? script.level : 3, 1, kMaxLevel);
+  StrokeScript script;
+  if (args.has("--strokes")) {
+    script = load_stroke_script(args.value("--strokes"));
+    load_stroke_rasters(script);
+  }
+  const std::vector<LabelClass> new_labels =
+    args.has("--labels") ? load_labels(args.value("--labels")) : std::vector<LabelClass>();
+  const std::vector<std::string>& paths = args.positionals();
+  if (paths.size() > 1 && !save.empty())
+    throw InputError("--save keeps one surface: give one MESH or PROJECT, not " + std::to_string(paths.size()));
+  std::vector<MeshOrProject> inputs;
+  for (const std::string& path : paths)
+    inputs.push_back(open_mesh_or_project(path));
+  const MeshOrProject& input = inputs.front();
+  const int level = input_level(args, input, script.level > 0 ? script.level : 3);
+  for (const MeshOrProject& other : inputs)
+    if (input_level(args, other, level) != level)
+      throw InputError("'" + other.path + "' is at level " + std::to_string(input_level(args, other, level)) +
+                       ", '" + input.path + "' at " + std::to_string(level) + ": a scene paints at one level");
   const int model_level = args.integer("--model-level", std::max(1, level - 2), 1, level);
   const int lod = args.integer("--lod", level, 1, level);
   for (std::size_t k = 0; k < script.strokes.size(); ++k)
@@ -88,10 +127,47 @@ int paint_command(const Argv& argv)
       throw InputError("stroke " + std::to_string(k) + ": \"edit_level\" " +
                        std::to_string(script.strokes[k].edit_level) + " is finer than the painting level " +
                        std::to_string(level));
-  const BaseMesh mesh = load_reported(args.positionals()[0]);
+  const PictureOptions picture = picture_options(args);
+  const std::string screenshot = args.value("--screenshot");
+  if (args.has("--screenshot") && lower_extension(screenshot) != ".png")
+    throw InputError("--screenshot must name a .png file, not '" + screenshot + "'");
+  if (!args.has("--screenshot") && (args.has("--camera") || args.has("--size")))
+    throw InputError("--camera and --size need --screenshot OUT.png");
   auto runtime = open_device(args);
-  paint_job(runtime, args.has("--storage") ? parse_storage(args.value("--storage")) : default_storage(runtime->info()),
-            mesh, script, level, model_level, dir, args.flag("--quiet"), lod);
+  Timer setup;
+  PaintScene scene;
+  std::set<std::string> taken; // names of the objects' output folders
+  for (const MeshOrProject& in : inputs) {
+    auto surface = open_paint_surface(runtime, chosen_storage(args, *runtime), in, level);
+    if (args.flag("--two-sided"))
+      surface->set_two_sided(true);
+    std::string name = in.mesh().name.empty() ? "object" : in.mesh().name;
+    for (int k = 2; !taken.insert(name).second; ++k)
+      name = in.mesh().name + "_" + std::to_string(k);
+    scene.add(std::move(surface), name);
+  }
+  if (!args.flag("--quiet"))
+    std::cerr << "meshpaint paint: " << (inputs.size() == 1 ? "surface" : "surfaces") << " ready in "
+              << format_fixed(setup.ms(), 1) << " ms\n";
+  paint_job(scene, script, model_level, dir, args.flag("--quiet"), lod);
+  if (!screenshot.empty()) {
+    auto all = vtkSmartPointer<vtkAppendPolyData>::New();
+    for (std::size_t o = 0; o < scene.size(); ++o)
+      all->AddInputData(to_polydata(scene.surface(o).painted_surface()));
+    all->Update();
+    render_screenshot(all->GetOutput(), picture.camera, picture.width, picture.height, screenshot);
+    std::cout << "wrote      " << screenshot << " (" << picture.width << "x" << picture.height << ")\n";
+  }
+  PaintSurface* const surface = &scene.surface(0);
+  if (save.empty())
+    return 0;
+  Project project = input.project ? *input.project : Project();
+  if (args.has("--labels"))
+    project.labels = new_labels;
+  project.history = continued_history(project.history, surface->history(), level);
+  capture_surface(*surface, project);
+  save_project(project, save);
+  std::cout << "saved      " << save << " (level " << level << ", " << project.labels.size() << " labels)\n";
   return 0;
 }
 

@@ -1,5 +1,8 @@
 #include "commands.h"
 
+#include "core/errors.h"
+#include "project/project_surface.h"
+
 #include <iostream> // for std::cerr
 
 #ifndef MESHPAINT_SOURCE_DIR
@@ -16,6 +19,41 @@ BaseMesh load_reported(const std::string& path)
   for (const std::string& line : mesh.report.lines())
     std::cerr << "meshpaint: " << path << ": repaired: " << line << "\n";
   return mesh;
+}
+
+MeshOrProject open_mesh_or_project(const std::string& path)
+{
+  MeshOrProject input;
+  input.path = path;
+  if (is_project_path(path))
+    input.project = load_project(path);
+  else
+    input.loaded = load_reported(path);
+  return input;
+}
+
+int input_level(const Args& args, const MeshOrProject& input, int fallback)
+{
+  if (!input.project)
+    return args.integer("--level", fallback, 1, kMaxLevel);
+  const int own = input.project->level;
+  if (args.has("--level") && args.integer("--level", own, 1, kMaxLevel) != own)
+    throw InputError(input.path + " is a level-" + std::to_string(own) + " project; --level " +
+                     args.value("--level") + " cannot change that");
+  return own;
+}
+
+std::unique_ptr<PaintSurface> open_paint_surface(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage,
+                                                 const MeshOrProject& input, int level)
+{
+  if (input.project)
+    return open_project_surface(runtime, *input.project, storage);
+  return std::make_unique<PaintSurface>(runtime, input.loaded, level, storage);
+}
+
+AtlasStorage chosen_storage(const Args& args, const Runtime& runtime)
+{
+  return args.has("--storage") ? parse_storage(args.value("--storage")) : default_storage(runtime.info());
 }
 
 std::string scans_dir() { return std::string(MESHPAINT_SOURCE_DIR) + "/data/scans"; }

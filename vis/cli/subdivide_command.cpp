@@ -9,6 +9,7 @@
 #include "core/timer.h"
 #include "mesh/surface_io.h"
 
+#include <algorithm>  // for std::max
 #include <filesystem> // for std::filesystem::path
 #include <iostream>   // for std::cerr
 
@@ -33,7 +34,7 @@ void write_any(const WeldedSurface& surface, const std::string& path)
 int subdivide_command(const Argv& argv)
 {
   Args args("subdivide", argv, {"--limit", "--quiet"}, {"--level", "-o", "--device", "--storage"});
-  args.expect_positionals(1, 1, "MESH --level L [--limit] -o OUT.{obj,ply,vtp}");
+  args.expect_positionals(1, 1, "MESH|PROJECT --level L [--limit] -o OUT.{obj,ply,vtp}");
   if (!args.has("--level"))
     throw InputError("--level is required (1.." + std::to_string(kMaxLevel) + ")");
   const int level = args.integer("--level", 1, 1, kMaxLevel);
@@ -43,15 +44,26 @@ int subdivide_command(const Argv& argv)
   check_surface_format(out);
 
   Timer t;
-  const BaseMesh mesh = load_reported(args.positionals()[0]);
+  const MeshOrProject input = open_mesh_or_project(args.positionals()[0]);
+  // A project's surface is its painting level's control points: refined
+  // from there, or reduced below it.
+  const int own = input.project ? input.project->level : 1;
+  if (input.project && args.flag("--limit") && level < own)
+    throw InputError("--limit needs --level " + std::to_string(own) + " or more for a level-" +
+                     std::to_string(own) + " project");
   const double load_ms = t.ms();
   auto runtime = open_device(args);
   t.restart();
-  Atlas atlas(runtime, mesh, level,
-              args.has("--storage") ? parse_storage(args.value("--storage")) : default_storage(runtime->info()));
+  Atlas atlas(runtime, input.mesh(), std::max(level, own), chosen_storage(args, *runtime));
   const double setup_ms = t.ms();
   t.restart();
-  atlas.subdivide(1, level);
+  atlas.subdivide(1, own);
+  if (input.project)
+    atlas.write_positions(own, input.project->positions);
+  if (level > own)
+    atlas.subdivide(own, level);
+  else if (level < own)
+    atlas.reduce(own, level);
   atlas.finish();
   const double kernel_ms = t.ms();
   t.restart();

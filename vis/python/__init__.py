@@ -8,7 +8,7 @@ command line; everything else is the VTK class itself.
 import vtkmodules.vtkCommonExecutionModel  # noqa: F401  (the base classes' module)
 
 from . import meshpaintVis as _wrapped
-from .meshpaintVis import vtkCatmullClarkAtlasFilter  # noqa: F401
+from .meshpaintVis import vtkCatmullClarkAtlasFilter, vtkPaintInteractorStyle, vtkSurfacePicker  # noqa: F401
 
 
 class Error(RuntimeError):
@@ -38,6 +38,32 @@ class vtkPaintSurface(_wrapped.vtkPaintSurface):
         """Redoes the last undone stroke; raises Error when there is none."""
         self._check(super().Redo())
 
+    def SaveProject(self, path):
+        """Writes the painted surface and its history as a project (.meshpaint)."""
+        self._check(super().SaveProject(str(path)))
+
+    def LoadProject(self, path):
+        """Continues from a project: it replaces the input, the level and the history."""
+        self._check(super().LoadProject(str(path)))
+
+    def ExportModel(self, directory):
+        """Writes surface.vtp, model.obj/.mtl and the PNG maps, as `meshpaint paint -o` does."""
+        self._check(super().ExportModel(str(directory)))
+
+    def GetChannel(self, name):
+        """One channel at every output vertex as a VTK array (numpy: vtk_to_numpy)."""
+        array = super().GetChannel(name)
+        if array is None:
+            raise Error(self.GetLastError())
+        return array
+
+    def SetChannel(self, name, values):
+        """Writes one channel at every output vertex from a VTK array of that shape."""
+        self._check(super().SetChannel(name, values))
+    def View(self):
+        """Opens the painting window on this surface; returns when it is closed."""
+        self._check(super().View())
+
     def Update(self, *args):
         """Paints the queued strokes; raises Error if this update fails."""
         self.GlobalWarningDisplayOff()
@@ -45,3 +71,36 @@ class vtkPaintSurface(_wrapped.vtkPaintSurface):
         super().Update(*args)
         if self.GetFailedUpdates() != failed:
             raise Error(self.GetLastError())
+
+
+class vtkPaintView(_wrapped.vtkPaintView):
+    __doc__ = _wrapped.vtkPaintView.__doc__
+
+    def _check(self, ok):
+        if not ok:
+            raise Error(self.GetLastError())
+        return ok
+
+    def LoadMesh(self, path):
+        """Builds the surface from a mesh file; raises Error when it cannot."""
+        return self._check(super().LoadMesh(path))
+
+    def SetInputData(self, polydata):
+        """Builds the surface from the polygons of a vtkPolyData; raises Error when it cannot."""
+        return self._check(super().SetInputData(polydata))
+
+    def ApplyStrokes(self, json_text):
+        """Applies a stroke script's strokes; raises Error for a bad script."""
+        return self._check(super().ApplyStrokes(json_text))
+
+    def Initialize(self):
+        """Creates the window (not started); raises Error without a surface."""
+        return self._check(super().Initialize())
+
+    def Save(self):
+        """Writes strokes.json and surface.vtp into SaveDirectory; raises Error when it cannot."""
+        return self._check(super().Save())
+
+    def Export(self):
+        """Writes the textured model into SaveDirectory; raises Error when it cannot."""
+        return self._check(super().Export())

@@ -1,0 +1,29 @@
+// Polygons with scalar properties per vertex and per face, as PLY.
+#pragma once
+
+#include "core/vec.h"
+
+#include <string> // for std::string
+#include <vector> // for std::vector
+
+namespace meshpaint {
+
+//! One scalar property, a value per vertex (or per face).
+struct PlyProperty
+{
+  std::string name;
+  bool integer = false;       //!< written as int32, else float32
+  std::vector<double> values; //!< #vertices (#faces)
+};
+
+//! Writes points, polygons and their properties as binary little-endian PLY
+//! through OpenMesh (each property a persistent custom property), keeping
+//! the vertex and face order. Atomic.
+//! \throw InputError when OpenMesh cannot keep a face (it would join a
+//! non-manifold edge) or a property has the wrong count; IOError when
+//! writing fails.
+void write_property_ply(const std::vector<Vec3>& points, const std::vector<std::vector<int>>& faces,
+                        const std::vector<PlyProperty>& vertex_properties,
+                        const std::vector<PlyProperty>& face_properties, const std::string& path);
+
+} // namespace meshpaint

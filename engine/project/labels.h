@@ -1,0 +1,31 @@
+// Named label classes: what the integers of the label channel stand for.
+#pragma once
+
+#include "core/vec.h"
+
+#include <string> // for std::string
+#include <vector> // for std::vector
+
+namespace meshpaint {
+
+//! One class of the label channel.
+struct LabelClass
+{
+  int id = 0;       //!< the value painted into the label channel
+  std::string name; //!< unique, not empty
+  Vec3 colour{};    //!< rgb, 0..1
+};
+
+//! Largest id: label values are stored as floats, exact up to 2^24.
+constexpr int kMaxLabelId = 1 << 24;
+
+//! Parses a labels file: a JSON array of {"id": int, "name": text,
+//! "colour": [r, g, b]} (0..1), ids and names unique.
+//! \throw InputError naming the entry (0-based) and key.
+std::vector<LabelClass> parse_labels(const std::string& json_text);
+
+//! Reads and parses a labels file; errors start with the path.
+//! \throw IOError when the file cannot be read; InputError as above.
+std::vector<LabelClass> load_labels(const std::string& path);
+
+} // namespace meshpaint

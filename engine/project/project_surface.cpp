@@ -1,0 +1,61 @@
+#include "project/project_surface.h"
+
+#include "atlas/weld.h"
+#include "core/errors.h"
+
+#include <utility> // for std::move
+
+namespace meshpaint {
+
+std::unique_ptr<PaintSurface> open_project_surface(std::shared_ptr<Runtime> runtime, const Project& project,
+                                                   AtlasStorage storage)
+{
+  auto surface = std::make_unique<PaintSurface>(std::move(runtime), project.mesh, project.level, storage);
+  Atlas& atlas = surface->atlas();
+  // Saved meshes are already in spatial order, which reordering keeps.
+  const std::vector<int>& order = atlas.base_face_order();
+  for (std::size_t f = 0; f < order.size(); ++f)
+    if (order[f] != int(f))
+      throw InputError("project '" + project.mesh.name + "': its base mesh is not in atlas order");
+  const std::size_t texels = atlas.layout(project.level).texels();
+  if (project.positions.size() != texels)
+    throw InputError("project '" + project.mesh.name + "': " + std::to_string(project.positions.size()) +
+                     " texels do not fit its level-" + std::to_string(project.level) + " atlas of " +
+                     std::to_string(texels));
+  atlas.write_positions(project.level, project.positions);
+  surface->geometry_changed();
+  surface->write_channels(project.channels);
+  return surface;
+}
+
+WeldedSurface reference_surface(std::shared_ptr<Runtime> runtime, const Project& project, AtlasStorage storage)
+{
+  Atlas atlas(std::move(runtime), project.mesh, project.level, storage);
+  atlas.subdivide(1, project.level);
+  if (!project.reference.empty())
+    atlas.write_positions(project.level, project.reference);
+  return level_surface(atlas, project.level, true);
+}
+
+StrokeScript stroke_history(const std::string& history)
+{
+  return history.empty() ? StrokeScript() : parse_stroke_script(history);
+}
+
+std::string continued_history(const std::string& previous, const std::vector<Stroke>& applied, int level)
+{
+  StrokeScript history = stroke_history(previous);
+  history.level = level;
+  history.strokes.insert(history.strokes.end(), applied.begin(), applied.end());
+  return stroke_script_json(history);
+}
+
+void capture_surface(PaintSurface& surface, Project& p)
+{
+  p.mesh = surface.atlas().base_mesh();
+  p.level = surface.level();
+  p.positions = surface.atlas().read_positions(p.level);
+  p.channels = surface.read_channels();
+}
+
+} // namespace meshpaint

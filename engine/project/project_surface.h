@@ -1,0 +1,37 @@
+// Between projects and painting surfaces: restoring one from the other.
+#pragma once
+
+#include "paint/paint_surface.h"
+#include "project/project.h"
+
+#include <memory> // for std::shared_ptr, std::unique_ptr
+
+namespace meshpaint {
+
+//! A painting surface in the project's state: the atlas rebuilt from the
+//! base mesh (the same spatial order, so the same patches), the finest
+//! positions and channels written back bit for bit, the limit recomputed.
+//! \throw InputError when the project's layers do not fit the atlas its mesh
+//! makes; ResourceError and DeviceError as PaintSurface.
+std::unique_ptr<PaintSurface> open_project_surface(std::shared_ptr<Runtime> runtime, const Project& project,
+                                                   AtlasStorage storage);
+
+//! The limit surface the project started from (its reference positions,
+//! else the base mesh's subdivision), welded like PaintSurface's painted
+//! surface: same vertices, same quads.
+WeldedSurface reference_surface(std::shared_ptr<Runtime> runtime, const Project& project, AtlasStorage storage);
+
+//! A project's stroke history as a script ("" is an empty one).
+//! \throw InputError when it is not a valid stroke script.
+StrokeScript stroke_history(const std::string& history);
+
+//! A stroke history (stroke-script JSON, or "" for none) continued by
+//! `applied`, as stroke-script JSON at `level`.
+//! \throw InputError when `previous` is not a valid stroke script.
+std::string continued_history(const std::string& previous, const std::vector<Stroke>& applied, int level);
+
+//! Fills the project's mesh, level, positions and channels from the
+//! surface; labels, history, reference and scan stay as they are.
+void capture_surface(PaintSurface& surface, Project& project);
+
+} // namespace meshpaint

@@ -1,0 +1,71 @@
+// Fitting an atlas to a scan: the finest level's limit surface moved onto
+// the scanned surface, and how far the two stay apart.
+#pragma once
+
+#include "atlas/atlas.h"
+#include "mesh/base_mesh.h"
+
+#include <array>      // for std::array
+#include <functional> // for std::function
+#include <memory>     // for std::unique_ptr
+#include <string>     // for std::string
+#include <vector>     // for std::vector
+
+namespace meshpaint {
+
+//! Closest points and ray hits on a triangle surface. The engine defines
+//! the question; vis/ answers it with VTK's locators.
+class SurfaceQuery
+{
+public:
+  virtual ~SurfaceQuery() = default;
+  //! The point of the surface closest to `p`.
+  virtual Vec3 closest_point(const Vec3& p) const = 0;
+  //! The first point where the segment from `a` to `b` meets the surface.
+  virtual bool first_hit(const Vec3& a, const Vec3& b, Vec3& hit) const = 0;
+};
+
+//! Builds a query over triangles (indices into points).
+using SurfaceQueryFactory = std::function<std::unique_ptr<SurfaceQuery>(
+  const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles)>;
+
+//! Distances between two surfaces in one direction, world units.
+struct FitError
+{
+  double rms = 0;
+  double max = 0;
+};
+
+struct FitReport
+{
+  FitError scan_to_surface;   //!< from every scan vertex to the fitted limit surface
+  FitError surface_to_scan;   //!< from every welded finest vertex to the scan
+  double diagonal = 0;        //!< of the scan's bounding box
+  std::size_t points = 0;     //!< welded finest-level vertices fitted
+  std::size_t ray_misses = 0; //!< of those, in the last pass, moved to the closest point instead
+  std::vector<int> folded;    //!< patches with a finest quad facing against the limit normal
+  std::vector<int> stretched; //!< patches whose area grew or shrank more than 4 times
+};
+
+struct FitOptions
+{
+  int passes = 2; //!< limit evaluations and corrections
+  //! Receives one line per step (progress), may be empty.
+  std::function<void(const std::string&)> progress;
+};
+
+//! The scan's faces fanned into triangles.
+std::vector<std::array<int, 3>> triangles_of(const BaseMesh& mesh);
+
+//! Fits the atlas's finest level to the scan. Each pass takes every welded
+//! finest vertex's limit position P and normal N, looks for the scan along
+//! the normal line through P (the closer hit of the two directions, within
+//! four times the distance to the closest scan point), takes the closest
+//! scan point where the line misses, and moves the control points by the
+//! difference, so that the limit surface converges onto the scan. Then it
+//! measures the distances both ways and flags folded and stretched patches.
+//! The atlas's coarser levels are left as subdivided.
+FitReport fit_atlas(Atlas& atlas, const BaseMesh& scan, const SurfaceQueryFactory& make_query,
+                    const FitOptions& options = FitOptions());
+
+} // namespace meshpaint

@@ -1,0 +1,279 @@
+// Brush spaces: where a dab measures its distance (object, tangent, screen,
+// parameter), the back-face policy, and screen strokes ending at silhouettes.
+
+#include "paint/paint_surface.h"
+#include "support/runtime.h"
+#include "support/shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>   // for std::sqrt, std::sin, std::cos
+#include <cstdio>  // for std::printf
+#include <cstring> // for std::memcmp
+
+namespace meshpaint {
+namespace {
+
+Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+float dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3 cross(const Vec3& a, const Vec3& b)
+{
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+Vec3 unit(const Vec3& a)
+{
+  const float l = std::sqrt(dot(a, a));
+  return {a[0] / l, a[1] / l, a[2] / l};
+}
+Vec3 xyz(const Float4& t) { return {t[0], t[1], t[2]}; }
+
+Stroke red_dab(const Vec3& at, float radius, int space)
+{
+  Stroke s;
+  s.points = {at};
+  s.radius = radius;
+  s.falloff = FALLOFF_CONSTANT;
+  s.space = space;
+  s.value[CHANNEL_DIFFUSE] = {1.f, 0.f, 0.f, 1.f};
+  s.alpha[CHANNEL_DIFFUSE] = 1.f;
+  return s;
+}
+
+bool red(const Float4& d) { return d[0] == 1.f && d[1] == 0.f; }
+
+//! Checks that exactly the texels whose `distance` is below 1 - margin are
+//! painted, none above 1 + margin; returns how many are painted.
+template <typename F>
+std::size_t expect_footprint(PaintSurface& surface, F distance, double margin = 0.02)
+{
+  const std::vector<Float4> pos = surface.atlas().read_limit_positions();
+  const std::vector<Float4> diffuse = surface.read_channels().diffuse;
+  std::size_t painted = 0, wrong = 0;
+  for (std::size_t t = 0; t < pos.size(); ++t) {
+    const double d = distance(t, xyz(pos[t]));
+    if (red(diffuse[t]))
+      ++painted;
+    if ((d < 1 - margin && !red(diffuse[t])) || (d > 1 + margin && red(diffuse[t])))
+      ++wrong;
+  }
+  EXPECT_EQ(wrong, 0u) << painted << " painted";
+  return painted;
+}
+
+TEST(BrushSpace, ObjectIsABallAndTangentACylinderOnASphere)
+{
+  const Vec3 top{0.f, 0.f, 1.f};
+  const float r = 0.8f;
+  for (const int space : {SPACE_OBJECT, SPACE_TANGENT}) {
+    SCOPED_TRACE(space);
+    PaintSurface surface(test::runtime(), test::noisy_sphere(4, 0.f), 4, AtlasStorage::Buffer);
+    surface.apply(red_dab(top, r, space));
+    // The brush centre: the surface point closest to `top`, on the z axis.
+    Vec3 c = top;
+    for (const Float4& t : surface.atlas().read_limit_positions())
+      if (dot(sub(xyz(t), top), sub(xyz(t), top)) < dot(sub(c, top), sub(c, top)) || c == top)
+        c = xyz(t);
+    const std::size_t n = expect_footprint(surface, [&](std::size_t, const Vec3& x) {
+      if (space == SPACE_OBJECT)
+        return std::sqrt(double(dot(sub(x, c), sub(x, c)))) / r;
+      return x[2] < 0.f ? 10.0 : std::sqrt(double(x[0]) * x[0] + double(x[1]) * x[1]) / r;
+    });
+    EXPECT_GT(n, 100u) << "space " << space;
+  }
+}
+
+//! A camera 20 units from (4, 4, 0), looking at it 60 degrees off the normal
+//! of the z = 0 plane.
+Camera oblique_camera()
+{
+  Camera c;
+  const double a = 60.0 * M_PI / 180.0;
+  c.focal_point = {4.f, 4.f, 0.f};
+  c.position = {4.f, float(4.0 - 20.0 * std::sin(a)), float(20.0 * std::cos(a))};
+  c.view_up = {0.f, 0.f, 1.f};
+  c.view_angle = 30.f;
+  return c;
+}
+
+TEST(BrushSpace, ScreenIsTheDiscSeenFromTheCamera)
+{
+  PaintSurface surface(test::runtime(), test::flat_grid(8), 4, AtlasStorage::Buffer);
+  const Vec3 centre{4.f, 4.f, 0.f};
+  const float r = 0.8f;
+  Stroke s = red_dab(centre, r, SPACE_SCREEN);
+  s.camera = oblique_camera();
+  s.has_camera = true;
+  surface.apply(s);
+  // The same projection as the kernel: screen offset at the centre's depth.
+  const Vec3 eye = s.camera.position, dir = unit(sub(s.camera.focal_point, eye)),
+             right = unit(cross(dir, s.camera.view_up)), up = cross(right, dir);
+  const auto screen = [&](const Vec3& x, float& z) {
+    const Vec3 v = sub(x, eye);
+    z = dot(v, dir);
+    return std::array<float, 2>{dot(v, right) / z, dot(v, up) / z};
+  };
+  float zc;
+  const auto sc = screen(centre, zc);
+  expect_footprint(surface, [&](std::size_t, const Vec3& x) {
+    float z;
+    const auto s2 = screen(x, z);
+    return std::hypot(double(s2[0] - sc[0]), double(s2[1] - sc[1])) * zc / r;
+  });
+  // Foreshortened by cos 60: the footprint reaches twice as far along y.
+  const std::vector<Float4> pos = surface.atlas().read_limit_positions();
+  const std::vector<Float4> diffuse = surface.read_channels().diffuse;
+  float far_y = 0.f, far_x = 0.f;
+  for (std::size_t t = 0; t < pos.size(); ++t)
+    if (red(diffuse[t])) {
+      far_y = std::max(far_y, std::fabs(pos[t][1] - 4.f));
+      far_x = std::max(far_x, std::fabs(pos[t][0] - 4.f));
+    }
+  EXPECT_NEAR(far_x, r, 0.1 * r);
+  EXPECT_NEAR(far_y, 2 * r, 0.15 * r);
+}
+
+TEST(BrushSpace, ParameterIsASquareOfTexelsInThePatchUnderTheCentre)
+{
+  PaintSurface surface(test::runtime(), test::flat_grid(8), 4, AtlasStorage::Buffer);
+  // Level 4: patches of 0.5 x 0.5 with 8 x 8 faces, texels 0.0625 apart; the
+  // centre on a texel in the middle of a patch.
+  surface.apply(red_dab({4.25f, 4.25f, 0.f}, 0.15f, SPACE_PARAMETER));
+  const LevelLayout l = surface.atlas().layout(4);
+  const std::vector<Float4> diffuse = surface.read_channels().diffuse;
+  const std::vector<Float4> pos = surface.atlas().read_limit_positions();
+  std::size_t painted = 0;
+  int patch = -1;
+  for (int p = 0; p < l.patches; ++p)
+    for (int j = 0; j < l.tile; ++j)
+      for (int i = 0; i < l.tile; ++i)
+        if (red(diffuse[l.index(p, i, j)])) {
+          ++painted;
+          EXPECT_TRUE(patch < 0 || patch == p);
+          patch = p;
+          const Float4& x = pos[l.index(p, i, j)];
+          EXPECT_LE(std::max(std::fabs(x[0] - 4.25f), std::fabs(x[1] - 4.25f)), 0.15f);
+        }
+  EXPECT_EQ(painted, 25u); // 5 x 5 texels: a square, not a disc
+}
+
+TEST(BrushSpace, BackFacesAreSkippedUnlessAsked)
+{
+  Camera above;
+  above.position = {0.f, 0.f, 10.f};
+  above.view_up = {0.f, 1.f, 0.f};
+  for (const bool backfaces : {false, true}) {
+    PaintSurface surface(test::runtime(), test::noisy_sphere(4, 0.f), 3, AtlasStorage::Buffer);
+    Stroke s = red_dab({0.f, 0.f, 1.f}, 1.2f, SPACE_SCREEN);
+    s.camera = above;
+    s.has_camera = true;
+    s.paint_backfaces = backfaces;
+    surface.apply(s);
+    const std::vector<Float4> pos = surface.atlas().read_limit_positions();
+    const std::vector<Float4> diffuse = surface.read_channels().diffuse;
+    std::size_t front = 0, back = 0;
+    for (std::size_t t = 0; t < pos.size(); ++t)
+      if (red(diffuse[t]))
+        ++(pos[t][2] > 0.05f ? front : pos[t][2] < -0.05f ? back : front);
+    EXPECT_GT(front, 500u);
+    if (backfaces)
+      EXPECT_GT(back, 500u);
+    else
+      EXPECT_EQ(back, 0u);
+  }
+}
+
+TEST(BrushSpace, ScreenStrokesEndAtTheSilhouette)
+{
+  PaintSurface surface(test::runtime(), test::noisy_sphere(4, 0.f), 3, AtlasStorage::Buffer);
+  Stroke s = red_dab({0.f, 0.f, 1.f}, 0.1f, SPACE_SCREEN);
+  s.camera.position = {0.f, 0.f, 10.f};
+  s.has_camera = true;
+  for (int k = 1; k <= 12; ++k) { // over the side of the sphere and on to its back
+    const double a = k * 15.0 * M_PI / 180.0;
+    s.points.push_back({float(std::sin(a)), 0.f, float(std::cos(a))});
+  }
+  const StrokeReport report = surface.apply(s);
+  EXPECT_TRUE(report.left_surface);
+  const std::vector<Float4> pos = surface.atlas().read_limit_positions();
+  const std::vector<Float4> diffuse = surface.read_channels().diffuse;
+  for (std::size_t t = 0; t < pos.size(); ++t)
+    if (red(diffuse[t]))
+      ASSERT_GT(pos[t][2], -0.01f);
+  // In object space the same path goes on round the back.
+  PaintSurface object(test::runtime(), test::noisy_sphere(4, 0.f), 3, AtlasStorage::Buffer);
+  s.space = SPACE_OBJECT;
+  s.has_camera = false;
+  EXPECT_FALSE(object.apply(s).left_surface);
+}
+
+//! A roof: the plane z = 0 for y in [0, 4] (facing +z) and, from its edge
+//! y = 4, a plane rising at 60 degrees (its normal 60 degrees from +z), both
+//! 8 units wide in unit quads.
+BaseMesh roof()
+{
+  std::vector<Vec3> pts;
+  const double a = 60.0 * M_PI / 180.0;
+  for (int v = 0; v <= 8; ++v)
+    for (int x = 0; x <= 8; ++x)
+      pts.push_back(v <= 4 ? Vec3{float(x), float(v), 0.f}
+                           : Vec3{float(x), float(4 + (v - 4) * std::cos(a)), float((v - 4) * std::sin(a))});
+  std::vector<std::vector<int>> faces;
+  for (int v = 0; v < 8; ++v)
+    for (int x = 0; x < 8; ++x)
+      faces.push_back({v * 9 + x, v * 9 + x + 1, (v + 1) * 9 + x + 1, (v + 1) * 9 + x});
+  return make_base_mesh(pts, faces, "roof");
+}
+
+TEST(BrushSpace, SprayDensityFallsWithTheCosineOfTheView)
+{
+  // Seen from straight above, a spray disc over the ridge: half of it on
+  // the flat part, half on the part at 60 degrees, which has twice the area
+  // under the same half disc. Each droplet adds the same displacement over
+  // the same surface area, so the displacement per area is the density.
+  PaintSurface surface(test::runtime(), roof(), 4, AtlasStorage::Buffer);
+  Stroke s;
+  s.points = {{4.f, 4.f, 0.f}};
+  s.radius = 1.5f;
+  s.falloff = FALLOFF_CONSTANT;
+  s.space = SPACE_SCREEN;
+  s.has_camera = true;
+  s.camera.position = {4.f, 4.f, 200.f};
+  s.camera.focal_point = {4.f, 4.f, 0.f};
+  s.camera.view_angle = 2.f;
+  s.op = PAINT_OP_ADD;
+  s.value[CHANNEL_DISPLACEMENT] = {1e-3f, 1e-3f, 1e-3f, 1.f};
+  s.alpha[CHANNEL_DISPLACEMENT] = 1.f;
+  s.spray_drops = 400;
+  s.spray_size = 0.08f;
+  for (unsigned seed = 0; seed < 5; ++seed) {
+    s.spray_seed = seed;
+    surface.apply(s);
+  }
+  const std::vector<Float4> pos = surface.atlas().read_limit_positions();
+  const std::vector<Float4> material = surface.read_channels().material;
+  // Texels lie evenly over both parts (unit quads): per part, the sum of the
+  // displacement over the texels under the disc on the screen.
+  double sum[2] = {0, 0};
+  std::size_t under[2] = {0, 0};
+  for (std::size_t t = 0; t < pos.size(); ++t) {
+    const int part = pos[t][1] > 4.f + 1e-4f ? 1 : 0;
+    sum[part] += material[t][1];
+    if (std::hypot(pos[t][0] - 4.0, pos[t][1] - 4.0) <= s.radius)
+      ++under[part];
+  }
+  ASSERT_GT(sum[0], 0.0);
+  const double ratio = (sum[1] / double(under[1])) / (sum[0] / double(under[0]));
+  std::printf("spray density, 60-degree part / face-on part: %.3f (cos 60 = 0.5)\n", ratio);
+  EXPECT_NEAR(ratio, 0.5, 0.15 * 0.5);
+  // The same seed gives the same droplets.
+  PaintSurface again(test::runtime(), roof(), 4, AtlasStorage::Buffer);
+  for (unsigned seed = 0; seed < 5; ++seed) {
+    s.spray_seed = seed;
+    again.apply(s);
+  }
+  const std::vector<Float4> repeat = again.read_channels().material;
+  EXPECT_EQ(std::memcmp(repeat.data(), material.data(), material.size() * sizeof(Float4)), 0);
+}
+
+} // namespace
+} // namespace meshpaint

@@ -1,0 +1,168 @@
+#include "BrushSettings.h"
+
+#include "core/format.h" // for meshpaint::format_fixed
+
+#include <nlohmann/json.hpp> // for nlohmann::json
+
+#include <algorithm> // for std::clamp
+#include <array>     // for std::array
+#include <cmath>     // for std::round
+#include <sstream>   // for std::ostringstream
+
+namespace meshpaint {
+namespace {
+
+const std::array<const char*, 9> kTools = {"paint", "smooth", "blur", "sculpt", "inflate", "flatten", "grab",
+                                           "smear", "label"};
+const std::array<const char*, 6> kChannels = {"diffuse", "specular", "roughness", "displacement", "mask", "material"};
+const std::array<const char*, 4> kFalloffs = {"constant", "linear", "smoothstep", "gaussian"};
+const std::array<const char*, 5> kOps = {"copy", "over", "max", "add", "subtract"};
+// Swatches 0..9 for the colour channels.
+const std::array<std::array<double, 3>, 10> kPalette = {{{0.05, 0.05, 0.05}, {0.85, 0.1, 0.1}, {0.95, 0.55, 0.1},
+                                                         {0.95, 0.9, 0.2}, {0.2, 0.7, 0.2}, {0.1, 0.6, 0.7},
+                                                         {0.15, 0.25, 0.85}, {0.55, 0.2, 0.75}, {0.6, 0.4, 0.25},
+                                                         {0.95, 0.95, 0.95}}};
+
+template <typename A>
+int cycle(int v, const A& list, bool back)
+{
+  const int n = int(list.size());
+  return (v + (back ? n - 1 : 1)) % n;
+}
+
+bool is_paint(const std::string& tool) { return tool == "paint"; }
+
+//! Tools that move the surface and so may work at a coarser level.
+bool moves(const std::string& tool)
+{
+  return tool == "smooth" || tool == "sculpt" || tool == "inflate" || tool == "flatten" || tool == "grab";
+}
+
+} // namespace
+
+BrushSettings::BrushSettings(double size, int level)
+  : size_(size > 0 ? size : 1.0), radius_(0.03 * size_), level_(level), edit_level_(level)
+{
+}
+
+bool BrushSettings::coarse_edit() const
+{
+  return moves(kTools[std::size_t(tool_)]) && edit_level_ < level_;
+}
+
+bool BrushSettings::handle_key(const std::string& key, bool shift)
+{
+  if (key == "t" || key == "T")
+    tool_ = cycle(tool_, kTools, shift || key == "T");
+  else if (key == "c" || key == "C")
+    channel_ = cycle(channel_, kChannels, shift || key == "C");
+  else if (key.size() == 1 && key[0] >= '0' && key[0] <= '9')
+    swatch_ = key[0] - '0';
+  else if (key == "bracketright")
+    radius_ *= 1.25;
+  else if (key == "bracketleft")
+    radius_ /= 1.25;
+  else if (key == "plus" || key == "equal" || key == "KP_Add")
+    strength_ = std::clamp(strength_ + 0.1, 0.1, 1.0);
+  else if (key == "minus" || key == "KP_Subtract")
+    strength_ = std::clamp(strength_ - 0.1, 0.1, 1.0);
+  else if (key == "f" || key == "F")
+    falloff_ = cycle(falloff_, kFalloffs, shift || key == "F");
+  else if (key == "o" || key == "O")
+    op_ = cycle(op_, kOps, shift || key == "O");
+  else if (key == "m" || key == "M")
+    mirror_ = mirror_ == 2 ? -1 : mirror_ + 1;
+  else if (key == "i" || key == "I")
+    inwards_ = !inwards_;
+  else if (key == "l" && !shift)
+    edit_level_ = std::max(1, edit_level_ - 1);
+  else if (key == "L" || (key == "l" && shift))
+    edit_level_ = std::min(level_, edit_level_ + 1);
+  else
+    return false;
+  // Keep the strength on the grid of its steps, so what is shown is what is painted.
+  strength_ = std::round(strength_ * 10.0) / 10.0;
+  return true;
+}
+
+std::string BrushSettings::stroke_json(const std::vector<Vec3>& points) const
+{
+  using nlohmann::json;
+  const std::string tool = kTools[std::size_t(tool_)];
+  json s = {{"tool", tool}, {"radius", radius_}, {"strength", strength_}, {"falloff", kFalloffs[std::size_t(falloff_)]}};
+  json path = json::array();
+  for (const Vec3& p : points)
+    path.push_back({p[0], p[1], p[2]});
+  s["points"] = path;
+  if (mirror_ >= 0)
+    s["mirror"] = std::string(1, char('x' + mirror_));
+  const double level = swatch_ / 9.0;
+  if (is_paint(tool)) {
+    const auto& rgb = kPalette[std::size_t(swatch_)];
+    const std::string channel = kChannels[std::size_t(channel_)];
+    json channels;
+    if (channel == "diffuse" || channel == "specular")
+      channels[channel] = {rgb[0], rgb[1], rgb[2]};
+    else if (channel == "displacement")
+      channels[channel] = (swatch_ - 5) * 0.004 * size_; // 5: the unpainted height
+    else if (channel == "material") // a coat: colour, a matching specular, and the swatch's roughness
+      channels = {{"diffuse", {rgb[0], rgb[1], rgb[2]}}, {"specular", {0.5, 0.5, 0.5}}, {"roughness", 0.3}};
+    else
+      channels[channel] = level;
+    s["channels"] = channels;
+    s["op"] = kOps[std::size_t(op_)];
+  } else if (tool == "label") {
+    s["channels"] = {{"label", swatch_}};
+    s["op"] = "copy";
+  } else if (tool == "sculpt" || tool == "inflate") {
+    s["amount"] = (inwards_ ? -0.1 : 0.1) * radius_;
+  } else if (tool == "flatten") {
+    s["amount"] = 0.5;
+  }
+  if (tool == "grab")
+    s.erase("mirror");
+  if (coarse_edit())
+    s["edit_level"] = edit_level_;
+  return s.dump();
+}
+
+Stroke BrushSettings::stroke(const std::vector<Vec3>& points) const
+{
+  StrokeScript script = parse_stroke_script("{\"strokes\": [" + stroke_json(points) + "]}");
+  return std::move(script.strokes.front());
+}
+
+std::string BrushSettings::describe() const
+{
+  const std::string tool = kTools[std::size_t(tool_)];
+  std::ostringstream out;
+  out << "tool " << tool;
+  if (is_paint(tool))
+    out << "   channel " << kChannels[std::size_t(channel_)] << "   swatch " << swatch_ << "   op "
+        << kOps[std::size_t(op_)];
+  else if (tool == "label")
+    out << "   label " << swatch_;
+  else if (tool == "sculpt" || tool == "inflate")
+    out << (inwards_ ? "   inwards" : "   outwards");
+  if (moves(tool))
+    out << "   edit level " << edit_level_ << (edit_level_ < level_ ? " (coarse)" : "");
+  out << "\nradius " << format_fixed(radius_, 4) << "   strength " << format_fixed(strength_, 1) << "   falloff "
+      << kFalloffs[std::size_t(falloff_)] << "   mirror " << (mirror_ < 0 ? std::string("off") : std::string(1, char('x' + mirror_)));
+  return out.str();
+}
+
+std::string BrushSettings::key_help()
+{
+  return "t / T        next / previous tool (paint smooth blur sculpt inflate flatten grab smear label)\n"
+         "c / C        next / previous channel (diffuse specular roughness displacement mask material)\n"
+         "0 .. 9       swatch: colour, value, height or label id\n"
+         "[ / ]        smaller / larger brush\n"
+         "- / +        less / more strength\n"
+         "f            falloff (constant linear smoothstep gaussian)\n"
+         "o            op (copy over max add subtract)\n"
+         "m            mirror (off x y z)\n"
+         "i            sculpt and inflate: outwards / inwards\n"
+         "l / L        geometry tools: edit a coarser / finer level";
+}
+
+} // namespace meshpaint

@@ -1,0 +1,257 @@
+#include "ScanTransfer.h"
+
+#include "SurfaceConversion.h" // for meshpaint::to_polydata
+
+#include "core/errors.h"     // for meshpaint::IOError, InputError
+#include "core/format.h"     // for meshpaint::lower_extension
+#include "mesh/base_mesh.h"  // for meshpaint::load_mesh
+#include "mesh/property_ply.h" // for meshpaint::write_property_ply
+
+#include <vtkAlgorithm.h>         // for vtkAlgorithm
+#include <vtkCellData.h>          // for vtkCellData
+#include <vtkIdList.h>            // for vtkIdList
+#include <vtkCellArray.h>         // for vtkCellArray
+#include <vtkFloatArray.h>        // for vtkFloatArray
+#include <vtkGenericCell.h>       // for vtkGenericCell
+#include <vtkIntArray.h>          // for vtkIntArray
+#include <vtkOBJReader.h>         // for vtkOBJReader
+#include <vtkPLYReader.h>         // for vtkPLYReader
+#include <vtkPointData.h>         // for vtkPointData
+#include <vtkPoints.h>            // for vtkPoints
+#include <vtkSTLReader.h>         // for vtkSTLReader
+#include <vtkStaticCellLocator.h> // for vtkStaticCellLocator
+#include <vtkXMLPolyDataReader.h> // for vtkXMLPolyDataReader
+
+#include <algorithm>  // for std::find, std::max_element
+#include <cmath>      // for std::sqrt
+#include <filesystem> // for std::filesystem::is_regular_file
+
+namespace meshpaint {
+namespace {
+
+//! Points and polygons in the mesh's own order.
+vtkSmartPointer<vtkPolyData> polygons_of(const BaseMesh& mesh)
+{
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(vtkIdType(mesh.vertex_count()));
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
+    points->SetPoint(vtkIdType(v), mesh.points[v].data());
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    cells->InsertNextCell(mesh.face_sizes[f]);
+    for (int k = 0; k < mesh.face_sizes[f]; ++k)
+      cells->InsertCellPoint(mesh.face_vertices[std::size_t(mesh.face_offsets[f] + k)]);
+  }
+  poly->SetPoints(points);
+  poly->SetPolys(cells);
+  return poly;
+}
+
+//! The quads split into two triangles each, (0, 1, 2) and (0, 2, 3):
+//! closest points on them are exact, and triangle t lies in quad t / 2.
+vtkSmartPointer<vtkPolyData> triangles_of(const WeldedSurface& s)
+{
+  WeldedSurface plain;
+  plain.points = s.points;
+  vtkSmartPointer<vtkPolyData> poly = to_polydata(plain);
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->AllocateExact(vtkIdType(2 * s.quads.size()), vtkIdType(6 * s.quads.size()));
+  for (const auto& q : s.quads) {
+    const vtkIdType a[3] = {q[0], q[1], q[2]}, b[3] = {q[0], q[2], q[3]};
+    cells->InsertNextCell(3, a);
+    cells->InsertNextCell(3, b);
+  }
+  poly->SetPolys(cells);
+  return poly;
+}
+
+vtkSmartPointer<vtkFloatArray> float_array(const char* name, int components, vtkIdType tuples)
+{
+  auto a = vtkSmartPointer<vtkFloatArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(components);
+  a->SetNumberOfTuples(tuples);
+  return a;
+}
+
+//! One PLY property per component of every array of `data`.
+std::vector<PlyProperty> component_properties(vtkDataSetAttributes* data)
+{
+  std::vector<PlyProperty> out;
+  for (int a = 0; a < data->GetNumberOfArrays(); ++a) {
+    vtkDataArray* array = data->GetArray(a);
+    if (!array)
+      continue; // string and other non-numeric arrays have no PLY type
+    std::string name = array->GetName() ? array->GetName() : "array" + std::to_string(a);
+    for (char& c : name)
+      if (c == ' ')
+        c = '_';
+    const int k = array->GetNumberOfComponents();
+    const bool colour = name == "diffuse" || name == "specular";
+    for (int c = 0; c < k; ++c) {
+      PlyProperty p;
+      p.name = k == 1 ? name
+               : k == 3 ? name + "_" + (colour ? "rgb" : "xyz")[c]
+                        : name + "_" + std::to_string(c);
+      p.integer = array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE;
+      p.values.resize(std::size_t(array->GetNumberOfTuples()));
+      for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
+        p.values[std::size_t(t)] = array->GetComponent(t, c);
+      out.push_back(std::move(p));
+    }
+  }
+  return out;
+}
+
+} // namespace
+
+void write_scan_ply(vtkPolyData* scan, const std::string& path)
+{
+  const vtkIdType others = scan->GetNumberOfVerts() + scan->GetNumberOfLines() + scan->GetNumberOfStrips();
+  if (others > 0)
+    throw InputError("cannot write '" + path + "': the scan has " + std::to_string(others) +
+                     " vertex, line or strip cells, which PLY holds only as polygons; write .vtp instead");
+  std::vector<Vec3> points(std::size_t(scan->GetNumberOfPoints()));
+  for (vtkIdType v = 0; v < scan->GetNumberOfPoints(); ++v) {
+    double x[3];
+    scan->GetPoint(v, x);
+    points[std::size_t(v)] = {float(x[0]), float(x[1]), float(x[2])};
+  }
+  std::vector<std::vector<int>> faces(std::size_t(scan->GetNumberOfPolys()));
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  for (vtkIdType f = 0; f < scan->GetNumberOfPolys(); ++f) {
+    scan->GetCellPoints(f, ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      faces[std::size_t(f)].push_back(int(ids->GetId(k)));
+  }
+  write_property_ply(points, faces, component_properties(scan->GetPointData()),
+                     component_properties(scan->GetCellData()), path);
+}
+
+const std::vector<std::string>& scan_extensions()
+{
+  static const std::vector<std::string> exts = {".vtp", ".ply", ".obj", ".stl", ".off"};
+  return exts;
+}
+
+vtkSmartPointer<vtkPolyData> read_scan(const std::string& path)
+{
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw IOError("cannot open '" + path + "': no such file");
+  const std::string ext = lower_extension(path);
+  const auto& exts = scan_extensions();
+  if (std::find(exts.begin(), exts.end(), ext) == exts.end())
+    throw InputError("cannot read scan '" + path + "': unknown format '" + ext + "' (.vtp .ply .obj .stl .off)");
+  if (ext == ".off") {
+    const BaseMesh mesh = load_mesh(path);
+    if (mesh.report.changed())
+      throw InputError("'" + path + "' needs repairs (" + mesh.report.lines().front() +
+                       "), which would renumber its vertices; save it as .ply or .vtp first");
+    return polygons_of(mesh);
+  }
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (ext == ".vtp") {
+    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  } else if (ext == ".ply") {
+    auto r = vtkSmartPointer<vtkPLYReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  } else if (ext == ".obj") {
+    auto r = vtkSmartPointer<vtkOBJReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  } else {
+    auto r = vtkSmartPointer<vtkSTLReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  reader->Update();
+  vtkPolyData* out = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (reader->GetErrorCode() != 0 || !out || out->GetNumberOfPoints() == 0)
+    throw InputError("cannot read scan '" + path + "': not a readable " + ext.substr(1) + " file with points");
+  auto scan = vtkSmartPointer<vtkPolyData>::New();
+  scan->ShallowCopy(out);
+  return scan;
+}
+
+TransferReport transfer_to_scan(const PaintedSurface& painted, const WeldedSurface& reference, vtkPolyData* scan,
+                                bool geometry)
+{
+  if (painted.surface.points.size() != reference.points.size() || painted.surface.quads != reference.quads)
+    throw InputError("the painted and the reference surface differ in their vertices or quads");
+  vtkSmartPointer<vtkPolyData> triangles = triangles_of(reference);
+  auto locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+  locator->SetDataSet(triangles);
+  locator->BuildLocator();
+
+  const vtkIdType n = scan->GetNumberOfPoints();
+  auto label = vtkSmartPointer<vtkIntArray>::New();
+  label->SetName("label");
+  label->SetNumberOfTuples(n);
+  auto diffuse = float_array("diffuse", 3, n), specular = float_array("specular", 3, n);
+  auto roughness = float_array("roughness", 1, n), displacement = float_array("displacement", 1, n);
+  auto moved = vtkSmartPointer<vtkPoints>::New();
+  moved->SetDataType(scan->GetPoints()->GetDataType());
+  moved->SetNumberOfPoints(n);
+
+  TransferReport report;
+  double sum2 = 0;
+  auto cell = vtkSmartPointer<vtkGenericCell>::New();
+  for (vtkIdType v = 0; v < n; ++v) {
+    double x[3], closest[3], pcoords[3], weights[3], ignored[3], dist2 = 0, ignored_dist2 = 0;
+    vtkIdType triangle = -1;
+    int sub = 0;
+    scan->GetPoint(v, x);
+    locator->FindClosestPoint(x, closest, cell, triangle, sub, dist2);
+    cell->EvaluatePosition(closest, ignored, sub, pcoords, ignored_dist2, weights);
+    report.max_distance = std::max(report.max_distance, std::sqrt(dist2));
+    sum2 += dist2;
+    const auto& q = reference.quads[std::size_t(triangle / 2)];
+    const int corner[3] = {q[0], triangle % 2 ? q[2] : q[1], triangle % 2 ? q[3] : q[2]};
+    const int nearest = corner[std::max_element(weights, weights + 3) - weights];
+    label->SetValue(v, painted.label[std::size_t(nearest)]);
+    double d[3] = {0, 0, 0}, s[3] = {0, 0, 0}, r = 0, h = 0, shift[3] = {0, 0, 0};
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t c = std::size_t(corner[k]);
+      const double w = weights[k];
+      for (int a = 0; a < 3; ++a) {
+        d[a] += w * painted.diffuse[c][a];
+        s[a] += w * painted.specular[c][a];
+        shift[a] += w * (double(painted.surface.points[c][a]) - reference.points[c][a]);
+      }
+      r += w * painted.roughness[c];
+      h += w * painted.displacement[c];
+    }
+    diffuse->SetTuple(v, d);
+    specular->SetTuple(v, s);
+    roughness->SetValue(v, float(r));
+    displacement->SetValue(v, float(h));
+    if (geometry) {
+      // Untouched regions carry exactly zero shift: the vertex stays bit for bit.
+      if (shift[0] != 0 || shift[1] != 0 || shift[2] != 0)
+        for (int a = 0; a < 3; ++a)
+          x[a] += shift[a];
+      report.max_moved = std::max(report.max_moved, std::sqrt(shift[0] * shift[0] + shift[1] * shift[1] +
+                                                              shift[2] * shift[2]));
+      moved->SetPoint(v, x);
+    }
+  }
+  report.rms_distance = n > 0 ? std::sqrt(sum2 / double(n)) : 0.0;
+  vtkPointData* pd = scan->GetPointData();
+  for (vtkDataArray* a : {static_cast<vtkDataArray*>(label), static_cast<vtkDataArray*>(diffuse),
+                          static_cast<vtkDataArray*>(specular), static_cast<vtkDataArray*>(roughness),
+                          static_cast<vtkDataArray*>(displacement)}) {
+    pd->RemoveArray(a->GetName());
+    pd->AddArray(a);
+  }
+  if (geometry)
+    scan->SetPoints(moved);
+  return report;
+}
+
+} // namespace meshpaint

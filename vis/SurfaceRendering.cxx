@@ -1,0 +1,121 @@
+#include "SurfaceRendering.h"
+
+#include "core/atomic_file.h" // for meshpaint::write_atomically
+#include "core/errors.h"      // for meshpaint::IOError
+
+#include <vtkActor.h>                   // for vtkActor
+#include <vtkCamera.h>                  // for vtkCamera
+#include <vtkDataObject.h>              // for vtkDataObject::FIELD_ASSOCIATION_POINTS
+#include <vtkNew.h>                     // for vtkNew
+#include <vtkOpenGLPolyDataMapper.h>    // for vtkOpenGLPolyDataMapper
+#include <vtkPNGWriter.h>               // for vtkPNGWriter
+#include <vtkPointData.h>               // for vtkPointData
+#include <vtkPolyData.h>                // for vtkPolyData
+#include <vtkProperty.h>                // for vtkProperty
+#include <vtkRenderWindow.h>            // for vtkRenderWindow
+#include <vtkRenderer.h>                // for vtkRenderer
+#include <vtkShaderProgram.h>           // for vtkShader::Vertex, vtkShader::Fragment
+#include <vtkShaderProperty.h>          // for vtkShaderProperty
+#include <vtkWindowToImageFilter.h>     // for vtkWindowToImageFilter
+
+namespace meshpaint {
+
+void show_materials(vtkActor* actor, vtkPolyData* surface)
+{
+  vtkNew<vtkOpenGLPolyDataMapper> mapper;
+  mapper->SetInputData(surface);
+  vtkPointData* pd = surface->GetPointData();
+  if (pd->GetArray("diffuse")) {
+    // Floats in [0, 1] are colours as they are, no lookup table.
+    mapper->SetScalarModeToUsePointFieldData();
+    mapper->SelectColorArray("diffuse");
+    mapper->SetColorModeToDirectScalars();
+    mapper->ScalarVisibilityOn();
+  } else {
+    mapper->ScalarVisibilityOff();
+  }
+  actor->SetMapper(mapper);
+  vtkProperty* property = actor->GetProperty();
+  property->SetInterpolationToPhong();
+  property->SetDiffuse(1.0);
+  property->SetAmbient(0.0);
+  property->SetSpecular(1.0); // the specular colour itself carries the strength
+  property->SetSpecularColor(0.04, 0.04, 0.04);
+  property->SetSpecularPower(30.0);
+  if (!pd->GetArray("specular") || !pd->GetArray("roughness"))
+    return;
+  // Per-vertex specular colour and roughness: VTK's Phong shading takes
+  // them as uniforms, so they come in as vertex attributes and replace the
+  // uniforms' values after VTK's own colour code has run.
+  mapper->MapDataArrayToVertexAttribute("specularMC", "specular", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  mapper->MapDataArrayToVertexAttribute("roughnessMC", "roughness", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  vtkShaderProperty* sp = actor->GetShaderProperty();
+  sp->AddVertexShaderReplacement("//VTK::Color::Dec", true,
+                                 "//VTK::Color::Dec\n"
+                                 "in vec3 specularMC;\nin float roughnessMC;\n"
+                                 "out vec3 specularVSOut;\nout float roughnessVSOut;\n",
+                                 false);
+  sp->AddVertexShaderReplacement("//VTK::Color::Impl", true,
+                                 "//VTK::Color::Impl\n"
+                                 "  specularVSOut = specularMC;\n  roughnessVSOut = roughnessMC;\n",
+                                 false);
+  sp->AddFragmentShaderReplacement("//VTK::Color::Dec", true,
+                                   "//VTK::Color::Dec\n"
+                                   "in vec3 specularVSOut;\nin float roughnessVSOut;\n",
+                                   false);
+  sp->AddFragmentShaderReplacement("//VTK::Color::Impl", true,
+                                   "//VTK::Color::Impl\n"
+                                   "  specularColor = specularVSOut;\n"
+                                   "  float r2 = pow(clamp(roughnessVSOut, 0.02, 1.0), 2.0);\n"
+                                   "  specularPower = max(2.0 / r2 - 2.0, 1.0);\n",
+                                   false);
+}
+
+void set_camera(vtkRenderer* renderer, const CameraView& view)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0, 0, 1);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetViewUp(0, 1, 0);
+  renderer->ResetCamera();
+  camera->Azimuth(view.azimuth);
+  camera->Elevation(view.elevation);
+  camera->OrthogonalizeViewUp();
+  camera->Zoom(view.zoom);
+  renderer->ResetCameraClippingRange();
+}
+
+void write_screenshot(vtkRenderWindow* window, const std::string& path)
+{
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  write_atomically(path, [&](const std::string& tmp) {
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetInputConnection(grab->GetOutputPort());
+    writer->SetFileName(tmp.c_str());
+    writer->Write();
+    if (writer->GetErrorCode() != 0)
+      throw IOError("cannot write '" + path + "'");
+  });
+}
+
+void render_screenshot(vtkPolyData* surface, const CameraView& view, int width, int height, const std::string& path)
+{
+  vtkNew<vtkActor> actor;
+  show_materials(actor, surface);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  renderer->SetBackground(0.1, 0.1, 0.12);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->AddRenderer(renderer);
+  window->SetSize(width, height);
+  set_camera(renderer, view);
+  write_screenshot(window, path);
+}
+
+} // namespace meshpaint

@@ -1,0 +1,63 @@
+// meshpaint transfer: a project's channels (and edits) written onto the
+// scan's own vertices.
+
+#include "commands.h"
+
+#include "ScanTransfer.h"
+#include "SurfaceConversion.h"
+
+#include "core/errors.h"
+#include "core/format.h"
+#include "project/project_surface.h"
+
+#include <iostream> // for std::cerr
+
+namespace meshpaint::cli {
+
+int transfer_command(const Argv& argv)
+{
+  Args args("transfer", argv, {"--geometry", "--quiet"}, {"--to", "-o", "--device", "--storage"});
+  args.expect_positionals(1, 1, "PROJECT --to SCAN -o OUT.{vtp,ply} [--geometry]");
+  const std::string path = args.positionals()[0];
+  if (!is_project_path(path))
+    throw InputError("transfer needs a project (.meshpaint), not '" + path + "'");
+  const std::string scan_path = args.value("--to");
+  if (scan_path.empty())
+    throw InputError("--to SCAN is required");
+  const std::string out = args.value("-o");
+  if (out.empty())
+    throw InputError("-o OUT.{vtp,ply} is required");
+  const std::string ext = lower_extension(out);
+  if (ext != ".vtp" && ext != ".ply")
+    throw InputError("cannot write '" + out + "': unknown format '" + ext + "' (.vtp, .ply)");
+  const Project project = load_project(path);
+  vtkSmartPointer<vtkPolyData> scan = read_scan(scan_path);
+  if (!project.scan.path.empty()) {
+    const ScanReference now = scan_reference(scan_path);
+    if (now.bytes != project.scan.bytes || now.crc32 != project.scan.crc32)
+      std::cerr << "meshpaint transfer: warning: " << scan_path << " is not the file the project was fitted to ("
+                << project.scan.path << ")\n";
+  }
+  auto runtime = open_device(args);
+  const AtlasStorage storage = chosen_storage(args, *runtime);
+  const PaintedSurface painted = open_project_surface(runtime, project, storage)->painted_surface();
+  const WeldedSurface reference = reference_surface(runtime, project, storage);
+  const TransferReport r = transfer_to_scan(painted, reference, scan, args.flag("--geometry"));
+  if (ext == ".ply")
+    write_scan_ply(scan, out);
+  else
+    write_vtp(scan, out);
+  if (!args.flag("--quiet")) {
+    const double diagonal = project.mesh.diagonal();
+    std::cerr << "meshpaint transfer: " << out << ": " << scan->GetNumberOfPoints() << " scan vertices, "
+              << scan->GetNumberOfCells() << " cells; distance to the surface RMS " << r.rms_distance << " ("
+              << format_fixed(100 * r.rms_distance / diagonal, 4) << "% of the diagonal), max " << r.max_distance
+              << " (" << format_fixed(100 * r.max_distance / diagonal, 4) << "%)";
+    if (args.flag("--geometry"))
+      std::cerr << "; moved up to " << r.max_moved;
+    std::cerr << "\n";
+  }
+  return 0;
+}
+
+} // namespace meshpaint::cli

@@ -1,0 +1,78 @@
+// meshpaint view: the interactive painting window.
+
+#include "commands.h"
+#include "picture_options.h"
+
+#include "RasterIO.h"
+#include "vtkPaintView.h"
+
+#include "core/errors.h"
+#include "core/format.h"
+
+#include <vtkNew.h> // for vtkNew
+
+#include <iostream> // for std::cout
+
+namespace meshpaint::cli {
+namespace {
+
+//! The finest level up to 3 whose surface has at most about 1.5M quads, so
+//! that a software renderer still draws it interactively.
+int default_view_level(const BaseMesh& mesh)
+{
+  double quads = 0;
+  for (int size : mesh.face_sizes)
+    quads += size; // level 1: one quad per face corner
+  int level = 1;
+  while (level < 3 && quads * 4 <= 1.5e6) {
+    quads *= 4;
+    ++level;
+  }
+  return level;
+}
+
+} // namespace
+
+int view_command(const Argv& argv)
+{
+  Args args("view", argv, {}, {"--strokes", "--level", "--lod", "-o", "--size", "--device", "--storage"});
+  args.expect_positionals(1, 1, "MESH|PROJECT [--strokes S.json] [--level L] [--lod L] [-o DIR] [--size WxH]");
+  // Everything is checked before the window opens.
+  StrokeScript script;
+  if (args.has("--strokes")) {
+    script = load_stroke_script(args.value("--strokes"));
+    load_stroke_rasters(script);
+  }
+  const PictureOptions picture = picture_options(args);
+  if (args.has("--storage"))
+    parse_storage(args.value("--storage"));
+  const MeshOrProject input = open_mesh_or_project(args.positionals()[0]);
+  const BaseMesh& mesh = input.mesh();
+  const int level = input_level(args, input, script.level > 0 ? script.level : default_view_level(mesh));
+
+  const int lod = args.integer("--lod", std::max(1, level - 1), 0, level);
+  vtkNew<vtkPaintView> view;
+  view->SetLevel(level);
+  view->SetLodLevel(lod);
+  view->SetDevice(args.value("--device").c_str());
+  view->SetStorage(args.value("--storage").c_str());
+  view->SetSaveDirectory(args.value("-o", mesh.name + "-session").c_str());
+  view->SetSize(picture.width, picture.height);
+  const auto runtime = open_device(args); // reports a bad --device like every command
+  if (input.project) { // the project's surface as saved, painted on from here
+    view->SetSurface(open_paint_surface(runtime, chosen_storage(args, *runtime), input, level));
+    view->SetProject(*input.project);
+  }
+  else if (!view->SetBaseMesh(mesh))
+    throw DeviceError(view->GetLastError());
+  if (!script.strokes.empty() && !view->ApplyScript(script))
+    throw DeviceError(view->GetLastError()); // the script was checked: what fails now is the device
+  if (!view->Initialize())
+    throw DeviceError(view->GetLastError());
+  std::cout << "view       " << mesh.name << " at level " << level << "; h in the window lists the keys; saves go to "
+            << view->GetSaveDirectory() << "/" << std::endl;
+  view->Start();
+  return 0;
+}
+
+} // namespace meshpaint::cli

@@ -1,0 +1,614 @@
+#include "vtkPaintView.h"
+
+#include "BrushSettings.h"           // for meshpaint::BrushSettings
+#include "LevelOfDetail.h"           // for meshpaint::coarser_quads
+#include "CallGuard.h"               // for meshpaint::guarded
+#include "RasterIO.h"                // for meshpaint::load_stroke_rasters
+#include "SurfaceConversion.h"       // for meshpaint::to_polydata, to_base_mesh, write_vtp, write_texture_maps
+#include "SurfaceRendering.h"        // for meshpaint::show_materials, set_camera
+#include "vtkPaintInteractorStyle.h" // for vtkPaintInteractorStyle
+#include "vtkSurfacePicker.h"        // for vtkSurfacePicker
+
+#include "core/atomic_file.h"    // for meshpaint::write_atomically
+#include "core/errors.h"         // for meshpaint::IOError
+#include "paint/model_export.h"  // for meshpaint::build_export, write_obj_model
+#include "paint/paint_surface.h" // for meshpaint::PaintSurface
+#include "project/project.h"         // for meshpaint::Project, save_project
+#include "project/project_surface.h" // for meshpaint::capture_surface, continued_history
+
+#include <vtkActor.h>                   // for vtkActor
+#include <vtkCamera.h>                  // for vtkCamera
+#include <vtkCommand.h>                 // for vtkCommand
+#include <vtkMapper.h>                  // for vtkMapper
+#include <vtkNew.h>                     // for vtkNew
+#include <vtkObjectFactory.h>           // for vtkStandardNewMacro
+#include <vtkPolyData.h>                // for vtkPolyData
+#include <vtkPolyDataMapper.h>          // for vtkPolyDataMapper
+#include <vtkProperty.h>                // for vtkProperty
+#include <vtkRegularPolygonSource.h>    // for vtkRegularPolygonSource
+#include <vtkRenderWindow.h>            // for vtkRenderWindow
+#include <vtkRenderWindowInteractor.h>  // for vtkRenderWindowInteractor
+#include <vtkRenderer.h>                // for vtkRenderer
+#include <vtkSmartPointer.h>            // for vtkSmartPointer
+#include <vtkTextActor.h>               // for vtkTextActor
+#include <vtkTextProperty.h>            // for vtkTextProperty
+
+#include <array>      // for std::array
+#include <cmath>      // for std::sqrt
+#include <filesystem> // for std::filesystem
+#include <fstream>    // for std::ofstream
+
+vtkStandardNewMacro(vtkPaintView);
+
+struct vtkPaintView::Internals
+{
+  std::shared_ptr<meshpaint::PaintSurface> surface;
+  std::unique_ptr<meshpaint::Project> project; // where the surface came from, if from a project
+  std::unique_ptr<meshpaint::BrushSettings> brush;
+  // The painted surface at the painting level, brought up to date when next
+  // shown after a change, and its coarser tessellation for the level of
+  // detail (made once per level, sharing the arrays); `shown` is drawn.
+  vtkSmartPointer<vtkPolyData> full, coarse, shown;
+  bool full_stale = true;
+  int coarse_level = 0;
+  bool moving = false; // the camera turns or a stroke is drawn
+  int shown_level = 0;
+  vtkNew<vtkRenderer> renderer;
+  vtkNew<vtkRenderWindow> window;
+  vtkNew<vtkRenderWindowInteractor> interactor;
+  vtkNew<vtkPaintInteractorStyle> style;
+  vtkNew<vtkActor> actor;
+  vtkNew<vtkSurfacePicker> picker;
+  vtkNew<vtkRegularPolygonSource> cursor_shape;
+  vtkNew<vtkActor> cursor;
+  vtkNew<vtkTextActor> status;
+  vtkNew<vtkTextActor> help;
+  bool initialized = false;
+  // The item buffer holds for one view: camera pose and window size (the
+  // camera's modification time also moves with every clipping-range reset).
+  std::array<double, 13> captured_view{};
+  // The running stroke: its path, and the pieces painted for the eye.
+  bool painting = false;
+  bool ended = false; // reached a silhouette or left the surface
+  std::vector<meshpaint::Vec3> path;
+  int pieces = 0;
+  std::string recording;
+};
+
+vtkPaintView::vtkPaintView() : Impl(new Internals) {}
+
+vtkPaintView::~vtkPaintView() = default;
+
+void vtkPaintView::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Level: " << this->Level << "\n";
+  os << indent << "Device: " << (this->Device.empty() ? "(default)" : this->Device) << "\n";
+  os << indent << "Storage: " << (this->Storage.empty() ? "(default)" : this->Storage) << "\n";
+  os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
+  os << indent << "OffScreen: " << this->OffScreen << "\n";
+  os << indent << "SaveDirectory: " << this->SaveDirectory << "\n";
+  os << indent << "SilhouetteCosine: " << this->SilhouetteCosine << "\n";
+}
+
+int vtkPaintView::LoadMesh(const char* path)
+{
+  meshpaint::BaseMesh mesh;
+  if (!meshpaint::guarded(this->LastError, [&] { mesh = meshpaint::load_mesh(path ? path : ""); }))
+    return 0;
+  return this->SetBaseMesh(mesh);
+}
+
+int vtkPaintView::SetInputData(vtkPolyData* polygons)
+{
+  meshpaint::BaseMesh mesh;
+  if (!meshpaint::guarded(this->LastError, [&] {
+        if (!polygons)
+          throw meshpaint::InputError("no input polygons");
+        mesh = meshpaint::to_base_mesh(polygons, "input");
+      }))
+    return 0;
+  return this->SetBaseMesh(mesh);
+}
+
+int vtkPaintView::SetBaseMesh(const meshpaint::BaseMesh& mesh)
+{
+  return meshpaint::guarded(this->LastError, [&] {
+    auto runtime = meshpaint::Runtime::open(this->Device);
+    const meshpaint::AtlasStorage storage = this->Storage.empty() ? meshpaint::default_storage(runtime->info())
+                                                                  : meshpaint::parse_storage(this->Storage);
+    this->SetSurface(std::make_shared<meshpaint::PaintSurface>(runtime, mesh, this->Level, storage));
+  });
+}
+
+void vtkPaintView::SetProject(const meshpaint::Project& project)
+{
+  this->Impl->project = std::make_unique<meshpaint::Project>(project);
+  // The layers live in the surface; a save takes them from there.
+  this->Impl->project->positions.clear();
+  this->Impl->project->channels = meshpaint::PaintChannels();
+}
+
+void vtkPaintView::SetSurface(std::shared_ptr<meshpaint::PaintSurface> surface)
+{
+  Internals& in = *this->Impl;
+  in.surface = std::move(surface);
+  this->Level = in.surface->level();
+  in.full = in.coarse = nullptr;
+  in.moving = false;
+  in.shown = this->Surface(this->Level);
+  in.shown_level = this->Level;
+  double b[6];
+  in.shown->GetBounds(b);
+  const double diagonal =
+    std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+  in.brush = std::make_unique<meshpaint::BrushSettings>(diagonal, this->Level);
+  if (in.initialized) {
+    meshpaint::show_materials(in.actor, in.shown);
+    in.picker->Release();
+    in.picker->SetPatchResolution(1 << (this->Level - 1));
+  }
+  this->Modified();
+}
+
+bool vtkPaintView::Shows(const std::shared_ptr<meshpaint::PaintSurface>& surface) const
+{
+  return this->Impl->surface == surface;
+}
+
+int vtkPaintView::ApplyStrokes(const char* json)
+{
+  meshpaint::StrokeScript script;
+  if (!meshpaint::guarded(this->LastError, [&] {
+        script = meshpaint::parse_stroke_script(json ? json : "");
+        meshpaint::load_stroke_rasters(script);
+      }))
+    return 0;
+  return this->ApplyScript(script);
+}
+
+int vtkPaintView::ApplyScript(const meshpaint::StrokeScript& script)
+{
+  Internals& in = *this->Impl;
+  const int ok = meshpaint::guarded(this->LastError, [&] {
+    if (!in.surface)
+      throw meshpaint::InputError("no surface to paint: load a mesh first");
+    for (const meshpaint::Stroke& s : script.strokes)
+      in.surface->apply(s);
+  });
+  this->Refresh(true);
+  return ok;
+}
+
+int vtkPaintView::Initialize()
+{
+  Internals& in = *this->Impl;
+  if (!in.surface) {
+    this->LastError = "no surface to paint: load a mesh first";
+    return 0;
+  }
+  if (in.initialized)
+    return 1;
+  meshpaint::show_materials(in.actor, in.shown);
+  in.renderer->AddActor(in.actor);
+  in.renderer->SetBackground(0.12, 0.12, 0.14);
+
+  in.cursor_shape->SetNumberOfSides(40);
+  in.cursor_shape->GeneratePolygonOff();
+  vtkNew<vtkPolyDataMapper> cursor_mapper;
+  cursor_mapper->SetInputConnection(in.cursor_shape->GetOutputPort());
+  in.cursor->SetMapper(cursor_mapper);
+  in.cursor->GetProperty()->SetColor(1.0, 0.85, 0.2);
+  in.cursor->GetProperty()->LightingOff();
+  in.cursor->GetProperty()->SetLineWidth(2.0);
+  in.cursor->PickableOff(); // the item buffer must see the surface through it
+  in.cursor->VisibilityOff();
+  in.renderer->AddActor(in.cursor);
+
+  in.status->GetTextProperty()->SetFontSize(15);
+  in.status->GetTextProperty()->SetColor(0.95, 0.95, 0.95);
+  in.status->SetPosition(10, 10);
+  in.renderer->AddActor2D(in.status);
+  in.help->GetTextProperty()->SetFontSize(14);
+  in.help->GetTextProperty()->SetFontFamilyToCourier();
+  in.help->GetTextProperty()->SetColor(1.0, 1.0, 0.8);
+  in.help->GetTextProperty()->SetVerticalJustificationToTop();
+  in.help->SetInput((meshpaint::BrushSettings::key_help() +
+                     "\nleft-drag    paint (off the surface, or with Alt: turn the camera)\n"
+                     "middle-drag  pan;  right-drag, wheel: zoom\n"
+                     "Ctrl+Z / Ctrl+Y  undo / redo\n"
+                     "Ctrl+S       save strokes.json and surface.vtp\n"
+                     "Ctrl+E       export model.obj with texture maps\n"
+                     "r            reset the camera\n"
+                     "h, F1        this help;  q, Escape: quit")
+                      .c_str());
+  in.help->VisibilityOff();
+  in.renderer->AddActor2D(in.help);
+
+  in.window->AddRenderer(in.renderer);
+  in.window->SetSize(this->Size);
+  in.window->SetOffScreenRendering(this->OffScreen ? 1 : 0);
+  in.window->SetWindowName("meshpaint");
+  in.interactor->SetRenderWindow(in.window);
+  in.style->SetView(this);
+  in.interactor->SetInteractorStyle(in.style);
+  in.style->AddObserver(vtkCommand::StartInteractionEvent, this, &vtkPaintView::OnCameraInteraction);
+  in.style->AddObserver(vtkCommand::EndInteractionEvent, this, &vtkPaintView::OnCameraInteraction);
+  in.picker->SetRenderer(in.renderer);
+  in.picker->SetActor(in.actor);
+  in.picker->SetPatchResolution(1 << (this->Level - 1)); // captures happen at rest: the full level
+  meshpaint::set_camera(in.renderer, meshpaint::CameraView());
+  in.interactor->Initialize();
+  in.initialized = true;
+  this->UpdateText();
+  this->Render();
+  return 1;
+}
+
+void vtkPaintView::Start()
+{
+  if (this->Initialize())
+    this->Impl->interactor->Start();
+}
+
+void vtkPaintView::Render()
+{
+  if (this->Impl->initialized)
+    this->Impl->window->Render();
+}
+
+vtkRenderWindow* vtkPaintView::GetRenderWindow() { return this->Impl->window; }
+vtkRenderer* vtkPaintView::GetRenderer() { return this->Impl->renderer; }
+vtkRenderWindowInteractor* vtkPaintView::GetInteractor() { return this->Impl->interactor; }
+vtkSurfacePicker* vtkPaintView::GetPicker() { return this->Impl->picker; }
+
+bool vtkPaintView::PickFacing(int x, int y, double point[3], double normal[3])
+{
+  Internals& in = *this->Impl;
+  if (!in.initialized)
+    return false;
+  vtkCamera* camera = in.renderer->GetActiveCamera();
+  const int* size = in.window->GetSize();
+  std::array<double, 13> view;
+  camera->GetPosition(&view[0]);
+  camera->GetFocalPoint(&view[3]);
+  camera->GetViewUp(&view[6]);
+  view[9] = camera->GetViewAngle();
+  view[10] = camera->GetParallelProjection() ? camera->GetParallelScale() : 0.0;
+  view[11] = size[0];
+  view[12] = size[1];
+  if (!in.picker->IsCaptured() || view != in.captured_view) {
+    in.picker->Capture();
+    in.captured_view = view;
+  }
+  if (!in.picker->Pick(x, y) || in.picker->GetFacing() < this->SilhouetteCosine)
+    return false;
+  in.picker->GetPoint(point);
+  in.picker->GetNormal(normal);
+  return true;
+}
+
+int vtkPaintView::BeginStroke(int x, int y)
+{
+  Internals& in = *this->Impl;
+  double p[3], n[3];
+  if (in.painting || !this->PickFacing(x, y, p, n))
+    return 0;
+  in.painting = true;
+  in.ended = false;
+  in.path = {meshpaint::Vec3{float(p[0]), float(p[1]), float(p[2])}};
+  in.pieces = 0;
+  in.moving = true;
+  // A coarse-level edit is applied on release only: undoing pieces would
+  // start its detail afresh, which a replay would not do.
+  if (in.brush->coarse_edit()) {
+    this->PlaceCursor(x, y);
+    this->Show();
+    this->Render();
+  } else {
+    this->PaintPiece(true);
+  }
+  return 1;
+}
+
+int vtkPaintView::ContinueStroke(int x, int y)
+{
+  Internals& in = *this->Impl;
+  if (!in.painting || in.ended)
+    return 0;
+  double p[3], n[3];
+  if (!this->PickFacing(x, y, p, n)) {
+    in.ended = true; // a silhouette, or no surface under the brush
+    return 0;
+  }
+  const meshpaint::Vec3 q{float(p[0]), float(p[1]), float(p[2])};
+  const meshpaint::Vec3& last = in.path.back();
+  const double d = std::sqrt(double((q[0] - last[0]) * (q[0] - last[0]) + (q[1] - last[1]) * (q[1] - last[1]) +
+                                    (q[2] - last[2]) * (q[2] - last[2])));
+  // Points closer than half a dab spacing add nothing but cost.
+  if (d < 0.5 * in.brush->spacing() * in.brush->radius())
+    return 1;
+  in.path.push_back(q);
+  this->PlaceCursor(x, y);
+  if (in.brush->coarse_edit())
+    this->Render();
+  else
+    this->PaintPiece(false); // renders
+  return 1;
+}
+
+void vtkPaintView::PaintPiece(bool first)
+{
+  Internals& in = *this->Impl;
+  const std::vector<meshpaint::Vec3> piece =
+    first ? in.path : std::vector<meshpaint::Vec3>(in.path.end() - 2, in.path.end());
+  if (meshpaint::guarded(this->LastError, [&] { in.surface->apply(in.brush->stroke(piece)); }))
+    ++in.pieces;
+  this->Refresh(false);
+}
+
+int vtkPaintView::EndStroke()
+{
+  Internals& in = *this->Impl;
+  if (!in.painting)
+    return 0;
+  in.painting = false;
+  in.moving = false;
+  // The pieces were for the eye: the stroke is the whole path, applied once.
+  const int ok = meshpaint::guarded(this->LastError, [&] {
+    for (; in.pieces > 0; --in.pieces)
+      in.surface->undo();
+    in.surface->apply(in.brush->stroke(in.path));
+  });
+  this->Message = ok ? "" : this->LastError;
+  this->Refresh(true);
+  return ok;
+}
+
+bool vtkPaintView::IsPainting() const { return this->Impl->painting; }
+
+void vtkPaintView::MoveCursor(int x, int y)
+{
+  const bool was = this->Impl->cursor->GetVisibility() != 0;
+  if (this->PlaceCursor(x, y) || was)
+    this->Render();
+}
+
+bool vtkPaintView::PlaceCursor(int x, int y)
+{
+  Internals& in = *this->Impl;
+  double p[3], n[3];
+  const bool on = this->PickFacing(x, y, p, n);
+  if (on) {
+    const double lift = 0.02 * in.brush->radius(); // above the surface, so it is not hidden in it
+    in.cursor_shape->SetCenter(p[0] + lift * n[0], p[1] + lift * n[1], p[2] + lift * n[2]);
+    in.cursor_shape->SetNormal(n);
+    in.cursor_shape->SetRadius(in.brush->radius());
+  }
+  in.cursor->SetVisibility(on);
+  return on;
+}
+
+vtkIdType vtkPaintView::GetFaceCount()
+{
+  vtkPolyData* full = this->Impl->surface ? this->Surface(this->Level) : nullptr;
+  return full ? full->GetNumberOfCells() : 0;
+}
+
+int vtkPaintView::GetShownLevel() { return this->Impl->shown_level; }
+
+int vtkPaintView::CoarseLevel() const
+{
+  if (this->LodLevel == 0)
+    return this->Level;
+  return this->LodLevel < 0 ? std::max(1, this->Level - 1) : std::min(this->LodLevel, this->Level);
+}
+
+vtkPolyData* vtkPaintView::Surface(int level)
+{
+  Internals& in = *this->Impl;
+  if (!in.full) {
+    in.full = meshpaint::to_polydata(in.surface->painted_surface());
+    in.coarse = nullptr;
+  } else if (in.full_stale) {
+    // Same topology: only the arrays that changed are written (and uploaded).
+    meshpaint::update_polydata(in.full, in.surface->painted_surface());
+  }
+  in.full_stale = false;
+  if (level == this->Level)
+    return in.full;
+  // A coarser tessellation of the same painted surface, sharing its points
+  // and arrays; the atlas is not touched (a reduction there would start
+  // multiresolution edits afresh).
+  if (!in.coarse || in.coarse_level != level) {
+    const int n = 1 << (this->Level - 1), stride = 1 << (this->Level - level);
+    in.coarse = meshpaint::coarser_quads(in.full, n, stride);
+    in.coarse_level = level;
+  }
+  return in.coarse;
+}
+
+void vtkPaintView::Show()
+{
+  Internals& in = *this->Impl;
+  const int level = in.moving ? this->CoarseLevel() : this->Level;
+  vtkPolyData* poly = nullptr;
+  if (!meshpaint::guarded(this->LastError, [&] { poly = this->Surface(level); }))
+    return;
+  if (poly != in.shown.GetPointer() && in.initialized)
+    in.actor->GetMapper()->SetInputDataObject(poly);
+  in.shown = poly;
+  in.shown_level = level;
+}
+
+void vtkPaintView::Refresh(bool geometry)
+{
+  Internals& in = *this->Impl;
+  if (!in.surface)
+    return;
+  in.full_stale = true;
+  // Within a stroke the buffers stay: the picker keeps the surface they saw.
+  if (geometry && !in.painting)
+    in.picker->Release();
+  this->Show();
+  this->UpdateText();
+  this->Render();
+}
+
+void vtkPaintView::SetMoving(bool moving)
+{
+  Internals& in = *this->Impl;
+  if (in.painting || !in.surface)
+    return;
+  in.moving = moving;
+  this->Show();
+  if (!in.moving)
+    this->Render(); // the full level, now that the view rests
+}
+
+void vtkPaintView::OnCameraInteraction(vtkObject*, unsigned long event, void*)
+{
+  this->SetMoving(event == vtkCommand::StartInteractionEvent);
+}
+
+int vtkPaintView::HandleKey(const char* keysym, bool control, bool shift)
+{
+  Internals& in = *this->Impl;
+  if (!keysym || !in.brush)
+    return 0;
+  const std::string key = keysym;
+  if (control) {
+    if (key == "z" || key == "Z")
+      this->Undo();
+    else if (key == "y" || key == "Y")
+      this->Redo();
+    else if (key == "s" || key == "S")
+      this->Save();
+    else if (key == "e" || key == "E")
+      this->Export();
+    else
+      return 0;
+  } else if (key == "h" || key == "F1" || key == "question") {
+    this->SetHelpVisible(!this->GetHelpVisible());
+  } else if (key == "r") {
+    meshpaint::set_camera(in.renderer, meshpaint::CameraView());
+  } else if (key == "q" || key == "Escape") {
+    if (in.initialized)
+      in.interactor->TerminateApp();
+    return 1;
+  } else if (!in.brush->handle_key(key, shift)) {
+    return 0;
+  }
+  this->UpdateText();
+  this->Render();
+  return 1;
+}
+
+int vtkPaintView::Step(bool back)
+{
+  Internals& in = *this->Impl;
+  bool done = false;
+  const int ok = in.surface && meshpaint::guarded(this->LastError, [&] {
+    done = back ? in.surface->undo() : in.surface->redo();
+  });
+  this->Message = !ok ? this->LastError : done ? (back ? "undone" : "redone") : (back ? "nothing to undo" : "nothing to redo");
+  this->Refresh(true);
+  return ok && done;
+}
+
+int vtkPaintView::Undo() { return this->Step(true); }
+
+int vtkPaintView::Redo() { return this->Step(false); }
+
+const char* vtkPaintView::GetRecording()
+{
+  Internals& in = *this->Impl;
+  meshpaint::StrokeScript script;
+  script.level = this->Level;
+  if (in.surface)
+    script.strokes = in.surface->history();
+  in.recording = meshpaint::stroke_script_json(script);
+  return in.recording.c_str();
+}
+
+namespace {
+
+//! Creates `dir` (and its parents) unless it exists.
+void make_directory(const std::string& dir)
+{
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec)
+    throw meshpaint::IOError("cannot create '" + dir + "': " + ec.message());
+}
+
+} // namespace
+
+int vtkPaintView::Save()
+{
+  Internals& in = *this->Impl;
+  const std::string dir = this->SaveDirectory;
+  const int ok = in.surface && meshpaint::guarded(this->LastError, [&] {
+    make_directory(dir);
+    const std::string recording = this->GetRecording();
+    meshpaint::write_atomically(dir + "/strokes.json", [&](const std::string& tmp) {
+      std::ofstream out(tmp, std::ios::binary);
+      out << recording;
+      if (!out.flush())
+        throw meshpaint::IOError("cannot write '" + dir + "/strokes.json'");
+    });
+    meshpaint::write_vtp(this->Surface(this->Level), dir + "/surface.vtp");
+    if (in.project) {
+      meshpaint::Project p = *in.project;
+      p.history = meshpaint::continued_history(in.project->history, in.surface->history(), this->Level);
+      meshpaint::capture_surface(*in.surface, p);
+      meshpaint::save_project(p, dir + "/surface.meshpaint");
+    }
+  });
+  this->Message = ok ? "saved " + dir + "/strokes.json, surface.vtp" + (in.project ? " and surface.meshpaint" : "")
+                     : this->LastError;
+  this->UpdateText();
+  this->Render();
+  return ok;
+}
+
+int vtkPaintView::Export()
+{
+  Internals& in = *this->Impl;
+  const std::string dir = this->SaveDirectory;
+  const int ok = in.surface && meshpaint::guarded(this->LastError, [&] {
+    make_directory(dir);
+    meshpaint::ExportModel model;
+    meshpaint::TextureMaps maps;
+    meshpaint::build_export(*in.surface, std::max(1, this->Level - 2), model, maps);
+    meshpaint::write_texture_maps(maps, dir);
+    meshpaint::write_obj_model(model, maps, dir);
+  });
+  this->Message = ok ? "exported " + dir + "/model.obj" : this->LastError;
+  this->UpdateText();
+  this->Render();
+  return ok;
+}
+
+void vtkPaintView::SetHelpVisible(bool visible)
+{
+  this->Impl->help->SetVisibility(visible);
+  this->Render();
+}
+
+bool vtkPaintView::GetHelpVisible() { return this->Impl->help->GetVisibility() != 0; }
+
+void vtkPaintView::UpdateText()
+{
+  Internals& in = *this->Impl;
+  if (!in.initialized || !in.brush)
+    return;
+  const int* size = in.window->GetSize();
+  in.help->SetPosition(10, size[1] - 10);
+  std::string text = in.brush->describe() + "\nlevel " + std::to_string(this->Level) + " (level of detail " +
+                     std::to_string(this->CoarseLevel()) + ")   strokes " +
+                     std::to_string(in.surface ? in.surface->history().size() : 0) + "   h: help";
+  if (!this->Message.empty())
+    text += "   | " + this->Message;
+  in.status->SetInput(text.c_str());
+}

@@ -1,0 +1,219 @@
+/**
+ * @class vtkPaintView
+ * @brief The interactive painting window: a painted surface, its brush, its picker.
+ *
+ * Holds the engine's paint surface, a render window showing it with its
+ * materials, a vtkSurfacePicker for brush centres, a brush cursor, the
+ * on-screen settings and a help overlay. vtkPaintInteractorStyle turns mouse
+ * and keys into BeginStroke()/ContinueStroke()/EndStroke() and HandleKey().
+ *
+ * A drag is one stroke. While it is drawn, each new piece of the path is
+ * painted at once so the user sees it; when the button is released those
+ * pieces are undone and the whole path is applied as one stroke, exactly as
+ * a stroke script would apply it. Every session is recorded that way:
+ * GetRecording() is a stroke script that `meshpaint paint` replays to the
+ * same bits.
+ *
+ * Methods that can fail return 0 and leave the reason in GetLastError().
+ */
+#ifndef vtkPaintView_h
+#define vtkPaintView_h
+
+#include "meshpaintVisModule.h" // for MESHPAINTVIS_EXPORT
+
+#include <vtkObject.h> // for vtkObject
+
+#include <memory> // for std::unique_ptr
+#include <string> // for std::string
+
+class vtkPolyData;
+class vtkRenderWindow;
+class vtkRenderWindowInteractor;
+class vtkRenderer;
+class vtkSurfacePicker;
+
+namespace meshpaint {
+struct BaseMesh;
+class PaintSurface;
+struct Project;
+struct StrokeScript;
+}
+
+class MESHPAINTVIS_EXPORT vtkPaintView : public vtkObject
+{
+public:
+  static vtkPaintView* New();
+  vtkTypeMacro(vtkPaintView, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  //@{
+  /// Painting level, 1 to 12 (default 3), and OpenCL device selector (see
+  /// `meshpaint devices`; empty: default). Set before the surface.
+  vtkSetClampMacro(Level, int, 1, 12);
+  vtkGetMacro(Level, int);
+  vtkSetStdStringFromCharMacro(Device);
+  vtkGetCharFromStdStringMacro(Device);
+  /// "buffer", "image", or empty for the device's default.
+  vtkSetStdStringFromCharMacro(Storage);
+  vtkGetCharFromStdStringMacro(Storage);
+  //@}
+
+  //@{
+  /// Window size and offscreen rendering (for tests and scripts); set
+  /// before Initialize().
+  vtkSetVector2Macro(Size, int);
+  vtkGetVector2Macro(Size, int);
+  vtkSetMacro(OffScreen, bool);
+  vtkGetMacro(OffScreen, bool);
+  vtkBooleanMacro(OffScreen, bool);
+  //@}
+
+  //@{
+  /// Level of detail: while the camera moves or a stroke is drawn, the
+  /// surface is drawn at this coarser level (positions of that level,
+  /// normals and channels of the painting level); the painting level when
+  /// the view rests. -1 (default): Level - 1 (at least 1); 0: off;
+  /// larger than Level: Level.
+  vtkSetClampMacro(LodLevel, int, -1, 12);
+  vtkGetMacro(LodLevel, int);
+  /// Quads of the painted surface at the painting level.
+  vtkIdType GetFaceCount();
+  /// The level drawn now.
+  int GetShownLevel();
+  /// Draws as while the camera moves (true) or as at rest (false); the
+  /// interactor style does this itself during camera interaction.
+  void SetMoving(bool moving);
+  //@}
+
+  /// The folder Save() and Export() write to (default "meshpaint-session").
+  vtkSetStdStringFromCharMacro(SaveDirectory);
+  vtkGetCharFromStdStringMacro(SaveDirectory);
+
+  //@{
+  /// The surface to paint: a mesh file (OBJ, OFF, PLY, STL) or the polygons
+  /// of a vtkPolyData. Builds the atlas at Level on the device.
+  int LoadMesh(const char* path);
+  int SetInputData(vtkPolyData* polygons);
+  //@}
+#ifndef __VTK_WRAP__
+  /// The same from an engine mesh (the command line loads and reports it).
+  int SetBaseMesh(const meshpaint::BaseMesh& mesh);
+  /// Paints on a surface someone else holds too (vtkPaintSurface::GetView());
+  /// Level becomes the surface's.
+  void SetSurface(std::shared_ptr<meshpaint::PaintSurface> surface);
+  /// The project the surface came from: Save() then also writes
+  /// SaveDirectory/surface.meshpaint, this project continued (its labels,
+  /// scan and earlier history kept).
+  void SetProject(const meshpaint::Project& project);
+  /// True when this view paints on `surface`.
+  bool Shows(const std::shared_ptr<meshpaint::PaintSurface>& surface) const;
+  /// Applies a parsed script whose pattern and stamp files are loaded.
+  int ApplyScript(const meshpaint::StrokeScript& script);
+#endif
+
+  /// Applies a stroke script's strokes (recorded like any other stroke).
+  int ApplyStrokes(const char* json);
+
+  /// Creates the window, renderer, actors and interactor (not started).
+  int Initialize();
+  /// Runs the interactor's event loop until the window closes.
+  void Start();
+  /// Renders the current state.
+  void Render();
+
+  vtkRenderWindow* GetRenderWindow();
+  vtkRenderer* GetRenderer();
+  vtkRenderWindowInteractor* GetInteractor();
+  vtkSurfacePicker* GetPicker();
+
+  //@{
+  /// A stroke at display pixels (origin bottom left). BeginStroke returns 0
+  /// when no surface faces the viewer there (the caller may turn the camera
+  /// instead). The stroke ends by itself at a silhouette or off the surface;
+  /// further ContinueStroke() calls then do nothing until EndStroke().
+  int BeginStroke(int x, int y);
+  int ContinueStroke(int x, int y);
+  int EndStroke();
+  bool IsPainting() const;
+  //@}
+
+  /// Puts the brush cursor on the surface under pixel (x, y), or hides it.
+  void MoveCursor(int x, int y);
+
+  /// Cosine below which the surface counts as turned away (a silhouette);
+  /// strokes end there. Default 0.1.
+  vtkSetClampMacro(SilhouetteCosine, double, 0.0, 1.0);
+  vtkGetMacro(SilhouetteCosine, double);
+
+  /// Acts on a key (VTK key symbol, e.g. "z", "bracketleft", "F1"): brush
+  /// settings, undo/redo (Ctrl+Z, Ctrl+Y), save (Ctrl+S), export (Ctrl+E),
+  /// help (h, F1), camera reset (r), quit (q, Escape). 1 when it was one.
+  int HandleKey(const char* keysym, bool control, bool shift);
+
+  int Undo();
+  int Redo();
+
+  /// Saves the session into SaveDirectory: strokes.json (the recording)
+  /// and surface.vtp, each atomically. The one place a project format
+  /// plugs in.
+  virtual int Save();
+  /// Writes the textured model (model.obj, model.mtl, PNG maps) of level
+  /// max(1, Level - 2) into SaveDirectory.
+  int Export();
+
+  /// The session so far as a stroke script (undone strokes left out).
+  const char* GetRecording();
+
+  /// The help overlay listing the keys.
+  void SetHelpVisible(bool visible);
+  bool GetHelpVisible();
+
+  /// The status line's last message ("saved ...", "nothing to undo").
+  const char* GetMessage() const { return this->Message.c_str(); }
+
+  /// Why the last call failed; empty after a good one.
+  const char* GetLastError() const { return this->LastError.c_str(); }
+
+protected:
+  vtkPaintView();
+  ~vtkPaintView() override;
+
+  int Level = 3;
+  int LodLevel = -1;
+  std::string Device;
+  std::string Storage;
+  int Size[2] = {1024, 768};
+  bool OffScreen = false;
+  std::string SaveDirectory = "meshpaint-session";
+  double SilhouetteCosine = 0.1;
+  std::string LastError;
+  std::string Message;
+
+private:
+  vtkPaintView(const vtkPaintView&) = delete;
+  void operator=(const vtkPaintView&) = delete;
+
+  int Step(bool back); // Undo (back) or Redo
+  //! Result of a look-up at a pixel: on a surface facing the viewer?
+  bool PickFacing(int x, int y, double point[3], double normal[3]);
+  //! Puts the cursor at the surface under (x, y), or hides it; true when shown.
+  bool PlaceCursor(int x, int y);
+  //! Paints a piece of the running stroke at once, for the eye.
+  void PaintPiece(bool first);
+  //! Rebuilds what is drawn from the engine; `geometry`: positions changed.
+  void Refresh(bool geometry);
+  //! The level drawn while moving.
+  int CoarseLevel() const;
+  //! The painted surface at `level` (Level or CoarseLevel()), rebuilt if stale.
+  vtkPolyData* Surface(int level);
+  //! Hands the actor the level that fits the moment.
+  void Show();
+  //! Start and end of a camera interaction: coarse while it lasts.
+  void OnCameraInteraction(vtkObject*, unsigned long event, void*);
+  void UpdateText();
+
+  struct Internals;
+  std::unique_ptr<Internals> Impl;
+};
+
+#endif
