@@ -289,10 +289,11 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         const bool counted = read_count(rest, v, number, c);
         if (counted)
           nv = v;
-        if (counted && read_count(rest, f, number, c))
+        long e = -1;
+        if (counted && read_count(rest, f, number, c) && read_count(rest, e, number, c))
           c.declared_faces = f;
         else if (counted && c.problem.empty())
-          c.problem = "line " + std::to_string(number) + ": the vertex count without the face count";
+          c.problem = "line " + std::to_string(number) + ": the counts need vertices, faces and edges";
         if (!c.problem.empty() ||
             (counted && !check_counts(nv, std::max(f, 0L), file_size, 6, c).problem.empty()))
           return c;
@@ -304,10 +305,11 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         const bool counted = read_count(counts, v, number, c);
         if (counted)
           nv = v;
-        if (!counted || !read_count(counts, f, number, c)) {
-          // OpenMesh would take the face count from the lines that follow.
+        long e = -1;
+        if (!counted || !read_count(counts, f, number, c) || !read_count(counts, e, number, c)) {
+          // OpenMesh would take the missing counts from the lines that follow.
           if (counted && c.problem.empty())
-            c.problem = "line " + std::to_string(number) + ": the vertex count without the face count";
+            c.problem = "line " + std::to_string(number) + ": the counts need vertices, faces and edges";
           return c;
         }
         c.declared_faces = f;
@@ -342,6 +344,16 @@ FileCensus take_census(const std::string& path, const std::string& ext)
           c.problem = "line " + std::to_string(number) + ": a face of " + w[0] + " corners names only " +
                       std::to_string(w.size() - 1) + " vertices";
           return c;
+        }
+        for (long k = 1; k <= corners; ++k) {
+          char* end = nullptr;
+          const long index = std::strtol(w[std::size_t(k)].c_str(), &end, 10);
+          if (*end || index < 0 || index >= nv) {
+            c.problem = "line " + std::to_string(number) + ": face " + std::to_string(face_lines - 1) +
+                        " names vertex " + w[std::size_t(k)] + ", but there are only " + std::to_string(nv) +
+                        " vertices";
+            return c;
+          }
         }
       }
     }
