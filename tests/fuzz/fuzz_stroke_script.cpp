@@ -2,7 +2,8 @@
 // stroke it accepts, and the round trip through stroke_script_json(): what
 // was accepted is written, read back and written again to the same text.
 // Input errors are expected; anything else is a finding.
-#include "core/errors.h"
+#include "expect_input_errors.h"
+
 #include "paint/stroke.h"
 
 #include <cstddef> // for std::size_t
@@ -14,7 +15,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
   using namespace meshpaint;
-  try {
+  fuzz::expect_input_errors([&] {
     StrokeScript script = parse_stroke_script(std::string(reinterpret_cast<const char*>(data), size));
     for (const Stroke& stroke : script.strokes)
       stroke_samples(stroke);
@@ -23,10 +24,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       std::fprintf(stderr, "the script does not read back as written:\n%s\n", written.c_str());
       std::abort();
     }
-  } catch (const InputError&) {
-  } catch (const std::exception& e) { // any other exception is a finding: say which
-    std::fprintf(stderr, "unexpected exception: %s\n", e.what());
-    std::abort();
-  }
+  });
   return 0;
 }
