@@ -284,19 +284,14 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         continue;
       if (number == 1 && line.find("OFF") != std::string::npos) {
         plain_off = line.compare(line.find_first_not_of(" \t"), 3, "OFF") == 0;
+        // OpenMesh reads the counts from the next line, whatever follows
+        // the keyword here: the file would be read out of step.
         std::istringstream rest(line.substr(line.find("OFF") + 3));
-        long f = -1, v = -1;
-        const bool counted = read_count(rest, v, number, c);
-        if (counted)
-          nv = v;
-        long e = -1;
-        if (counted && read_count(rest, f, number, c) && read_count(rest, e, number, c))
-          c.declared_faces = f;
-        else if (counted && c.problem.empty())
-          c.problem = "line " + std::to_string(number) + ": the counts need vertices, faces and edges";
-        if (!c.problem.empty() ||
-            (counted && !check_counts(nv, std::max(f, 0L), file_size, 6, c).problem.empty()))
+        std::string word;
+        if (rest >> word) {
+          c.problem = "line 1: " + shown(word) + " after OFF is not read; the counts go on the next line";
           return c;
+        }
         continue;
       }
       if (nv < 0) {
