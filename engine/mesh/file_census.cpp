@@ -335,8 +335,10 @@ FileCensus take_census(const std::string& path, const std::string& ext)
                       " corners, but there are only " + std::to_string(nv) + " vertices";
           return c;
         }
-        if (long(w.size()) < corners + 1) {
-          c.problem = "line " + std::to_string(number) + ": a face of " + w[0] + " corners names only " +
+        // Plain OFF faces carry no colour: OpenMesh would read extra
+        // numbers as the next face.
+        if (long(w.size()) < corners + 1 || (plain_off && long(w.size()) != corners + 1)) {
+          c.problem = "line " + std::to_string(number) + ": a face of " + w[0] + " corners names " +
                       std::to_string(w.size() - 1) + " vertices";
           return c;
         }
