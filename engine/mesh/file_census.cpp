@@ -307,6 +307,12 @@ FileCensus take_census(const std::string& path, const std::string& ext)
             c.problem = "line " + std::to_string(number) + ": the counts need vertices, faces and edges";
           return c;
         }
+        std::string extra;
+        if (counts >> extra) { // OpenMesh would read it as the first coordinate
+          c.problem = "line " + std::to_string(number) + ": " + shown(extra) +
+                      " after the vertex, face and edge counts";
+          return c;
+        }
         c.declared_faces = f;
         if (!check_counts(nv, f, file_size, 6, c).problem.empty())
           return c;
