@@ -2,7 +2,8 @@
 # One command from a fresh Debian 12 machine to every test: installs what is
 # missing, builds, and runs the whole suite (unit, oracle, command line);
 # then the same suite built with AddressSanitizer and UndefinedBehaviorSanitizer
-# (MESHPAINT_SKIP_SANITIZE=1 skips that second pass).
+# (MESHPAINT_SKIP_SANITIZE=1 skips that second pass); then each libFuzzer
+# target for 30 s (MESHPAINT_SKIP_FUZZ=1 skips it).
 set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
 "$here/scripts/install-deps.sh"
@@ -13,4 +14,7 @@ if [ "${MESHPAINT_SKIP_SANITIZE:-0}" != 1 ]; then
   # Leak checking is off: the OpenCL ICD loader and PoCL keep allocations
   # until exit by design.
   (cd "$here/build-asan" && ASAN_OPTIONS=detect_leaks=0 ctest --output-on-failure -j"$(nproc)" "$@")
+fi
+if [ "${MESHPAINT_SKIP_FUZZ:-0}" != 1 ]; then
+  "$here/scripts/fuzz.sh" 30
 fi

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>  // for std::rotate
 #include <filesystem> // for std::filesystem
 #include <fstream>    // for std::ofstream
 
@@ -96,6 +97,25 @@ TEST(MeshImport, RepairsAreCounted)
   EXPECT_GE(fin.report.isolated_vertices_removed, 1u);
   EXPECT_EQ(fin.face_count(), 3u);
   EXPECT_EQ(fin.report.lines().size(), 3u);
+}
+
+TEST(MeshImport, DuplicateFacesAreDroppedNotDetached)
+{
+  // A cube with one face repeated as is and one repeated reversed.
+  const BaseMesh cube = test::cube();
+  std::vector<std::vector<int>> faces;
+  for (std::size_t f = 0; f < cube.face_count(); ++f)
+    faces.emplace_back(cube.face_vertices.begin() + cube.face_offsets[f],
+                       cube.face_vertices.begin() + cube.face_offsets[f + 1]);
+  faces.push_back(faces[0]);
+  faces.push_back({faces[1].rbegin(), faces[1].rend()});
+  std::rotate(faces.back().begin(), faces.back().begin() + 1, faces.back().end());
+  const BaseMesh back = make_base_mesh(cube.points, faces, "doubled");
+  EXPECT_EQ(back.report.duplicate_faces_dropped, 2u);
+  EXPECT_EQ(back.report.nonmanifold_faces_detached, 0u);
+  EXPECT_EQ(back.face_count(), cube.face_count());
+  EXPECT_EQ(back.vertex_count(), cube.vertex_count());
+  EXPECT_EQ(compute_stats(back).components, 1u);
 }
 
 TEST(MeshImport, BadInputNamesTheProblem)

@@ -3,10 +3,11 @@
 #include "cl/quirks.h"
 #include "core/errors.h"
 
-#include <algorithm> // for std::search
+#include <algorithm> // for std::search, std::min
 #include <cctype>    // for std::tolower
+#include <cerrno>    // for errno, ERANGE
 #include <cstdio>    // for std::snprintf
-#include <cstdlib>   // for std::getenv
+#include <cstdlib>   // for std::getenv, std::strtoull
 
 namespace meshpaint {
 namespace {
@@ -26,6 +27,28 @@ std::string lower(std::string s)
   for (char& c : s)
     c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return s;
+}
+
+//! MESHPAINT_DEVICE_MEMORY: bytes, or a number with K, M or G (binary
+//! units); 0 when unset.
+//! \throw InputError when it is set but not such a size.
+std::uint64_t memory_cap()
+{
+  const char* text = std::getenv("MESHPAINT_DEVICE_MEMORY");
+  if (!text || !*text)
+    return 0;
+  char* end = nullptr;
+  errno = 0;
+  const unsigned long long n = std::strtoull(text, &end, 10);
+  int shift = 0;
+  if (end != text && *end && !end[1])
+    shift = *end == 'K' ? 10 : *end == 'M' ? 20 : *end == 'G' ? 30 : -1;
+  else if (end == text || *end)
+    shift = -1;
+  if (shift < 0 || n == 0 || errno == ERANGE || n > (~0ull >> shift))
+    throw InputError(std::string("MESHPAINT_DEVICE_MEMORY must be a size such as 512M or 2G, not '") + text +
+                     "'");
+  return std::uint64_t(n) << shift;
 }
 
 std::vector<Found> enumerate()
@@ -60,6 +83,10 @@ std::vector<Found> enumerate()
       info.images = dev.getInfo<CL_DEVICE_IMAGE_SUPPORT>() == CL_TRUE;
       info.global_memory = dev.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>();
       info.max_allocation = dev.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
+      if (const std::uint64_t cap = memory_cap()) { // the device as if it had less memory
+        info.global_memory = std::min(info.global_memory, cap);
+        info.max_allocation = std::min(info.max_allocation, cap);
+      }
       if (info.images) {
         info.image_max_width = dev.getInfo<CL_DEVICE_IMAGE2D_MAX_WIDTH>();
         info.image_max_height = dev.getInfo<CL_DEVICE_IMAGE2D_MAX_HEIGHT>();

@@ -20,8 +20,8 @@ struct DeviceInfo
   std::string version;
   bool gpu = false;
   bool images = false;               //!< image2d_t supported
-  std::uint64_t global_memory = 0;   //!< bytes
-  std::uint64_t max_allocation = 0;  //!< bytes in one buffer or image
+  std::uint64_t global_memory = 0;   //!< bytes (at most MESHPAINT_DEVICE_MEMORY when set)
+  std::uint64_t max_allocation = 0;  //!< bytes in one buffer or image (likewise)
   std::size_t image_max_width = 0;   //!< texels
   std::size_t image_max_height = 0;  //!< texels
 
@@ -40,8 +40,11 @@ public:
   //! \throw DeviceError when there is no platform or no matching device.
   static std::shared_ptr<Runtime> open(const std::string& selector = "");
 
-  //! Every device of every platform.
-  //! \throw DeviceError when there is no OpenCL platform.
+  //! Every device of every platform. MESHPAINT_DEVICE_MEMORY (e.g. "512M")
+  //! caps the memory and largest allocation reported, as if every device had
+  //! at most that much: for testing limits, or to leave memory to others.
+  //! \throw DeviceError when there is no OpenCL platform; InputError when
+  //! MESHPAINT_DEVICE_MEMORY is not a size.
   static std::vector<DeviceInfo> list_devices();
 
   const cl::Context& context() const { return context_; }

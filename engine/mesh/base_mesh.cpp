@@ -4,16 +4,17 @@
 #include "core/format.h"
 #include "mesh/file_census.h"
 #include "mesh/openmesh_types.h"
+#include "mesh/quiet_openmesh.h"
 
 #include <OpenMesh/Core/IO/IOManager.hh>          // for OpenMesh::IO::IOManager
 #include <OpenMesh/Core/IO/importer/ImporterT.hh> // for OpenMesh::IO::ImporterT
-#include <OpenMesh/Core/System/omstream.hh>       // for omerr, omlog, omout
 
-#include <algorithm>  // for std::transform, std::min, std::max
-#include <cmath>      // for std::isfinite, std::sqrt
+#include <algorithm>  // for std::transform, std::min, std::max, std::min_element
+#include <cmath>      // for std::isfinite, std::sqrt, std::fabs
 #include <filesystem> // for std::filesystem
 #include <map>        // for std::map
 #include <numeric>    // for std::iota
+#include <set>        // for std::set
 #include <sstream>    // for std::ostringstream
 
 namespace meshpaint {
@@ -45,6 +46,12 @@ public:
       ++report.degenerate_faces_dropped;
       return OpenMesh::FaceHandle();
     }
+    // A second copy of a face would be detached as non-manifold and leave a
+    // loose sheet on the surface; it adds nothing, so it goes.
+    if (!seen_.insert(cyclic_key(indices)).second) {
+      ++report.duplicate_faces_dropped;
+      return OpenMesh::FaceHandle();
+    }
     const std::size_t before = mesh_.n_vertices();
     const OpenMesh::FaceHandle fh = ImporterT<PolyMesh>::add_face(indices);
     if (mesh_.n_vertices() != before)
@@ -58,26 +65,22 @@ public:
   std::string problem_;
 
 private:
+  //! The corners from the smallest index on, in the direction of its
+  //! smaller neighbour: equal for a face and its copies, either orientation.
+  static std::vector<int> cyclic_key(const VHandles& f)
+  {
+    const std::size_t n = f.size();
+    const std::size_t m = std::size_t(std::min_element(f.begin(), f.end()) - f.begin());
+    const bool forward = f[(m + 1) % n].idx() < f[(m + n - 1) % n].idx();
+    std::vector<int> key(n);
+    for (std::size_t k = 0; k < n; ++k)
+      key[k] = f[forward ? (m + k) % n : (m + n - k) % n].idx();
+    return key;
+  }
+
   PolyMesh& mesh_;
   std::size_t faces_ = 0;
-};
-
-//! Silences OpenMesh's own console messages while it runs; our errors say it.
-class QuietOpenMesh
-{
-public:
-  QuietOpenMesh()
-  {
-    omerr().disable();
-    omlog().disable();
-    omout().disable();
-  }
-  ~QuietOpenMesh()
-  {
-    omerr().enable();
-    omlog().enable();
-    omout().enable();
-  }
+  std::set<std::vector<int>> seen_; // cyclic_key of every face added
 };
 
 std::string vertex_text(const Vec3& p)
@@ -156,6 +159,10 @@ BaseMesh finish(const PolyMesh& om, const ImportReport& report, const std::strin
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
       throw InputError(where + "vertex " + std::to_string(v) + " has a non-finite coordinate " +
                        vertex_text({p[0], p[1], p[2]}));
+    if (std::max({std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2])}) > kMaxCoordinate)
+      throw InputError(where + "vertex " + std::to_string(v) + " has a coordinate beyond +-1e15 " +
+                       vertex_text({p[0], p[1], p[2]}) + ": limit normals would overflow single precision; "
+                       "scale the mesh down");
     if (remap[v] < 0) {
       ++mesh.report.isolated_vertices_removed;
       continue;
@@ -182,7 +189,7 @@ BaseMesh finish(const PolyMesh& om, const ImportReport& report, const std::strin
 
 bool ImportReport::changed() const
 {
-  return faces_skipped_by_reader || degenerate_faces_dropped || nonmanifold_faces_detached ||
+  return faces_skipped_by_reader || degenerate_faces_dropped || duplicate_faces_dropped || nonmanifold_faces_detached ||
          nonmanifold_vertices_split || isolated_vertices_removed;
 }
 
@@ -195,6 +202,9 @@ std::vector<std::string> ImportReport::lines() const
   if (degenerate_faces_dropped)
     out.push_back("dropped " + std::to_string(degenerate_faces_dropped) +
                   " degenerate faces (a vertex named twice, or fewer than 3 vertices)");
+  if (duplicate_faces_dropped)
+    out.push_back("dropped " + std::to_string(duplicate_faces_dropped) +
+                  " duplicate faces (the corners of an earlier face, in either orientation)");
   if (nonmanifold_faces_detached)
     out.push_back("detached " + std::to_string(nonmanifold_faces_detached) +
                   " faces that do not join their neighbours (an edge with more than two faces, or "
@@ -268,6 +278,8 @@ BaseMesh load_mesh(const std::string& path)
   // OpenMesh's text readers skip a vertex written as "nan" or "inf"; say so
   // rather than let the faces after it name the wrong vertices.
   const FileCensus census = take_census(path, ext);
+  if (!census.problem.empty())
+    throw InputError(where + census.problem);
   if (census.nonfinite_line >= 0)
     throw InputError(where + "line " + std::to_string(census.nonfinite_line) + ": non-finite coordinate '" +
                      census.nonfinite_token + "'");

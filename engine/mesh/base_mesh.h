@@ -14,6 +14,7 @@ struct ImportReport
 {
   std::size_t faces_skipped_by_reader = 0;     //!< listed in the file, never delivered
   std::size_t degenerate_faces_dropped = 0;    //!< faces naming one vertex twice
+  std::size_t duplicate_faces_dropped = 0;     //!< faces with the corners of an earlier face (either orientation)
   std::size_t nonmanifold_faces_detached = 0;  //!< faces OpenMesh could not join to their neighbours
   std::size_t nonmanifold_vertices_split = 0;  //!< extra surface sheets at one vertex
   std::size_t isolated_vertices_removed = 0;   //!< vertices used by no face
@@ -41,11 +42,15 @@ struct BaseMesh
   double diagonal() const;
 };
 
+//! Largest coordinate magnitude accepted: limit normals (cross products of
+//! tangents, then their squared length) overflow single precision near 1e19.
+constexpr float kMaxCoordinate = 1e15f;
+
 //! Builds a base mesh from points and faces, checking and repairing as
 //! load_mesh does.
 //! Faces with fewer than three distinct vertices are dropped and counted.
 //! \throw InputError naming the first problem (no faces, non-finite
-//! coordinate, index out of range).
+//! coordinate or one beyond kMaxCoordinate, index out of range).
 BaseMesh make_base_mesh(std::vector<Vec3> points, const std::vector<std::vector<int>>& faces,
                         const std::string& name = "mesh");
 

@@ -1,6 +1,8 @@
 // A quick look at a mesh file before OpenMesh parses it: what OpenMesh's
 // readers would otherwise skip without a word (text coordinates "nan" or
-// "inf", faces a reader leaves out).
+// "inf", faces a reader leaves out), and the malformed structure they would
+// abort, loop or exhaust memory on (a face corner without an index, counts
+// the file cannot hold, a PLY header without its end).
 #pragma once
 
 #include <string> // for std::string
@@ -12,9 +14,11 @@ struct FileCensus
   long declared_faces = -1;    //!< faces the file says or shows it has; -1 unknown
   long nonfinite_line = -1;    //!< first text line with a "nan"/"inf" number, 1-based
   std::string nonfinite_token; //!< that number as written
+  std::string problem;         //!< malformed structure, e.g. "line 4: ..."; empty: none found
 };
 
 //! Scans OBJ, OFF and ASCII PLY/STL text, or the header of binary PLY/STL.
+//! The first structural problem found ends the scan.
 FileCensus take_census(const std::string& path, const std::string& lower_extension);
 
 } // namespace meshpaint

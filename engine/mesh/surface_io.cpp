@@ -4,6 +4,7 @@
 #include "core/errors.h"
 #include "core/format.h"
 #include "mesh/openmesh_types.h"
+#include "mesh/quiet_openmesh.h"
 
 #include <OpenMesh/Core/IO/MeshIO.hh> // for OpenMesh::IO::write_mesh
 
@@ -35,6 +36,7 @@ void write_surface(const WeldedSurface& s, const std::string& path)
   if (ext == ".ply")
     options += OpenMesh::IO::Options::Binary;
   write_atomically(path, [&](const std::string& tmp) {
+    QuietOpenMesh quiet;
     if (!OpenMesh::IO::write_mesh(mesh, tmp, options))
       throw IOError("cannot write '" + path + "'");
   });

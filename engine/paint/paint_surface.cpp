@@ -4,6 +4,7 @@
 #include "cl/launch.h"
 #include "cl/program.h"
 #include "core/errors.h"
+#include "core/format.h"
 #include "core/timer.h"
 #include "paint/spray.h"
 
@@ -16,6 +17,45 @@ namespace meshpaint {
 namespace {
 
 constexpr std::size_t kGroup = 64;
+
+//! Device bytes painting adds to the atlas at a level: the three channel
+//! layers, the channel and position work layers, the dab weights and the
+//! patch bounds that the constructor allocates.
+std::size_t paint_bytes(const LevelLayout& l, AtlasStorage storage)
+{
+  return 4 * l.texels() * sizeof(Float4) + layer_bytes(l, storage) + l.texels() * sizeof(float) +
+         std::size_t(l.patches) * sizeof(cl_float4);
+}
+
+//! Why the atlas and the painting layers at `level` do not fit the device,
+//! or "" when they do.
+std::string paint_fit_problem(const AtlasTopology& topology, int level, const DeviceInfo& device,
+                              AtlasStorage storage)
+{
+  const MemoryPlan plan = plan_memory(topology, level, storage);
+  const std::size_t total = plan.total + paint_bytes(plan.finest, storage);
+  if (total > device.global_memory)
+    return format_bytes(total) + " with its paint layers, more than the device's memory (" +
+           format_bytes(device.global_memory) + ")";
+  return "";
+}
+
+//! Refuses a painting level whose paint layers would not fit beside the
+//! atlas (which has checked its own), before they are allocated.
+//! \throw ResourceError naming the largest level that fits for painting.
+void check_paint_fits(Atlas& atlas, int level, const std::string& name)
+{
+  const DeviceInfo& device = atlas.runtime().info();
+  const std::string why = paint_fit_problem(atlas.topology(), level, device, atlas.storage());
+  if (why.empty())
+    return;
+  int fits = 0;
+  while (fits < level && paint_fit_problem(atlas.topology(), fits + 1, device, atlas.storage()).empty())
+    ++fits;
+  throw ResourceError("painting level " + std::to_string(level) + " of '" + name + "' needs " + why + "; " +
+                      (fits ? "the largest level that fits for painting is " + std::to_string(fits)
+                            : std::string("not even level 1 fits for painting")));
+}
 
 } // namespace
 
@@ -62,6 +102,7 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
   : atlas_(std::make_unique<Atlas>(runtime, mesh, level, storage)), level_(level), device_(std::make_unique<Device>()),
     base_material_(material)
 {
+  check_paint_fits(*atlas_, level, mesh.name);
   atlas_->subdivide(1, level);
   atlas_->compute_limit();
   const LevelLayout l = atlas_->layout(level);

@@ -543,11 +543,12 @@ StrokeScript parse_stroke_script(const std::string& text)
   json j;
   try {
     j = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {
     // e.what() reads "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
+    // (or out_of_range.406 for a number too large for a double)
     const std::string what = e.what();
-    const std::size_t at = what.find("parse error");
-    throw InputError("stroke script is not valid JSON: " + (at == std::string::npos ? what : what.substr(at)));
+    const std::size_t at = what.find("] ");
+    throw InputError("stroke script is not valid JSON: " + (at == std::string::npos ? what : what.substr(at + 2)));
   }
   if (!j.is_object())
     throw InputError("stroke script must be a JSON object {\"strokes\": [...]}");
@@ -616,6 +617,8 @@ std::vector<DabSample> stroke_samples(const Stroke& s)
   const auto pressure_at = [&](std::size_t k) { return s.pressure.empty() ? 1.f : s.pressure[k]; };
   // Spacing follows the pressure-scaled radius; never below a tiny step.
   const auto step = [&](float pressure) { return s.spacing * s.radius * std::max(pressure, 0.05f); };
+  if (s.points.empty()) // wash and dip have no path
+    return {};
   if (!(step(0.05f) > 0.f))
     return {{s.points[0], pressure_at(0)}};
   std::vector<DabSample> out{{s.points[0], pressure_at(0)}};

@@ -141,6 +141,7 @@ constexpr std::size_t kMaxDabsPerStroke = 1000000;
 
 //! Centres of the dabs of a stroke along its path, every spacing * radius
 //! (pressure-scaled), the first point always included; with their pressure.
+//! Empty for a stroke without a path (wash, dip).
 struct DabSample
 {
   Vec3 centre;

@@ -34,10 +34,70 @@ def test_bad_input_gives_one_line_and_exit_2(case, tmp_path):
     args = [a.format(dir=BAD, scans=SCANS, tmp=tmp_path) for a in case["args"]]
     r = run(*args)
     lines = r.stderr.strip().splitlines()
+    if case.get("exit", 2) == 0:
+        # A repair or a note: the command succeeds and says what it did.
+        assert r.returncode == 0, r.stderr
+        said = lines + r.stdout.splitlines()
+        assert any(re.search(case["message"], line) for line in said), r.stdout + r.stderr
+        assert all(line.startswith("meshpaint") or line.startswith("warning") for line in lines), r.stderr
+        return
     assert r.returncode == 2, r.stderr
     assert len(lines) == 1, r.stderr
     assert re.search(case["message"], lines[0]), lines[0]
     assert lines[0].startswith("meshpaint "), lines[0]
+
+
+@pytest.mark.parametrize("name", ["zero-area-face", "high-valence", "tiny-coordinates"])
+def test_awkward_meshes_give_finite_limit_surfaces(name, tmp_path):
+    out = tmp_path / (name + ".obj")
+    r = run("subdivide", os.path.join(BAD, name + ".obj"), "--level", "3", "--limit", "-o", str(out))
+    assert r.returncode == 0, r.stderr
+    text = out.read_text().lower()
+    assert "nan" not in text and "inf" not in text
+    poly = read_polydata(out)
+    assert poly.GetNumberOfCells() > 0
+
+
+def run_with_memory(cap, *args):
+    env = dict(os.environ, MESHPAINT_DEVICE_MEMORY=cap)
+    return subprocess.run([BIN, *args], capture_output=True, text=True, timeout=600, env=env)
+
+
+def test_memory_cap_refuses_a_level_before_allocating(tmp_path):
+    out = tmp_path / "x.obj"
+    r = run_with_memory("64M", "subdivide", os.path.join(SCANS, "bunny00.off"), "--level", "6", "-o", str(out))
+    assert r.returncode == 2, r.stderr
+    assert re.fullmatch(r"meshpaint subdivide: level 6 of 'bunny00' needs .* \(64\.0 MiB\); "
+                        r"the largest level that fits is 1", r.stderr.strip()), r.stderr
+    assert not out.exists()
+    # the level it names does fit under the same cap
+    r = run_with_memory("64M", "subdivide", os.path.join(SCANS, "bunny00.off"), "--level", "1", "-o", str(out))
+    assert r.returncode == 0, r.stderr
+    r = run_with_memory("64M", "devices")
+    assert "64.0 MiB" in r.stdout
+
+
+def test_memory_cap_counts_the_paint_layers(tmp_path):
+    # Level 2 of the bunny fits as an atlas under 200 MiB, not with its paint layers.
+    strokes = os.path.join(SOURCE, "data", "strokes", "bunny_demo.json")
+    out = tmp_path / "painted"
+    r = run_with_memory("200M", "paint", os.path.join(SCANS, "bunny00.off"), "--strokes", strokes, "--level", "2",
+                        "-o", str(out))
+    assert r.returncode == 2, r.stderr
+    assert re.fullmatch(r"meshpaint paint: painting level 2 of 'bunny00' needs .* with its paint layers, .*"
+                        r"\(200\.0 MiB\); the largest level that fits for painting is 1", r.stderr.strip()), r.stderr
+    assert not (out / "surface.vtp").exists()
+    r = run_with_memory("200M", "paint", os.path.join(SCANS, "bunny00.off"), "--strokes", strokes, "--level", "1",
+                        "--model-level", "1", "-o", str(out))
+    assert r.returncode == 0, r.stderr
+    assert (out / "surface.vtp").exists()
+
+
+def test_memory_cap_must_be_a_size(tmp_path):
+    r = run_with_memory("lots", "subdivide", os.path.join(SCANS, "bunny00.off"), "--level", "2",
+                        "-o", str(tmp_path / "x.obj"))
+    assert r.returncode == 2
+    assert r.stderr.strip() == "meshpaint subdivide: MESHPAINT_DEVICE_MEMORY must be a size such as 512M or 2G, not 'lots'"
 
 
 def test_unknown_device_is_a_device_error(tmp_path):
