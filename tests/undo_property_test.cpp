@@ -221,7 +221,13 @@ TEST(LongSession, TenThousandStrokesStayWithinTheUndoBudget)
   // Beyond the undo log, memory grows only by the recorded strokes
   // (history(), a few hundred bytes each); 64 MiB would be a leak per stroke.
   const long growth = resident_bytes() - rss_warm;
+#if defined(__SANITIZE_ADDRESS__)
+  // AddressSanitizer keeps freed memory in quarantine (256 MiB by default):
+  // resident memory says nothing about leaks there; the log's bound above does.
+  (void)growth;
+#else
   EXPECT_LT(growth, 64l << 20) << "resident memory grew by " << growth << " bytes over 9000 strokes";
+#endif
   EXPECT_EQ(surface.history().size(), 10001u);
   EXPECT_TRUE(surface.undo());
 }

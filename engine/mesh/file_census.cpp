@@ -360,8 +360,11 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         }
       }
     }
-    // A text OFF file that ends early: OpenMesh would make up the rest.
-    if (nv > seen_vertices)
+    // A text OFF file that ends early: OpenMesh would make up the rest (or,
+    // without even the counts, wait for them forever).
+    if (c.problem.empty() && nv < 0)
+      c.problem = "has no counts line (vertices faces edges) after OFF";
+    else if (nv > seen_vertices)
       c.problem = "declares " + std::to_string(nv) + " vertices, but the file ends after " +
                   std::to_string(seen_vertices) + " (truncated?)";
     else if (c.declared_faces > face_lines)
