@@ -262,7 +262,6 @@ FileCensus take_census(const std::string& path, const std::string& ext)
     }
   } else if (ext == ".off") {
     long nv = -1, seen_vertices = 0, face_lines = 0;
-    bool plain_off = false; // "OFF": vertices are x y z only
     while (std::getline(in, line)) {
       ++number;
       // OpenMesh looks for BINARY anywhere in the header line, comment or not.
@@ -283,7 +282,15 @@ FileCensus take_census(const std::string& path, const std::string& ext)
       if (line.find_first_not_of(" \t\r") == std::string::npos)
         continue;
       if (number == 1 && line.find("OFF") != std::string::npos) {
-        plain_off = line.compare(line.find_first_not_of(" \t"), 3, "OFF") == 0;
+        // The variants with per-vertex colours, normals or texture
+        // coordinates (COFF, NOFF, STOFF, ...) are refused: OpenMesh reads
+        // their numbers across line ends, and no rule here could follow it.
+        const std::size_t start = line.find_first_not_of(" \t");
+        if (line.compare(start, 3, "OFF") != 0) {
+          c.problem = "line 1: " + shown(line.substr(start, line.find_first_of(" \t\r", start) - start)) +
+                      " files (per-vertex colours, normals or texture coordinates) are not read; only plain OFF";
+          return c;
+        }
         // OpenMesh reads the counts from the next line, whatever follows
         // the keyword here: the file would be read out of step.
         std::istringstream rest(line.substr(line.find("OFF") + 3));
@@ -323,9 +330,9 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         // its three coordinates (exactly three in plain OFF), all numbers,
         // or what follows is read out of step.
         const std::vector<std::string> w = numeric_words(line, number, kFloatWord, c);
-        if (c.problem.empty() && (w.size() < 3 || (plain_off && w.size() != 3)))
+        if (c.problem.empty() && w.size() != 3)
           c.problem = "line " + std::to_string(number) + ": a vertex of " + std::to_string(w.size()) +
-                      " numbers (x y z" + (plain_off ? ")" : " and its colour, normal or texture coordinates)");
+                      " numbers (x y z)";
         if (!c.problem.empty())
           return c;
       } else {
@@ -343,7 +350,7 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         }
         // Plain OFF faces carry no colour: OpenMesh would read extra
         // numbers as the next face.
-        if (long(w.size()) < corners + 1 || (plain_off && long(w.size()) != corners + 1)) {
+        if (long(w.size()) != corners + 1) {
           c.problem = "line " + std::to_string(number) + ": a face of " + w[0] + " corners names " +
                       std::to_string(w.size() - 1) + " vertices";
           return c;
