@@ -279,7 +279,7 @@ FileCensus take_census(const std::string& path, const std::string& ext)
       const std::size_t hash = line.find('#');
       if (hash != std::string::npos)
         line.erase(hash);
-      if (line.find_first_not_of(" \t\r") == std::string::npos)
+      if (line.find_first_not_of(" \t\r\v\f") == std::string::npos) // blank as OpenMesh reads it
         continue;
       if (number == 1 && line.find("OFF") != std::string::npos) {
         // The variants with per-vertex colours, normals or texture
@@ -310,7 +310,7 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         long e = -1;
         if (!counted || !read_count(counts, f, number, c) || !read_count(counts, e, number, c)) {
           // OpenMesh would take the missing counts from the lines that follow.
-          if (counted && c.problem.empty())
+          if (c.problem.empty())
             c.problem = "line " + std::to_string(number) + ": the counts need vertices, faces and edges";
           return c;
         }
