@@ -37,6 +37,26 @@ void for_each_tile_row(const LevelLayout& l, F&& f)
 
 } // namespace
 
+namespace {
+
+//! A set's patches, edges and rings as device lists for the kernels that
+//! take a subset; without a set, null lists (every one) and the full counts.
+struct SetLists
+{
+  cl::Buffer patches, edges, rings;
+  int patch_count, edge_count, ring_count;
+};
+
+SetLists set_lists(const cl::Context& context, const AtlasTopology& topology, const PatchSet* set)
+{
+  if (!set)
+    return {{}, {}, {}, topology.patch_count, int(topology.edges.size()), int(topology.rings.size())};
+  return {device_ints(context, set->patches), device_ints(context, set->edges), device_ints(context, set->rings),
+          int(set->patches.size()), int(set->edges.size()), int(set->rings.size())};
+}
+
+} // namespace
+
 std::pair<cl::NDRange, cl::NDRange> range_tiles(const LevelLayout& l, int count)
 {
   const std::size_t tile = std::size_t(l.tile);
@@ -268,13 +288,9 @@ void Atlas::subdivide(int from_level, int to_level, const PatchSet* set)
                      std::to_string(to_level) + " (atlas levels 1.." + std::to_string(max_level_) + ")");
   Kernels& k = *kernels_;
   cl::CommandQueue& q = runtime_->queue();
-  // Null lists: every patch, edge and ring.
-  const cl::Buffer patch_list = set ? device_ints(runtime_->context(), set->patches) : cl::Buffer(),
-                   edge_list = set ? device_ints(runtime_->context(), set->edges) : cl::Buffer(),
-                   ring_list = set ? device_ints(runtime_->context(), set->rings) : cl::Buffer();
-  const int edges = int(set ? set->edges.size() : topology_.edges.size()),
-            rings = int(set ? set->rings.size() : topology_.rings.size()),
-            patches = int(set ? set->patches.size() : std::size_t(topology_.patch_count));
+  const SetLists lists = set_lists(runtime_->context(), topology_, set);
+  const cl::Buffer &patch_list = lists.patches, &edge_list = lists.edges, &ring_list = lists.rings;
+  const int patches = lists.patch_count, edges = lists.edge_count, rings = lists.ring_count;
   if (to_level == max_level_ && from_level < to_level)
     limit_current_ = false;
   for (int l = from_level; l < to_level; ++l) {
@@ -331,13 +347,9 @@ void Atlas::compute_limit_of(int level, const cl::Memory& pos, const cl::Memory&
   const LevelLayout l = layout(level);
   Kernels& k = *kernels_;
   cl::CommandQueue& q = runtime_->queue();
-  // Null lists: every patch, edge and ring.
-  const cl::Buffer patch_list = set ? device_ints(runtime_->context(), set->patches) : cl::Buffer(),
-                   edge_list = set ? device_ints(runtime_->context(), set->edges) : cl::Buffer(),
-                   ring_list = set ? device_ints(runtime_->context(), set->rings) : cl::Buffer();
-  const int edges = int(set ? set->edges.size() : topology_.edges.size()),
-            rings = int(set ? set->rings.size() : topology_.rings.size()),
-            patches = int(set ? set->patches.size() : std::size_t(topology_.patch_count));
+  const SetLists lists = set_lists(runtime_->context(), topology_, set);
+  const cl::Buffer &patch_list = lists.patches, &edge_list = lists.edges, &ring_list = lists.rings;
+  const int patches = lists.patch_count, edges = lists.edge_count, rings = lists.ring_count;
   const cl::Memory& in = levels_[level - 1].mem();
   if (patches > 0) {
     const auto tiles = range_tiles(l, patches);
