@@ -25,6 +25,17 @@ TEST(Runtime, BuildFailureCarriesFileAndLog)
   }
 }
 
+// NVIDIA's compiler ignores #line and counts lines of the whole program.
+TEST(Runtime, LogLinesOfTheWholeProgramNameTheirFile)
+{
+  const std::vector<SourceFile> files = {{"a.cl", "one\ntwo\n"}, {"b.cl", "three\nfour"}};
+  // #line, one, two, (blank), #line, three, four
+  EXPECT_EQ(name_source_lines("<kernel>:3:5: error: x\n<kernel>:7:1: note\n", files),
+            "a.cl:2:5: error: x\nb.cl:2:1: note\n");
+  EXPECT_EQ(name_source_lines("<kernel>:1:1: in the directive", files), "<kernel>:1:1: in the directive");
+  EXPECT_EQ(name_source_lines("b.cl:1:2: named already", files), "b.cl:1:2: named already");
+}
+
 TEST(Runtime, EmbeddedKernelsBuild)
 {
   EXPECT_NO_THROW(build_program(*test::runtime(),

@@ -20,6 +20,10 @@ struct SourceFile
 //! \throw DeviceError carrying the file names and the full build log.
 cl::Program build_program(Runtime& runtime, const std::vector<SourceFile>& files, const std::string& options);
 
+//! Rewrites the `<kernel>:LINE:` references of compilers that ignore #line
+//! (NVIDIA's name lines of the concatenated source) as `file:line:`.
+std::string name_source_lines(const std::string& log, const std::vector<SourceFile>& files);
+
 //! The same from files embedded at build time (kernels/).
 cl::Program build_program(Runtime& runtime, const std::vector<std::string>& embedded, const std::string& options);
 

@@ -538,6 +538,7 @@ StrokeReport PaintSurface::apply(const Stroke& stroke)
   StrokeReport report;
   stretch_ = 1.f;
   stroke_encoded_ = false;
+  encode_ms_ = 0;
   try {
     report = apply_dabs(stroke);
   } catch (...) {
@@ -776,8 +777,13 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
     // Encoded afresh by every coarse stroke, so that what a stroke does
     // depends only on the surface it starts from, never on undo history:
     // a recorded session replays bit for bit.
-    if (multires_->level() != level || !stroke_encoded_)
+    if (multires_->level() != level || !stroke_encoded_) {
+      atlas_->runtime().queue().finish(); // the encoding timed alone
+      const Timer encoding;
       multires_->encode(level);
+      atlas_->runtime().queue().finish();
+      encode_ms_ += encoding.ms();
+    }
     stroke_encoded_ = true;
     changed = multires_->reach(patches);
   } else if (!stroke.target_colour && multires_) {
@@ -920,6 +926,7 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
     if (stroke.tool == Tool::Grab) {
       grab(stroke, dab, report);
       report.stretch = stretch_;
+      report.encode_ms = encode_ms_;
       report.ms = timer.ms();
       return report;
     }
@@ -982,6 +989,7 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
     throw DeviceError("painting failed on " + atlas_->runtime().info().name + ": " + describe(e));
   }
   report.stretch = stretch_;
+  report.encode_ms = encode_ms_;
   report.ms = timer.ms();
   return report;
 }
@@ -1073,7 +1081,10 @@ std::vector<float> PaintSurface::scattered_light(const Vec3& light, int passes)
 PaintChannels PaintSurface::read_channels()
 {
   const std::size_t n = atlas_->layout(level_).texels();
-  PaintChannels c{std::vector<Float4>(n), std::vector<Float4>(n), std::vector<Float4>(n)};
+  PaintChannels c;
+  c.diffuse.resize(n);
+  c.specular.resize(n);
+  c.material.resize(n);
   cl::CommandQueue& q = atlas_->runtime().queue();
   q.enqueueReadBuffer(device_->diffuse, CL_TRUE, 0, n * sizeof(Float4), c.diffuse.data());
   q.enqueueReadBuffer(device_->specular, CL_TRUE, 0, n * sizeof(Float4), c.specular.data());

@@ -50,6 +50,7 @@ struct StrokeReport
   bool left_surface = false;       //!< the stroke ended where it left the surface
   float stretch = 1.f;             //!< edits at a coarser level: worst growth of a patch's sampling (Multires::stretch)
   double ms = 0;                   //!< wall time, device work included
+  double encode_ms = 0;            //!< of which the encoding of details for coarse edits (Multires::encode)
 };
 
 //! Default material of unpainted surface.
@@ -197,6 +198,7 @@ private:
   std::unique_ptr<Multires> multires_; // details for edits at a coarser level, made on first use
   float stretch_ = 1.f;                // the running stroke's worst Multires::stretch
   bool stroke_encoded_ = false;        // the running stroke has encoded its details
+  double encode_ms_ = 0;               // the running stroke's encoding time
   std::vector<Stroke> history_, undone_;
   std::unique_ptr<Device> device_;
   BaseMaterial base_material_;

@@ -70,7 +70,8 @@ std::array<double, 3> step_times(PaintSurface& surface, Stroke s, const std::vec
 
 //! Coarse edits encode their details at a stroke's first dab: the median
 //! time of a further dab (from strokes of 1 and of 9 dabs at about one
-//! place), and of the encoding (the 1-dab stroke less a dab).
+//! place: what a drag costs per dab), and of the encoding, which the
+//! stroke's report times alone.
 std::array<std::array<double, 3>, 2> coarse_step_times(PaintSurface& surface, Stroke s,
                                                         const std::vector<Float4>& texels, int steps)
 {
@@ -82,14 +83,15 @@ std::array<std::array<double, 3>, 2> coarse_step_times(PaintSurface& surface, St
     Stroke nine = s; // 8 more dabs 0.01 radius apart
     nine.points.push_back({at[0] + 0.08f * s.radius, at[1], at[2]});
     surface.apply(s); // warm-up
-    std::vector<double> one, more;
+    std::vector<double> one, more, encoding;
     for (int k = 0; k < steps; ++k) {
-      one.push_back(surface.apply(s).ms);
+      const StrokeReport r = surface.apply(s);
+      one.push_back(r.ms);
+      encoding.push_back(r.encode_ms);
       more.push_back(surface.apply(nine).ms);
     }
-    const double dab = std::max(0.0, (median(more) - median(one)) / 8.0);
-    out[0][std::size_t(c)] = dab;
-    out[1][std::size_t(c)] = std::max(0.0, median(one) - dab);
+    out[0][std::size_t(c)] = std::max(0.0, (median(more) - median(one)) / 8.0);
+    out[1][std::size_t(c)] = median(encoding);
   }
   return out;
 }
