@@ -24,29 +24,50 @@ __kernel void patch_bounds(ATLAS_IN pos, int2 g, __global const int *list, int c
       hi = fmax(hi, x);
     }
   const float3 c = 0.5f * (lo + hi);
-  float r = 0.0f;
+  float r2 = 0.0f; /* one square root per patch, not per texel */
   for (int j = 0; j < g.x; ++j)
-    for (int i = 0; i < g.x; ++i)
-      r = fmax(r, distance(ATLAS_LOAD(pos, g, p, (int2)(i, j)).xyz, c));
-  bounds[p] = (float4)(c, r);
+    for (int i = 0; i < g.x; ++i) {
+      const float3 d = ATLAS_LOAD(pos, g, p, (int2)(i, j)).xyz - c;
+      r2 = fmax(r2, dot(d, d));
+    }
+  bounds[p] = (float4)(c, sqrt(r2));
 }
 
 /* Range: #patches. Appends a record for each patch with a texel within
  * `radius` of `centre`: its closest texel and the closest distance over each
  * of its sides, from which the host finds the patches connected to the
  * centre along the surface. Patches whose bounding sphere misses the ball
- * cost one test. `count` may pass `capacity`; the host then grows the
- * record buffer and runs again. */
+ * cost one test. With `sides_only`, so do patches whose sphere lies inside
+ * the ball: their sides then hold an upper bound (within the radius) and
+ * closest_texel is -1, as the flood needs no more. `count` may pass
+ * `capacity`; the host then grows the record buffer and runs again. */
 __kernel void brush_cull(ATLAS_IN pos, ATLAS_IN nrm, int2 g, int patches, __global const float4 *bounds,
-                         float4 centre, float radius, __global CullRecord *records, __global int *count,
-                         int capacity)
+                         float4 centre, float radius, int sides_only, __global CullRecord *records,
+                         __global int *count, int capacity)
 {
   const int p = get_global_id(0);
   if (p >= patches)
     return;
   const float4 b = bounds[p];
-  if (distance(b.xyz, centre.xyz) - b.w > radius)
+  const float to_sphere = distance(b.xyz, centre.xyz);
+  if (to_sphere - b.w > radius)
     return;
+  if (sides_only && to_sphere + b.w <= radius) {
+    const int k = atomic_inc(count);
+    if (k >= capacity)
+      return;
+    CullRecord r;
+    r.patch = p;
+    r.closest_texel = -1;
+    r.distance = fmax(to_sphere - b.w, 0.0f);
+    for (int s = 0; s < 4; ++s)
+      r.side_distance[s] = to_sphere + b.w;
+    r.pad = 0;
+    vstore4(b, 0, r.closest_position);
+    vstore4((float4)(0.0f), 0, r.closest_normal);
+    records[k] = r;
+    return;
+  }
   const int n = g.x - 1;
   float best = INFINITY, side[4] = {INFINITY, INFINITY, INFINITY, INFINITY};
   int best_texel = 0;

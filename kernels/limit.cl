@@ -38,32 +38,46 @@ __kernel void limit_interior(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g,
   ATLAS_STORE(nrm, g, p, ij, nv);
 }
 
-/* Range: (n - 1, count); texels on patch sides, corners excluded. */
+/* Range: count; per edge, its texels on the patch sides, corners excluded. */
 __kernel void limit_edges(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, __global const PatchEdge *edges,
                           __global const int *list, int count, int2 g)
 {
-  const int t = get_global_id(0) + 1, k = get_global_id(1);
-  if (k >= count || t >= g.x - 1)
+  const int k = get_global_id(0);
+  if (k >= count)
     return;
   const PatchEdge e = edges[LISTED(list, k)];
   EDGE_FRAMES(e, g);
+  const int interior = e.patch[1] >= 0;
+  /* A 3x3 window slides along the side: one new column per texel. Rows
+   * b = -1 (across), 0 (the side), 1 (inwards); on a mesh boundary the row
+   * across is never read. */
   float4 q[9];
-  const int lo = e.patch[1] >= 0 ? -1 : 0;
-  for (int b = lo; b <= 1; ++b)
-    for (int a = -1; a <= 1; ++a)
-      q[3 * (b + 1) + a + 1] = EDGE_LOAD(src, g, t + a, b);
-  float4 pv, nv;
-  if (lo < 0) {
-    limit_regular(q, &pv, &nv);
-  } else {
-    /* Mesh boundary: the crease curve's limit and a B-spline cross tangent. */
-    const float4 s0 = (q[3] + 4.0f * q[4] + q[5]) * (1.0f / 6.0f);
-    const float4 s1 = (q[6] + 4.0f * q[7] + q[8]) * (1.0f / 6.0f);
-    pv = s0;
-    nv = (float4)(normalize(cross(((q[5] - q[3]) * 0.5f).xyz, (s1 - s0).xyz)), 0.0f);
+  for (int a = 0; a < 2; ++a) {
+    q[a + 3] = EDGE_LOAD(src, g, a, 0);
+    q[a + 6] = EDGE_LOAD(src, g, a, 1);
+    q[a] = interior ? EDGE_LOAD(src, g, a, -1) : q[a + 3];
   }
-  EDGE_STORE(pos, g, e, t, pv);
-  EDGE_STORE(nrm, g, e, t, nv);
+  for (int t = 1; t < g.x - 1; ++t) {
+    q[5] = EDGE_LOAD(src, g, t + 1, 0);
+    q[8] = EDGE_LOAD(src, g, t + 1, 1);
+    q[2] = interior ? EDGE_LOAD(src, g, t + 1, -1) : q[5];
+    float4 pv, nv;
+    if (interior) {
+      limit_regular(q, &pv, &nv);
+    } else {
+      /* Mesh boundary: the crease curve's limit and a B-spline cross tangent. */
+      const float4 s0 = (q[3] + 4.0f * q[4] + q[5]) * (1.0f / 6.0f);
+      const float4 s1 = (q[6] + 4.0f * q[7] + q[8]) * (1.0f / 6.0f);
+      pv = s0;
+      nv = (float4)(normalize(cross(((q[5] - q[3]) * 0.5f).xyz, (s1 - s0).xyz)), 0.0f);
+    }
+    EDGE_STORE(pos, g, e, t, pv);
+    EDGE_STORE(nrm, g, e, t, nv);
+    for (int b = 0; b < 9; b += 3) {
+      q[b] = q[b + 1];
+      q[b + 1] = q[b + 2];
+    }
+  }
 }
 
 /* Range: count; every copy of each patch corner. */

@@ -356,7 +356,7 @@ void Atlas::compute_limit_of(int level, const cl::Memory& pos, const cl::Memory&
     launch(q, k.limit_interior, tiles.first, tiles.second, in, pos, nrm, grid(l), patch_list, patches);
   }
   if (l.n > 1 && edges > 0)
-    launch(q, k.limit_edges, range_edges(l.n - 1, edges), kLocalEdges, in, pos, nrm, k.edges, edge_list, edges,
+    launch(q, k.limit_edges, range1d(edges), kLocal1D, in, pos, nrm, k.edges, edge_list, edges,
            grid(l));
   if (rings > 0)
     launch(q, k.limit_corners, range1d(rings), kLocal1D, in, pos, nrm, k.rings, k.slots, ring_list, rings, grid(l));

@@ -225,9 +225,14 @@ void PaintSurface::refresh_geometry(const std::vector<int>& patches)
   const AtlasTopology& topo = atlas_->topology();
   const std::uint32_t stamp = 2 * ++generation_;
   std::vector<int> around;
+  std::vector<char> ring_seen(topo.rings.size(), 0); // each ring once, not once per patch at it
   for (const int p : patches)
     for (int c = 0; c < 4; ++c) {
-      const CornerRing& ring = topo.rings[std::size_t(topo.patch_corners[std::size_t(p)][c])];
+      const int v = topo.patch_corners[std::size_t(p)][c];
+      if (ring_seen[std::size_t(v)])
+        continue;
+      ring_seen[std::size_t(v)] = 1;
+      const CornerRing& ring = topo.rings[std::size_t(v)];
       for (int m = 0; m < ring.count; ++m) {
         const int q = topo.slots[std::size_t(ring.first + m)].patch;
         if (mark_[std::size_t(q)] != stamp) {
@@ -299,7 +304,7 @@ bool PaintSurface::step(bool back)
 
 PaintSurface::~PaintSurface() = default;
 
-std::vector<CullRecord> PaintSurface::cull(const Vec3& centre, float radius)
+std::vector<CullRecord> PaintSurface::cull(const Vec3& centre, float radius, bool sides_only)
 {
   Device& d = *device_;
   Runtime& rt = atlas_->runtime();
@@ -315,7 +320,7 @@ std::vector<CullRecord> PaintSurface::cull(const Vec3& centre, float radius)
     rt.queue().enqueueWriteBuffer(d.count, CL_TRUE, 0, sizeof count, &count);
     launch(rt.queue(), d.brush_cull, cl::NDRange(round_up(l.patches, kGroup)), cl::NDRange(kGroup),
            atlas_->limit_positions_layer(), atlas_->limit_normals_layer(), grid(l), l.patches, d.bounds, c, radius,
-           d.records, d.count, cl_int(d.record_capacity));
+           cl_int(sides_only), d.records, d.count, cl_int(d.record_capacity));
     rt.queue().enqueueReadBuffer(d.count, CL_TRUE, 0, sizeof count, &count);
     if (std::size_t(count) <= d.record_capacity)
       break;
@@ -339,7 +344,7 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
   const float start = std::min(radius, float(1e-3 * atlas_->base_mesh().diagonal()));
   std::vector<CullRecord> near;
   for (float r = start; near.empty(); r = std::min(radius, 8.f * r)) {
-    near = cull(point, r);
+    near = cull(point, r, false);
     if (r >= radius)
       break;
   }
@@ -362,7 +367,7 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
   // The brush reaches the patches connected to the centre's patch through
   // sides that themselves come within the radius: never through the air.
   const int start_patch = best->patch;
-  const std::vector<CullRecord> records = cull(centre, reach);
+  const std::vector<CullRecord> records = cull(centre, reach, true);
 
   // Flood from the centre's patch over the culled patches; `mark_` holds,
   // per patch, 2 * generation for "culled" and 2 * generation + 1 for
@@ -390,8 +395,15 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
       if (rec.side_distance[s] <= reach && neighbours_[std::size_t(p)][s] >= 0)
         visit(neighbours_[std::size_t(p)][s]);
   }
+  // In patch order: for big brushes a scan of the marks beats a sort.
   std::vector<int> active;
   active.reserve(count);
+  if (count * 16 > mark_.size()) {
+    for (std::size_t p = 0; p < mark_.size(); ++p)
+      if (mark_[p] == reached)
+        active.push_back(int(p));
+    return active;
+  }
   for (const CullRecord& c : records)
     if (mark_[std::size_t(c.patch)] == reached)
       active.push_back(c.patch);
