@@ -64,25 +64,30 @@ __kernel void smooth_interior(ATLAS_IN src, ATLAS_OUT dst, int2 g, __global cons
   ATLAS_STORE(dst, g, p, ij, umbrella(x, mean, lambda * w));
 }
 
-/* Range: (n - 1, count); texels on the listed patch sides. A mesh-boundary
+/* Range: count; per listed side, its texels. A mesh-boundary
  * side is smoothed along itself, so borders do not pull inwards. */
 __kernel void smooth_edges(ATLAS_IN src, ATLAS_OUT dst, int2 g, __global const PatchEdge *edges,
                            __global const int *list, int count, __global const float *weights, float lambda)
 {
-  const int t = get_global_id(0) + 1, k = get_global_id(1);
-  if (k >= count || t >= g.x - 1)
+  const int k = get_global_id(0);
+  if (k >= count)
     return;
   const PatchEdge e = edges[LISTED(list, k)];
   EDGE_FRAMES(e, g);
-  const float w = weights[WEIGHT_INDEX(g, fp.patch, fp.o + t * fp.dt)];
-  const float4 x = EDGE_LOAD(src, g, t, 0);
-  float4 mean;
-  if (e.patch[1] >= 0)
-    mean = 0.25f * ((EDGE_LOAD(src, g, t - 1, 0) + EDGE_LOAD(src, g, t + 1, 0)) +
-                    (EDGE_LOAD(src, g, t, 1) + EDGE_LOAD(src, g, t, -1)));
-  else
-    mean = 0.5f * (EDGE_LOAD(src, g, t - 1, 0) + EDGE_LOAD(src, g, t + 1, 0));
-  EDGE_STORE(dst, g, e, t, w == 0.0f ? x : umbrella(x, mean, lambda * w));
+  /* Along the side, the texel before, at and after t slide one step a time. */
+  float4 before = EDGE_LOAD(src, g, 0, 0), x = EDGE_LOAD(src, g, 1, 0);
+  for (int t = 1; t < g.x - 1; ++t) {
+    const float4 after = EDGE_LOAD(src, g, t + 1, 0);
+    const float w = weights[WEIGHT_INDEX(g, fp.patch, fp.o + t * fp.dt)];
+    float4 mean;
+    if (e.patch[1] >= 0)
+      mean = 0.25f * ((before + after) + (EDGE_LOAD(src, g, t, 1) + EDGE_LOAD(src, g, t, -1)));
+    else
+      mean = 0.5f * (before + after);
+    EDGE_STORE(dst, g, e, t, w == 0.0f ? x : umbrella(x, mean, lambda * w));
+    before = x;
+    x = after;
+  }
 }
 
 /* Range: count; every copy of the listed patch corners. */

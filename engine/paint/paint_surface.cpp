@@ -867,7 +867,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
     for (const float step : steps) {
       launch(q, k->smooth_interior, tiles.first, tiles.second, *from, *to, grid(l), list, count, weights, step);
       if (edge_count > 0 && l.n > 1)
-        launch(q, k->smooth_edges, cl::NDRange(l.n - 1, round_up(edge_count, kGroup)), cl::NDRange(1, kGroup),
+        launch(q, k->smooth_edges, cl::NDRange(round_up(edge_count, kGroup)), cl::NDRange(kGroup),
                *from, *to, grid(l), atlas_->edge_table(), edges, edge_count, weights, step);
       if (ring_count > 0)
         launch(q, k->smooth_corners, cl::NDRange(round_up(ring_count, kGroup)), cl::NDRange(kGroup), *from, *to,
@@ -1073,7 +1073,7 @@ std::vector<float> PaintSurface::scattered_light(const Vec3& light, int passes)
       launch(q, d.channels.smooth_interior, tiles.first, tiles.second, *from, *to, grid(l), all, l.patches, d.weights,
              0.5f);
       if (l.n > 1)
-        launch(q, d.channels.smooth_edges, cl::NDRange(l.n - 1, round_up(edges, kGroup)), cl::NDRange(1, kGroup), *from,
+        launch(q, d.channels.smooth_edges, cl::NDRange(round_up(edges, kGroup)), cl::NDRange(kGroup), *from,
                *to, grid(l), atlas_->edge_table(), all, edges, d.weights, 0.5f);
       launch(q, d.channels.smooth_corners, cl::NDRange(round_up(rings, kGroup)), cl::NDRange(kGroup), *from, *to,
              grid(l), atlas_->ring_table(), atlas_->slot_table(), all, rings, d.weights, 0.5f);
