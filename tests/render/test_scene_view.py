@@ -1,7 +1,7 @@
 """The painting window on a scene of two objects in contact, offscreen.
 
 Two flat plates side by side face the camera and touch along x = 0. Strokes
-in object and tangent space cross the contact and paint both; a
+in object, tangent and screen space cross the contact and paint both; a
 parameter-space dab paints the object under it only. The recording replays
 headless with `meshpaint paint LEFT RIGHT` to the same bits, object by object.
 Run by CTest under xvfb-run (see test_render.py).
@@ -53,7 +53,7 @@ def coloured(diffuse, rgb):
     return int((np.abs(diffuse[:, :3] - np.array(rgb)) < 0.02).all(axis=1).sum())
 
 
-RED, BLUE, GREEN = (0.85, 0.1, 0.1), (0.15, 0.25, 0.85), (0.2, 0.7, 0.2)  # swatches 1, 6, 4
+RED, YELLOW, GREEN, BLUE = (0.85, 0.1, 0.1), (0.95, 0.9, 0.2), (0.2, 0.7, 0.2), (0.15, 0.25, 0.85)  # swatches 1, 3, 4, 6
 
 
 def test_picking_tells_the_object(tmp_path, plates):
@@ -67,6 +67,12 @@ def test_picking_tells_the_object(tmp_path, plates):
     assert view.GetPicker().GetActorIndex() == 1
     assert view.PickObject(5, 5) == -1  # the background
     assert view.GetFaceCount() == 2 * 16 * 16  # 16 patches per plate, level 3: 4 x 4 quads per patch
+    # level of detail on every object: a quarter of the quads while moving
+    drawn = lambda k: view.GetPicker().GetActor(k).GetMapper().GetInput().GetNumberOfCells()
+    view.SetMoving(True)
+    assert view.GetShownLevel() == 2 and drawn(0) == drawn(1) == 16 * 4
+    view.SetMoving(False)
+    assert drawn(0) == drawn(1) == 16 * 16
 
 
 def test_scene_session_paints_across_the_contact_and_replays(tmp_path, plates):
@@ -79,10 +85,12 @@ def test_scene_session_paints_across_the_contact_and_replays(tmp_path, plates):
     key(view, "p")                             # tangent
     key(view, "6")                             # blue
     drag(view, line(140, 110, 260, 110, 12))
-    key(view, "p")
+    key(view, "p")                             # screen
+    key(view, "3")                             # yellow
+    drag(view, line(160, 150, 240, 150, 8))
     key(view, "p")                             # parameter
     key(view, "4")                             # green
-    drag(view, [(120, 150)])                   # one dab, on the left plate
+    drag(view, [(100, 150)])                   # one dab, on the left plate
     drag(view, [(150, 100)])
     key(view, "z", ctrl=True)                  # the second dab undone on both
     key(view, "z", ctrl=True)
@@ -91,12 +99,13 @@ def test_scene_session_paints_across_the_contact_and_replays(tmp_path, plates):
     session = tmp_path / "session"
     script = json.loads((session / "strokes.json").read_text())
     assert script["level"] == 3
-    assert [s.get("space", "object") for s in script["strokes"]] == ["object", "tangent", "parameter"]
+    assert [s.get("space", "object") for s in script["strokes"]] == ["object", "tangent", "screen", "parameter"]
     live = {name: arrays(read_vtp(session / name / "surface.vtp")) for name in ("left", "right")}
     assert not (session / "surface.vtp").exists()
     for name in ("left", "right"):
         assert coloured(live[name]["diffuse"], RED) > 0, name
         assert coloured(live[name]["diffuse"], BLUE) > 0, name
+        assert coloured(live[name]["diffuse"], YELLOW) > 0, name
     assert coloured(live["left"]["diffuse"], GREEN) > 0
     assert coloured(live["right"]["diffuse"], GREEN) == 0
 
