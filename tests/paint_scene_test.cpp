@@ -2,6 +2,7 @@
 // in contact, parameter-space dabs that stay on one, undo on all.
 
 #include "paint/paint_scene.h"
+#include "core/errors.h"
 #include "support/runtime.h"
 #include "support/shapes.h"
 
@@ -77,6 +78,28 @@ TEST(PaintScene, AStrokeEndsWhereNoObjectIsUnderIt)
   EXPECT_TRUE(r[0].left_surface);
   EXPECT_GT(painted(scene.surface(0)), 0u);
   EXPECT_EQ(painted(scene.surface(1)), 0u);
+}
+
+TEST(PaintScene, NamesFoldersAndOneLevel)
+{
+  PaintScene scene = two_plates();
+  scene.add(std::make_unique<PaintSurface>(test::runtime(), test::flat_grid(2), 3, AtlasStorage::Buffer), "left");
+  scene.add(std::make_unique<PaintSurface>(test::runtime(), test::flat_grid(2), 3, AtlasStorage::Buffer), "");
+  EXPECT_EQ(scene.name(2), "left_2");
+  EXPECT_EQ(scene.name(3), "object");
+  EXPECT_EQ(scene.folder("out", 1), "out/right");
+  EXPECT_THROW(scene.add(std::make_unique<PaintSurface>(test::runtime(), test::flat_grid(2), 2, AtlasStorage::Buffer),
+                         "coarse"),
+               InputError);
+  EXPECT_EQ(scene.size(), 4u);
+  // every object records every stroke, so the first one's history is the scene's
+  scene.apply(red_line(SPACE_PARAMETER));
+  EXPECT_EQ(scene.history().size(), 1u);
+  EXPECT_EQ(scene.surface(3).history().size(), 1u);
+  PaintScene one;
+  EXPECT_TRUE(one.history().empty());
+  one.add(std::make_unique<PaintSurface>(test::runtime(), test::flat_grid(2), 3, AtlasStorage::Buffer), "alone");
+  EXPECT_EQ(one.folder("out", 0), "out");
 }
 
 } // namespace

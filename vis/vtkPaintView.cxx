@@ -12,11 +12,13 @@
 #include "core/atomic_file.h"    // for meshpaint::write_atomically
 #include "core/errors.h"         // for meshpaint::IOError
 #include "paint/model_export.h"  // for meshpaint::build_export, write_obj_model
+#include "paint/paint_scene.h"   // for meshpaint::PaintScene
 #include "paint/paint_surface.h" // for meshpaint::PaintSurface
 #include "project/project.h"         // for meshpaint::Project, save_project
 #include "project/project_surface.h" // for meshpaint::capture_surface, continued_history
 
 #include <vtkActor.h>                   // for vtkActor
+#include <vtkBoundingBox.h>             // for vtkBoundingBox
 #include <vtkFloatArray.h>              // for vtkFloatArray
 #include <vtkPointData.h>               // for vtkPointData
 #include <vtkCamera.h>                  // for vtkCamera
@@ -35,6 +37,7 @@
 #include <vtkTextActor.h>               // for vtkTextActor
 #include <vtkTextProperty.h>            // for vtkTextProperty
 
+#include <algorithm>  // for std::min, std::max
 #include <array>      // for std::array
 #include <cmath>      // for std::sqrt
 #include <filesystem> // for std::filesystem
@@ -42,25 +45,31 @@
 
 vtkStandardNewMacro(vtkPaintView);
 
-struct vtkPaintView::Internals
+// One object of the scene as drawn: its painted surface at the painting
+// level, brought up to date when next shown after a change, its coarser
+// tessellation for the level of detail (made once per level, sharing the
+// arrays), and its actor, which draws `shown`.
+struct vtkPaintView::Drawing
 {
-  std::shared_ptr<meshpaint::PaintSurface> surface;
-  std::unique_ptr<meshpaint::Project> project; // where the surface came from, if from a project
-  std::unique_ptr<meshpaint::BrushSettings> brush;
-  // The painted surface at the painting level, brought up to date when next
-  // shown after a change, and its coarser tessellation for the level of
-  // detail (made once per level, sharing the arrays); `shown` is drawn.
   vtkSmartPointer<vtkPolyData> full, coarse, shown;
   bool full_stale = true;
-  bool lit = false; // drawn with the subsurface light
   int coarse_level = 0;
+  vtkNew<vtkActor> actor;
+};
+
+struct vtkPaintView::Internals
+{
+  meshpaint::PaintScene scene;
+  std::vector<std::unique_ptr<Drawing>> drawings; // one per object, in the scene's order
+  std::unique_ptr<meshpaint::Project> project; // where the first object came from, if from a project
+  std::unique_ptr<meshpaint::BrushSettings> brush;
+  bool lit = false; // drawn with the subsurface light
   bool moving = false; // the camera turns or a stroke is drawn
   int shown_level = 0;
   vtkNew<vtkRenderer> renderer;
   vtkNew<vtkRenderWindow> window;
   vtkNew<vtkRenderWindowInteractor> interactor;
   vtkNew<vtkPaintInteractorStyle> style;
-  vtkNew<vtkActor> actor;
   vtkNew<vtkSurfacePicker> picker;
   vtkNew<vtkRegularPolygonSource> cursor_shape;
   vtkNew<vtkActor> cursor;
@@ -91,18 +100,49 @@ void vtkPaintView::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
   os << indent << "OffScreen: " << this->OffScreen << "\n";
   os << indent << "SaveDirectory: " << this->SaveDirectory << "\n";
+  os << indent << "Objects: " << this->Impl->scene.size() << "\n";
   os << indent << "SilhouetteCosine: " << this->SilhouetteCosine << "\n";
 }
 
 int vtkPaintView::LoadMesh(const char* path)
 {
-  meshpaint::BaseMesh mesh;
-  if (!meshpaint::guarded(this->LastError, [&] { mesh = meshpaint::load_mesh(path ? path : ""); }))
-    return 0;
-  return this->SetBaseMesh(mesh);
+  return this->LoadObject(path, false);
+}
+
+int vtkPaintView::AddMesh(const char* path)
+{
+  return this->LoadObject(path, true);
 }
 
 int vtkPaintView::SetInputData(vtkPolyData* polygons)
+{
+  return this->InputObject(polygons, false);
+}
+
+int vtkPaintView::AddInputData(vtkPolyData* polygons)
+{
+  return this->InputObject(polygons, true);
+}
+
+int vtkPaintView::SetBaseMesh(const meshpaint::BaseMesh& mesh)
+{
+  return this->MeshObject(mesh, false);
+}
+
+int vtkPaintView::AddBaseMesh(const meshpaint::BaseMesh& mesh)
+{
+  return this->MeshObject(mesh, true);
+}
+
+int vtkPaintView::LoadObject(const char* path, bool add)
+{
+  meshpaint::BaseMesh mesh;
+  if (!meshpaint::guarded(this->LastError, [&] { mesh = meshpaint::load_mesh(path ? path : ""); }))
+    return 0;
+  return this->MeshObject(mesh, add);
+}
+
+int vtkPaintView::InputObject(vtkPolyData* polygons, bool add)
 {
   meshpaint::BaseMesh mesh;
   if (!meshpaint::guarded(this->LastError, [&] {
@@ -111,16 +151,22 @@ int vtkPaintView::SetInputData(vtkPolyData* polygons)
         mesh = meshpaint::to_base_mesh(polygons, "input");
       }))
     return 0;
-  return this->SetBaseMesh(mesh);
+  return this->MeshObject(mesh, add);
 }
 
-int vtkPaintView::SetBaseMesh(const meshpaint::BaseMesh& mesh)
+int vtkPaintView::MeshObject(const meshpaint::BaseMesh& mesh, bool add)
 {
   return meshpaint::guarded(this->LastError, [&] {
+    Internals& in = *this->Impl;
+    // A scene paints at one level: the objects already there set it.
+    const int level = add && !in.scene.empty() ? in.scene.surface(0).level() : this->Level;
     auto runtime = meshpaint::Runtime::open(this->Device);
     const meshpaint::AtlasStorage storage = this->Storage.empty() ? meshpaint::default_storage(runtime->info())
                                                                   : meshpaint::parse_storage(this->Storage);
-    this->SetSurface(std::make_shared<meshpaint::PaintSurface>(runtime, mesh, this->Level, storage));
+    auto surface = std::make_shared<meshpaint::PaintSurface>(runtime, mesh, level, storage);
+    if (!add)
+      this->RemoveObjects();
+    this->AddObject(std::move(surface), mesh.name);
   });
 }
 
@@ -132,31 +178,75 @@ void vtkPaintView::SetProject(const meshpaint::Project& project)
   this->Impl->project->channels = meshpaint::PaintChannels();
 }
 
-void vtkPaintView::SetSurface(std::shared_ptr<meshpaint::PaintSurface> surface)
+void vtkPaintView::SetSurface(std::shared_ptr<meshpaint::PaintSurface> surface, const std::string& name)
+{
+  this->RemoveObjects();
+  this->AddObject(std::move(surface), name);
+}
+
+void vtkPaintView::AddSurface(std::shared_ptr<meshpaint::PaintSurface> surface, const std::string& name)
+{
+  this->AddObject(std::move(surface), name);
+}
+
+void vtkPaintView::RemoveObjects()
 {
   Internals& in = *this->Impl;
-  in.surface = std::move(surface);
-  this->Level = in.surface->level();
-  in.full = in.coarse = nullptr;
-  in.moving = false;
-  in.shown = this->Surface(this->Level);
-  in.shown_level = this->Level;
-  double b[6];
-  in.shown->GetBounds(b);
-  const double diagonal =
-    std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
-  in.brush = std::make_unique<meshpaint::BrushSettings>(diagonal, this->Level);
   if (in.initialized) {
-    meshpaint::show_materials(in.actor, in.shown);
-    in.picker->Release();
+    for (const auto& d : in.drawings)
+      in.renderer->RemoveActor(d->actor);
+    in.picker->RemoveAllActors();
+  }
+  in.drawings.clear();
+  in.scene.clear();
+  in.project.reset();
+}
+
+void vtkPaintView::AddObject(std::shared_ptr<meshpaint::PaintSurface> surface, const std::string& name)
+{
+  Internals& in = *this->Impl;
+  in.scene.add(std::move(surface), name); // checks the level
+  this->Level = in.scene.surface(0).level();
+  in.drawings.push_back(std::make_unique<Drawing>());
+  in.moving = false;
+  in.shown_level = this->Level;
+  Drawing& d = *in.drawings.back();
+  d.shown = this->Surface(in.drawings.size() - 1, this->Level);
+  // The brush is sized to the whole scene.
+  vtkBoundingBox box;
+  for (const auto& other : in.drawings)
+    box.AddBounds(other->full->GetBounds());
+  in.brush = std::make_unique<meshpaint::BrushSettings>(box.GetDiagonalLength(), this->Level);
+  if (in.initialized) {
+    this->ShowObject(d);
     in.picker->SetPatchResolution(1 << (this->Level - 1));
   }
   this->Modified();
 }
 
+void vtkPaintView::ShowObject(Drawing& d)
+{
+  Internals& in = *this->Impl;
+  meshpaint::show_materials(d.actor, d.shown);
+  in.renderer->AddActor(d.actor);
+  in.picker->AddActor(d.actor);
+}
+
 bool vtkPaintView::Shows(const std::shared_ptr<meshpaint::PaintSurface>& surface) const
 {
-  return this->Impl->surface == surface;
+  const meshpaint::PaintScene& scene = this->Impl->scene;
+  for (std::size_t k = 0; k < scene.size(); ++k)
+    if (scene.shared(k) == surface)
+      return true;
+  return false;
+}
+
+int vtkPaintView::GetNumberOfObjects() { return int(this->Impl->scene.size()); }
+
+const char* vtkPaintView::GetObjectName(int k)
+{
+  const meshpaint::PaintScene& scene = this->Impl->scene;
+  return k >= 0 && std::size_t(k) < scene.size() ? scene.name(std::size_t(k)).c_str() : nullptr;
 }
 
 int vtkPaintView::ApplyStrokes(const char* json)
@@ -174,10 +264,10 @@ int vtkPaintView::ApplyScript(const meshpaint::StrokeScript& script)
 {
   Internals& in = *this->Impl;
   const int ok = meshpaint::guarded(this->LastError, [&] {
-    if (!in.surface)
+    if (in.scene.empty())
       throw meshpaint::InputError("no surface to paint: load a mesh first");
     for (const meshpaint::Stroke& s : script.strokes)
-      in.surface->apply(s);
+      in.scene.apply(s);
   });
   this->Refresh(true);
   return ok;
@@ -186,14 +276,15 @@ int vtkPaintView::ApplyScript(const meshpaint::StrokeScript& script)
 int vtkPaintView::Initialize()
 {
   Internals& in = *this->Impl;
-  if (!in.surface) {
+  if (in.scene.empty()) {
     this->LastError = "no surface to paint: load a mesh first";
     return 0;
   }
   if (in.initialized)
     return 1;
-  meshpaint::show_materials(in.actor, in.shown);
-  in.renderer->AddActor(in.actor);
+  in.picker->RemoveAllActors();
+  for (const auto& d : in.drawings)
+    this->ShowObject(*d);
   in.renderer->SetBackground(0.12, 0.12, 0.14);
 
   in.cursor_shape->SetNumberOfSides(40);
@@ -239,7 +330,6 @@ int vtkPaintView::Initialize()
   in.style->AddObserver(vtkCommand::StartInteractionEvent, this, &vtkPaintView::OnCameraInteraction);
   in.style->AddObserver(vtkCommand::EndInteractionEvent, this, &vtkPaintView::OnCameraInteraction);
   in.picker->SetRenderer(in.renderer);
-  in.picker->SetActor(in.actor);
   in.picker->SetPatchResolution(1 << (this->Level - 1)); // captures happen at rest: the full level
   meshpaint::set_camera(in.renderer, meshpaint::CameraView());
   in.interactor->Initialize();
@@ -357,7 +447,7 @@ void vtkPaintView::PaintPiece(bool first)
   Internals& in = *this->Impl;
   const std::vector<meshpaint::Vec3> piece =
     first ? in.path : std::vector<meshpaint::Vec3>(in.path.end() - 2, in.path.end());
-  if (meshpaint::guarded(this->LastError, [&] { in.surface->apply(in.brush->stroke(piece)); }))
+  if (meshpaint::guarded(this->LastError, [&] { in.scene.apply(in.brush->stroke(piece)); }))
     ++in.pieces;
   this->Refresh(false);
 }
@@ -372,8 +462,8 @@ int vtkPaintView::EndStroke()
   // The pieces were for the eye: the stroke is the whole path, applied once.
   const int ok = meshpaint::guarded(this->LastError, [&] {
     for (; in.pieces > 0; --in.pieces)
-      in.surface->undo();
-    in.surface->apply(in.brush->stroke(in.path));
+      in.scene.undo();
+    in.scene.apply(in.brush->stroke(in.path));
   });
   this->Message = ok ? "" : this->LastError;
   this->Refresh(true);
@@ -406,8 +496,16 @@ bool vtkPaintView::PlaceCursor(int x, int y)
 
 vtkIdType vtkPaintView::GetFaceCount()
 {
-  vtkPolyData* full = this->Impl->surface ? this->Surface(this->Level) : nullptr;
-  return full ? full->GetNumberOfCells() : 0;
+  vtkIdType faces = 0;
+  for (std::size_t o = 0; o < this->Impl->drawings.size(); ++o)
+    faces += this->Surface(o, this->Level)->GetNumberOfCells();
+  return faces;
+}
+
+int vtkPaintView::PickObject(int x, int y)
+{
+  double p[3], n[3];
+  return this->PickFacing(x, y, p, n) ? this->Impl->picker->GetActorIndex() : -1;
 }
 
 int vtkPaintView::GetShownLevel() { return this->Impl->shown_level; }
@@ -419,69 +517,74 @@ int vtkPaintView::CoarseLevel() const
   return this->LodLevel < 0 ? std::max(1, this->Level - 1) : std::min(this->LodLevel, this->Level);
 }
 
-vtkPolyData* vtkPaintView::Surface(int level)
+vtkPolyData* vtkPaintView::Surface(std::size_t object, int level)
 {
   Internals& in = *this->Impl;
-  if (!in.full) {
-    in.full = meshpaint::to_polydata(in.surface->painted_surface());
-    in.coarse = nullptr;
-  } else if (in.full_stale) {
+  Drawing& d = *in.drawings[object];
+  if (!d.full) {
+    d.full = meshpaint::to_polydata(in.scene.surface(object).painted_surface());
+    d.coarse = nullptr;
+  } else if (d.full_stale) {
     // Same topology: only the arrays that changed are written (and uploaded).
-    meshpaint::update_polydata(in.full, in.surface->painted_surface());
+    meshpaint::update_polydata(d.full, in.scene.surface(object).painted_surface());
   }
-  in.full_stale = false;
+  d.full_stale = false;
   if (level == this->Level)
-    return in.full;
+    return d.full;
   // A coarser tessellation of the same painted surface, sharing its points
   // and arrays; the atlas is not touched (a reduction there would start
   // multiresolution edits afresh).
-  if (!in.coarse || in.coarse_level != level) {
+  if (!d.coarse || d.coarse_level != level) {
     const int n = 1 << (this->Level - 1), stride = 1 << (this->Level - level);
-    in.coarse = meshpaint::coarser_quads(in.full, n, stride);
-    in.coarse_level = level;
+    d.coarse = meshpaint::coarser_quads(d.full, n, stride);
+    d.coarse_level = level;
   }
-  return in.coarse;
+  return d.coarse;
 }
 
 void vtkPaintView::Show()
 {
   Internals& in = *this->Impl;
   const int level = in.moving ? this->CoarseLevel() : this->Level;
-  vtkPolyData* poly = nullptr;
-  if (!meshpaint::guarded(this->LastError, [&] { poly = this->Surface(level); }))
-    return;
   const bool lit = this->SubsurfacePasses > 0 && level == this->Level && in.initialized;
-  if (lit) { // at rest only: the light follows the camera
-    meshpaint::guarded(this->LastError, [&] {
-      vtkCamera* camera = in.renderer->GetActiveCamera();
-      double eye[3], focus[3];
-      camera->GetPosition(eye);
-      camera->GetFocalPoint(focus);
-      const std::vector<float> light = in.surface->scattered_light(
-        {float(eye[0] - focus[0]), float(eye[1] - focus[1]), float(eye[2] - focus[2])}, this->SubsurfacePasses);
-      auto array = vtkSmartPointer<vtkFloatArray>::New();
-      array->SetName("scattered_light");
-      array->SetNumberOfValues(vtkIdType(light.size()));
-      std::copy(light.begin(), light.end(), array->GetPointer(0));
-      poly->GetPointData()->AddArray(array);
-    });
-    meshpaint::show_scattered_light(in.actor, poly);
-  } else if (in.lit && in.initialized) {
-    meshpaint::show_materials(in.actor, poly);
-  } else if (poly != in.shown.GetPointer() && in.initialized) {
-    in.actor->GetMapper()->SetInputDataObject(poly);
+  for (std::size_t o = 0; o < in.drawings.size(); ++o) {
+    Drawing& d = *in.drawings[o];
+    vtkPolyData* poly = nullptr;
+    if (!meshpaint::guarded(this->LastError, [&] { poly = this->Surface(o, level); }))
+      return;
+    if (lit) { // at rest only: the light follows the camera
+      meshpaint::guarded(this->LastError, [&] {
+        vtkCamera* camera = in.renderer->GetActiveCamera();
+        double eye[3], focus[3];
+        camera->GetPosition(eye);
+        camera->GetFocalPoint(focus);
+        const std::vector<float> light = in.scene.surface(o).scattered_light(
+          {float(eye[0] - focus[0]), float(eye[1] - focus[1]), float(eye[2] - focus[2])}, this->SubsurfacePasses);
+        auto array = vtkSmartPointer<vtkFloatArray>::New();
+        array->SetName("scattered_light");
+        array->SetNumberOfValues(vtkIdType(light.size()));
+        std::copy(light.begin(), light.end(), array->GetPointer(0));
+        poly->GetPointData()->AddArray(array);
+      });
+      meshpaint::show_scattered_light(d.actor, poly);
+    } else if (in.lit && in.initialized) {
+      meshpaint::show_materials(d.actor, poly);
+    } else if (poly != d.shown.GetPointer() && in.initialized) {
+      d.actor->GetMapper()->SetInputDataObject(poly);
+    }
+    d.shown = poly;
   }
   in.lit = lit;
-  in.shown = poly;
   in.shown_level = level;
 }
 
 void vtkPaintView::Refresh(bool geometry)
 {
   Internals& in = *this->Impl;
-  if (!in.surface)
+  if (in.scene.empty())
     return;
-  in.full_stale = true;
+  for (const auto& d : in.drawings)
+    d->full_stale = true;
   // Within a stroke the buffers stay: the picker keeps the surface they saw.
   if (geometry && !in.painting)
     in.picker->Release();
@@ -493,7 +596,7 @@ void vtkPaintView::Refresh(bool geometry)
 void vtkPaintView::SetMoving(bool moving)
 {
   Internals& in = *this->Impl;
-  if (in.painting || !in.surface)
+  if (in.painting || in.scene.empty())
     return;
   in.moving = moving;
   this->Show();
@@ -547,8 +650,8 @@ int vtkPaintView::Step(bool back)
 {
   Internals& in = *this->Impl;
   bool done = false;
-  const int ok = in.surface && meshpaint::guarded(this->LastError, [&] {
-    done = back ? in.surface->undo() : in.surface->redo();
+  const int ok = !in.scene.empty() && meshpaint::guarded(this->LastError, [&] {
+    done = back ? in.scene.undo() : in.scene.redo();
   });
   this->Message = !ok ? this->LastError : done ? (back ? "undone" : "redone") : (back ? "nothing to undo" : "nothing to redo");
   this->Refresh(true);
@@ -564,8 +667,7 @@ const char* vtkPaintView::GetRecording()
   Internals& in = *this->Impl;
   meshpaint::StrokeScript script;
   script.level = this->Level;
-  if (in.surface)
-    script.strokes = in.surface->history();
+  script.strokes = in.scene.history();
   in.recording = meshpaint::stroke_script_json(script);
   return in.recording.c_str();
 }
@@ -587,7 +689,8 @@ int vtkPaintView::Save()
 {
   Internals& in = *this->Impl;
   const std::string dir = this->SaveDirectory;
-  const int ok = in.surface && meshpaint::guarded(this->LastError, [&] {
+  // One recording for the scene; each object's surface in its own folder.
+  const int ok = !in.scene.empty() && meshpaint::guarded(this->LastError, [&] {
     make_directory(dir);
     const std::string recording = this->GetRecording();
     meshpaint::write_atomically(dir + "/strokes.json", [&](const std::string& tmp) {
@@ -596,15 +699,21 @@ int vtkPaintView::Save()
       if (!out.flush())
         throw meshpaint::IOError("cannot write '" + dir + "/strokes.json'");
     });
-    meshpaint::write_vtp(this->Surface(this->Level), dir + "/surface.vtp");
+    for (std::size_t o = 0; o < in.scene.size(); ++o) {
+      const std::string folder = in.scene.folder(dir, o);
+      make_directory(folder);
+      meshpaint::write_vtp(this->Surface(o, this->Level), folder + "/surface.vtp");
+    }
     if (in.project) {
       meshpaint::Project p = *in.project;
-      p.history = meshpaint::continued_history(in.project->history, in.surface->history(), this->Level);
-      meshpaint::capture_surface(*in.surface, p);
-      meshpaint::save_project(p, dir + "/surface.meshpaint");
+      p.history = meshpaint::continued_history(in.project->history, in.scene.history(), this->Level);
+      meshpaint::capture_surface(in.scene.surface(0), p);
+      meshpaint::save_project(p, in.scene.folder(dir, 0) + "/surface.meshpaint");
     }
   });
-  this->Message = ok ? "saved " + dir + "/strokes.json, surface.vtp" + (in.project ? " and surface.meshpaint" : "")
+  const std::string surfaces =
+    in.scene.size() == 1 ? "surface.vtp" : std::to_string(in.scene.size()) + " objects' surface.vtp";
+  this->Message = ok ? "saved " + dir + "/strokes.json, " + surfaces + (in.project ? " and surface.meshpaint" : "")
                      : this->LastError;
   this->UpdateText();
   this->Render();
@@ -615,15 +724,20 @@ int vtkPaintView::Export()
 {
   Internals& in = *this->Impl;
   const std::string dir = this->SaveDirectory;
-  const int ok = in.surface && meshpaint::guarded(this->LastError, [&] {
-    make_directory(dir);
-    meshpaint::ExportModel model;
-    meshpaint::TextureMaps maps;
-    meshpaint::build_export(*in.surface, std::max(1, this->Level - 2), model, maps);
-    meshpaint::write_texture_maps(maps, dir);
-    meshpaint::write_obj_model(model, maps, dir);
+  const int ok = !in.scene.empty() && meshpaint::guarded(this->LastError, [&] {
+    for (std::size_t o = 0; o < in.scene.size(); ++o) {
+      const std::string folder = in.scene.folder(dir, o);
+      make_directory(folder);
+      meshpaint::ExportModel model;
+      meshpaint::TextureMaps maps;
+      meshpaint::build_export(in.scene.surface(o), std::max(1, this->Level - 2), model, maps);
+      meshpaint::write_texture_maps(maps, folder);
+      meshpaint::write_obj_model(model, maps, folder);
+    }
   });
-  this->Message = ok ? "exported " + dir + "/model.obj" : this->LastError;
+  this->Message = ok ? "exported " + in.scene.folder(dir, 0) + "/model.obj" +
+                         (in.scene.size() > 1 ? " and the other objects'" : "")
+                     : this->LastError;
   this->UpdateText();
   this->Render();
   return ok;
@@ -646,7 +760,7 @@ void vtkPaintView::UpdateText()
   in.help->SetPosition(10, size[1] - 10);
   std::string text = in.brush->describe() + "\nlevel " + std::to_string(this->Level) + " (level of detail " +
                      std::to_string(this->CoarseLevel()) + ")   strokes " +
-                     std::to_string(in.surface ? in.surface->history().size() : 0) + "   h: help";
+                     std::to_string(in.scene.history().size()) + "   h: help";
   if (!this->Message.empty())
     text += "   | " + this->Message;
   in.status->SetInput(text.c_str());

@@ -1,10 +1,11 @@
 /**
  * @class vtkPaintView
- * @brief The interactive painting window: a painted surface, its brush, its picker.
+ * @brief The interactive painting window: painted surfaces, their brush, their picker.
  *
- * Holds the engine's paint surface, a render window showing it with its
- * materials, a vtkSurfacePicker for brush centres, a brush cursor, the
- * on-screen settings and a help overlay. vtkPaintInteractorStyle turns mouse
+ * Holds the engine's paint scene (one object or several, each with its own
+ * atlas), a render window showing each object with its materials and its
+ * own level of detail, a vtkSurfacePicker for brush centres, a brush cursor,
+ * the on-screen settings and a help overlay. vtkPaintInteractorStyle turns mouse
  * and keys into BeginStroke()/ContinueStroke()/EndStroke() and HandleKey().
  *
  * A drag is one stroke. While it is drawn, each new piece of the path is
@@ -12,7 +13,12 @@
  * pieces are undone and the whole path is applied as one stroke, exactly as
  * a stroke script would apply it. Every session is recorded that way:
  * GetRecording() is a stroke script that `meshpaint paint` replays to the
- * same bits.
+ * same bits (given the same meshes in the same order).
+ *
+ * Strokes go to the scene as `meshpaint paint` applies them to several
+ * meshes: object, tangent and screen brushes paint every object within
+ * reach, so a stroke may cross objects in contact; a parameter-space dab
+ * paints the nearest object only. Undo and redo act on all objects.
  *
  * Methods that can fail return 0 and leave the reason in GetLastError().
  */
@@ -96,19 +102,43 @@ public:
 
   //@{
   /// The surface to paint: a mesh file (OBJ, OFF, PLY, STL) or the polygons
-  /// of a vtkPolyData. Builds the atlas at Level on the device.
+  /// of a vtkPolyData. Builds the atlas at Level on the device. Replaces
+  /// whatever the view painted before.
   int LoadMesh(const char* path);
   int SetInputData(vtkPolyData* polygons);
+  //@}
+
+  //@{
+  /// One more object for the scene, at the level of the objects already
+  /// there. Its outputs are named for it: the file's name without
+  /// extension, "input" for polygons ("_2", "_3", ... when taken). The brush
+  /// starts afresh, sized to the whole scene.
+  int AddMesh(const char* path);
+  int AddInputData(vtkPolyData* polygons);
+  //@}
+
+  //@{
+  /// The objects painted: how many, and the name of object k (null out of
+  /// range), which names its folder under SaveDirectory.
+  int GetNumberOfObjects();
+  const char* GetObjectName(int k);
+  /// The object under display pixel (x, y) facing the viewer, as a stroke
+  /// starting there would find it; -1 where there is none.
+  int PickObject(int x, int y);
   //@}
 #ifndef __VTK_WRAP__
   /// The same from an engine mesh (the command line loads and reports it).
   int SetBaseMesh(const meshpaint::BaseMesh& mesh);
+  int AddBaseMesh(const meshpaint::BaseMesh& mesh);
   /// Paints on a surface someone else holds too (vtkPaintSurface::GetView());
-  /// Level becomes the surface's.
-  void SetSurface(std::shared_ptr<meshpaint::PaintSurface> surface);
-  /// The project the surface came from: Save() then also writes
-  /// SaveDirectory/surface.meshpaint, this project continued (its labels,
-  /// scan and earlier history kept).
+  /// Level becomes the surface's. Replaces what the view painted before.
+  void SetSurface(std::shared_ptr<meshpaint::PaintSurface> surface, const std::string& name = "surface");
+  /// One more such surface for the scene.
+  /// \throw meshpaint::InputError when its level is not the scene's
+  void AddSurface(std::shared_ptr<meshpaint::PaintSurface> surface, const std::string& name);
+  /// The project the first object came from: Save() then also writes
+  /// surface.meshpaint into that object's folder, this project continued
+  /// (its labels, scan and earlier history kept). Set after the surface.
   void SetProject(const meshpaint::Project& project);
   /// True when this view paints on `surface`.
   bool Shows(const std::shared_ptr<meshpaint::PaintSurface>& surface) const;
@@ -159,11 +189,13 @@ public:
   int Redo();
 
   /// Saves the session into SaveDirectory: strokes.json (the recording)
-  /// and surface.vtp, each atomically. The one place a project format
-  /// plugs in.
+  /// and surface.vtp, each atomically; with several objects, each object's
+  /// surface.vtp goes into SaveDirectory/<name>/ (as `meshpaint paint -o`
+  /// writes a scene). The one place a project format plugs in.
   virtual int Save();
   /// Writes the textured model (model.obj, model.mtl, PNG maps) of level
-  /// max(1, Level - 2) into SaveDirectory.
+  /// max(1, Level - 2) into SaveDirectory (several objects: each into
+  /// SaveDirectory/<name>/).
   int Export();
 
   /// The session so far as a stroke script (undone strokes left out).
@@ -199,6 +231,18 @@ private:
   vtkPaintView(const vtkPaintView&) = delete;
   void operator=(const vtkPaintView&) = delete;
 
+  struct Drawing;
+  //! Load, input or mesh as one more object (`add`) or the only one.
+  int LoadObject(const char* path, bool add);
+  int InputObject(vtkPolyData* polygons, bool add);
+  int MeshObject(const meshpaint::BaseMesh& mesh, bool add);
+  //! Adds an object to the scene and its actor to the window (throws).
+  void AddObject(std::shared_ptr<meshpaint::PaintSurface> surface, const std::string& name);
+  //! Empties the scene and the window.
+  void RemoveObjects();
+  //! Puts an object's actor into the window and the picker.
+  void ShowObject(Drawing& drawing);
+
   int Step(bool back); // Undo (back) or Redo
   //! Result of a look-up at a pixel: on a surface facing the viewer?
   bool PickFacing(int x, int y, double point[3], double normal[3]);
@@ -210,8 +254,9 @@ private:
   void Refresh(bool geometry);
   //! The level drawn while moving.
   int CoarseLevel() const;
-  //! The painted surface at `level` (Level or CoarseLevel()), rebuilt if stale.
-  vtkPolyData* Surface(int level);
+  //! Object `object`'s painted surface at `level` (Level or CoarseLevel()),
+  //! rebuilt if stale.
+  vtkPolyData* Surface(std::size_t object, int level);
   //! Hands the actor the level that fits the moment.
   void Show();
   //! Start and end of a camera interaction: coarse while it lasts.

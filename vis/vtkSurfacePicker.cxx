@@ -18,7 +18,7 @@
 #include <vtkSmartPointer.h>     // for vtkSmartPointer
 #include <vtkNew.h>              // for vtkNew
 
-#include <algorithm> // for std::min, std::max
+#include <algorithm> // for std::min, std::max, std::find_if
 #include <vector>    // for std::vector
 
 vtkStandardNewMacro(vtkSurfacePicker);
@@ -26,12 +26,13 @@ vtkStandardNewMacro(vtkSurfacePicker);
 struct vtkSurfacePicker::Internals
 {
   vtkSmartPointer<vtkRenderer> renderer;
-  vtkSmartPointer<vtkActor> actor;
+  std::vector<vtkSmartPointer<vtkActor>> actors;
   vtkNew<vtkHardwareSelector> selector;
   bool captured = false;
-  // The surface as it was drawn into the buffers: cell ids refer to it even
-  // if the actor shows another one since (a coarser level while painting).
-  vtkSmartPointer<vtkPolyData> drawn;
+  // Each actor's surface as it was drawn into the buffers: cell ids refer
+  // to it even if the actor shows another one since (a coarser level while
+  // painting).
+  std::vector<vtkSmartPointer<vtkPolyData>> drawn;
   int size[2] = {0, 0};
 };
 
@@ -47,7 +48,7 @@ void vtkSurfacePicker::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Captured: " << this->Impl->captured << "\n";
   os << indent << "Point: " << this->Point[0] << " " << this->Point[1] << " " << this->Point[2] << "\n";
-  os << indent << "CellId: " << this->CellId << "\n";
+  os << indent << "CellId: " << this->CellId << " (actor " << this->ActorIndex << ")\n";
   os << indent << "Facing: " << this->Facing << "\n";
   os << indent << "PatchResolution: " << this->PatchResolution << "\n";
   os << indent << "Patch: " << this->Patch << " (" << this->U << ", " << this->V << ")\n";
@@ -64,12 +65,33 @@ vtkRenderer* vtkSurfacePicker::GetRenderer() { return this->Impl->renderer; }
 
 void vtkSurfacePicker::SetActor(vtkActor* actor)
 {
+  this->RemoveAllActors();
+  this->AddActor(actor);
+}
+
+void vtkSurfacePicker::AddActor(vtkActor* actor)
+{
   this->Release();
-  this->Impl->actor = actor;
+  if (actor)
+    this->Impl->actors.emplace_back(actor);
   this->Modified();
 }
 
-vtkActor* vtkSurfacePicker::GetActor() { return this->Impl->actor; }
+void vtkSurfacePicker::RemoveAllActors()
+{
+  this->Release();
+  this->Impl->actors.clear();
+  this->Modified();
+}
+
+int vtkSurfacePicker::GetNumberOfActors() { return int(this->Impl->actors.size()); }
+
+vtkActor* vtkSurfacePicker::GetActor() { return this->GetActor(0); }
+
+vtkActor* vtkSurfacePicker::GetActor(int k)
+{
+  return k >= 0 && k < this->GetNumberOfActors() ? this->Impl->actors[std::size_t(k)].GetPointer() : nullptr;
+}
 
 bool vtkSurfacePicker::IsCaptured() const { return this->Impl->captured; }
 
@@ -84,7 +106,8 @@ int vtkSurfacePicker::Capture()
     return 0;
   in.size[0] = size[0];
   in.size[1] = size[1];
-  in.drawn = vtkPolyData::SafeDownCast(in.actor && in.actor->GetMapper() ? in.actor->GetMapper()->GetInput() : nullptr);
+  for (vtkActor* actor : in.actors)
+    in.drawn.emplace_back(vtkPolyData::SafeDownCast(actor->GetMapper() ? actor->GetMapper()->GetInput() : nullptr));
   in.selector->SetRenderer(in.renderer);
   in.selector->SetArea(0, 0, unsigned(size[0] - 1), unsigned(size[1] - 1));
   in.captured = in.selector->CaptureBuffers();
@@ -96,7 +119,7 @@ void vtkSurfacePicker::Release()
   if (this->Impl->captured)
     this->Impl->selector->ClearBuffers();
   this->Impl->captured = false;
-  this->Impl->drawn = nullptr;
+  this->Impl->drawn.clear();
 }
 
 int vtkSurfacePicker::Pick(int x, int y)
@@ -109,9 +132,14 @@ int vtkSurfacePicker::Pick(int x, int y)
   const unsigned int pixel[2] = {unsigned(x), unsigned(y)};
   unsigned int found[2];
   const vtkHardwareSelector::PixelInformation info = in.selector->GetPixelInformation(pixel, 0, found);
-  if (!info.Valid || !in.actor || info.Prop != in.actor.GetPointer() || info.AttributeID < 0)
+  if (!info.Valid || info.AttributeID < 0)
     return 0;
-  vtkPolyData* poly = in.drawn;
+  const auto hit = std::find_if(in.actors.begin(), in.actors.end(),
+                                [&](const vtkSmartPointer<vtkActor>& a) { return info.Prop == a.GetPointer(); });
+  if (hit == in.actors.end())
+    return 0;
+  const std::size_t index = std::size_t(hit - in.actors.begin());
+  vtkPolyData* poly = in.drawn[index];
   if (!poly || info.AttributeID >= poly->GetNumberOfCells())
     return 0;
 
@@ -178,6 +206,7 @@ int vtkSurfacePicker::Pick(int x, int y)
   vtkMath::Normalize(to_eye);
   this->Facing = vtkMath::Dot(n, to_eye);
   this->CellId = info.AttributeID;
+  this->ActorIndex = int(index);
   // Quads of a welded level come n x n per patch, row by row, corner 0 at
   // texel (i, j) and the quad's r, s along the patch's i, j.
   const vtkIdType res = this->PatchResolution;

@@ -9,7 +9,8 @@
  * camera or the geometry changes.
  *
  * Picks refer to the surface the actor drew when the buffers were captured,
- * even if the actor has shown another since.
+ * even if the actor has shown another since. Several actors may be picked
+ * (a scene of several objects): a pick says which one it hit.
  *
  * A pick reports the world point, the interpolated normal (the point array
  * Normals, else the cell's), the cell, the atlas patch and (u, v) when the
@@ -41,7 +42,18 @@ public:
   void SetRenderer(vtkRenderer* renderer);
   vtkRenderer* GetRenderer();
   void SetActor(vtkActor* actor);
+  /// The first actor (null without one).
   vtkActor* GetActor();
+  //@}
+
+  //@{
+  /// Several actors to pick: SetActor() makes `actor` the only one,
+  /// AddActor() adds one more, RemoveAllActors() leaves none. Actor k is
+  /// the k-th added; GetActorIndex() names the one a pick hit.
+  void AddActor(vtkActor* actor);
+  void RemoveAllActors();
+  int GetNumberOfActors();
+  vtkActor* GetActor(int k);
   //@}
 
   /// Renders the item buffer of the current view. Returns 0 when there is
@@ -70,6 +82,8 @@ public:
   vtkGetVector3Macro(Point, double);
   vtkGetVector3Macro(Normal, double);
   vtkGetMacro(CellId, vtkIdType);
+  /// Which actor was hit (its index among the picked actors).
+  vtkGetMacro(ActorIndex, int);
   /// Cosine between the normal and the direction to the camera: 1 facing
   /// the viewer, 0 at a silhouette.
   vtkGetMacro(Facing, double);
@@ -87,6 +101,7 @@ protected:
   double Point[3] = {0, 0, 0};
   double Normal[3] = {0, 0, 1};
   vtkIdType CellId = -1;
+  int ActorIndex = -1;
   double Facing = 0;
   int PatchResolution = 0;
   vtkIdType Patch = -1;

@@ -1,13 +1,36 @@
 #include "paint/paint_scene.h"
 
-#include <algorithm> // for std::fill
+#include "core/errors.h"
+
+#include <algorithm> // for std::fill, std::any_of
 #include <limits>    // for std::numeric_limits
 
 namespace meshpaint {
 
-void PaintScene::add(std::unique_ptr<PaintSurface> surface, std::string name)
+void PaintScene::add(std::shared_ptr<PaintSurface> surface, const std::string& name)
 {
-  objects_.push_back({std::move(surface), std::move(name)});
+  if (!objects_.empty() && surface->level() != objects_.front().surface->level())
+    throw InputError("'" + name + "' is at level " + std::to_string(surface->level()) + ", the scene at " +
+                     std::to_string(objects_.front().surface->level()) + ": a scene paints at one level");
+  const std::string stem = name.empty() ? "object" : name;
+  const auto taken = [this](const std::string& n) {
+    return std::any_of(objects_.begin(), objects_.end(), [&](const Object& o) { return o.name == n; });
+  };
+  std::string unique = stem;
+  for (int k = 2; taken(unique); ++k)
+    unique = stem + "_" + std::to_string(k);
+  objects_.push_back({std::move(surface), unique});
+}
+
+std::string PaintScene::folder(const std::string& dir, std::size_t k) const
+{
+  return objects_.size() == 1 ? dir : dir + "/" + objects_[k].name;
+}
+
+const std::vector<Stroke>& PaintScene::history() const
+{
+  static const std::vector<Stroke> none;
+  return objects_.empty() ? none : objects_.front().surface->history();
 }
 
 std::vector<StrokeReport> PaintScene::apply(const Stroke& stroke)

@@ -3,7 +3,7 @@
 
 #include "paint/paint_surface.h"
 
-#include <memory> // for std::unique_ptr
+#include <memory> // for std::shared_ptr
 #include <string> // for std::string
 #include <vector> // for std::vector
 
@@ -12,11 +12,21 @@ namespace meshpaint {
 class PaintScene
 {
 public:
-  //! Adds an object; `name` names its outputs.
-  void add(std::unique_ptr<PaintSurface> surface, std::string name);
+  //! Adds an object; `name` names its outputs and is made unique in the
+  //! scene ("name_2", "name_3", ...; empty: "object"). The surface may be
+  //! shared with others (a window and a filter painting the same surface).
+  //! \throw InputError when its level differs from the scene's.
+  void add(std::shared_ptr<PaintSurface> surface, const std::string& name);
+  //! Removes every object.
+  void clear() { objects_.clear(); }
   std::size_t size() const { return objects_.size(); }
+  bool empty() const { return objects_.empty(); }
   PaintSurface& surface(std::size_t k) { return *objects_[k].surface; }
+  const std::shared_ptr<PaintSurface>& shared(std::size_t k) const { return objects_[k].surface; }
   const std::string& name(std::size_t k) const { return objects_[k].name; }
+  //! Where object k's outputs go under `dir`: `dir` itself for a scene of
+  //! one object, else `dir`/name.
+  std::string folder(const std::string& dir, std::size_t k) const;
 
   //! Runs one stroke over the scene. Each dab goes to every object with
   //! surface within its radius, so object, tangent and screen brushes paint
@@ -29,11 +39,15 @@ public:
   //! Undo and redo whole strokes on every object.
   bool undo();
   bool redo();
+  //! The strokes applied so far: every object records every stroke, also
+  //! one that did not reach it, so the first object's history is the
+  //! scene's. Empty for an empty scene.
+  const std::vector<Stroke>& history() const;
 
 private:
   struct Object
   {
-    std::unique_ptr<PaintSurface> surface;
+    std::shared_ptr<PaintSurface> surface;
     std::string name;
   };
   std::vector<Object> objects_;

@@ -55,6 +55,9 @@ MeshOrProject open_mesh_or_project(const std::string& path);
 //! The level to work at: a project's own level (a differing --level is an
 //! error), else --level, else `fallback`.
 int input_level(const Args& args, const MeshOrProject& input, int fallback);
+//! The one level a scene of several inputs works at (input_level() of the
+//! first). \throw InputError when another input is at a different level.
+int scene_level(const Args& args, const std::vector<MeshOrProject>& inputs, int fallback);
 //! A painting surface at `level`: the project's state, or the fresh mesh.
 std::unique_ptr<PaintSurface> open_paint_surface(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage,
                                                  const MeshOrProject& input, int level);

@@ -33,7 +33,7 @@ commands:
                                       model.obj + model.mtl + PNG texture maps; --save:
                                       the project to continue from; --screenshot: a
                                       rendered picture
-  view MESH|PROJECT [--strokes S.json] [--level L] [--lod L] [-o DIR] [--size WxH]
+  view MESH...|PROJECT [--strokes S.json] [--level L] [--lod L] [-o DIR] [--size WxH]
                                       the painting window (docs/window.md); saves the
                                       recorded strokes and the surface into DIR
   stats MESH [--labels labels.json] [--json|--csv] [--level L]

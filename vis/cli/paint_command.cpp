@@ -23,7 +23,6 @@
 
 #include <algorithm> // for std::max
 #include <iostream>  // for std::cout, std::cerr
-#include <set>       // for std::set
 
 namespace meshpaint::cli {
 
@@ -69,10 +68,9 @@ void paint_job(PaintScene& scene, const StrokeScript& script, int model_level, c
     table.print(std::cout);
   if (dir.empty())
     return;
-  // One object writes into DIR; each of several into DIR/<name>.
   for (std::size_t o = 0; o < scene.size(); ++o) {
     PaintSurface& surface = scene.surface(o);
-    const std::string out = scene.size() == 1 ? dir : dir + "/" + scene.name(o);
+    const std::string out = scene.folder(dir, o);
     const PaintingExportReport written = export_painting(surface, model_level, out);
     std::cout << "wrote      " << written.surface_path << ", " << out << "/model.obj (level " << model_level << ", "
               << written.model_quads << " quads) with model.mtl and " << written.map_width << "x"
@@ -117,11 +115,7 @@ int paint_command(const Argv& argv)
   for (const std::string& path : paths)
     inputs.push_back(open_mesh_or_project(path));
   const MeshOrProject& input = inputs.front();
-  const int level = input_level(args, input, script.level > 0 ? script.level : 3);
-  for (const MeshOrProject& other : inputs)
-    if (input_level(args, other, level) != level)
-      throw InputError("'" + other.path + "' is at level " + std::to_string(input_level(args, other, level)) +
-                       ", '" + input.path + "' at " + std::to_string(level) + ": a scene paints at one level");
+  const int level = scene_level(args, inputs, script.level > 0 ? script.level : 3);
   const int model_level = args.integer("--model-level", std::max(1, level - 2), 1, level);
   const int lod = args.integer("--lod", level, 1, level);
   for (std::size_t k = 0; k < script.strokes.size(); ++k)
@@ -139,15 +133,11 @@ int paint_command(const Argv& argv)
   auto runtime = open_device(args);
   Timer setup;
   PaintScene scene;
-  std::set<std::string> taken; // names of the objects' output folders
   for (const MeshOrProject& in : inputs) {
     auto surface = open_paint_surface(runtime, chosen_storage(args, *runtime), in, level);
     if (args.flag("--two-sided"))
       surface->set_two_sided(true);
-    std::string name = in.mesh().name.empty() ? "object" : in.mesh().name;
-    for (int k = 2; !taken.insert(name).second; ++k)
-      name = in.mesh().name + "_" + std::to_string(k);
-    scene.add(std::move(surface), name);
+    scene.add(std::move(surface), in.mesh().name);
   }
   if (!args.flag("--quiet"))
     std::cerr << "meshpaint paint: " << (inputs.size() == 1 ? "surface" : "surfaces") << " ready in "

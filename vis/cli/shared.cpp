@@ -43,6 +43,17 @@ int input_level(const Args& args, const MeshOrProject& input, int fallback)
   return own;
 }
 
+int scene_level(const Args& args, const std::vector<MeshOrProject>& inputs, int fallback)
+{
+  const MeshOrProject& first = inputs.front();
+  const int level = input_level(args, first, fallback);
+  for (const MeshOrProject& other : inputs)
+    if (input_level(args, other, level) != level)
+      throw InputError("'" + other.path + "' is at level " + std::to_string(input_level(args, other, level)) +
+                       ", '" + first.path + "' at " + std::to_string(level) + ": a scene paints at one level");
+  return level;
+}
+
 std::unique_ptr<PaintSurface> open_paint_surface(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage,
                                                  const MeshOrProject& input, int level)
 {

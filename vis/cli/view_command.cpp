@@ -1,4 +1,5 @@
-// meshpaint view: the interactive painting window.
+// meshpaint view: the interactive painting window, on one mesh or project or
+// on a scene of several meshes.
 
 #include "commands.h"
 #include "picture_options.h"
@@ -16,13 +17,14 @@
 namespace meshpaint::cli {
 namespace {
 
-//! The finest level up to 3 whose surface has at most about 1.5M quads, so
-//! that a software renderer still draws it interactively.
-int default_view_level(const BaseMesh& mesh)
+//! The finest level up to 3 whose surfaces have at most about 1.5M quads in
+//! all, so that a software renderer still draws them interactively.
+int default_view_level(const std::vector<MeshOrProject>& inputs)
 {
   double quads = 0;
-  for (int size : mesh.face_sizes)
-    quads += size; // level 1: one quad per face corner
+  for (const MeshOrProject& input : inputs)
+    for (int size : input.mesh().face_sizes)
+      quads += size; // level 1: one quad per face corner
   int level = 1;
   while (level < 3 && quads * 4 <= 1.5e6) {
     quads *= 4;
@@ -36,7 +38,12 @@ int default_view_level(const BaseMesh& mesh)
 int view_command(const Argv& argv)
 {
   Args args("view", argv, {}, {"--strokes", "--level", "--lod", "-o", "--size", "--device", "--storage"});
-  args.expect_positionals(1, 1, "MESH|PROJECT [--strokes S.json] [--level L] [--lod L] [-o DIR] [--size WxH]");
+  args.expect_positionals(1, 64, "MESH...|PROJECT [--strokes S.json] [--level L] [--lod L] [-o DIR] [--size WxH]");
+  const std::vector<std::string>& paths = args.positionals();
+  if (paths.size() > 1)
+    for (const std::string& path : paths)
+      if (is_project_path(path))
+        throw InputError("'" + path + "' is a project: view opens one PROJECT alone, or several meshes");
   // Everything is checked before the window opens.
   StrokeScript script;
   if (args.has("--strokes")) {
@@ -46,9 +53,12 @@ int view_command(const Argv& argv)
   const PictureOptions picture = picture_options(args);
   if (args.has("--storage"))
     parse_storage(args.value("--storage"));
-  const MeshOrProject input = open_mesh_or_project(args.positionals()[0]);
+  std::vector<MeshOrProject> inputs;
+  for (const std::string& path : paths)
+    inputs.push_back(open_mesh_or_project(path));
+  const MeshOrProject& input = inputs.front();
   const BaseMesh& mesh = input.mesh();
-  const int level = input_level(args, input, script.level > 0 ? script.level : default_view_level(mesh));
+  const int level = scene_level(args, inputs, script.level > 0 ? script.level : default_view_level(inputs));
 
   const int lod = args.integer("--lod", std::max(1, level - 1), 0, level);
   vtkNew<vtkPaintView> view;
@@ -60,16 +70,21 @@ int view_command(const Argv& argv)
   view->SetSize(picture.width, picture.height);
   const auto runtime = open_device(args); // reports a bad --device like every command
   if (input.project) { // the project's surface as saved, painted on from here
-    view->SetSurface(open_paint_surface(runtime, chosen_storage(args, *runtime), input, level));
+    view->SetSurface(open_paint_surface(runtime, chosen_storage(args, *runtime), input, level), mesh.name);
     view->SetProject(*input.project);
+  } else {
+    for (const MeshOrProject& in : inputs)
+      if (!view->AddBaseMesh(in.mesh()))
+        throw DeviceError(view->GetLastError());
   }
-  else if (!view->SetBaseMesh(mesh))
-    throw DeviceError(view->GetLastError());
   if (!script.strokes.empty() && !view->ApplyScript(script))
     throw DeviceError(view->GetLastError()); // the script was checked: what fails now is the device
   if (!view->Initialize())
     throw DeviceError(view->GetLastError());
-  std::cout << "view       " << mesh.name << " at level " << level << "; h in the window lists the keys; saves go to "
+  std::string names;
+  for (int k = 0; k < view->GetNumberOfObjects(); ++k)
+    names += (k ? ", " : "") + std::string(view->GetObjectName(k));
+  std::cout << "view       " << names << " at level " << level << "; h in the window lists the keys; saves go to "
             << view->GetSaveDirectory() << "/" << std::endl;
   view->Start();
   return 0;

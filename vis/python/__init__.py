@@ -89,6 +89,14 @@ class vtkPaintView(_wrapped.vtkPaintView):
         """Builds the surface from the polygons of a vtkPolyData; raises Error when it cannot."""
         return self._check(super().SetInputData(polydata))
 
+    def AddMesh(self, path):
+        """Adds one more object to the scene from a mesh file; raises Error when it cannot."""
+        return self._check(super().AddMesh(str(path)))
+
+    def AddInputData(self, polydata):
+        """Adds one more object to the scene from the polygons of a vtkPolyData; raises Error when it cannot."""
+        return self._check(super().AddInputData(polydata))
+
     def ApplyStrokes(self, json_text):
         """Applies a stroke script's strokes; raises Error for a bad script."""
         return self._check(super().ApplyStrokes(json_text))
@@ -98,7 +106,7 @@ class vtkPaintView(_wrapped.vtkPaintView):
         return self._check(super().Initialize())
 
     def Save(self):
-        """Writes strokes.json and surface.vtp into SaveDirectory; raises Error when it cannot."""
+        """Writes strokes.json and surface.vtp (several objects: NAME/surface.vtp) into SaveDirectory; raises Error when it cannot."""
         return self._check(super().Save())
 
     def Export(self):
