@@ -14,9 +14,11 @@
 
 #include <vtkCamera.h>       // for vtkCamera
 #include <vtkNew.h>          // for vtkNew
+#include <vtkRenderWindow.h> // for vtkRenderWindow::ReportCapabilities
 #include <vtkRenderer.h>     // for vtkRenderer
 
 #include <iostream> // for std::cout
+#include <sstream>  // for std::istringstream
 
 namespace meshpaint::cli {
 namespace {
@@ -63,6 +65,18 @@ double render_ms(vtkPaintView* view, int steps)
   return median(t);
 }
 
+//! The OpenGL renderer that draws the window (llvmpipe, a GPU...), as the
+//! driver names it; frame times mean little without it.
+std::string gl_renderer(vtkPaintView* view)
+{
+  std::istringstream report(view->GetRenderWindow()->ReportCapabilities());
+  const std::string key = "OpenGL renderer string:";
+  for (std::string line; std::getline(report, line);)
+    if (line.compare(0, key.size(), key) == 0)
+      return line.substr(line.find_first_not_of(' ', key.size()));
+  return "unknown";
+}
+
 } // namespace
 
 int bench_view(const Args& args)
@@ -70,6 +84,7 @@ int bench_view(const Args& args)
   args.expect_positionals(1, 1, "view [--steps N]");
   const int steps = args.integer("--steps", 7, 1, 1000);
   open_device(args); // a bad --device fails here, before the window
+  std::string renderer;
   Table table({"faces", "mesh", "LoD level", "paint frame ms", "paint frame LoD ms", "render ms",
                "render LoD ms", "capture ms", "pick ms"});
   for (const ViewRow& row : kViewRows) {
@@ -83,6 +98,7 @@ int bench_view(const Args& args)
       throw DeviceError(view->GetLastError());
     // At rest, full level: drawing and the item buffer.
     const double full_render = render_ms(view, steps);
+    renderer = gl_renderer(view);
     std::vector<double> capture, pick;
     for (int k = 0; k < steps; ++k) {
       Timer c;
@@ -107,8 +123,8 @@ int bench_view(const Args& args)
                format_fixed(frame_lod, 1), format_fixed(full_render, 1), format_fixed(lod_render, 1),
                format_fixed(median(capture), 1), format_fixed(median(pick), 3)});
   }
-  std::cout << "meshpaint bench view: offscreen " << kWidth << "x" << kHeight << ", median of " << steps
-            << " frames; a paint frame is one step of a drag (brush step, display update, render);\n"
+  std::cout << "meshpaint bench view: offscreen " << kWidth << "x" << kHeight << " drawn by " << renderer
+            << ", median of " << steps << " frames; a paint frame is one step of a drag (brush step, display update, render);\n"
             << "LoD draws level L-1 while painting or moving; pick: one item-buffer look-up and ray-cell hit\n\n";
   table.print(std::cout);
   return 0;
