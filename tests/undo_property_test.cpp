@@ -187,6 +187,86 @@ TEST_P(UndoProperty, RedoAfterUndoAllReproduces)
   EXPECT_TRUE(same_bits(read_state(surface), end));
 }
 
+//! Writes the values of a partial read into the arrays of a full one.
+void scatter(const PaintedVertices& update, PaintedSurface& shown)
+{
+  const PaintedSurface& v = update.values;
+  for (std::size_t k = 0; k < update.ids.size(); ++k) {
+    const std::size_t id = std::size_t(update.ids[k]);
+    shown.surface.points[id] = v.surface.points[k];
+    shown.surface.normals[id] = v.surface.normals[k];
+    shown.diffuse[id] = v.diffuse[k];
+    shown.specular[id] = v.specular[k];
+    shown.roughness[id] = v.roughness[k];
+    shown.displacement[id] = v.displacement[k];
+    shown.mask[id] = v.mask[k];
+    shown.label[id] = v.label[k];
+    if (!v.inside_diffuse.empty()) {
+      shown.inside_diffuse[id] = v.inside_diffuse[k];
+      shown.inside_specular[id] = v.inside_specular[k];
+      shown.inside_roughness[id] = v.inside_roughness[k];
+    }
+  }
+}
+
+template <typename T>
+bool same_bits(const std::vector<T>& a, const std::vector<T>& b)
+{
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+// A display that reads only the patches changed since it last looked
+// (changes_since, painted_vertices) shows what a full read shows, bit for
+// bit, after every action of a random session; odd seeds on a two-sided
+// surface.
+TEST_P(UndoProperty, DisplayFollowingChangesMatchesAFullRead)
+{
+  PaintSurface surface(test::runtime(), test::genus_two(), kLevel, AtlasStorage::Buffer);
+  if (GetParam() % 2 == 1)
+    surface.set_two_sided(true);
+  PaintedSurface shown = surface.painted_surface();
+  std::uint64_t seen = surface.change_count();
+  StrokeMaker maker(GetParam());
+  int partial = 0;
+  for (int step = 0; step < 30; ++step) {
+    const int action = maker.pick(10);
+    std::string what = action < 2 ? "undo" : action < 3 ? "redo" : maker.next();
+    SCOPED_TRACE(what);
+    if (action < 2)
+      surface.undo();
+    else if (action < 3)
+      surface.redo();
+    else
+      surface.apply(parse_one(what));
+    const PatchChanges changes = surface.changes_since(seen);
+    seen = surface.change_count();
+    if (changes.all) {
+      shown = surface.painted_surface();
+      continue;
+    }
+    ++partial;
+    EXPECT_LT(changes.patches.size(), std::size_t(surface.atlas().topology().patch_count) + 1);
+    scatter(surface.painted_vertices(changes.patches), shown);
+    const PaintedSurface full = surface.painted_surface();
+    ASSERT_TRUE(same_bits(shown.surface.points, full.surface.points));
+    ASSERT_TRUE(same_bits(shown.surface.normals, full.surface.normals));
+    ASSERT_TRUE(same_bits(shown.diffuse, full.diffuse));
+    ASSERT_TRUE(same_bits(shown.specular, full.specular));
+    ASSERT_TRUE(same_bits(shown.roughness, full.roughness));
+    ASSERT_TRUE(same_bits(shown.displacement, full.displacement));
+    ASSERT_TRUE(same_bits(shown.mask, full.mask));
+    ASSERT_TRUE(same_bits(shown.label, full.label));
+    ASSERT_TRUE(same_bits(shown.inside_diffuse, full.inside_diffuse));
+    ASSERT_TRUE(same_bits(shown.inside_specular, full.inside_specular));
+    ASSERT_TRUE(same_bits(shown.inside_roughness, full.inside_roughness));
+  }
+  EXPECT_EQ(partial, 30) << "no action of a session should need a full read";
+  // Nothing changed: nothing to read.
+  EXPECT_TRUE(surface.changes_since(surface.change_count()).patches.empty());
+  surface.write_channels(surface.read_channels());
+  EXPECT_TRUE(surface.changes_since(seen).all);
+}
+
 INSTANTIATE_TEST_SUITE_P(Seeds, UndoProperty, testing::Values(1u, 2u, 3u, 4u));
 
 // A long session: many strokes in one run keep the undo log within its

@@ -145,6 +145,7 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
   in_stroke_.assign(std::size_t(l.patches), 0);
   mark_.assign(std::size_t(l.patches), 0);
   record_slot_.assign(std::size_t(l.patches), nullptr);
+  changed_at_.assign(std::size_t(l.patches), 0);
   const AtlasTopology& topo = atlas_->topology();
   neighbours_.resize(std::size_t(l.patches));
   for (int p = 0; p < l.patches; ++p)
@@ -165,6 +166,8 @@ std::pair<PaintSurface::LayerKernels*, const cl::Memory*> PaintSurface::layer(in
   case kInsideDiffuse: return {&d.channels, &d.inside_diffuse};
   case kInsideSpecular: return {&d.channels, &d.inside_specular};
   case kInsideMaterial: return {&d.channels, &d.inside_material};
+  case kLimitPositions: return {&d.positions, &atlas_->limit_positions_layer()};
+  case kLimitNormals: return {&d.positions, &atlas_->limit_normals_layer()};
   default: return {&d.channels, &d.material};
   }
 }
@@ -196,6 +199,7 @@ void PaintSurface::restore(const Snapshot& s)
 {
   if (s.patches.empty())
     return;
+  changed(s.patches);
   Runtime& rt = atlas_->runtime();
   const LevelLayout l = atlas_->layout(level_);
   const std::size_t n = s.patches.size() * std::size_t(l.tile) * l.tile;
@@ -249,6 +253,7 @@ void PaintSurface::refresh_geometry(const std::vector<int>& patches)
 
 void PaintSurface::remember(const std::vector<int>& patches)
 {
+  changed(patches); // every dab that changes tiles says which here, first
   if (!undo_.recording())
     return;
   std::vector<int> fresh;
@@ -1037,6 +1042,7 @@ void PaintSurface::grab(const Stroke& stroke, BrushDab& dab, StrokeReport& repor
 
 void PaintSurface::geometry_changed()
 {
+  changed_all();
   if (multires_)
     multires_->invalidate();
   const LevelLayout l = atlas_->layout(level_);
@@ -1140,6 +1146,7 @@ void PaintSurface::set_two_sided(bool on)
     d.inside_diffuse = d.inside_specular = d.inside_material = cl::Buffer();
   }
   two_sided_ = on;
+  changed_all();
   // Steps recorded for the other number of layers cannot be undone.
   UndoLog fresh(undo_.budget());
   fresh.set_recording(undo_.recording());
@@ -1148,6 +1155,7 @@ void PaintSurface::set_two_sided(bool on)
 
 void PaintSurface::write_channels(const PaintChannels& c)
 {
+  changed_all();
   const std::size_t n = atlas_->layout(level_).texels();
   if (c.diffuse.size() != n || c.specular.size() != n || c.material.size() != n)
     throw InputError("channel layers of " + std::to_string(c.diffuse.size()) + " texels do not fit a level-" +
@@ -1165,93 +1173,6 @@ void PaintSurface::write_channels(const PaintChannels& c)
   q.enqueueWriteBuffer(device_->inside_diffuse, CL_TRUE, 0, n * sizeof(Float4), c.inside_diffuse.data());
   q.enqueueWriteBuffer(device_->inside_specular, CL_TRUE, 0, n * sizeof(Float4), c.inside_specular.data());
   q.enqueueWriteBuffer(device_->inside_material, CL_TRUE, 0, n * sizeof(Float4), c.inside_material.data());
-}
-
-namespace {
-
-//! Channels per welded vertex, and the displacement applied along the
-//! normal (P = P0 + h N).
-PaintedSurface painted(WeldedSurface surface, const AtlasTopology& topology, const LevelLayout& layout,
-                       const PaintChannels& c)
-{
-  PaintedSurface out;
-  out.surface = std::move(surface);
-  const std::vector<int> map = weld_map(topology, layout);
-  const std::size_t nv = out.surface.points.size();
-  out.diffuse.resize(nv);
-  out.specular.resize(nv);
-  out.roughness.resize(nv);
-  out.displacement.resize(nv);
-  out.mask.resize(nv);
-  out.label.resize(nv);
-  for (std::size_t t = 0; t < map.size(); ++t) {
-    const int v = map[t];
-    out.diffuse[v] = {c.diffuse[t][0], c.diffuse[t][1], c.diffuse[t][2]};
-    out.specular[v] = {c.specular[t][0], c.specular[t][1], c.specular[t][2]};
-    out.roughness[v] = c.material[t][0];
-    out.displacement[v] = c.material[t][1];
-    out.label[v] = int(c.material[t][2]);
-    out.mask[v] = c.material[t][3];
-  }
-  if (!c.inside_diffuse.empty()) {
-    out.inside_diffuse.resize(nv);
-    out.inside_specular.resize(nv);
-    out.inside_roughness.resize(nv);
-    for (std::size_t t = 0; t < map.size(); ++t) {
-      const int v = map[t];
-      out.inside_diffuse[v] = {c.inside_diffuse[t][0], c.inside_diffuse[t][1], c.inside_diffuse[t][2]};
-      out.inside_specular[v] = {c.inside_specular[t][0], c.inside_specular[t][1], c.inside_specular[t][2]};
-      out.inside_roughness[v] = c.inside_material[t][0];
-    }
-  }
-  for (std::size_t v = 0; v < nv; ++v)
-    for (int k = 0; k < 3; ++k)
-      out.surface.points[v][k] += out.displacement[v] * out.surface.normals[v][k];
-  return out;
-}
-
-} // namespace
-
-PaintedSurface PaintSurface::painted_surface()
-{
-  return painted(level_surface(*atlas_, level_, true), atlas_->topology(), atlas_->layout(level_), read_channels());
-}
-
-PaintedSurface PaintSurface::painted_surface(int level)
-{
-  if (level == level_)
-    return painted_surface();
-  if (level < 1 || level > level_)
-    throw InputError("no level of detail " + std::to_string(level) + ": the surface has levels 1.." +
-                     std::to_string(level_));
-  // Reducing rewrites the levels below the finest, which hold the base of
-  // a coarse edit: its details are made again on the next one.
-  atlas_->reduce(level_, level);
-  if (multires_)
-    multires_->invalidate();
-  const LevelLayout c = atlas_->layout(level), f = atlas_->layout(level_);
-  const int stride = f.n / c.n;
-  const std::vector<Float4> positions = atlas_->read_positions(level), normals = atlas_->read_limit_normals();
-  const PaintChannels fine = read_channels();
-  std::vector<Float4> coarse_normals(c.texels());
-  PaintChannels coarse;
-  const auto sampled = [&](const std::vector<Float4>& from, std::vector<Float4>& to) {
-    if (from.empty())
-      return;
-    to.resize(c.texels());
-    for (int p = 0; p < c.patches; ++p)
-      for (int j = 0; j < c.tile; ++j)
-        for (int i = 0; i < c.tile; ++i)
-          to[c.index(p, i, j)] = from[f.index(p, i * stride, j * stride)];
-  };
-  sampled(normals, coarse_normals);
-  sampled(fine.diffuse, coarse.diffuse);
-  sampled(fine.specular, coarse.specular);
-  sampled(fine.material, coarse.material);
-  sampled(fine.inside_diffuse, coarse.inside_diffuse);
-  sampled(fine.inside_specular, coarse.inside_specular);
-  sampled(fine.inside_material, coarse.inside_material);
-  return painted(weld(atlas_->topology(), c, positions, &coarse_normals), atlas_->topology(), c, coarse);
 }
 
 } // namespace meshpaint

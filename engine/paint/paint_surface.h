@@ -41,6 +41,20 @@ struct PaintedSurface
   std::vector<float> inside_roughness;
 };
 
+//! painted_surface()'s values at some of its welded vertices.
+struct PaintedVertices
+{
+  std::vector<int> ids;  //!< welded vertex ids, each once
+  PaintedSurface values; //!< one entry per id in each array (surface.quads empty)
+};
+
+//! Which patches changed after a moment (PaintSurface::change_count()).
+struct PatchChanges
+{
+  bool all = false;         //!< anything may have changed: read the whole surface
+  std::vector<int> patches; //!< else these, ascending
+};
+
 //! What one stroke did.
 struct StrokeReport
 {
@@ -118,6 +132,13 @@ public:
   //! \throw InputError when a layer has another size.
   void write_channels(const PaintChannels& channels);
   PaintedSurface painted_surface();
+  //! painted_surface()'s values at the welded vertices of `patches` only,
+  //! read from those tiles alone: for displays that follow the brush.
+  PaintedVertices painted_vertices(const std::vector<int>& patches);
+  //! A count that grows with every change of the surface, and what changed
+  //! after a given count: a display keeps the count of what it shows.
+  std::uint64_t change_count() const { return change_count_; }
+  PatchChanges changes_since(std::uint64_t count) const;
   //! Level of detail: the surface at a coarser level (<= level(), reduced
   //! from the finest), with the finest level's limit normals and channels
   //! at the matching texels.
@@ -180,7 +201,9 @@ private:
     kMaterial,
     kInsideDiffuse,
     kInsideSpecular,
-    kInsideMaterial
+    kInsideMaterial,
+    kLimitPositions, // read only (painted_vertices): the limit surface at the painting level
+    kLimitNormals
   };
   //! The channel buffers a dab writes: the side it paints.
   cl::Buffer& diffuse_buffer();
@@ -193,6 +216,9 @@ private:
   void restore(const Snapshot& snapshot);
   //! Adds the patches not yet in the stroke's snapshot, before they change.
   void remember(const std::vector<int>& patches);
+  //! Records a change of these patches, or of everything, for changes_since().
+  void changed(const std::vector<int>& patches);
+  void changed_all();
 
   std::unique_ptr<Atlas> atlas_;
   int level_;
@@ -214,6 +240,9 @@ private:
   const std::vector<char>* dab_mask_ = nullptr; // apply(stroke, dabs): the dabs for this surface
   bool two_sided_ = false;
   bool inside_ = false; // the running dab paints the inside
+  std::uint64_t change_count_ = 1, all_changed_at_ = 1;
+  std::vector<std::uint64_t> changed_at_; // per patch: the count of its last change
+  std::vector<int> weld_map_;             // per texel of the painting level: its welded vertex, made on first use
 };
 
 } // namespace meshpaint
