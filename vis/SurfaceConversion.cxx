@@ -120,7 +120,70 @@ int update_polydata(vtkPolyData* poly, const PaintedSurface& s)
   changed += copy_if_changed(pd->GetArray("displacement"), s.displacement.data(), s.displacement.size());
   changed += copy_if_changed(pd->GetArray("mask"), s.mask.data(), s.mask.size());
   changed += copy_if_changed(pd->GetArray("label"), s.label.data(), s.label.size());
+  if (!s.inside_diffuse.empty() && pd->GetArray("inside_diffuse")) {
+    changed += copy_if_changed(pd->GetArray("inside_diffuse"), &s.inside_diffuse[0][0], 3 * s.inside_diffuse.size());
+    changed +=
+      copy_if_changed(pd->GetArray("inside_specular"), &s.inside_specular[0][0], 3 * s.inside_specular.size());
+    changed += copy_if_changed(pd->GetArray("inside_roughness"), s.inside_roughness.data(), s.inside_roughness.size());
+  }
   return changed; // the polydata's time includes its arrays', so renderers notice
+}
+
+namespace {
+
+//! Writes `components` values per listed vertex into `to`; marks it modified
+//! when any differed. True when it did.
+template <typename T>
+bool scatter_if_changed(vtkDataArray* to, const std::vector<int>& ids, const T* from, int components)
+{
+  if (ids.empty())
+    return false;
+  if (!to || to->GetNumberOfComponents() != components)
+    throw std::invalid_argument("update_polydata: the vertices do not match the polydata");
+  const vtkIdType tuples = to->GetNumberOfTuples();
+  T* values = static_cast<T*>(to->GetVoidPointer(0));
+  bool changed = false;
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    if (ids[k] < 0 || ids[k] >= tuples)
+      throw std::invalid_argument("update_polydata: a vertex beyond the polydata's points");
+    T* at = values + std::size_t(ids[k]) * components;
+    const T* value = from + k * components;
+    if (std::memcmp(at, value, sizeof(T) * components) != 0) {
+      std::memcpy(at, value, sizeof(T) * components);
+      changed = true;
+    }
+  }
+  if (changed)
+    to->Modified();
+  return changed;
+}
+
+} // namespace
+
+int update_polydata(vtkPolyData* poly, const PaintedVertices& update)
+{
+  const PaintedSurface& s = update.values;
+  const std::vector<int>& ids = update.ids;
+  if (ids.empty())
+    return 0;
+  vtkPointData* pd = poly->GetPointData();
+  int changed = 0;
+  changed += scatter_if_changed(poly->GetPoints()->GetData(), ids, &s.surface.points[0][0], 3);
+  changed += scatter_if_changed(pd->GetNormals(), ids, &s.surface.normals[0][0], 3);
+  changed += scatter_if_changed(pd->GetArray("diffuse"), ids, &s.diffuse[0][0], 3);
+  changed += scatter_if_changed(pd->GetArray("specular"), ids, &s.specular[0][0], 3);
+  changed += scatter_if_changed(pd->GetArray("roughness"), ids, s.roughness.data(), 1);
+  changed += scatter_if_changed(pd->GetArray("displacement"), ids, s.displacement.data(), 1);
+  changed += scatter_if_changed(pd->GetArray("mask"), ids, s.mask.data(), 1);
+  changed += scatter_if_changed(pd->GetArray("label"), ids, s.label.data(), 1);
+  if (!s.inside_diffuse.empty() && pd->GetArray("inside_diffuse")) {
+    changed += scatter_if_changed(pd->GetArray("inside_diffuse"), ids, &s.inside_diffuse[0][0], 3);
+    changed += scatter_if_changed(pd->GetArray("inside_specular"), ids, &s.inside_specular[0][0], 3);
+    changed += scatter_if_changed(pd->GetArray("inside_roughness"), ids, s.inside_roughness.data(), 1);
+  }
+  if (changed)
+    poly->GetPoints()->Modified();
+  return changed;
 }
 
 BaseMesh to_base_mesh(vtkPolyData* poly, const std::string& name)

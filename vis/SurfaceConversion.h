@@ -30,6 +30,12 @@ MESHPAINTVIS_EXPORT vtkSmartPointer<vtkPolyData> to_polydata(const PaintedSurfac
 //! \throw std::invalid_argument when the sizes do not match.
 MESHPAINTVIS_EXPORT int update_polydata(vtkPolyData* poly, const PaintedSurface& surface);
 
+//! The same for some vertices only (PaintSurface::painted_vertices): writes
+//! their values into the arrays of `poly`, marking modified only the arrays
+//! where a value changed. Returns how many arrays changed.
+//! \throw std::invalid_argument when ids or arrays do not match.
+MESHPAINTVIS_EXPORT int update_polydata(vtkPolyData* poly, const PaintedVertices& update);
+
 //! The polygons of `poly` (other cells ignored) as a checked base mesh.
 //! \throw InputError as make_base_mesh does.
 MESHPAINTVIS_EXPORT BaseMesh to_base_mesh(vtkPolyData* poly, const std::string& name);

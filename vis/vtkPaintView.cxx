@@ -40,6 +40,7 @@
 #include <algorithm>  // for std::min, std::max
 #include <array>      // for std::array
 #include <cmath>      // for std::sqrt
+#include <cstdint>    // for std::uint64_t
 #include <filesystem> // for std::filesystem
 #include <fstream>    // for std::ofstream
 
@@ -53,6 +54,7 @@ struct vtkPaintView::Drawing
 {
   vtkSmartPointer<vtkPolyData> full, coarse, shown;
   bool full_stale = true;
+  std::uint64_t full_count = 0; // the surface's change_count() that `full` shows
   int coarse_level = 0;
   vtkNew<vtkActor> actor;
 };
@@ -521,12 +523,21 @@ vtkPolyData* vtkPaintView::Surface(std::size_t object, int level)
 {
   Internals& in = *this->Impl;
   Drawing& d = *in.drawings[object];
+  meshpaint::PaintSurface& surface = in.scene.surface(object);
   if (!d.full) {
-    d.full = meshpaint::to_polydata(in.scene.surface(object).painted_surface());
+    d.full_count = surface.change_count();
+    d.full = meshpaint::to_polydata(surface.painted_surface());
     d.coarse = nullptr;
   } else if (d.full_stale) {
-    // Same topology: only the arrays that changed are written (and uploaded).
-    meshpaint::update_polydata(d.full, in.scene.surface(object).painted_surface());
+    // Same topology: only the vertices of the patches that changed are read
+    // from the device, and only the arrays that changed are marked (and
+    // uploaded).
+    const meshpaint::PatchChanges changes = surface.changes_since(d.full_count);
+    d.full_count = surface.change_count();
+    if (changes.all)
+      meshpaint::update_polydata(d.full, surface.painted_surface());
+    else
+      meshpaint::update_polydata(d.full, surface.painted_vertices(changes.patches));
   }
   d.full_stale = false;
   if (level == this->Level)

@@ -102,6 +102,11 @@ def test_recorded_session_replays_to_the_same_bits(tmp_path):
     assert live.keys() == again.keys()
     for name in live:
         assert live[name].tobytes() == again[name].tobytes(), name
+    # The window shows what was saved: its arrays, brought up to date from
+    # the changed patches alone while painting, equal a full read.
+    drawn = arrays(view.GetPicker().GetActor().GetMapper().GetInput())
+    for name in ("points", "Normals", "diffuse", "specular", "roughness", "displacement", "label", "mask"):
+        assert drawn[name].tobytes() == live[name].tobytes(), name
     # and the strokes did paint: red and blue are both there
     diffuse = live["diffuse"]
     assert ((diffuse[:, 0] > 0.8) & (diffuse[:, 2] < 0.2)).any()
