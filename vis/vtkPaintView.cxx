@@ -271,7 +271,10 @@ int vtkPaintView::ApplyScript(const meshpaint::StrokeScript& script)
     for (const meshpaint::Stroke& s : script.strokes)
       in.scene.apply(s);
   });
+  const std::string error = this->LastError; // showing what was painted must not hide why it stopped
   this->Refresh(true);
+  if (!ok)
+    this->LastError = error;
   return ok;
 }
 

@@ -58,6 +58,9 @@ int input_level(const Args& args, const MeshOrProject& input, int fallback);
 //! The one level a scene of several inputs works at (input_level() of the
 //! first). \throw InputError when another input is at a different level.
 int scene_level(const Args& args, const std::vector<MeshOrProject>& inputs, int fallback);
+//! \throw InputError naming the first stroke whose edit_level is finer
+//! than `level`, before anything is painted.
+void check_edit_levels(const StrokeScript& script, int level);
 //! A painting surface at `level`: the project's state, or the fresh mesh.
 std::unique_ptr<PaintSurface> open_paint_surface(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage,
                                                  const MeshOrProject& input, int level);

@@ -118,11 +118,7 @@ int paint_command(const Argv& argv)
   const int level = scene_level(args, inputs, script.level > 0 ? script.level : 3);
   const int model_level = args.integer("--model-level", std::max(1, level - 2), 1, level);
   const int lod = args.integer("--lod", level, 1, level);
-  for (std::size_t k = 0; k < script.strokes.size(); ++k)
-    if (script.strokes[k].edit_level > level)
-      throw InputError("stroke " + std::to_string(k) + ": \"edit_level\" " +
-                       std::to_string(script.strokes[k].edit_level) + " is finer than the painting level " +
-                       std::to_string(level));
+  check_edit_levels(script, level);
   const PictureOptions picture = picture_options(args);
   const std::string screenshot = args.value("--screenshot");
   if (args.has("--screenshot") && lower_extension(screenshot) != ".png")

@@ -54,6 +54,15 @@ int scene_level(const Args& args, const std::vector<MeshOrProject>& inputs, int 
   return level;
 }
 
+void check_edit_levels(const StrokeScript& script, int level)
+{
+  for (std::size_t k = 0; k < script.strokes.size(); ++k)
+    if (script.strokes[k].edit_level > level)
+      throw InputError("stroke " + std::to_string(k) + ": \"edit_level\" " +
+                       std::to_string(script.strokes[k].edit_level) + " is finer than the painting level " +
+                       std::to_string(level));
+}
+
 std::unique_ptr<PaintSurface> open_paint_surface(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage,
                                                  const MeshOrProject& input, int level)
 {

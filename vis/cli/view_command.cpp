@@ -59,6 +59,7 @@ int view_command(const Argv& argv)
   const MeshOrProject& input = inputs.front();
   const BaseMesh& mesh = input.mesh();
   const int level = scene_level(args, inputs, script.level > 0 ? script.level : default_view_level(inputs));
+  check_edit_levels(script, level);
 
   const int lod = args.integer("--lod", std::max(1, level - 1), 0, level);
   vtkNew<vtkPaintView> view;
