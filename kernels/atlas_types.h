@@ -104,8 +104,8 @@ typedef struct {
   float screen_centre[2];         /* screen: the centre on the view plane, (x / z, y / z) */
   float centre_depth;             /* screen: the centre's distance along view_dir */
   float focal;                    /* screen: 1 / tan(view angle / 2) */
-  mp_int centre_patch;            /* parameter: the patch under the centre */
-  float centre_texel[2];          /* parameter: the centre in its texels */
+  mp_int unfolded;                /* parameter: entries of the dab's PatchUnfolding table */
+  float centre_texel[2];          /* parameter: the centre in the texels of its patch */
   float texel_size;               /* parameter: world units per texel there */
   float side_sign;                /* 1 painting the outside, -1 the inside: the side a normal points to */
 } BrushDab;
@@ -122,11 +122,34 @@ typedef struct {
   float closest_normal[4];        /* and its limit normal */
 } CullRecord;
 
+/* Where a parameter-space dab lays some texels of a patch: texel (i, j)
+ * lies at i * u + j * v + n * offset in the texels of the patch under the
+ * dab's centre (n texels per tile side): a rotation by a multiple of 90
+ * degrees and a shift by whole tiles, the same at every level. */
+typedef struct {
+  mp_int u[2];
+  mp_int v[2];
+  mp_int offset[2];               /* in tile sides */
+  mp_int valid;                   /* 0: the dab leaves these texels alone */
+  mp_int pad;
+} TexelMap;
+
+/* A parameter-space dab's maps for one listed patch, by the part of the
+ * tile a texel lies in. Every stored copy of a side or corner texel takes
+ * the map of the same patch, so copies get the same bits. */
+#define UNFOLD_INTERIOR 0
+#define UNFOLD_SIDE 1                 /* + side, 0..3: the side's texels without its corners */
+#define UNFOLD_CORNER 5               /* + corner, 0..3 */
+#define UNFOLD_PARTS 9
+typedef struct {
+  TexelMap part[UNFOLD_PARTS];
+} PatchUnfolding;
+
 /* Brush spaces: where the brush's distance to its centre is measured. */
 #define SPACE_OBJECT 0    /* in space: a ball around the centre */
 #define SPACE_TANGENT 1   /* in the tangent plane at the centre: the stamp projected along the normal */
 #define SPACE_SCREEN 2    /* on the view plane, scaled to world units at the centre's depth */
-#define SPACE_PARAMETER 3 /* in the parameters of the centre's patch: a square of texels */
+#define SPACE_PARAMETER 3 /* in the parameters of the centre's patch, unfolded across its sides: a square of texels */
 
 /* Geometry tools: how a dab moves control points. */
 #define MOVE_SCULPT 0   /* along the normal at the brush centre */

@@ -214,11 +214,29 @@ inline float2 screen_point(__global const BrushDab *dab, float3 x, float *z)
   return (float2)(dot(v, vload3(0, dab->view_right)), dot(v, vload3(0, dab->view_up))) / *z;
 }
 
-/* Where texel ij of patch p (position x, normal nx) lies in the dab's brush
- * space: returns distance / radius, above 1 outside the brush (also on faces
- * the back-face policy skips), and in `plane` the offset from the centre on
- * the brush plane in world units, where the stamp lies. */
-inline float brush_t(__global const BrushDab *dab, float3 x, float3 nx, int p, int2 ij, int n, float2 *plane)
+/* The part of a tile texel ij lies in: UNFOLD_INTERIOR, UNFOLD_SIDE + side
+ * or UNFOLD_CORNER + corner. */
+inline int tile_part(int2 ij, int n)
+{
+  const int lo_i = ij.x == 0, hi_i = ij.x == n, lo_j = ij.y == 0, hi_j = ij.y == n;
+  if ((lo_i || hi_i) && (lo_j || hi_j))
+    return UNFOLD_CORNER + (lo_j ? (lo_i ? 0 : 1) : (hi_i ? 2 : 3));
+  if (lo_j)
+    return UNFOLD_SIDE + 0;
+  if (hi_i)
+    return UNFOLD_SIDE + 1;
+  if (hi_j)
+    return UNFOLD_SIDE + 2;
+  return lo_i ? UNFOLD_SIDE + 3 : UNFOLD_INTERIOR;
+}
+
+/* Where texel ij (position x, normal nx) of the a-th listed patch lies in
+ * the dab's brush space: returns distance / radius, above 1 outside the
+ * brush (also on faces the back-face policy skips), and in `plane` the offset
+ * from the centre on the brush plane in world units, where the stamp lies.
+ * unfold: the dab's PatchUnfolding per listed patch (parameter space). */
+inline float brush_t(__global const BrushDab *dab, __global const PatchUnfolding *unfold, int a, float3 x, float3 nx,
+                     int2 ij, int n, float2 *plane)
 {
   const float3 d = x - vload3(0, dab->centre);
   nx *= dab->side_sign;
@@ -233,12 +251,19 @@ inline float brush_t(__global const BrushDab *dab, float3 x, float3 nx, int p, i
     *plane = (s - vload2(0, dab->screen_centre)) * dab->centre_depth;
     return length(*plane) / dab->radius;
   }
-  case SPACE_PARAMETER:
-    /* Inside the centre's patch: its sides belong to the patches across too. */
-    if (p != dab->centre_patch || ij.x <= 0 || ij.y <= 0 || ij.x >= n || ij.y >= n)
+  case SPACE_PARAMETER: {
+    /* In the centre patch's texels, through the patch's unfolding: integer
+     * maps, and one map for every copy of a side or corner texel, so copies
+     * get the same bits. */
+    if (a >= dab->unfolded)
       return INFINITY;
-    *plane = ((float2)((float)ij.x, (float)ij.y) - vload2(0, dab->centre_texel)) * dab->texel_size;
+    __global const TexelMap *m = &unfold[a].part[tile_part(ij, n)];
+    if (!m->valid)
+      return INFINITY;
+    const int2 at = ij.x * vload2(0, m->u) + ij.y * vload2(0, m->v) + n * vload2(0, m->offset);
+    *plane = (convert_float2(at) - vload2(0, dab->centre_texel)) * dab->texel_size;
     return fmax(fabs((*plane).x), fabs((*plane).y)) / dab->radius;
+  }
   case SPACE_TANGENT:
     if (!dab->paint_backfaces && dot(nx, vload3(0, dab->centre_normal)) < 0.0f)
       return INFINITY;
@@ -319,9 +344,12 @@ inline float4 paint_blend(__global const BrushDab *dab, int c, float4 surface, f
 }
 
 /* Range: (tile, tile * #active). Every texel of the active patches, all
- * stored copies included, so copies stay identical. */
+ * stored copies included, so copies stay identical. unfold: a parameter
+ * dab's maps, one per active patch (dab->unfolded; one unused entry for the
+ * other spaces). */
 __kernel void paint_dab(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *active, int active_count,
-                        __global const BrushDab *dab, __global const float *raster, __global const float *stamp,
+                        __global const BrushDab *dab, __global const PatchUnfolding *unfold,
+                        __global const float *raster, __global const float *stamp,
                         __global float4 *diffuse, __global float4 *specular, __global float4 *material)
 {
   const int i = get_global_id(0), y = get_global_id(1);
@@ -332,7 +360,7 @@ __kernel void paint_dab(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *
   const int2 ij = (int2)(i, j);
   const float3 x = ATLAS_LOAD(pos, g, p, ij).xyz;
   float2 plane;
-  const float t = brush_t(dab, x, BRUSH_NORMAL(dab, nrm, g, p, ij), p, ij, g.x - 1, &plane);
+  const float t = brush_t(dab, unfold, a, x, BRUSH_NORMAL(dab, nrm, g, p, ij), ij, g.x - 1, &plane);
   if (!(t <= 1.0f))
     return;
   const int k = CHANNEL_INDEX(g.x, p, ij);
@@ -378,9 +406,9 @@ __kernel void paint_dab(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *
  * texel of the listed patches. Per work group: the weighted sums of diffuse
  * and specular under the dab and of the weights, for the smear brush's
  * pickup. partial: 3 float4 per group (diffuse * w, specular * w,
- * (w, 0, 0, 0)). */
+ * (w, 0, 0, 0)). unfold: as for paint_dab, one per listed patch. */
 __kernel void dab_pickup(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *list, int count,
-                         __global const BrushDab *dab,
+                         __global const BrushDab *dab, __global const PatchUnfolding *unfold,
                          __global const float *stamp, __global const float4 *diffuse,
                          __global const float4 *specular, __global float4 *partial, __local float4 *scratch)
 {
@@ -393,7 +421,7 @@ __kernel void dab_pickup(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int 
     const int2 ij = (int2)(r % g.x, r / g.x);
     const float3 x = ATLAS_LOAD(pos, g, p, ij).xyz;
     float2 plane;
-    const float t = brush_t(dab, x, BRUSH_NORMAL(dab, nrm, g, p, ij), p, ij, g.x - 1, &plane);
+    const float t = brush_t(dab, unfold, a, x, BRUSH_NORMAL(dab, nrm, g, p, ij), ij, g.x - 1, &plane);
     if (t <= 1.0f) {
       const int k = CHANNEL_INDEX(g.x, p, ij);
       w = falloff_weight(dab->falloff, t) * stamp_weight(dab, stamp, plane);

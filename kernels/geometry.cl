@@ -11,18 +11,21 @@
 
 /* Range: (tile, tile * count). Weight of each texel of the listed patches:
  * falloff x strength x (1 - mask), 0 outside the radius. The mask lives at
- * the finest level (grid gm): texel ij of grid g is texel ij * stride there. */
+ * the finest level (grid gm): texel ij of grid g is texel ij * stride there.
+ * unfold: as for paint_dab, one per listed patch; its maps hold at any level. */
 __kernel void dab_weights(ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g, __global const int *list, int count,
-                          __global const BrushDab *dab, __global const float *stamp, __global const float4 *material,
-                          int2 gm, int stride, __global float *weights)
+                          __global const BrushDab *dab, __global const PatchUnfolding *unfold,
+                          __global const float *stamp, __global const float4 *material, int2 gm, int stride,
+                          __global float *weights)
 {
   int p;
   int2 ij;
   if (!tile_texel(g, list, count, &p, &ij))
     return;
+  const int a = get_global_id(1) / g.x; /* p's entry in the list, and in unfold */
   const float3 x = ATLAS_LOAD(limit_pos, g, p, ij).xyz;
   float2 plane;
-  const float t = brush_t(dab, x, BRUSH_NORMAL(dab, limit_nrm, g, p, ij), p, ij, g.x - 1, &plane);
+  const float t = brush_t(dab, unfold, a, x, BRUSH_NORMAL(dab, limit_nrm, g, p, ij), ij, g.x - 1, &plane);
   const int k = WEIGHT_INDEX(g, p, ij);
   weights[k] = t <= 1.0f ? falloff_weight(dab->falloff, t) * dab->strength *
                              (1.0f - material[WEIGHT_INDEX(gm, p, ij * stride)].w) *

@@ -1,7 +1,9 @@
 // Brush spaces: where a dab measures its distance (object, tangent, screen,
 // parameter), the back-face policy, and screen strokes ending at silhouettes.
 
+#include "atlas/weld.h"
 #include "paint/paint_surface.h"
+#include "support/copies.h"
 #include "support/runtime.h"
 #include "support/shapes.h"
 
@@ -10,6 +12,7 @@
 #include <cmath>   // for std::sqrt, std::sin, std::cos
 #include <cstdio>  // for std::printf
 #include <cstring> // for std::memcmp
+#include <set>     // for std::set
 
 namespace meshpaint {
 namespace {
@@ -154,6 +157,168 @@ TEST(BrushSpace, ParameterIsASquareOfTexelsInThePatchUnderTheCentre)
           EXPECT_LE(std::max(std::fabs(x[0] - 4.25f), std::fabs(x[1] - 4.25f)), 0.15f);
         }
   EXPECT_EQ(painted, 25u); // 5 x 5 texels: a square, not a disc
+}
+
+//! The storages a test runs under: buffers, and images where the device has them.
+std::vector<AtlasStorage> storages()
+{
+  std::vector<AtlasStorage> s{AtlasStorage::Buffer};
+  if (test::runtime()->info().images)
+    s.push_back(AtlasStorage::Image);
+  return s;
+}
+
+//! What a dab painted: the welded vertices and the patches with painted texels.
+struct Painted
+{
+  std::set<int> vertices, patches;
+};
+
+Painted painted_parts(PaintSurface& surface, const std::vector<Float4>& diffuse)
+{
+  const LevelLayout l = surface.atlas().layout(surface.level());
+  const std::vector<int> weld = weld_map(surface.atlas().topology(), l);
+  Painted out;
+  for (int p = 0; p < l.patches; ++p)
+    for (int j = 0; j < l.tile; ++j)
+      for (int i = 0; i < l.tile; ++i)
+        if (red(diffuse[l.index(p, i, j)])) {
+          out.vertices.insert(weld[l.index(p, i, j)]);
+          out.patches.insert(p);
+        }
+  return out;
+}
+
+TEST(BrushSpace, ParameterSquaresContinueAcrossPatchSides)
+{
+  // Level 4 on a flat grid: patches of 0.5 x 0.5, texels 0.0625 apart, the
+  // limit surface affine away from the border, neighbouring patches turned
+  // against each other. Patch corners lie at multiples of 0.5, all of valence 4.
+  struct Case
+  {
+    const char* what;
+    Vec3 centre;
+    float radius;
+    int half;             // texels from the centre to the square's side
+    std::size_t patches;  // with painted texels
+  };
+  const Case cases[] = {
+    {"one texel from a side", {4.0625f, 4.25f, 0.f}, 0.15f, 2, 2},
+    {"around a corner", {4.0625f, 4.0625f, 0.f}, 0.15f, 2, 4},
+    {"on a corner", {4.f, 4.f, 0.f}, 0.15f, 2, 4},
+    {"wider than a patch", {4.0625f, 4.1875f, 0.f}, 0.7f, 11, 16},
+  };
+  const float texel = 0.0625f;
+  for (const AtlasStorage storage : storages())
+    for (const Case& c : cases) {
+      SCOPED_TRACE(std::string(c.what) + (storage == AtlasStorage::Image ? ", images" : ", buffers"));
+      PaintSurface surface(test::runtime(), test::flat_grid(8), 4, storage);
+      surface.apply(red_dab(c.centre, c.radius, SPACE_PARAMETER));
+      const std::vector<Float4> diffuse = surface.read_channels().diffuse;
+      EXPECT_EQ(test::differing_copies(surface.atlas().topology(), surface.atlas().layout(4), diffuse), 0u);
+      // Exactly the texels within `half` texels in both directions.
+      const std::vector<Float4> pos = surface.atlas().read_limit_positions();
+      std::size_t wrong = 0;
+      for (std::size_t t = 0; t < pos.size(); ++t) {
+        const float d = std::max(std::fabs(pos[t][0] - c.centre[0]), std::fabs(pos[t][1] - c.centre[1])) / texel;
+        wrong += red(diffuse[t]) != (d < float(c.half) + 0.5f);
+      }
+      EXPECT_EQ(wrong, 0u);
+      const Painted painted = painted_parts(surface, diffuse);
+      EXPECT_EQ(painted.vertices.size(), std::size_t((2 * c.half + 1) * (2 * c.half + 1)));
+      EXPECT_EQ(painted.patches.size(), c.patches);
+    }
+}
+
+TEST(BrushSpace, ParameterSquaresAtAnExtraordinaryVertex)
+{
+  // A cube's corner: three patches meet at a vertex of valence 3. The dab
+  // centred on it lays the two patches across the centre patch's sides
+  // beside it, and gets the corner block of each of the three patches.
+  const int level = 4, half = 2;
+  for (const AtlasStorage storage : storages()) {
+    SCOPED_TRACE(storage == AtlasStorage::Image ? "images" : "buffers");
+    PaintSurface surface(test::runtime(), test::cube(), level, storage);
+    const LevelLayout l = surface.atlas().layout(level);
+    const AtlasTopology& topo = surface.atlas().topology();
+    const std::vector<Float4> pos = surface.atlas().read_limit_positions();
+    // The corner texel nearest (1, 1, 1), in its lowest patch: the dab's centre patch.
+    std::size_t corner = 0;
+    for (std::size_t t = 0; t < pos.size(); ++t)
+      if (pos[t][0] + pos[t][1] + pos[t][2] > pos[corner][0] + pos[corner][1] + pos[corner][2])
+        corner = t;
+    const int p = int(corner / (std::size_t(l.tile) * l.tile));
+    // The engine's texel size there: the side of the patch's bounding box's
+    // diagonal sphere over its texels.
+    Vec3 lo = xyz(pos[l.index(p, 0, 0)]), hi = lo;
+    for (int j = 0; j < l.tile; ++j)
+      for (int i = 0; i < l.tile; ++i)
+        for (int k = 0; k < 3; ++k) {
+          lo[k] = std::min(lo[k], pos[l.index(p, i, j)][k]);
+          hi[k] = std::max(hi[k], pos[l.index(p, i, j)][k]);
+        }
+    const Vec3 mid{0.5f * (lo[0] + hi[0]), 0.5f * (lo[1] + hi[1]), 0.5f * (lo[2] + hi[2])};
+    float bound = 0.f;
+    for (int j = 0; j < l.tile; ++j)
+      for (int i = 0; i < l.tile; ++i) {
+        const Vec3 d = sub(xyz(pos[l.index(p, i, j)]), mid);
+        bound = std::max(bound, std::sqrt(dot(d, d)));
+      }
+    const float texel = std::sqrt(2.f) * bound / float(l.n);
+    surface.apply(red_dab(xyz(pos[corner]), (float(half) + 0.5f) * texel, SPACE_PARAMETER));
+
+    const std::vector<Float4> diffuse = surface.read_channels().diffuse;
+    EXPECT_EQ(test::differing_copies(topo, l, diffuse), 0u);
+    // In each patch at the vertex, texel (a, b) of the corner's frame (a
+    // along the corner's outgoing side, b along its incoming one) is painted
+    // when both are within `half`; nothing else is.
+    const int ij = int(corner % (std::size_t(l.tile) * l.tile));
+    const int i0 = ij % l.tile, j0 = ij / l.tile;
+    const int c = j0 == 0 ? (i0 == 0 ? 0 : 1) : (i0 == 0 ? 3 : 2);
+    const CornerRing& ring = topo.rings[std::size_t(topo.patch_corners[std::size_t(p)][c])];
+    ASSERT_EQ(ring.count, 3);
+    const int unit[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, dir[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+    std::size_t in_block = 0, wrong = 0;
+    for (int k = 0; k < ring.count; ++k) {
+      const CornerSlot& slot = topo.slots[std::size_t(ring.first + k)];
+      const int* o = unit[slot.corner];
+      const int *dt = dir[slot.corner], *dd = dir[(slot.corner + 1) % 4];
+      for (int b = 0; b <= l.n; ++b)
+        for (int a = 0; a <= l.n; ++a) {
+          const bool painted = red(diffuse[l.index(slot.patch, o[0] * l.n + a * dt[0] + b * dd[0],
+                                                    o[1] * l.n + a * dt[1] + b * dd[1])]);
+          wrong += painted != (a <= half && b <= half);
+          in_block += painted;
+        }
+    }
+    EXPECT_EQ(wrong, 0u);
+    EXPECT_EQ(in_block, std::size_t(3 * (half + 1) * (half + 1)));
+    // Three blocks of 3 x 3 sharing their sides in pairs and the corner by all.
+    const Painted painted = painted_parts(surface, diffuse);
+    EXPECT_EQ(painted.vertices.size(), std::size_t(3 * 9 - 3 * 3 + 1));
+  }
+}
+
+TEST(BrushSpace, ParameterSculptAtACoarseLevelKeepsCopiesIdentical)
+{
+  // A square across the corner of four patches, moving level 2's control
+  // points: every patch under it moves, and the finest level's copies agree.
+  PaintSurface surface(test::runtime(), test::flat_grid(8), 4, AtlasStorage::Buffer);
+  const std::vector<Float4> before = surface.atlas().read_positions(4);
+  Stroke s = red_dab({4.f, 4.f, 0.f}, 0.3f, SPACE_PARAMETER);
+  s.tool = Tool::Sculpt;
+  s.alpha[CHANNEL_DIFFUSE] = 0.f;
+  s.amount = 0.2f;
+  s.edit_level = 2;
+  surface.apply(s);
+  const std::vector<Float4> after = surface.atlas().read_positions(4);
+  const LevelLayout l = surface.atlas().layout(4);
+  EXPECT_EQ(test::differing_copies(surface.atlas().topology(), l, after), 0u);
+  std::set<int> moved;
+  for (std::size_t t = 0; t < after.size(); ++t)
+    if (after[t][2] != before[t][2])
+      moved.insert(int(t / (std::size_t(l.tile) * l.tile)));
+  EXPECT_GE(moved.size(), 4u);
 }
 
 TEST(BrushSpace, BackFacesAreSkippedUnlessAsked)

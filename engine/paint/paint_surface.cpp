@@ -1,5 +1,6 @@
 #include "paint/paint_surface.h"
 
+#include "atlas/unfolding.h"
 #include "atlas/weld.h"
 #include "cl/launch.h"
 #include "cl/program.h"
@@ -90,7 +91,8 @@ struct PaintSurface::Device
   cl::Kernel patch_bounds, brush_cull, paint_dab, dab_weights, move_points, dab_pickup;
   cl::Kernel spray_pick, spray_points;
   cl::Buffer bounds, records, count, active, dab, weights;
-  std::size_t record_capacity = 0, active_capacity = 0;
+  cl::Buffer unfold; // a parameter dab's PatchUnfolding per listed patch (one entry otherwise)
+  std::size_t record_capacity = 0, active_capacity = 0, unfold_capacity = 1;
   cl::Buffer diffuse, specular, material, channel_work;
   cl::Buffer inside_diffuse, inside_specular, inside_material; // two-sided surfaces
   cl::Buffer raster, stamp; // the stroke's pattern samples and brush image (one float when none)
@@ -136,6 +138,7 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     d.bounds = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_float4) * l.patches);
     d.count = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_int));
     d.dab = cl::Buffer(rt.context(), CL_MEM_READ_ONLY, sizeof(BrushDab));
+    d.unfold = cl::Buffer(rt.context(), CL_MEM_READ_ONLY, sizeof(PatchUnfolding) * d.unfold_capacity);
     launch(rt.queue(), d.patch_bounds, cl::NDRange(round_up(l.patches, kGroup)), cl::NDRange(kGroup),
            atlas_->limit_positions_layer(), grid(l), cl::Buffer(), l.patches, d.bounds);
     rt.queue().finish();
@@ -491,7 +494,7 @@ void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
   const auto tiles = range_tiles(l, int(patches.size()));
   launch(rt.queue(), d.paint_dab, tiles.first, tiles.second, atlas_->limit_positions_layer(),
          atlas_->limit_normals_layer(), grid(l), d.active,
-         cl_int(patches.size()), d.dab, d.raster, d.stamp, diffuse_buffer(), specular_buffer(), material_buffer());
+         cl_int(patches.size()), d.dab, d.unfold, d.raster, d.stamp, diffuse_buffer(), specular_buffer(), material_buffer());
   rt.queue().finish();
 }
 
@@ -591,7 +594,7 @@ void PaintSurface::smear(const std::vector<int>& patches, BrushDab dab, std::opt
   rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
   launch(rt.queue(), d.dab_pickup, cl::NDRange(groups * items), cl::NDRange(items), atlas_->limit_positions_layer(),
          atlas_->limit_normals_layer(),
-         grid(l), list, count, d.dab, d.stamp, diffuse_buffer(), specular_buffer(), partial,
+         grid(l), list, count, d.dab, d.unfold, d.stamp, diffuse_buffer(), specular_buffer(), partial,
          cl::Local(3 * items * sizeof(Float4)));
   std::vector<Float4> sums(3 * groups);
   rt.queue().enqueueReadBuffer(partial, CL_TRUE, 0, sums.size() * sizeof(Float4), sums.data());
@@ -688,11 +691,28 @@ std::vector<int> PaintSurface::place(const Stroke& stroke, const DabSample& samp
     return patches;
   for (int k = 0; k < 3; ++k)
     dab.centre[k] = centre[k];
+  dab.unfolded = 0;
   if (!aim(stroke, sample.centre, normal, sample.heading, closest, dab))
     return {};
   if (stroke.space == SPACE_PARAMETER)
-    return {closest.patch};
+    return unfold_dab(closest.patch, dab);
   return patches;
+}
+
+std::vector<int> PaintSurface::unfold_dab(int centre_patch, BrushDab& dab)
+{
+  Device& d = *device_;
+  Runtime& rt = atlas_->runtime();
+  const Unfolding u =
+    unfold(atlas_->topology(), centre_patch, atlas_->layout(level_).n, dab.centre_texel, dab.radius / dab.texel_size);
+  if (d.unfold_capacity < u.maps.size()) {
+    d.unfold_capacity = u.maps.size();
+    d.unfold = cl::Buffer(rt.context(), CL_MEM_READ_ONLY, sizeof(PatchUnfolding) * d.unfold_capacity);
+  }
+  // Blocking: the host copy goes when this returns.
+  rt.queue().enqueueWriteBuffer(d.unfold, CL_TRUE, 0, sizeof(PatchUnfolding) * u.maps.size(), u.maps.data());
+  dab.unfolded = int(u.maps.size());
+  return u.patches;
 }
 
 bool PaintSurface::aim(const Stroke& stroke, const Vec3& point, const Vec3& normal, const Vec3& heading,
@@ -751,7 +771,6 @@ bool PaintSurface::aim(const Stroke& stroke, const Vec3& point, const Vec3& norm
     cl_float4 bound;
     atlas_->runtime().queue().enqueueReadBuffer(device_->bounds, CL_TRUE, sizeof(cl_float4) * closest.patch,
                                                 sizeof bound, &bound);
-    dab.centre_patch = closest.patch;
     dab.centre_texel[0] = float(closest.closest_texel % l.tile);
     dab.centre_texel[1] = float(closest.closest_texel / l.tile);
     dab.texel_size = float(std::sqrt(2.0) * bound.s[3] / l.n); // the tile's side over its texels
@@ -775,7 +794,7 @@ void PaintSurface::weigh(const cl::Buffer& list, int count, const BrushDab& dab,
   const auto tiles = range_tiles(l, count);
   launch(rt.queue(), d.dab_weights, tiles.first, tiles.second,
          coarse ? multires_->base_positions() : atlas_->limit_positions_layer(),
-         coarse ? multires_->base_normals() : atlas_->limit_normals_layer(), grid(l), list, count, d.dab, d.stamp,
+         coarse ? multires_->base_normals() : atlas_->limit_normals_layer(), grid(l), list, count, d.dab, d.unfold, d.stamp,
          material_buffer(), grid(f), stride, coarse ? multires_->base_weights() : d.weights);
 }
 

@@ -188,6 +188,9 @@ private:
   //! false where a screen-space stroke meets a silhouette and ends.
   bool aim(const Stroke& stroke, const Vec3& point, const Vec3& normal, const Vec3& heading, const CullRecord& closest,
            BrushDab& dab);
+  //! A parameter dab's patches around `centre_patch`, laid flat in its
+  //! texels (unfold()); their maps to the device, in the order returned.
+  std::vector<int> unfold_dab(int centre_patch, BrushDab& dab);
   //! Finds the dab's site and aims it: the patches it may change, empty
   //! when it misses the surface (or meets a silhouette).
   std::vector<int> place(const Stroke& stroke, const DabSample& sample, BrushDab& dab, Vec3& normal);
