@@ -230,73 +230,81 @@ TEST(BrushSpace, ParameterSquaresContinueAcrossPatchSides)
     }
 }
 
-TEST(BrushSpace, ParameterSquaresAtAnExtraordinaryVertex)
+TEST(BrushSpace, ParameterSquaresAtExtraordinaryVertices)
 {
-  // A cube's corner: three patches meet at a vertex of valence 3. The dab
-  // centred on it lays the two patches across the centre patch's sides
-  // beside it, and gets the corner block of each of the three patches.
+  // A cube's corner, where three patches meet, and a pyramid's apex, where
+  // twelve do. Each patch around the vertex is laid with the vertex at the
+  // centre, so the dab centred there gets the corner block of each: at
+  // valence 3 three quarters of the square, at 12 the blocks overlap.
+  struct Case
+  {
+    const char* shape;
+    Vec3 towards; // the vertex is the surface's furthest point this way
+    int valence;
+  };
   const int level = 4, half = 2;
-  for (const AtlasStorage storage : storages()) {
-    SCOPED_TRACE(storage == AtlasStorage::Image ? "images" : "buffers");
-    PaintSurface surface(test::runtime(), test::cube(), level, storage);
-    const LevelLayout l = surface.atlas().layout(level);
-    const AtlasTopology& topo = surface.atlas().topology();
-    const std::vector<Float4> pos = surface.atlas().read_limit_positions();
-    // The corner texel nearest (1, 1, 1), in its lowest patch: the dab's centre patch.
-    std::size_t corner = 0;
-    for (std::size_t t = 0; t < pos.size(); ++t)
-      if (pos[t][0] + pos[t][1] + pos[t][2] > pos[corner][0] + pos[corner][1] + pos[corner][2])
-        corner = t;
-    const int p = int(corner / (std::size_t(l.tile) * l.tile));
-    // The engine's texel size there: the side of the patch's bounding box's
-    // diagonal sphere over its texels.
-    Vec3 lo = xyz(pos[l.index(p, 0, 0)]), hi = lo;
-    for (int j = 0; j < l.tile; ++j)
-      for (int i = 0; i < l.tile; ++i)
-        for (int k = 0; k < 3; ++k) {
-          lo[k] = std::min(lo[k], pos[l.index(p, i, j)][k]);
-          hi[k] = std::max(hi[k], pos[l.index(p, i, j)][k]);
+  for (const Case& v : {Case{"cube", {1.f, 1.f, 1.f}, 3}, Case{"high_valence", {0.f, 0.f, 1.f}, 12}})
+    for (const AtlasStorage storage : storages()) {
+      SCOPED_TRACE(std::string(v.shape) + (storage == AtlasStorage::Image ? ", images" : ", buffers"));
+      PaintSurface surface(test::runtime(), test::shape(v.shape), level, storage);
+      const LevelLayout l = surface.atlas().layout(level);
+      const AtlasTopology& topo = surface.atlas().topology();
+      const std::vector<Float4> pos = surface.atlas().read_limit_positions();
+      // The vertex's texel in its lowest patch: the dab's centre patch.
+      std::size_t corner = 0;
+      for (std::size_t t = 0; t < pos.size(); ++t)
+        if (dot(xyz(pos[t]), v.towards) > dot(xyz(pos[corner]), v.towards))
+          corner = t;
+      const int p = int(corner / (std::size_t(l.tile) * l.tile));
+      // The engine's texel size there: the side of the patch's bounding box's
+      // diagonal sphere over its texels.
+      Vec3 lo = xyz(pos[l.index(p, 0, 0)]), hi = lo;
+      for (int j = 0; j < l.tile; ++j)
+        for (int i = 0; i < l.tile; ++i)
+          for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], pos[l.index(p, i, j)][k]);
+            hi[k] = std::max(hi[k], pos[l.index(p, i, j)][k]);
+          }
+      const Vec3 mid{0.5f * (lo[0] + hi[0]), 0.5f * (lo[1] + hi[1]), 0.5f * (lo[2] + hi[2])};
+      float bound = 0.f;
+      for (int j = 0; j < l.tile; ++j)
+        for (int i = 0; i < l.tile; ++i) {
+          const Vec3 d = sub(xyz(pos[l.index(p, i, j)]), mid);
+          bound = std::max(bound, std::sqrt(dot(d, d)));
         }
-    const Vec3 mid{0.5f * (lo[0] + hi[0]), 0.5f * (lo[1] + hi[1]), 0.5f * (lo[2] + hi[2])};
-    float bound = 0.f;
-    for (int j = 0; j < l.tile; ++j)
-      for (int i = 0; i < l.tile; ++i) {
-        const Vec3 d = sub(xyz(pos[l.index(p, i, j)]), mid);
-        bound = std::max(bound, std::sqrt(dot(d, d)));
-      }
-    const float texel = std::sqrt(2.f) * bound / float(l.n);
-    surface.apply(red_dab(xyz(pos[corner]), (float(half) + 0.5f) * texel, SPACE_PARAMETER));
+      const float texel = std::sqrt(2.f) * bound / float(l.n);
+      surface.apply(red_dab(xyz(pos[corner]), (float(half) + 0.5f) * texel, SPACE_PARAMETER));
 
-    const std::vector<Float4> diffuse = surface.read_channels().diffuse;
-    EXPECT_EQ(test::differing_copies(topo, l, diffuse), 0u);
-    // In each patch at the vertex, texel (a, b) of the corner's frame (a
-    // along the corner's outgoing side, b along its incoming one) is painted
-    // when both are within `half`; nothing else is.
-    const int ij = int(corner % (std::size_t(l.tile) * l.tile));
-    const int i0 = ij % l.tile, j0 = ij / l.tile;
-    const int c = j0 == 0 ? (i0 == 0 ? 0 : 1) : (i0 == 0 ? 3 : 2);
-    const CornerRing& ring = topo.rings[std::size_t(topo.patch_corners[std::size_t(p)][c])];
-    ASSERT_EQ(ring.count, 3);
-    const int unit[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, dir[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
-    std::size_t in_block = 0, wrong = 0;
-    for (int k = 0; k < ring.count; ++k) {
-      const CornerSlot& slot = topo.slots[std::size_t(ring.first + k)];
-      const int* o = unit[slot.corner];
-      const int *dt = dir[slot.corner], *dd = dir[(slot.corner + 1) % 4];
-      for (int b = 0; b <= l.n; ++b)
-        for (int a = 0; a <= l.n; ++a) {
-          const bool painted = red(diffuse[l.index(slot.patch, o[0] * l.n + a * dt[0] + b * dd[0],
-                                                    o[1] * l.n + a * dt[1] + b * dd[1])]);
-          wrong += painted != (a <= half && b <= half);
-          in_block += painted;
-        }
+      const std::vector<Float4> diffuse = surface.read_channels().diffuse;
+      EXPECT_EQ(test::differing_copies(topo, l, diffuse), 0u);
+      // In each patch at the vertex, texel (a, b) of the corner's frame (a
+      // along the corner's outgoing side, b along its incoming one) is painted
+      // when both are within `half`; nothing else is.
+      const int ij = int(corner % (std::size_t(l.tile) * l.tile));
+      const int i0 = ij % l.tile, j0 = ij / l.tile;
+      const int c = j0 == 0 ? (i0 == 0 ? 0 : 1) : (i0 == 0 ? 3 : 2);
+      const CornerRing& ring = topo.rings[std::size_t(topo.patch_corners[std::size_t(p)][c])];
+      ASSERT_EQ(ring.count, v.valence);
+      const int unit[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, dir[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+      std::size_t in_block = 0, wrong = 0;
+      for (int k = 0; k < ring.count; ++k) {
+        const CornerSlot& slot = topo.slots[std::size_t(ring.first + k)];
+        const int* o = unit[slot.corner];
+        const int *dt = dir[slot.corner], *dd = dir[(slot.corner + 1) % 4];
+        for (int b = 0; b <= l.n; ++b)
+          for (int a = 0; a <= l.n; ++a) {
+            const bool painted = red(diffuse[l.index(slot.patch, o[0] * l.n + a * dt[0] + b * dd[0],
+                                                      o[1] * l.n + a * dt[1] + b * dd[1])]);
+            wrong += painted != (a <= half && b <= half);
+            in_block += painted;
+          }
+      }
+      EXPECT_EQ(wrong, 0u);
+      EXPECT_EQ(in_block, std::size_t(v.valence * (half + 1) * (half + 1)));
+      // Blocks of 3 x 3 sharing their sides in pairs and the corner by all.
+      const Painted painted = painted_parts(surface, diffuse);
+      EXPECT_EQ(painted.vertices.size(), std::size_t(v.valence * (9 - 3) + 1));
     }
-    EXPECT_EQ(wrong, 0u);
-    EXPECT_EQ(in_block, std::size_t(3 * (half + 1) * (half + 1)));
-    // Three blocks of 3 x 3 sharing their sides in pairs and the corner by all.
-    const Painted painted = painted_parts(surface, diffuse);
-    EXPECT_EQ(painted.vertices.size(), std::size_t(3 * 9 - 3 * 3 + 1));
-  }
 }
 
 TEST(BrushSpace, ParameterSculptAtACoarseLevelKeepsCopiesIdentical)

@@ -12,7 +12,9 @@ namespace meshpaint {
 //! their texels lie in that patch's frame.
 struct Unfolding
 {
-  std::vector<int> patches;         //!< the centre patch first, then breadth-first; then patches that only share sides or corners
+  //! The centre patch first, then the others laid breadth-first, then those
+  //! that only share sides or corners with laid ones.
+  std::vector<int> patches;
   std::vector<PatchUnfolding> maps; //!< one per entry of `patches`
 };
 

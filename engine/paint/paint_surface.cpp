@@ -493,8 +493,8 @@ void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
   rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
   const auto tiles = range_tiles(l, int(patches.size()));
   launch(rt.queue(), d.paint_dab, tiles.first, tiles.second, atlas_->limit_positions_layer(),
-         atlas_->limit_normals_layer(), grid(l), d.active,
-         cl_int(patches.size()), d.dab, d.unfold, d.raster, d.stamp, diffuse_buffer(), specular_buffer(), material_buffer());
+         atlas_->limit_normals_layer(), grid(l), d.active, cl_int(patches.size()), d.dab, d.unfold, d.raster, d.stamp,
+         diffuse_buffer(), specular_buffer(), material_buffer());
   rt.queue().finish();
 }
 
@@ -794,8 +794,8 @@ void PaintSurface::weigh(const cl::Buffer& list, int count, const BrushDab& dab,
   const auto tiles = range_tiles(l, count);
   launch(rt.queue(), d.dab_weights, tiles.first, tiles.second,
          coarse ? multires_->base_positions() : atlas_->limit_positions_layer(),
-         coarse ? multires_->base_normals() : atlas_->limit_normals_layer(), grid(l), list, count, d.dab, d.unfold, d.stamp,
-         material_buffer(), grid(f), stride, coarse ? multires_->base_weights() : d.weights);
+         coarse ? multires_->base_normals() : atlas_->limit_normals_layer(), grid(l), list, count, d.dab, d.unfold,
+         d.stamp, material_buffer(), grid(f), stride, coarse ? multires_->base_weights() : d.weights);
 }
 
 void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke,
