@@ -219,6 +219,8 @@ private:
   void restore(const Snapshot& snapshot);
   //! Adds the patches not yet in the stroke's snapshot, before they change.
   void remember(const std::vector<int>& patches);
+  //! Per texel of the painting level: its welded vertex (weld_map), made once.
+  const std::vector<int>& texel_vertices();
   //! Records a change of these patches, or of everything, for changes_since().
   void changed(const std::vector<int>& patches);
   void changed_all();

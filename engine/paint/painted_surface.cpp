@@ -68,10 +68,16 @@ PaintedSurface painted(WeldedSurface surface, const std::vector<int>& map, const
 
 } // namespace
 
+const std::vector<int>& PaintSurface::texel_vertices()
+{
+  if (weld_map_.empty())
+    weld_map_ = weld_map(atlas_->topology(), atlas_->layout(level_));
+  return weld_map_;
+}
+
 PaintedSurface PaintSurface::painted_surface()
 {
-  return painted(level_surface(*atlas_, level_, true), weld_map(atlas_->topology(), atlas_->layout(level_)),
-                 read_channels());
+  return painted(level_surface(*atlas_, level_, true), texel_vertices(), read_channels());
 }
 
 PaintedSurface PaintSurface::painted_surface(int level)
@@ -117,8 +123,7 @@ PaintedVertices PaintSurface::painted_vertices(const std::vector<int>& patches)
   if (patches.empty())
     return out;
   const LevelLayout l = atlas_->layout(level_);
-  if (weld_map_.empty())
-    weld_map_ = weld_map(atlas_->topology(), l);
+  const std::vector<int>& map = texel_vertices();
   // The listed tiles of each layer, gathered on the device and read back:
   // tile after tile, as `patches` lists them.
   const std::size_t per_tile = std::size_t(l.tile) * l.tile;
@@ -152,7 +157,7 @@ PaintedVertices PaintSurface::painted_vertices(const std::vector<int>& patches)
   for (std::size_t k = 0; k < patches.size(); ++k)
     for (int j = 0; j < l.tile; ++j)
       for (int i = 0; i < l.tile; ++i) {
-        const int id = weld_map_[l.index(patches[k], i, j)];
+        const int id = map[l.index(patches[k], i, j)];
         if (id < 0 || seen[std::size_t(id)])
           continue;
         seen[std::size_t(id)] = 1;
