@@ -107,25 +107,40 @@ bool copy_if_changed(vtkDataArray* to, const T* from, std::size_t count)
 
 } // namespace
 
-int update_polydata(vtkPolyData* poly, const PaintedSurface& s)
+namespace {
+
+//! Calls f(array of poly, values, components) for the points, the normals
+//! and every channel array `s` has values for, in one order for every
+//! update: the arrays to_polydata() made.
+template <typename F>
+void for_each_array(vtkPolyData* poly, const PaintedSurface& s, F f)
 {
   vtkPointData* pd = poly->GetPointData();
-  int changed = 0;
-  changed += copy_if_changed(poly->GetPoints()->GetData(), &s.surface.points[0][0], 3 * s.surface.points.size());
+  f(poly->GetPoints()->GetData(), s.surface.points.data()->data(), 3);
   if (!s.surface.normals.empty())
-    changed += copy_if_changed(pd->GetNormals(), &s.surface.normals[0][0], 3 * s.surface.normals.size());
-  changed += copy_if_changed(pd->GetArray("diffuse"), &s.diffuse[0][0], 3 * s.diffuse.size());
-  changed += copy_if_changed(pd->GetArray("specular"), &s.specular[0][0], 3 * s.specular.size());
-  changed += copy_if_changed(pd->GetArray("roughness"), s.roughness.data(), s.roughness.size());
-  changed += copy_if_changed(pd->GetArray("displacement"), s.displacement.data(), s.displacement.size());
-  changed += copy_if_changed(pd->GetArray("mask"), s.mask.data(), s.mask.size());
-  changed += copy_if_changed(pd->GetArray("label"), s.label.data(), s.label.size());
+    f(pd->GetNormals(), s.surface.normals.data()->data(), 3);
+  f(pd->GetArray("diffuse"), s.diffuse.data()->data(), 3);
+  f(pd->GetArray("specular"), s.specular.data()->data(), 3);
+  f(pd->GetArray("roughness"), s.roughness.data(), 1);
+  f(pd->GetArray("displacement"), s.displacement.data(), 1);
+  f(pd->GetArray("mask"), s.mask.data(), 1);
+  f(pd->GetArray("label"), s.label.data(), 1);
   if (!s.inside_diffuse.empty() && pd->GetArray("inside_diffuse")) {
-    changed += copy_if_changed(pd->GetArray("inside_diffuse"), &s.inside_diffuse[0][0], 3 * s.inside_diffuse.size());
-    changed +=
-      copy_if_changed(pd->GetArray("inside_specular"), &s.inside_specular[0][0], 3 * s.inside_specular.size());
-    changed += copy_if_changed(pd->GetArray("inside_roughness"), s.inside_roughness.data(), s.inside_roughness.size());
+    f(pd->GetArray("inside_diffuse"), s.inside_diffuse.data()->data(), 3);
+    f(pd->GetArray("inside_specular"), s.inside_specular.data()->data(), 3);
+    f(pd->GetArray("inside_roughness"), s.inside_roughness.data(), 1);
   }
+}
+
+} // namespace
+
+int update_polydata(vtkPolyData* poly, const PaintedSurface& s)
+{
+  int changed = 0;
+  const std::size_t count = s.surface.points.size();
+  for_each_array(poly, s, [&](vtkDataArray* to, const auto* from, int components) {
+    changed += copy_if_changed(to, from, count * std::size_t(components));
+  });
   return changed; // the polydata's time includes its arrays', so renderers notice
 }
 
@@ -162,25 +177,12 @@ bool scatter_if_changed(vtkDataArray* to, const std::vector<int>& ids, const T* 
 
 int update_polydata(vtkPolyData* poly, const PaintedVertices& update)
 {
-  const PaintedSurface& s = update.values;
-  const std::vector<int>& ids = update.ids;
-  if (ids.empty())
+  if (update.ids.empty())
     return 0;
-  vtkPointData* pd = poly->GetPointData();
   int changed = 0;
-  changed += scatter_if_changed(poly->GetPoints()->GetData(), ids, &s.surface.points[0][0], 3);
-  changed += scatter_if_changed(pd->GetNormals(), ids, &s.surface.normals[0][0], 3);
-  changed += scatter_if_changed(pd->GetArray("diffuse"), ids, &s.diffuse[0][0], 3);
-  changed += scatter_if_changed(pd->GetArray("specular"), ids, &s.specular[0][0], 3);
-  changed += scatter_if_changed(pd->GetArray("roughness"), ids, s.roughness.data(), 1);
-  changed += scatter_if_changed(pd->GetArray("displacement"), ids, s.displacement.data(), 1);
-  changed += scatter_if_changed(pd->GetArray("mask"), ids, s.mask.data(), 1);
-  changed += scatter_if_changed(pd->GetArray("label"), ids, s.label.data(), 1);
-  if (!s.inside_diffuse.empty() && pd->GetArray("inside_diffuse")) {
-    changed += scatter_if_changed(pd->GetArray("inside_diffuse"), ids, &s.inside_diffuse[0][0], 3);
-    changed += scatter_if_changed(pd->GetArray("inside_specular"), ids, &s.inside_specular[0][0], 3);
-    changed += scatter_if_changed(pd->GetArray("inside_roughness"), ids, s.inside_roughness.data(), 1);
-  }
+  for_each_array(poly, update.values, [&](vtkDataArray* to, const auto* from, int components) {
+    changed += scatter_if_changed(to, update.ids, from, components);
+  });
   if (changed)
     poly->GetPoints()->Modified();
   return changed;
