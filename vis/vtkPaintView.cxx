@@ -39,6 +39,7 @@
 
 #include <algorithm>  // for std::min, std::max
 #include <array>      // for std::array
+#include <chrono>     // for std::chrono::steady_clock
 #include <cmath>      // for std::sqrt
 #include <cstdint>    // for std::uint64_t
 #include <filesystem> // for std::filesystem
@@ -68,6 +69,9 @@ struct vtkPaintView::Internals
   bool lit = false; // drawn with the subsurface light
   bool moving = false; // the camera turns or a stroke is drawn
   int shown_level = 0;
+  // Least time per drawn quad of a frame at rest, in ms (0: none timed yet),
+  // from which the automatic level of detail is chosen.
+  double ms_per_face = 0;
   vtkNew<vtkRenderer> renderer;
   vtkNew<vtkRenderWindow> window;
   vtkNew<vtkRenderWindowInteractor> interactor;
@@ -327,6 +331,9 @@ int vtkPaintView::Initialize()
 
   in.window->AddRenderer(in.renderer);
   in.window->SetSize(this->Size);
+  // Multisampling triples the cost of a frame on a software rasterizer;
+  // FXAA smooths the edges of frames at rest instead (see Show()).
+  in.window->SetMultiSamples(0);
   in.window->SetOffScreenRendering(this->OffScreen ? 1 : 0);
   in.window->SetWindowName("meshpaint");
   in.interactor->SetRenderWindow(in.window);
@@ -352,8 +359,19 @@ void vtkPaintView::Start()
 
 void vtkPaintView::Render()
 {
-  if (this->Impl->initialized)
-    this->Impl->window->Render();
+  Internals& in = *this->Impl;
+  if (!in.initialized)
+    return;
+  const auto start = std::chrono::steady_clock::now();
+  in.window->Render();
+  if (in.shown_level != this->Level)
+    return;
+  // The least time seen is the drawing itself, without uploads after edits
+  // or a busy host.
+  const std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
+  const double per_face = took.count() / double(std::max<vtkIdType>(1, this->GetFaceCount()));
+  if (in.ms_per_face == 0 || per_face < in.ms_per_face)
+    in.ms_per_face = per_face;
 }
 
 vtkRenderWindow* vtkPaintView::GetRenderWindow() { return this->Impl->window; }
@@ -502,8 +520,10 @@ bool vtkPaintView::PlaceCursor(int x, int y)
 vtkIdType vtkPaintView::GetFaceCount()
 {
   vtkIdType faces = 0;
-  for (std::size_t o = 0; o < this->Impl->drawings.size(); ++o)
-    faces += this->Surface(o, this->Level)->GetNumberOfCells();
+  for (std::size_t o = 0; o < this->Impl->drawings.size(); ++o) {
+    const Drawing& d = *this->Impl->drawings[o];
+    faces += d.full ? d.full->GetNumberOfCells() : this->Surface(o, this->Level)->GetNumberOfCells();
+  }
   return faces;
 }
 
@@ -515,12 +535,33 @@ int vtkPaintView::PickObject(int x, int y)
 
 int vtkPaintView::GetShownLevel() { return this->Impl->shown_level; }
 
-int vtkPaintView::CoarseLevel() const
+int vtkPaintView::CoarseLevel()
 {
   if (this->LodLevel == 0)
     return this->Level;
-  return this->LodLevel < 0 ? std::max(1, this->Level - 1) : std::min(this->LodLevel, this->Level);
+  if (this->LodLevel > 0)
+    return std::min(this->LodLevel, this->Level);
+  // Automatic: the finest level below the painting level whose drawing, at
+  // the rate timed at rest, takes at most half a frame at LodFrameRate (the
+  // other half is left to the brush step and the display update).
+  const double budget_ms = 500.0 / this->LodFrameRate;
+  int level = std::max(1, this->Level - 1);
+  double faces = double(this->GetFaceCount()) / 4.0;
+  for (; level > 1 && faces * this->Impl->ms_per_face > budget_ms; --level)
+    faces /= 4.0;
+  return level;
 }
+
+void vtkPaintView::SetAntiAliasing(bool on)
+{
+  if (this->AntiAliasing == on)
+    return;
+  this->AntiAliasing = on;
+  this->Impl->renderer->SetUseFXAA(on && !this->Impl->moving);
+  this->Modified();
+}
+
+int vtkPaintView::GetLodLevelInUse() { return this->CoarseLevel(); }
 
 vtkPolyData* vtkPaintView::Surface(std::size_t object, int level)
 {
@@ -582,12 +623,14 @@ void vtkPaintView::Show()
       });
       meshpaint::show_scattered_light(d.actor, poly);
     } else if (in.lit && in.initialized) {
+      poly->GetPointData()->RemoveArray("scattered_light");
       meshpaint::show_materials(d.actor, poly);
     } else if (poly != d.shown.GetPointer() && in.initialized) {
       d.actor->GetMapper()->SetInputDataObject(poly);
     }
     d.shown = poly;
   }
+  in.renderer->SetUseFXAA(this->AntiAliasing && !in.moving);
   in.lit = lit;
   in.shown_level = level;
 }

@@ -75,18 +75,30 @@ public:
   //@}
 
   //@{
-  /// Level of detail: while the camera moves or a stroke is drawn, the
-  /// surface is drawn at this coarser level (positions of that level,
-  /// normals and channels of the painting level); the painting level when
-  /// the view rests. -1 (default): Level - 1 (at least 1); 0: off;
-  /// larger than Level: Level.
   /// The paper's high-quality look at rest: light from the camera diffused
   /// over the atlas in this many smoothing passes (texture-space subsurface
   /// lighting, tone-mapped); 0 (default): VTK's lighting. Key b toggles 0 and 60.
   vtkSetClampMacro(SubsurfacePasses, int, 0, 10000);
   vtkGetMacro(SubsurfacePasses, int);
+  /// Level of detail: while the camera moves or a stroke is drawn, the
+  /// surface is drawn with the texels of this coarser level (at the
+  /// positions, normals and channels of the painting level); the painting
+  /// level when the view rests. -1 (default): automatic (see LodFrameRate);
+  /// 0: off; larger than Level: Level.
   vtkSetClampMacro(LodLevel, int, -1, 12);
   vtkGetMacro(LodLevel, int);
+  /// The level drawn while moving now: LodLevel, or the automatic choice.
+  int GetLodLevelInUse();
+  /// Frames per second the automatic level of detail aims at (default 10):
+  /// it draws the finest level below Level whose drawing takes at most half
+  /// a frame at the time per quad measured when the view rests.
+  vtkSetClampMacro(LodFrameRate, double, 0.1, 1000.0);
+  vtkGetMacro(LodFrameRate, double);
+  /// Smooths the edges of frames at rest with FXAA (default on); frames
+  /// drawn while moving are never smoothed, to keep them fast.
+  void SetAntiAliasing(bool on);
+  vtkGetMacro(AntiAliasing, bool);
+  vtkBooleanMacro(AntiAliasing, bool);
   /// Quads of the painted surface at the painting level.
   vtkIdType GetFaceCount();
   /// The level drawn now.
@@ -217,6 +229,8 @@ protected:
 
   int Level = 3;
   int LodLevel = -1;
+  double LodFrameRate = 10;
+  bool AntiAliasing = true;
   int SubsurfacePasses = 0;
   std::string Device;
   std::string Storage;
@@ -253,7 +267,7 @@ private:
   //! Rebuilds what is drawn from the engine; `geometry`: positions changed.
   void Refresh(bool geometry);
   //! The level drawn while moving.
-  int CoarseLevel() const;
+  int CoarseLevel();
   //! Object `object`'s painted surface at `level` (Level or CoarseLevel()),
   //! rebuilt if stale.
   vtkPolyData* Surface(std::size_t object, int level);

@@ -113,7 +113,7 @@ int bench_view(const Args& args)
     view->SetMoving(true);
     const double lod_render = render_ms(view, steps);
     view->SetMoving(false);
-    const int lod_level = view->GetLodLevel() < 0 ? std::max(1, row.level - 1) : view->GetLodLevel();
+    const int lod_level = view->GetLodLevelInUse();
     view->SetLodLevel(0);
     const double frame = stroke_frame_ms(view, steps);
     view->SetLodLevel(-1);
@@ -125,7 +125,7 @@ int bench_view(const Args& args)
   }
   std::cout << "meshpaint bench view: offscreen " << kWidth << "x" << kHeight << " drawn by " << renderer
             << ", median of " << steps << " frames; a paint frame is one step of a drag (brush step, display update, render);\n"
-            << "LoD draws level L-1 while painting or moving; pick: one item-buffer look-up and ray-cell hit\n\n";
+            << "LoD draws the level chosen for 10 frames per second while painting or moving; pick: one item-buffer look-up and ray-cell hit\n\n";
   table.print(std::cout);
   return 0;
 }

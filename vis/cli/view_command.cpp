@@ -61,7 +61,7 @@ int view_command(const Argv& argv)
   const int level = scene_level(args, inputs, script.level > 0 ? script.level : default_view_level(inputs));
   check_edit_levels(script, level);
 
-  const int lod = args.integer("--lod", std::max(1, level - 1), 0, level);
+  const int lod = args.integer("--lod", -1, 0, level); // absent: automatic
   vtkNew<vtkPaintView> view;
   view->SetLevel(level);
   view->SetLodLevel(lod);
