@@ -83,6 +83,11 @@ public:
       s << ", \"amount\": " << number(0, 1);
     else if (tool == "smear")
       s << ", \"strength\": " << number(0.5, 1);
+    // Geometry at a coarser edit level too: the details it keeps across
+    // strokes are part of what undo, redo and replay must give back.
+    const bool moves = tool == "sculpt" || tool == "inflate" || tool == "flatten" || tool == "grab" || tool == "smooth";
+    if (moves && pick(2) == 0)
+      s << ", \"edit_level\": " << 1 + pick(2);
     s << "}";
     return s.str();
   }
