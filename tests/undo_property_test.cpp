@@ -274,6 +274,49 @@ TEST_P(UndoProperty, DisplayFollowingChangesMatchesAFullRead)
 
 INSTANTIATE_TEST_SUITE_P(Seeds, UndoProperty, testing::Values(1u, 2u, 3u, 4u));
 
+//! Strokes at coarser edit levels keep their details across strokes. These
+//! sessions make undo put back details that a later step replaced or moved
+//! around (an encoding at another level, a stroke at the finest level, the
+//! levels between the edit level and the finest) and then go on editing at
+//! the first level: what remains applied, replayed on a fresh surface, must
+//! give the same bits.
+class KeptDetails : public testing::TestWithParam<const char*>
+{
+};
+
+TEST_P(KeptDetails, ReplayOfWhatRemainsGivesTheSameBits)
+{
+  const auto coarse = [](const char* at, int level) {
+    return parse_one(std::string("{\"tool\": \"inflate\", \"points\": [") + at +
+                     "], \"radius\": 0.9, \"amount\": 0.05, \"edit_level\": " + std::to_string(level) + "}");
+  };
+  const Stroke fine = parse_one(R"({"tool": "sculpt", "points": [[2.5, 1.5, 1]], "radius": 0.8, "amount": 0.04})");
+  PaintSurface surface(test::runtime(), test::genus_two(), kLevel, AtlasStorage::Buffer);
+  for (const char* action = GetParam(); *action; ++action) {
+    switch (*action) {
+    case 'a': surface.apply(coarse("[1.0, 1.5, 1]", 1)); break;
+    case 'b': surface.apply(coarse("[1.6, 1.2, 1]", 1)); break;
+    case 'c': surface.apply(coarse("[2.0, 1.8, 1]", 2)); break;
+    case 'd': surface.apply(coarse("[2.4, 1.0, 1]", 1)); break;
+    case 'f': surface.apply(fine); break;
+    case 'u': ASSERT_TRUE(surface.undo()); break;
+    case 'r': ASSERT_TRUE(surface.redo()); break;
+    }
+  }
+  const AtlasState end = read_state(surface);
+  PaintSurface fresh(test::runtime(), test::genus_two(), kLevel, AtlasStorage::Buffer);
+  for (const Stroke& s : surface.history())
+    fresh.apply(s);
+  EXPECT_TRUE(same_bits(read_state(fresh), end)) << GetParam();
+}
+
+// a, b, d: edit level 1 in three places, c: level 2, f: finest level,
+// u: undo, r: redo.
+INSTANTIATE_TEST_SUITE_P(Sessions, KeptDetails,
+                         testing::Values("aa", "aba", "abub", "acua", "afua", "afaua", "afauua", "acurua", "afuurra",
+                                         "abcuub", "abua", "adua", "adub", "bdua",
+                                         "dbua"));
+
 // A long session: many strokes in one run keep the undo log within its
 // budget, forgetting the oldest strokes (and saying so), and the surface
 // keeps working.

@@ -427,15 +427,7 @@ int vtkPaintView::BeginStroke(int x, int y)
     camera.view_angle = float(c->GetViewAngle());
     in.brush->set_camera(camera);
   }
-  // A coarse-level edit is applied on release only: undoing pieces would
-  // start its detail afresh, which a replay would not do.
-  if (in.brush->coarse_edit()) {
-    this->PlaceCursor(x, y);
-    this->Show();
-    this->Render();
-  } else {
-    this->PaintPiece(true);
-  }
+  this->PaintPiece(true);
   return 1;
 }
 
@@ -458,10 +450,7 @@ int vtkPaintView::ContinueStroke(int x, int y)
     return 1;
   in.path.push_back(q);
   this->PlaceCursor(x, y);
-  if (in.brush->coarse_edit())
-    this->Render();
-  else
-    this->PaintPiece(false); // renders
+  this->PaintPiece(false); // renders
   return 1;
 }
 
@@ -483,6 +472,8 @@ int vtkPaintView::EndStroke()
   in.painting = false;
   in.moving = false;
   // The pieces were for the eye: the stroke is the whole path, applied once.
+  // Undo gives back the surface and its multiresolution details bit for
+  // bit, so this is what a replay of the recording does.
   const int ok = meshpaint::guarded(this->LastError, [&] {
     for (; in.pieces > 0; --in.pieces)
       in.scene.undo();

@@ -51,6 +51,54 @@ Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Devic
 
 Multires::~Multires() = default;
 
+std::size_t Multires::Memo::bytes() const
+{
+  std::size_t b = details.size() * sizeof(Float4) + extent.size() * sizeof(float);
+  for (const auto& level : levels)
+    b += level.size() * sizeof(Float4);
+  return b;
+}
+
+void Multires::invalidate()
+{
+  level_ = encoded_level_ = -1;
+  ++generation_;
+}
+
+bool Multires::resume(const State& state)
+{
+  const bool in_place = state.generation == generation_ && (state.level < 0 || state.level == encoded_level_);
+  level_ = in_place ? state.level : -1;
+  return in_place;
+}
+
+Multires::Memo Multires::save()
+{
+  Memo m;
+  m.state = {encoded_level_, generation_};
+  if (encoded_level_ < 0)
+    return m;
+  m.details = read_details();
+  m.extent = extent_;
+  for (int l = encoded_level_; l < atlas_.max_level(); ++l)
+    m.levels.push_back(atlas_.read_positions(l));
+  return m;
+}
+
+void Multires::load(const Memo& m)
+{
+  level_ = -1;
+  encoded_level_ = m.state.level;
+  generation_ = m.state.generation;
+  if (m.state.level < 0)
+    return;
+  atlas_.runtime().queue().enqueueWriteBuffer(device_->details, CL_TRUE, 0, m.details.size() * sizeof(Float4),
+                                              m.details.data());
+  extent_ = m.extent;
+  for (std::size_t k = 0; k < m.levels.size(); ++k)
+    atlas_.write_positions(m.state.level + int(k), m.levels[k]);
+}
+
 std::vector<Float4> Multires::read_details()
 {
   std::vector<Float4> out(atlas_.layout(atlas_.max_level()).texels());
@@ -99,10 +147,11 @@ void Multires::encode(int level)
     extent_.resize(std::size_t(f.patches));
     q.enqueueReadBuffer(d.extent, CL_TRUE, 0, extent_.size() * sizeof(float), extent_.data());
   } catch (const cl::Error& e) {
-    level_ = -1;
+    invalidate();
     throw DeviceError("encoding details failed on " + atlas_.runtime().info().name + ": " + describe(e));
   }
-  level_ = level;
+  level_ = encoded_level_ = level;
+  ++generation_;
 }
 
 std::vector<int> Multires::reach(const std::vector<int>& patches) const
@@ -158,6 +207,12 @@ void Multires::reconstruct(const std::vector<int>& affected)
   // every reconstruction keeps them so on what it changes): subdividing the
   // affected set is enough. It writes U' into the finest level there, and
   // into the stored copies its sides and corners have in the patches around.
+  // Decoding writes into `saved`, which then goes back to the finest level
+  // on `touched`: the texels it does not write must be S as it is now,
+  // whatever changed it since the encoding (an undo, a stroke elsewhere),
+  // so they are taken before subdivision overwrites them.
+  const std::vector<int> touched = grow(affected, 1);
+  copy_level(fine, d.saved, &touched);
   const PatchSet reached = atlas_.patch_set(affected, Reach::Any);
   atlas_.subdivide(level_, finest, &reached);
   // The limit layers still describe S, which the finest level is again
@@ -175,7 +230,6 @@ void Multires::reconstruct(const std::vector<int>& affected)
   if (!set.rings.empty())
     launch(q, d.decode_corners, cl::NDRange(round_up(set.rings.size(), kGroup)), cl::NDRange(kGroup), fine, grid(f),
            atlas_.ring_table(), atlas_.slot_table(), rings, int(set.rings.size()), d.details, d.saved);
-  const std::vector<int> touched = grow(affected, 1);
   copy_level(d.saved, fine, &touched);
   q.finish(); // the lists live until here
 }

@@ -5,8 +5,10 @@
 
 #include "atlas/atlas.h"
 
-#include <memory> // for std::unique_ptr
-#include <vector> // for std::vector
+#include <cstddef> // for std::size_t
+#include <cstdint> // for std::uint64_t
+#include <memory>  // for std::unique_ptr
+#include <vector>  // for std::vector
 
 namespace meshpaint {
 
@@ -22,11 +24,42 @@ public:
   Multires(const Multires&) = delete;
   Multires& operator=(const Multires&) = delete;
 
-  //! The level the details are encoded over; -1 when there are none.
+  //! Which encoding is in place and whether it is in use: what an undo
+  //! step needs to give the details back.
+  struct State
+  {
+    int level = -1;               //!< the edit level in use; -1: none
+    std::uint64_t generation = 0; //!< which encoding (each encode() makes a new one)
+  };
+  //! An encoding copied to the host, to be put back after a later one
+  //! replaced it (undo across a re-encoding).
+  struct Memo
+  {
+    State state;                           //!< level: the level encoded
+    std::vector<Float4> details;
+    std::vector<float> extent;
+    std::vector<std::vector<Float4>> levels; //!< control points of state.level .. finest - 1
+    std::size_t bytes() const;
+  };
+
+  //! The level the details are encoded over and in use; -1 when none.
   int level() const { return level_; }
-  //! After the finest level changed otherwise (a fine edit, undo, a reduce):
-  //! the details no longer describe it.
-  void invalidate() { level_ = -1; }
+  //! The level of the encoding in place, in use or not; -1 when none.
+  int encoded_level() const { return encoded_level_; }
+  State state() const { return {level_, generation_}; }
+  //! The finest level was edited (a stroke at the finest level): the details
+  //! no longer describe it, but stay in place for an undo of that edit.
+  void detach() { level_ = -1; }
+  //! The levels below the finest were rewritten otherwise (a reduction, a
+  //! new surface): the encoding is gone.
+  void invalidate();
+  //! Puts `state` back in use if its encoding is the one in place; else
+  //! leaves the details unused and returns false.
+  bool resume(const State& state);
+  //! The encoding in place, copied to the host.
+  Memo save();
+  //! Puts a saved encoding back in place (not in use: resume() it).
+  void load(const Memo& memo);
 
   //! Levels `level`..finest-1 become down(S) by Gaussian reduction; the
   //! details are S - up(down(S)) in the frames of up(down(S)). The finest
@@ -68,7 +101,9 @@ private:
   std::vector<int> grow(const std::vector<int>& patches, int rings) const;
 
   Atlas& atlas_;
-  int level_ = -1;
+  int level_ = -1;         // in use
+  int encoded_level_ = -1; // in place
+  std::uint64_t generation_ = 0;
   std::unique_ptr<Device> device_;
   std::vector<float> extent_;      // per patch: longest grid edge at encode()
 };

@@ -159,10 +159,11 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
 }
 
 
-std::pair<PaintSurface::LayerKernels*, const cl::Memory*> PaintSurface::layer(int id)
+std::pair<PaintSurface::LayerKernels*, const cl::Memory*> PaintSurface::layer(int id, int edit_level)
 {
   Device& d = *device_;
   switch (id) {
+  case kEditPositions: return {&d.positions, &atlas_->level_layer(edit_level)};
   case kPositions: return {&d.positions, &atlas_->level_layer(level_)};
   case kDiffuse: return {&d.channels, &d.diffuse};
   case kSpecular: return {&d.channels, &d.specular};
@@ -175,21 +176,25 @@ std::pair<PaintSurface::LayerKernels*, const cl::Memory*> PaintSurface::layer(in
   }
 }
 
-Snapshot PaintSurface::take_snapshot(const std::vector<int>& patches, const std::vector<int>& layers)
+Snapshot PaintSurface::take_snapshot(const std::vector<int>& patches, const std::vector<int>& layers, int edit_level)
 {
   Snapshot s;
   s.patches = patches;
   s.layer_ids = layers;
+  s.edit_level = edit_level;
+  if (multires_)
+    s.multires = multires_->state();
   if (patches.empty())
     return s;
   Runtime& rt = atlas_->runtime();
-  const LevelLayout l = atlas_->layout(level_);
-  const std::size_t n = patches.size() * std::size_t(l.tile) * l.tile;
   const cl::Buffer list = device_ints(rt.context(), patches);
-  cl::Buffer out(rt.context(), CL_MEM_WRITE_ONLY, sizeof(Float4) * n);
-  const auto tiles = range_tiles(l, int(patches.size()));
+  const std::size_t most = patches.size() * std::size_t(atlas_->layout(level_).tile) * atlas_->layout(level_).tile;
+  cl::Buffer out(rt.context(), CL_MEM_WRITE_ONLY, sizeof(Float4) * most);
   for (const int id : layers) {
-    const auto [kernels, memory] = layer(id);
+    const LevelLayout l = atlas_->layout(id == kEditPositions ? edit_level : level_);
+    const std::size_t n = patches.size() * std::size_t(l.tile) * l.tile;
+    const auto tiles = range_tiles(l, int(patches.size()));
+    const auto [kernels, memory] = layer(id, edit_level);
     launch(rt.queue(), kernels->gather_tiles, tiles.first, tiles.second, *memory, grid(l), list, int(patches.size()),
            out);
     s.layers.emplace_back(n);
@@ -200,22 +205,41 @@ Snapshot PaintSurface::take_snapshot(const std::vector<int>& patches, const std:
 
 void PaintSurface::restore(const Snapshot& s)
 {
-  if (s.patches.empty())
-    return;
-  changed(s.patches);
   Runtime& rt = atlas_->runtime();
-  const LevelLayout l = atlas_->layout(level_);
-  const std::size_t n = s.patches.size() * std::size_t(l.tile) * l.tile;
-  const cl::Buffer list = device_ints(rt.context(), s.patches);
-  const auto tiles = range_tiles(l, int(s.patches.size()));
-  for (std::size_t k = 0; k < s.layer_ids.size(); ++k) {
-    const auto [kernels, memory] = layer(s.layer_ids[k]);
+  const cl::Buffer list = s.patches.empty() ? cl::Buffer() : device_ints(rt.context(), s.patches);
+  const auto scatter = [&](std::size_t k) {
+    const int id = s.layer_ids[k];
+    const LevelLayout l = atlas_->layout(id == kEditPositions ? s.edit_level : level_);
+    const auto tiles = range_tiles(l, int(s.patches.size()));
+    const auto [kernels, memory] = layer(id, s.edit_level);
     // Copied at creation (COPY_HOST_PTR): no wait needed for the host data.
-    const cl::Buffer in(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(Float4) * n,
+    const cl::Buffer in(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(Float4) * s.layers[k].size(),
                         const_cast<Float4*>(s.layers[k].data()));
     launch(rt.queue(), kernels->scatter_tiles, tiles.first, tiles.second, *memory, grid(l), list,
            int(s.patches.size()), in);
+  };
+  const auto edit = std::find(s.layer_ids.begin(), s.layer_ids.end(), int(kEditPositions));
+  if (!s.patches.empty() && edit != s.layer_ids.end()) {
+    // The edit level's control points, and the levels up to the finest made
+    // from them, which the next edit at that level reads around its reach.
+    scatter(std::size_t(edit - s.layer_ids.begin()));
+    if (s.edit_level + 1 < level_) {
+      const PatchSet set = atlas_->patch_set(s.patches, Reach::Any);
+      atlas_->subdivide(s.edit_level, level_ - 1, &set);
+    }
   }
+  // Then the details, before the finest level, which they leave alone.
+  if (multires_) {
+    if (s.memo)
+      multires_->load(*s.memo);
+    multires_->resume(s.multires);
+  }
+  if (s.patches.empty())
+    return;
+  changed(s.patches);
+  for (std::size_t k = 0; k < s.layer_ids.size(); ++k)
+    if (s.layer_ids[k] != kEditPositions)
+      scatter(k);
   if (std::find(s.layer_ids.begin(), s.layer_ids.end(), int(kPositions)) != s.layer_ids.end())
     refresh_geometry(s.patches);
   rt.queue().finish();
@@ -265,7 +289,7 @@ void PaintSurface::remember(const std::vector<int>& patches)
       fresh.push_back(p);
   if (fresh.empty())
     return;
-  Snapshot s = take_snapshot(fresh, stroke_layers_); // flags only once the tiles are safe
+  Snapshot s = take_snapshot(fresh, stroke_layers_, stroke_before_.edit_level); // flags only once the tiles are safe
   for (const int p : fresh)
     in_stroke_[std::size_t(p)] = 1;
   stroke_before_.layer_ids = s.layer_ids;
@@ -299,10 +323,10 @@ bool PaintSurface::step(bool back)
     return false;
   // Keep the present state of the same tiles, so the step can be reversed.
   const Snapshot& target = back ? undo_.next_undo() : undo_.next_redo();
-  Snapshot now = take_snapshot(target.patches, target.layer_ids);
+  Snapshot now = take_snapshot(target.patches, target.layer_ids, target.edit_level);
+  if (target.memo && multires_) // the step puts back another encoding: keep this one for the way back
+    now.memo = std::make_shared<const Multires::Memo>(multires_->save());
   restore(target);
-  if (multires_)
-    multires_->invalidate();
   if (back)
     undo_.undone(std::move(now));
   else
@@ -552,12 +576,17 @@ StrokeReport PaintSurface::apply(const Stroke& stroke)
   case Tool::Smear: stroke_layers_ = {kDiffuse, kSpecular}; break;
   default: stroke_layers_ = {kDiffuse, kSpecular, kMaterial}; break;
   }
+  // At a coarser edit level, its control points change too.
+  const bool coarse = stroke.edit_level > 0 && stroke.edit_level < level_ && stroke_layers_.front() == kPositions;
+  if (coarse)
+    stroke_layers_.push_back(kEditPositions);
+  stroke_before_.edit_level = coarse ? stroke.edit_level : 0;
+  stroke_before_.multires = multires_ ? multires_->state() : Multires::State{};
   if (two_sided_ && stroke_layers_.front() != kPositions) // either side may change
     for (const int id : std::vector<int>(stroke_layers_))
       stroke_layers_.push_back(id + kInsideDiffuse - kDiffuse);
   StrokeReport report;
   stretch_ = 1.f;
-  stroke_encoded_ = false;
   encode_ms_ = 0;
   try {
     report = apply_dabs(stroke);
@@ -810,20 +839,22 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   if (coarse) {
     if (!multires_)
       multires_ = std::make_unique<Multires>(*atlas_);
-    // Encoded afresh by every coarse stroke, so that what a stroke does
-    // depends only on the surface it starts from, never on undo history:
-    // a recorded session replays bit for bit.
-    if (multires_->level() != level || !stroke_encoded_) {
+    // Details persist across strokes at the same level; a stroke at the
+    // finest level or at another level has them made again. Undo puts back
+    // the encoding a step replaced, so a replay of what remains applied
+    // encodes exactly where the session did.
+    if (multires_->level() != level) {
+      if (undo_.recording() && multires_->encoded_level() >= 0 && !stroke_before_.memo)
+        stroke_before_.memo = std::make_shared<const Multires::Memo>(multires_->save());
       atlas_->runtime().queue().finish(); // the encoding timed alone
       const Timer encoding;
       multires_->encode(level);
       atlas_->runtime().queue().finish();
       encode_ms_ += encoding.ms();
     }
-    stroke_encoded_ = true;
     changed = multires_->reach(patches);
   } else if (!stroke.target_colour && multires_) {
-    multires_->invalidate();
+    multires_->detach();
   }
   remember(coarse ? changed : patches);
   Device& d = *device_;

@@ -194,8 +194,8 @@ private:
   //! Finds the dab's site and aims it: the patches it may change, empty
   //! when it misses the surface (or meets a silhouette).
   std::vector<int> place(const Stroke& stroke, const DabSample& sample, BrushDab& dab, Vec3& normal);
-  //! Layers a snapshot may hold: the finest level's control points and the
-  //! three channel layers.
+  //! Layers a snapshot may hold: the finest level's control points, the
+  //! channel layers, and the control points of a coarser edit level.
   enum Layer : int
   {
     kPositions,
@@ -206,16 +206,18 @@ private:
     kInsideSpecular,
     kInsideMaterial,
     kLimitPositions, // read only (painted_vertices): the limit surface at the painting level
-    kLimitNormals
+    kLimitNormals,
+    kEditPositions // the control points of a snapshot's edit_level
   };
   //! The channel buffers a dab writes: the side it paints.
   cl::Buffer& diffuse_buffer();
   cl::Buffer& specular_buffer();
   cl::Buffer& material_buffer();
   struct LayerKernels;
-  std::pair<LayerKernels*, const cl::Memory*> layer(int id);
-  //! The given layers' tiles of `patches`, from the device.
-  Snapshot take_snapshot(const std::vector<int>& patches, const std::vector<int>& layers);
+  std::pair<LayerKernels*, const cl::Memory*> layer(int id, int edit_level = 0);
+  //! The given layers' tiles of `patches`, from the device, and the state of
+  //! the multiresolution details.
+  Snapshot take_snapshot(const std::vector<int>& patches, const std::vector<int>& layers, int edit_level = 0);
   void restore(const Snapshot& snapshot);
   //! Adds the patches not yet in the stroke's snapshot, before they change.
   void remember(const std::vector<int>& patches);
@@ -229,7 +231,6 @@ private:
   int level_;
   std::unique_ptr<Multires> multires_; // details for edits at a coarser level, made on first use
   float stretch_ = 1.f;                // the running stroke's worst Multires::stretch
-  bool stroke_encoded_ = false;        // the running stroke has encoded its details
   double encode_ms_ = 0;               // the running stroke's encoding time
   std::vector<Stroke> history_, undone_;
   std::unique_ptr<Device> device_;

@@ -9,7 +9,7 @@ std::size_t Snapshot::bytes() const
   std::size_t b = patches.size() * sizeof(int);
   for (const auto& layer : layers)
     b += layer.size() * sizeof(Float4);
-  return b;
+  return b + (memo ? memo->bytes() : 0);
 }
 
 void UndoLog::set_budget(std::size_t bytes)

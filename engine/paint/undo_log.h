@@ -2,21 +2,28 @@
 // within a memory budget.
 #pragma once
 
+#include "atlas/multires.h"
 #include "core/vec.h"
 
 #include <cstddef> // for std::size_t
 #include <deque>   // for std::deque
+#include <memory>  // for std::shared_ptr
 #include <string>  // for std::string
 #include <vector>  // for std::vector
 
 namespace meshpaint {
 
-//! The tiles of some patches in every painted layer, as they were.
+//! The tiles of some patches in every painted layer, and the multiresolution
+//! details, as they were.
 struct Snapshot
 {
   std::vector<int> patches;                //!< in the order of the tiles below
   std::vector<int> layer_ids;              //!< which layers (PaintSurface's numbering)
   std::vector<std::vector<Float4>> layers; //!< per layer: #patches x tile^2 texels
+  int edit_level = 0;                      //!< the level of an edit-level layer among them
+  Multires::State multires;                //!< the multiresolution details in use then
+  //! The encoding in place then, where the step replaced it with another.
+  std::shared_ptr<const Multires::Memo> memo;
   std::size_t bytes() const;
 };
 
