@@ -224,12 +224,45 @@ bool same_bits(const std::vector<T>& a, const std::vector<T>& b)
 // (changes_since, painted_vertices) shows what a full read shows, bit for
 // bit, after every action of a random session; odd seeds on a two-sided
 // surface.
+//! The bytes of each array of a full read, in the order of DisplayArrays.
+std::vector<std::pair<const void*, std::size_t>> display_order(const PaintedSurface& s)
+{
+  const std::size_t n = s.surface.points.size(), v3 = 3 * sizeof(float) * n, v1 = sizeof(float) * n;
+  std::vector<std::pair<const void*, std::size_t>> out{
+    {s.surface.points.data(), v3}, {s.surface.normals.data(), v3}, {s.diffuse.data(), v3},
+    {s.specular.data(), v3},       {s.roughness.data(), v1},       {s.displacement.data(), v1},
+    {s.mask.data(), v1},           {s.label.data(), sizeof(int) * n}};
+  if (!s.inside_diffuse.empty())
+    out.insert(out.end(), {{s.inside_diffuse.data(), v3}, {s.inside_specular.data(), v3},
+                           {s.inside_roughness.data(), v1}});
+  return out;
+}
+
+//! The shared display arrays hold `full`, and flag every array that
+//! differs from `before`.
+void expect_display(const DisplayArrays& arrays, const PaintedSurface& full, const PaintedSurface& before)
+{
+  const auto now = display_order(full), was = display_order(before);
+  ASSERT_EQ(arrays.arrays().size(), now.size());
+  ASSERT_EQ(arrays.vertices(), full.surface.points.size());
+  for (std::size_t k = 0; k < now.size(); ++k) {
+    EXPECT_EQ(std::memcmp(arrays.data(k), now[k].first, now[k].second), 0) << arrays.arrays()[k].name;
+    if (std::memcmp(was[k].first, now[k].first, now[k].second) != 0)
+      EXPECT_TRUE(arrays.changed(k)) << arrays.arrays()[k].name << " changed without its flag";
+  }
+}
+
 TEST_P(UndoProperty, DisplayFollowingChangesMatchesAFullRead)
 {
   PaintSurface surface(test::runtime(), test::genus_two(), kLevel, AtlasStorage::Buffer);
   if (GetParam() % 2 == 1)
     surface.set_two_sided(true);
   PaintedSurface shown = surface.painted_surface();
+  // Where the device's memory is the host's, the arrays a viewer draws
+  // from in place follow the same changes.
+  const std::shared_ptr<DisplayArrays> shared = surface.display_arrays();
+  if (shared)
+    expect_display(*shared, shown, shown);
   std::uint64_t seen = surface.change_count();
   StrokeMaker maker(GetParam());
   int partial = 0;
@@ -251,8 +284,13 @@ TEST_P(UndoProperty, DisplayFollowingChangesMatchesAFullRead)
     }
     ++partial;
     EXPECT_LT(changes.patches.size(), std::size_t(surface.atlas().topology().patch_count) + 1);
+    const PaintedSurface before = shown;
     scatter(surface.painted_vertices(changes.patches), shown);
     const PaintedSurface full = surface.painted_surface();
+    if (shared) {
+      surface.update_display_arrays(changes);
+      expect_display(*shared, full, before);
+    }
     ASSERT_TRUE(same_bits(shown.surface.points, full.surface.points));
     ASSERT_TRUE(same_bits(shown.surface.normals, full.surface.normals));
     ASSERT_TRUE(same_bits(shown.diffuse, full.diffuse));

@@ -183,9 +183,7 @@ int update_polydata(vtkPolyData* poly, const PaintedVertices& update)
   for_each_array(poly, update.values, [&](vtkDataArray* to, const auto* from, int components) {
     changed += scatter_if_changed(to, update.ids, from, components);
   });
-  if (changed)
-    poly->GetPoints()->Modified();
-  return changed;
+  return changed; // vtkPoints::Modified() would mark the points too: the arrays say it
 }
 
 BaseMesh to_base_mesh(vtkPolyData* poly, const std::string& name)

@@ -2,6 +2,7 @@
 
 #include "BrushSettings.h"           // for meshpaint::BrushSettings
 #include "LevelOfDetail.h"           // for meshpaint::coarser_quads
+#include "SharedArrays.h"            // for meshpaint::share_arrays, refresh_shared_arrays
 #include "CallGuard.h"               // for meshpaint::guarded
 #include "RasterIO.h"                // for meshpaint::load_stroke_rasters
 #include "SurfaceConversion.h"       // for meshpaint::to_polydata, to_base_mesh, write_vtp, write_texture_maps
@@ -56,6 +57,8 @@ struct vtkPaintView::Drawing
   vtkSmartPointer<vtkPolyData> full, coarse, shown;
   bool full_stale = true;
   std::uint64_t full_count = 0; // the surface's change_count() that `full` shows
+  bool shared = false;          // `full` draws from the engine's display arrays
+  std::vector<std::uint64_t> seen; // their versions `full` was last marked for
   int coarse_level = 0;
   vtkNew<vtkActor> actor;
 };
@@ -524,6 +527,12 @@ int vtkPaintView::PickObject(int x, int y)
   return this->PickFacing(x, y, p, n) ? this->Impl->picker->GetActorIndex() : -1;
 }
 
+bool vtkPaintView::IsSharingArrays(int object)
+{
+  const auto& drawings = this->Impl->drawings;
+  return object >= 0 && std::size_t(object) < drawings.size() && drawings[std::size_t(object)]->shared;
+}
+
 int vtkPaintView::GetShownLevel() { return this->Impl->shown_level; }
 
 int vtkPaintView::CoarseLevel()
@@ -563,16 +572,32 @@ vtkPolyData* vtkPaintView::Surface(std::size_t object, int level)
     d.full_count = surface.change_count();
     d.full = meshpaint::to_polydata(surface.painted_surface());
     d.coarse = nullptr;
+    // Where the device's memory is the host's, the arrays drawn are the
+    // engine's own: a kernel writes the patches that change, in place.
+    const auto shared = this->ShareArrays ? surface.display_arrays() : nullptr;
+    if (shared) {
+      meshpaint::share_arrays(d.full, shared);
+      d.seen.clear();
+      for (std::size_t k = 0; k < shared->arrays().size(); ++k)
+        d.seen.push_back(shared->version(k));
+    }
+    d.shared = shared != nullptr;
   } else if (d.full_stale) {
-    // Same topology: only the vertices of the patches that changed are read
-    // from the device, and only the arrays that changed are marked (and
-    // uploaded).
+    // Same topology: only the vertices of the patches that changed are
+    // written (on the device into the shared arrays, else read back into
+    // VTK's), and only the arrays that changed are marked (and uploaded).
     const meshpaint::PatchChanges changes = surface.changes_since(d.full_count);
     d.full_count = surface.change_count();
-    if (changes.all)
+    const auto shared = d.shared ? surface.display_arrays() : nullptr;
+    if (shared) {
+      surface.update_display_arrays(changes);
+      if (meshpaint::refresh_shared_arrays(d.full, shared, d.seen))
+        d.coarse = nullptr; // it shares the arrays that moved
+    } else if (changes.all) {
       meshpaint::update_polydata(d.full, surface.painted_surface());
-    else
+    } else {
       meshpaint::update_polydata(d.full, surface.painted_vertices(changes.patches));
+    }
   }
   d.full_stale = false;
   if (level == this->Level)

@@ -99,6 +99,16 @@ public:
   void SetAntiAliasing(bool on);
   vtkGetMacro(AntiAliasing, bool);
   vtkBooleanMacro(AntiAliasing, bool);
+  /// Draws from the engine's own arrays where the device's memory is the
+  /// host's (PoCL's CPU devices, integrated GPUs): kernels write the
+  /// patches that change in place and nothing is copied (default on; takes
+  /// effect for surfaces shown after it is set). Elsewhere, and when off,
+  /// the changed vertices are read back into VTK's arrays.
+  vtkSetMacro(ShareArrays, bool);
+  vtkGetMacro(ShareArrays, bool);
+  vtkBooleanMacro(ShareArrays, bool);
+  /// Whether object `object` is drawn from shared arrays now.
+  bool IsSharingArrays(int object = 0);
   /// Quads of the painted surface at the painting level.
   vtkIdType GetFaceCount();
   /// The level drawn now.
@@ -231,6 +241,7 @@ protected:
   int LodLevel = -1;
   double LodFrameRate = 10;
   bool AntiAliasing = true;
+  bool ShareArrays = true;
   int SubsurfacePasses = 0;
   std::string Device;
   std::string Storage;

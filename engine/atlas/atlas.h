@@ -105,6 +105,7 @@ public:
   const std::vector<int>& base_face_order() const { return base_face_order_; }
   LevelLayout layout(int level) const;
   Runtime& runtime() { return *runtime_; }
+  const std::shared_ptr<Runtime>& shared_runtime() const { return runtime_; }
 
   //! Catmull-Clark kernels: each level l+1 from level l, for from <= l < to.
   void subdivide(int from_level, int to_level);

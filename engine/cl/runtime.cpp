@@ -81,6 +81,9 @@ std::vector<Found> enumerate()
       info.version = dev.getInfo<CL_DEVICE_VERSION>();
       info.gpu = (dev.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_GPU) != 0;
       info.images = dev.getInfo<CL_DEVICE_IMAGE_SUPPORT>() == CL_TRUE;
+      cl_bool unified = CL_FALSE; // deprecated since OpenCL 2.0, still answered; a CPU device is host memory anyway
+      clGetDeviceInfo(dev(), CL_DEVICE_HOST_UNIFIED_MEMORY, sizeof(unified), &unified, nullptr);
+      info.host_memory = unified == CL_TRUE || (dev.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_CPU) != 0;
       info.global_memory = dev.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>();
       info.max_allocation = dev.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
       if (const std::uint64_t cap = memory_cap()) { // the device as if it had less memory

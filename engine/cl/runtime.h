@@ -20,6 +20,7 @@ struct DeviceInfo
   std::string version;
   bool gpu = false;
   bool images = false;               //!< image2d_t supported
+  bool host_memory = false;          //!< its memory is the host's (a CPU device, an integrated GPU)
   std::uint64_t global_memory = 0;   //!< bytes (at most MESHPAINT_DEVICE_MEMORY when set)
   std::uint64_t max_allocation = 0;  //!< bytes in one buffer or image (likewise)
   std::size_t image_max_width = 0;   //!< texels

@@ -5,6 +5,7 @@
 #include "atlas/atlas.h"
 #include "atlas/multires.h"
 #include "mesh/welded_surface.h"
+#include "paint/display_arrays.h"
 #include "paint/stroke.h"
 #include "paint/undo_log.h"
 
@@ -135,6 +136,15 @@ public:
   //! painted_surface()'s values at the welded vertices of `patches` only,
   //! read from those tiles alone: for displays that follow the brush.
   PaintedVertices painted_vertices(const std::vector<int>& patches);
+  //! painted_surface()'s arrays in device buffers in host memory, which a
+  //! viewer draws from without a copy; made and filled on first use, kept
+  //! current by update_display_arrays(). Null where the device's memory is
+  //! its own (use painted_vertices() there).
+  std::shared_ptr<DisplayArrays> display_arrays();
+  //! Rewrites the welded vertices of the patches in `changes` (all of them
+  //! when `changes.all`) in display_arrays(), on the device; the arrays say
+  //! which of them changed.
+  void update_display_arrays(const PatchChanges& changes);
   //! A count that grows with every change of the surface, and what changed
   //! after a given count: a display keeps the count of what it shows.
   std::uint64_t change_count() const { return change_count_; }
@@ -249,6 +259,8 @@ private:
   std::uint64_t change_count_ = 1, all_changed_at_ = 1;
   std::vector<std::uint64_t> changed_at_; // per patch: the count of its last change
   std::vector<int> weld_map_;             // per texel of the painting level: its welded vertex, made on first use
+  struct Display;
+  std::shared_ptr<Display> display_;      // display_arrays() and their kernels, made on first use
 };
 
 } // namespace meshpaint

@@ -22,8 +22,9 @@ CUBE = os.path.join(os.environ["MESHPAINT_SOURCE_DIR"], "tests", "support", "cub
 SIZE = (400, 300)
 
 
-def open_view(tmp_path, level=4):
+def open_view(tmp_path, level=4, share=True):
     view = meshpaint.vtkPaintView()
+    view.SetShareArrays(share)
     view.SetLevel(level)
     view.SetSize(*SIZE)
     view.OffScreenOn()
@@ -71,11 +72,27 @@ def line(x0, y0, x1, y1, steps=20):
     return [(x0 + (x1 - x0) * k // steps, y0 + (y1 - y0) * k // steps) for k in range(steps + 1)]
 
 
-def test_recorded_session_replays_to_the_same_bits(tmp_path):
-    view = open_view(tmp_path)
+@pytest.mark.parametrize("share", [True, False])
+def test_recorded_session_replays_to_the_same_bits(tmp_path, share):
+    view = open_view(tmp_path, share=share)
+    # PoCL's memory is the host's: the window draws the engine's arrays.
+    assert view.IsSharingArrays(0) == (share and "gpu" not in os.environ.get("MESHPAINT_DEVICE", ""))
+    shown = view.GetPicker().GetActor().GetMapper().GetInput()
+    colour, points = shown.GetPointData().GetArray("diffuse"), shown.GetPoints().GetData()
+    colour_time, points_time = colour.GetMTime(), points.GetMTime()
     # Paint red across the front face, change tool, colour, size; sculpt,
     # undo it, redo it; then a blue stroke with mirror on x.
     drag(view, line(150, 120, 260, 180))
+    # the colours are marked for upload, the untouched points are not
+    assert colour.GetMTime() > colour_time and points.GetMTime() == points_time
+    # and the renderer took them: the stroke shows red in the window
+    view.Render()
+    grab = vtk.vtkWindowToImageFilter()
+    grab.SetInput(view.GetRenderWindow())
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    rgb = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(int)
+    assert ((rgb[:, 0] > 120) & (rgb[:, 1] < 60) & (rgb[:, 2] < 60)).sum() > 200
     key(view, "t", shift=True)  # previous tool from paint: label
     key(view, "t")              # paint again
     key(view, "6")              # blue swatch
