@@ -3,6 +3,7 @@
 #include "PaintingExport.h"    // for meshpaint::export_painting
 #include "CallGuard.h"         // for meshpaint::guarded
 #include "RasterIO.h"          // for meshpaint::load_stroke_rasters
+#include "SharedArrays.h"      // for meshpaint::share_arrays, refresh_shared_arrays
 #include "SurfaceConversion.h" // for meshpaint::to_base_mesh, to_polydata
 #include "vtkPaintView.h"      // for vtkPaintView
 
@@ -46,6 +47,12 @@ struct vtkPaintSurface::Internals
   std::optional<meshpaint::Project> project;
   std::map<std::string, vtkSmartPointer<vtkDataArray>> channels; // arrays handed out by GetChannel
   std::string history_text;                                      // what GetHistoryJSON() returned
+  // ShareArrays: the output's arrays over the surface's display arrays, and
+  // what they show (the surface, its change count, the arrays' versions).
+  vtkSmartPointer<vtkPolyData> shared;
+  std::weak_ptr<meshpaint::PaintSurface> shared_from;
+  std::uint64_t shared_count = 0;
+  std::vector<std::uint64_t> shared_seen;
 };
 
 vtkPaintSurface::vtkPaintSurface() : Impl(new Internals) {}
@@ -342,7 +349,28 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
       ++this->StrokeCount;
     }
     in.queued.clear();
-    output->ShallowCopy(meshpaint::to_polydata(in.surface->painted_surface()));
+    this->SharingArrays = false;
+    const auto shared = this->ShareArrays ? in.surface->display_arrays() : nullptr;
+    if (!shared) {
+      in.shared = nullptr;
+      output->ShallowCopy(meshpaint::to_polydata(in.surface->painted_surface()));
+      return;
+    }
+    if (!in.shared || in.shared_from.lock() != in.surface) {
+      in.shared = meshpaint::to_polydata(in.surface->painted_surface());
+      in.surface->update_display_arrays(in.surface->changes_since(0)); // all, whoever wrote before
+      meshpaint::share_arrays(in.shared, shared);
+      in.shared_from = in.surface;
+      in.shared_seen.clear();
+      for (std::size_t k = 0; k < shared->arrays().size(); ++k)
+        in.shared_seen.push_back(shared->version(k));
+    } else {
+      in.surface->update_display_arrays(in.surface->changes_since(in.shared_count));
+      meshpaint::refresh_shared_arrays(in.shared, shared, in.shared_seen);
+    }
+    in.shared_count = in.surface->change_count();
+    output->ShallowCopy(in.shared);
+    this->SharingArrays = true;
   });
   if (!ok) {
     ++this->FailedUpdates;

@@ -40,6 +40,20 @@ public:
   //@}
 
   //@{
+  /// Off (default): every update outputs arrays of its own, a snapshot
+  /// that later strokes leave alone. On: where the device's memory is the
+  /// host's (PoCL on the CPU, integrated GPUs), the output's points,
+  /// normals and channel arrays are the engine's memory itself, which each
+  /// update rewrites in place for the patches that changed (and marks
+  /// modified) without a copy; DeepCopy() the output to keep a state.
+  vtkSetMacro(ShareArrays, bool);
+  vtkGetMacro(ShareArrays, bool);
+  vtkBooleanMacro(ShareArrays, bool);
+  /// Whether the last output shares the engine's memory.
+  vtkGetMacro(SharingArrays, bool);
+  //@}
+
+  //@{
   /// OpenCL device selector (see `meshpaint devices`); empty: default.
   vtkSetStdStringFromCharMacro(Device);
   vtkGetCharFromStdStringMacro(Device);
@@ -158,6 +172,8 @@ protected:
   std::string LastError;
   int StrokeCount = 0;
   int FailedUpdates = 0;
+  bool ShareArrays = false;
+  bool SharingArrays = false;
 
 private:
   vtkPaintSurface(const vtkPaintSurface&) = delete;

@@ -252,3 +252,43 @@ def test_channels_round_trip_through_numpy():
 def test_nothing_to_paint_on():
     with pytest.raises(meshpaint.Error, match="nothing to paint on: set an input or load a project"):
         meshpaint.vtkPaintSurface().SaveProject("x.meshpaint")
+
+
+def test_shared_arrays_follow_the_strokes_in_place():
+    """With ShareArrays, the output's arrays are the engine's memory (PoCL):
+    each update rewrites what changed in place, and the values are those of
+    a source that copies, bit for bit."""
+    source = sphere()
+    shared, copied = meshpaint.vtkPaintSurface(), meshpaint.vtkPaintSurface()
+    shared.ShareArraysOn()
+    tri = vtk.vtkTriangleFilter()  # downstream filters see each change
+    tri.SetInputConnection(shared.GetOutputPort())
+    names = ("diffuse", "specular", "roughness", "displacement", "mask", "label", "Normals")
+    steps = [{"points": [[0, 0, 0.5]], "radius": 0.25, "channels": {"diffuse": [1, 0, 0], "displacement": 0.01}},
+             {"tool": "sculpt", "points": [[0.5, 0, 0]], "radius": 0.3, "amount": 0.05},
+             "undo",
+             {"tool": "label", "points": [[0, 0.5, 0]], "radius": 0.3, "channels": {"label": 3}}]
+    for s in (shared, copied):
+        s.SetInputConnection(source.GetOutputPort())
+        s.SetLevel(3)
+        s.Update()
+    assert shared.GetSharingArrays() and not copied.GetSharingArrays()
+    first = vtk_to_numpy(shared.GetOutput().GetPointData().GetArray("diffuse"))
+    for step in steps:
+        for s in (shared, copied):
+            if step == "undo":
+                s.Undo()
+            else:
+                s.ApplyStrokes(json.dumps({"strokes": [step]}))
+            s.Update()
+        a, b = shared.GetOutput(), copied.GetOutput()
+        assert vtk_to_numpy(a.GetPoints().GetData()).tobytes() == vtk_to_numpy(b.GetPoints().GetData()).tobytes()
+        for name in names:
+            assert (vtk_to_numpy(a.GetPointData().GetArray(name)).tobytes() ==
+                    vtk_to_numpy(b.GetPointData().GetArray(name)).tobytes()), (step, name)
+        tri.Update()
+        assert (vtk_to_numpy(tri.GetOutput().GetPoints().GetData()).tobytes() ==
+                vtk_to_numpy(b.GetPoints().GetData()).tobytes())
+    # the array read after the first update is the same memory, now painted
+    assert (first[:, 1] == 0).any()
+    assert first.tobytes() == vtk_to_numpy(copied.GetOutput().GetPointData().GetArray("diffuse")).tobytes()
