@@ -34,8 +34,10 @@ struct Row
 };
 
 // Meshes near the paper's 100k, 600k and 2.3M faces, at the painting level.
-const Row kRows[] = {{"armadillo.off", 2, {60, 80, 100}}};
-const double kCoverage[3] = {0.50, 0.50, 0.50};
+const Row kRows[] = {{"femur.off", 2, {30, 30, 30}},
+                     {"armadillo.off", 2, {60, 80, 100}},
+                     {"armadillo.off", 3, {120, 220, 390}}};
+const double kCoverage[3] = {0.01, 0.10, 0.50};
 
 //! Radius around `centre` whose ball holds `fraction` of the texels: texels
 //! sample the surface about evenly, so this is about that share of the area.
@@ -231,6 +233,40 @@ int bench_paint(const Args& args)
                  ",\"faces\":" + std::to_string(faces) + ",\"ms\":" + json_list(ms) + ",\"paper_ms\":[" +
                  std::to_string(row.paper_ms[0]) + "," + std::to_string(row.paper_ms[1]) + "," +
                  std::to_string(row.paper_ms[2]) + "]}";
+    // Multiresolution: a sculpt step at the coarsest edit level, with the
+    // finest level rebuilt and its details carried along.
+    Stroke m = s;
+    m.tool = Tool::Sculpt;
+    m.edit_level = 1;
+    const auto mr = coarse_step_times(surface, m, texels, steps);
+    coarse.add({grouped(faces), name, "1", format_fixed(mr[0][0], 2), format_fixed(mr[0][1], 2),
+                format_fixed(mr[0][2], 2), format_fixed(mr[1][0], 2), format_fixed(mr[1][1], 2),
+                format_fixed(mr[1][2], 2), format_fixed(mr[2][0], 1), format_fixed(mr[2][1], 1),
+                format_fixed(mr[2][2], 1)});
+    json_coarse += std::string(json_coarse.empty() ? "" : ",") + "{\"mesh\":" + json_string(name) +
+                   ",\"faces\":" + std::to_string(faces) + ",\"edit_level\":1,\"dab_ms\":" + json_list(mr[0]) +
+                   ",\"stroke_ms\":" + json_list(mr[1]) + ",\"encoding_ms\":" + json_list(mr[2]) + "}";
+    if (row.level >= 2) {
+      const SmoothingResult r = bench_smoothing(surface, 10, 5);
+      // A difference of noisy medians can come out at or below zero: no ratio then.
+      const auto ratio = [&](double peer) {
+        return r.meshpaint_ms > 0 ? format_fixed(peer / r.meshpaint_ms, 1) + "x" : std::string("-");
+      };
+      smoothing.add({grouped(r.vertices), name, format_fixed(r.meshpaint_ms, 2), format_fixed(r.vtk_ms, 2),
+                     format_fixed(r.openmesh_ms, 2), ratio(r.vtk_ms), ratio(r.openmesh_ms),
+                     format_fixed(r.meshpaint_stroke_ms, 1)});
+      json_smooth += std::string(json_smooth.empty() ? "" : ",") + "{\"mesh\":" + json_string(name) +
+                     ",\"vertices\":" + std::to_string(r.vertices) + ",\"meshpaint_ms\":" +
+                     std::to_string(r.meshpaint_ms) + ",\"vtk_ms\":" + std::to_string(r.vtk_ms) +
+                     ",\"openmesh_ms\":" + std::to_string(r.openmesh_ms) +
+                     ",\"meshpaint_stroke_ms\":" + std::to_string(r.meshpaint_stroke_ms) + "}";
+    }
+  }
+  if (json) {
+    std::cout << "{\"tool\":" << json_string(tool) << ",\"steps\":" << steps << ",\"device\":"
+              << json_string(runtime->info().name) << ",\"brush\":[" << json_rows << "],\"smoothing\":["
+              << json_smooth << "],\"coarse_edit\":[" << json_coarse << "]}\n";
+    return 0;
   }
   std::cout << "meshpaint bench paint: one " << tool << " brush step (culling, weights, transformation"
             << (tool == "sculpt" ? ", limit normals and bounds on the touched patches" : "")
