@@ -68,16 +68,19 @@ __kernel void decode_interior(ATLAS_IN smooth, int2 g, __global const int *list,
     ATLAS_STORE(fine, g, p, ij, decoded(smooth, g, p, ij, details));
 }
 
-/* Range: (n - 1, count); the listed patch sides, in the first patch's frame. */
+/* Range: count; the listed patch sides, in the first patch's frame, one
+ * work item per side walking along it (items side by side vectorise on a
+ * CPU, which a range across the texels of one side would not). */
 __kernel void decode_edges(ATLAS_IN smooth, int2 g, __global const PatchEdge *edges,
                            __global const int *list, int count, __global const float4 *details, ATLAS_OUT fine)
 {
-  const int t = get_global_id(0) + 1, k = get_global_id(1);
-  if (k >= count || t >= g.x - 1)
+  const int k = get_global_id(0);
+  if (k >= count)
     return;
   const PatchEdge e = edges[list[k]];
   const Frame f = side_frame(e.patch[0], e.side[0], g.x - 1);
-  EDGE_STORE(fine, g, e, t, decoded(smooth, g, e.patch[0], f.o + t * f.dt, details));
+  for (int t = 1; t < g.x - 1; ++t)
+    EDGE_STORE(fine, g, e, t, decoded(smooth, g, e.patch[0], f.o + t * f.dt, details));
 }
 
 /* Range: count; every copy of the listed corners, in the first slot's frame. */

@@ -225,7 +225,7 @@ void Multires::reconstruct(const std::vector<int>& affected)
   launch(q, d.decode_interior, tiles.first, tiles.second, fine, grid(f), patches, int(set.patches.size()), d.details,
          d.saved);
   if (f.n > 1 && !set.edges.empty())
-    launch(q, d.decode_edges, cl::NDRange(f.n - 1, round_up(set.edges.size(), kGroup)), cl::NDRange(1, kGroup), fine,
+    launch(q, d.decode_edges, cl::NDRange(round_up(set.edges.size(), kGroup)), cl::NDRange(kGroup), fine,
            grid(f), atlas_.edge_table(), edges, int(set.edges.size()), d.details, d.saved);
   if (!set.rings.empty())
     launch(q, d.decode_corners, cl::NDRange(round_up(set.rings.size(), kGroup)), cl::NDRange(kGroup), fine, grid(f),
