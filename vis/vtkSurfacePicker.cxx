@@ -11,6 +11,7 @@
 #include <vtkMapper.h>           // for vtkMapper
 #include <vtkMath.h>             // for vtkMath
 #include <vtkObjectFactory.h>    // for vtkStandardNewMacro
+#include <vtkOpenGLHardwareSelector.h> // for vtkOpenGLHardwareSelector
 #include <vtkPointData.h>        // for vtkPointData
 #include <vtkPolyData.h>         // for vtkPolyData
 #include <vtkRenderWindow.h>     // for vtkRenderWindow
@@ -23,11 +24,35 @@
 
 vtkStandardNewMacro(vtkSurfacePicker);
 
+namespace {
+
+// The item buffer with only the passes a pick reads: which actor, which
+// cell. VTK's selector also renders composite-block and point-id passes,
+// each a full frame of the surface; skipping them halves a capture.
+class vtkCellItemSelector : public vtkOpenGLHardwareSelector
+{
+public:
+  static vtkCellItemSelector* New();
+  vtkTypeMacro(vtkCellItemSelector, vtkOpenGLHardwareSelector);
+
+protected:
+  bool PassRequired(int pass) override
+  {
+    if (pass == COMPOSITE_INDEX_PASS || pass == POINT_ID_LOW24 || pass == POINT_ID_HIGH24)
+      return false;
+    return this->Superclass::PassRequired(pass);
+  }
+};
+
+vtkStandardNewMacro(vtkCellItemSelector);
+
+} // namespace
+
 struct vtkSurfacePicker::Internals
 {
   vtkSmartPointer<vtkRenderer> renderer;
   std::vector<vtkSmartPointer<vtkActor>> actors;
-  vtkNew<vtkHardwareSelector> selector;
+  vtkNew<vtkCellItemSelector> selector;
   bool captured = false;
   // Each actor's surface as it was drawn into the buffers: cell ids refer
   // to it even if the actor shows another one since (a coarser level while
