@@ -288,7 +288,7 @@ TEST_P(UndoProperty, DisplayFollowingChangesMatchesAFullRead)
     scatter(surface.painted_vertices(changes.patches), shown);
     const PaintedSurface full = surface.painted_surface();
     if (shared) {
-      surface.update_display_arrays(changes);
+      ASSERT_EQ(surface.display_arrays(), shared); // brought up to date, the same arrays
       expect_display(*shared, full, before);
     }
     ASSERT_TRUE(same_bits(shown.surface.points, full.surface.points));
@@ -311,6 +311,30 @@ TEST_P(UndoProperty, DisplayFollowingChangesMatchesAFullRead)
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, UndoProperty, testing::Values(1u, 2u, 3u, 4u));
+
+// The shared display arrays catch up with every change made since they were
+// last asked for, whoever asked, and follow a surface that turns two-sided.
+TEST(DisplayArrays, CatchUpWithChangesMadeWhileNobodyLooked)
+{
+  PaintSurface surface(test::runtime(), test::genus_two(), kLevel, AtlasStorage::Buffer);
+  const std::shared_ptr<DisplayArrays> first = surface.display_arrays();
+  if (!first)
+    GTEST_SKIP() << "the device's memory is its own";
+  const PaintedSurface start = surface.painted_surface();
+  StrokeMaker maker(7);
+  for (int k = 0; k < 6; ++k)
+    surface.apply(parse_one(maker.next()));
+  surface.undo();
+  const PaintedSurface now = surface.painted_surface();
+  ASSERT_EQ(surface.display_arrays(), first);
+  expect_display(*first, now, start);
+  surface.set_two_sided(true);
+  surface.apply(parse_one(maker.next()));
+  const std::shared_ptr<DisplayArrays> both = surface.display_arrays();
+  ASSERT_EQ(both->arrays().size(), 11u);
+  const PaintedSurface two_sided = surface.painted_surface();
+  expect_display(*both, two_sided, two_sided);
+}
 
 //! Strokes at coarser edit levels keep their details across strokes. These
 //! sessions make undo put back details that a later step replaced or moved

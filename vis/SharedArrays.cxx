@@ -88,7 +88,7 @@ void put(vtkPolyData* poly, const std::shared_ptr<DisplayArrays>& arrays, std::s
 void share_arrays(vtkPolyData* poly, const std::shared_ptr<DisplayArrays>& arrays)
 {
   for (std::size_t k = 0; k < arrays->arrays().size(); ++k)
-    if (slot(poly, arrays->arrays()[k]))
+    if (slot(poly, arrays->arrays()[k]) && arrays->data(k))
       put(poly, arrays, k);
 }
 
@@ -99,7 +99,7 @@ bool refresh_shared_arrays(vtkPolyData* poly, const std::shared_ptr<DisplayArray
   seen.resize(arrays->arrays().size(), 0);
   for (std::size_t k = 0; k < arrays->arrays().size(); ++k) {
     vtkDataArray* now = slot(poly, arrays->arrays()[k]);
-    if (!now)
+    if (!now || !arrays->data(k)) // not mapped back: keep what is drawn
       continue;
     if (now->GetVoidPointer(0) != arrays->data(k)) {
       put(poly, arrays, k);

@@ -20,7 +20,7 @@ namespace meshpaint {
 //! `arrays` alive for as long as it lives, whoever holds it.
 MESHPAINTVIS_EXPORT void share_arrays(vtkPolyData* poly, const std::shared_ptr<DisplayArrays>& arrays);
 
-//! After a write into `arrays` (PaintSurface::update_display_arrays):
+//! After a write into `arrays` (PaintSurface::display_arrays()):
 //! marks modified the VTK arrays whose values changed since `seen` (the
 //! DisplayArrays::version() of each when `poly` was last marked; updated
 //! here), so only those are uploaded again, and wraps again any whose

@@ -47,11 +47,10 @@ struct vtkPaintSurface::Internals
   std::optional<meshpaint::Project> project;
   std::map<std::string, vtkSmartPointer<vtkDataArray>> channels; // arrays handed out by GetChannel
   std::string history_text;                                      // what GetHistoryJSON() returned
-  // ShareArrays: the output's arrays over the surface's display arrays, and
-  // what they show (the surface, its change count, the arrays' versions).
+  // ShareArrays: the output's arrays over the surface's display arrays, the
+  // surface they belong to, and the arrays' versions they were marked for.
   vtkSmartPointer<vtkPolyData> shared;
   std::weak_ptr<meshpaint::PaintSurface> shared_from;
-  std::uint64_t shared_count = 0;
   std::vector<std::uint64_t> shared_seen;
 };
 
@@ -358,17 +357,14 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
     }
     if (!in.shared || in.shared_from.lock() != in.surface) {
       in.shared = meshpaint::to_polydata(in.surface->painted_surface());
-      in.surface->update_display_arrays(in.surface->changes_since(0)); // all, whoever wrote before
       meshpaint::share_arrays(in.shared, shared);
       in.shared_from = in.surface;
       in.shared_seen.clear();
       for (std::size_t k = 0; k < shared->arrays().size(); ++k)
         in.shared_seen.push_back(shared->version(k));
     } else {
-      in.surface->update_display_arrays(in.surface->changes_since(in.shared_count));
       meshpaint::refresh_shared_arrays(in.shared, shared, in.shared_seen);
     }
-    in.shared_count = in.surface->change_count();
     output->ShallowCopy(in.shared);
     this->SharingArrays = true;
   });

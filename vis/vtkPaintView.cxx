@@ -75,6 +75,7 @@ struct vtkPaintView::Internals
   // Least time per drawn quad of a frame at rest, in ms (0: none timed yet),
   // from which the automatic level of detail is chosen.
   double ms_per_face = 0;
+  std::array<int, 2> timed_size{}; // the window size it was timed at
   vtkNew<vtkRenderer> renderer;
   vtkNew<vtkRenderWindow> window;
   vtkNew<vtkRenderWindowInteractor> interactor;
@@ -217,6 +218,7 @@ void vtkPaintView::AddObject(std::shared_ptr<meshpaint::PaintSurface> surface, c
   in.scene.add(std::move(surface), name); // checks the level
   this->Level = in.scene.surface(0).level();
   in.drawings.push_back(std::make_unique<Drawing>());
+  in.ms_per_face = 0; // other objects draw at another rate
   in.moving = false;
   in.shown_level = this->Level;
   Drawing& d = *in.drawings.back();
@@ -337,6 +339,7 @@ int vtkPaintView::Initialize()
   // Multisampling triples the cost of a frame on a software rasterizer;
   // FXAA smooths the edges of frames at rest instead (see Show()).
   in.window->SetMultiSamples(0);
+  in.renderer->SetUseFXAA(this->AntiAliasing);
   in.window->SetOffScreenRendering(this->OffScreen ? 1 : 0);
   in.window->SetWindowName("meshpaint");
   in.interactor->SetRenderWindow(in.window);
@@ -370,8 +373,14 @@ void vtkPaintView::Render()
   if (in.shown_level != this->Level)
     return;
   // The least time seen is the drawing itself, without uploads after edits
-  // or a busy host.
+  // or a busy host; a new window size starts afresh (llvmpipe's cost is
+  // much per pixel).
   const std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
+  const int* size = in.window->GetSize();
+  if (size[0] != in.timed_size[0] || size[1] != in.timed_size[1]) {
+    in.ms_per_face = 0;
+    in.timed_size = {size[0], size[1]};
+  }
   const double per_face = took.count() / double(std::max<vtkIdType>(1, this->GetFaceCount()));
   if (in.ms_per_face == 0 || per_face < in.ms_per_face)
     in.ms_per_face = per_face;
@@ -414,6 +423,8 @@ int vtkPaintView::BeginStroke(int x, int y)
   double p[3], n[3];
   if (in.painting || !this->PickFacing(x, y, p, n))
     return 0;
+  for (std::size_t o = 0; o < in.scene.size(); ++o)
+    in.scene.surface(o).undo_log().set_budget(std::size_t(this->UndoBudget * 1048576.0));
   in.painting = true;
   in.ended = false;
   in.path = {meshpaint::Vec3{float(p[0]), float(p[1]), float(p[2])}};
@@ -477,12 +488,23 @@ int vtkPaintView::EndStroke()
   // The pieces were for the eye: the stroke is the whole path, applied once.
   // Undo gives back the surface and its multiresolution details bit for
   // bit, so this is what a replay of the recording does.
+  std::string note;
   const int ok = meshpaint::guarded(this->LastError, [&] {
-    for (; in.pieces > 0; --in.pieces)
-      in.scene.undo();
-    in.scene.apply(in.brush->stroke(in.path));
+    int undone = 0;
+    while (undone < in.pieces && in.scene.undo())
+      ++undone;
+    if (undone == in.pieces) {
+      in.scene.apply(in.brush->stroke(in.path));
+    } else {
+      // The undo budget forgot a piece already (one step larger than the
+      // whole budget): the pieces stay strokes of their own, as recorded.
+      for (; undone > 0; --undone)
+        in.scene.redo();
+      note = "undo budget too small for this stroke: kept as " + std::to_string(in.pieces) + " strokes";
+    }
+    in.pieces = 0;
   });
-  this->Message = ok ? "" : this->LastError;
+  this->Message = ok ? note : this->LastError;
   this->Refresh(true);
   return ok;
 }
@@ -588,9 +610,8 @@ vtkPolyData* vtkPaintView::Surface(std::size_t object, int level)
     // VTK's), and only the arrays that changed are marked (and uploaded).
     const meshpaint::PatchChanges changes = surface.changes_since(d.full_count);
     d.full_count = surface.change_count();
-    const auto shared = d.shared ? surface.display_arrays() : nullptr;
+    const auto shared = d.shared ? surface.display_arrays() : nullptr; // brought up to date
     if (shared) {
-      surface.update_display_arrays(changes);
       if (meshpaint::refresh_shared_arrays(d.full, shared, d.seen))
         d.coarse = nullptr; // it shares the arrays that moved
     } else if (changes.all) {

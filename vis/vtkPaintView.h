@@ -107,6 +107,10 @@ public:
   vtkSetMacro(ShareArrays, bool);
   vtkGetMacro(ShareArrays, bool);
   vtkBooleanMacro(ShareArrays, bool);
+  /// Memory the undo steps of each object may take, in MiB (default 512);
+  /// the oldest steps go first.
+  vtkSetClampMacro(UndoBudget, double, 0.0, 1.0e9);
+  vtkGetMacro(UndoBudget, double);
   /// Whether object `object` is drawn from shared arrays now.
   bool IsSharingArrays(int object = 0);
   /// Quads of the painted surface at the painting level.
@@ -242,6 +246,7 @@ protected:
   double LodFrameRate = 10;
   bool AntiAliasing = true;
   bool ShareArrays = true;
+  double UndoBudget = 512;
   int SubsurfacePasses = 0;
   std::string Device;
   std::string Storage;

@@ -25,6 +25,7 @@ DisplayArrays::DisplayArrays(std::shared_ptr<Runtime> runtime, std::size_t verti
                             std::max<std::size_t>(1, vertices_) * std::size_t(a.components) * 4);
     flags_ = cl::Buffer(runtime_->context(), CL_MEM_READ_WRITE, arrays_.size() * sizeof(int));
     mapped_.assign(arrays_.size(), nullptr);
+    last_.assign(arrays_.size(), nullptr);
     changed_.assign(arrays_.size(), 0);
     versions_.assign(arrays_.size(), 0);
     map_all();
@@ -35,11 +36,10 @@ DisplayArrays::DisplayArrays(std::shared_ptr<Runtime> runtime, std::size_t verti
 
 DisplayArrays::~DisplayArrays()
 {
-  if (!mapped_now_)
-    return;
   try {
     for (std::size_t k = 0; k < buffers_.size(); ++k)
-      runtime_->queue().enqueueUnmapMemObject(buffers_[k], mapped_[k]);
+      if (mapped_[k])
+        runtime_->queue().enqueueUnmapMemObject(buffers_[k], mapped_[k]);
     runtime_->queue().finish();
   } catch (const cl::Error&) { // nothing to do about it while tearing down
   }
@@ -48,32 +48,39 @@ DisplayArrays::~DisplayArrays()
 void DisplayArrays::map_all()
 {
   for (std::size_t k = 0; k < buffers_.size(); ++k)
-    mapped_[k] = runtime_->queue().enqueueMapBuffer(buffers_[k], CL_TRUE, CL_MAP_READ | CL_MAP_WRITE, 0,
-                                                    std::max<std::size_t>(1, vertices_) *
-                                                      std::size_t(arrays_[k].components) * 4);
-  mapped_now_ = true;
+    if (!mapped_[k])
+      mapped_[k] = runtime_->queue().enqueueMapBuffer(buffers_[k], CL_TRUE, CL_MAP_READ | CL_MAP_WRITE, 0,
+                                                      std::max<std::size_t>(1, vertices_) *
+                                                        std::size_t(arrays_[k].components) * 4);
 }
 
 const std::vector<cl::Buffer>& DisplayArrays::begin_write()
 {
-  if (mapped_now_) {
-    for (std::size_t k = 0; k < buffers_.size(); ++k)
+  for (std::size_t k = 0; k < buffers_.size(); ++k)
+    if (mapped_[k]) {
       runtime_->queue().enqueueUnmapMemObject(buffers_[k], mapped_[k]);
-    mapped_now_ = false;
-  }
+      last_[k] = mapped_[k];
+      mapped_[k] = nullptr;
+    }
   std::fill(changed_.begin(), changed_.end(), 0);
   runtime_->queue().enqueueWriteBuffer(flags_, CL_TRUE, 0, changed_.size() * sizeof(int), changed_.data());
   return buffers_;
 }
 
-bool DisplayArrays::end_write()
+bool DisplayArrays::end_write() noexcept
 {
-  runtime_->queue().enqueueReadBuffer(flags_, CL_TRUE, 0, changed_.size() * sizeof(int), changed_.data());
+  try {
+    runtime_->queue().enqueueReadBuffer(flags_, CL_TRUE, 0, changed_.size() * sizeof(int), changed_.data());
+  } catch (const cl::Error&) {
+    std::fill(changed_.begin(), changed_.end(), 1); // unknown: as if all changed
+  }
   for (std::size_t k = 0; k < changed_.size(); ++k)
     versions_[k] += changed_[k] != 0;
-  const std::vector<void*> before = mapped_;
-  map_all();
-  return mapped_ != before;
+  try {
+    map_all();
+  } catch (const cl::Error&) { // unmapped ones stay null; the next write maps them again
+  }
+  return mapped_ != last_;
 }
 
 } // namespace meshpaint

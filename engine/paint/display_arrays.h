@@ -41,6 +41,7 @@ public:
   std::size_t vertices() const { return vertices_; }
   const std::vector<Array>& arrays() const { return arrays_; }
   //! Host address of array k; valid until a write moves it (end_write()).
+  //! Null while the device holds it, or when mapping it back failed.
   void* data(std::size_t k) const { return mapped_[k]; }
   //! Whether array k changed in the last write.
   bool changed(std::size_t k) const { return changed_[k] != 0; }
@@ -53,9 +54,10 @@ public:
   //! the flags (one int per array).
   const std::vector<cl::Buffer>& begin_write();
   const cl::Buffer& flags() const { return flags_; }
-  //! Back to the host once the device's writes are done. True when an
-  //! address moved (the viewer must wrap the arrays again).
-  bool end_write();
+  //! Back to the host once the device's writes are done (never throws: a
+  //! flag it cannot read counts as changed). True when an address moved
+  //! (the viewer must wrap the arrays again).
+  bool end_write() noexcept;
 
 private:
   void map_all();
@@ -64,11 +66,11 @@ private:
   std::size_t vertices_;
   std::vector<Array> arrays_;
   std::vector<cl::Buffer> buffers_;
-  std::vector<void*> mapped_;
+  std::vector<void*> mapped_; // null: not mapped
+  std::vector<void*> last_;   // the addresses before the last write
   std::vector<int> changed_;
   std::vector<std::uint64_t> versions_;
   cl::Buffer flags_;
-  bool mapped_now_ = false;
 };
 
 } // namespace meshpaint

@@ -1176,6 +1176,7 @@ void PaintSurface::set_two_sided(bool on)
 {
   if (on == two_sided_)
     return;
+  display_ = nullptr; // made again with (or without) the inside's arrays
   Device& d = *device_;
   Runtime& rt = atlas_->runtime();
   const std::size_t bytes = atlas_->layout(level_).texels() * sizeof(Float4);

@@ -137,14 +137,11 @@ public:
   //! read from those tiles alone: for displays that follow the brush.
   PaintedVertices painted_vertices(const std::vector<int>& patches);
   //! painted_surface()'s arrays in device buffers in host memory, which a
-  //! viewer draws from without a copy; made and filled on first use, kept
-  //! current by update_display_arrays(). Null where the device's memory is
-  //! its own (use painted_vertices() there).
+  //! viewer draws from without a copy: made on first use, and brought up to
+  //! date by every call, on the device, for the patches changed since the
+  //! last (DisplayArrays says which arrays changed). Null where the
+  //! device's memory is its own (use painted_vertices() there).
   std::shared_ptr<DisplayArrays> display_arrays();
-  //! Rewrites the welded vertices of the patches in `changes` (all of them
-  //! when `changes.all`) in display_arrays(), on the device; the arrays say
-  //! which of them changed.
-  void update_display_arrays(const PatchChanges& changes);
   //! A count that grows with every change of the surface, and what changed
   //! after a given count: a display keeps the count of what it shows.
   std::uint64_t change_count() const { return change_count_; }

@@ -185,40 +185,34 @@ struct PaintSurface::Display
   std::shared_ptr<DisplayArrays> arrays;
   cl::Program program;
   cl::Kernel vertices, inside;
-  cl::Buffer vertex_of; // texel_vertices() on the device
+  cl::Buffer vertex_of;         // texel_vertices() on the device
+  std::uint64_t shows = 0;      // the change_count() the arrays show; 0: nothing yet
 };
 
 std::shared_ptr<DisplayArrays> PaintSurface::display_arrays()
 {
-  if (display_)
-    return display_->arrays;
-  if (!DisplayArrays::supported(atlas_->runtime()))
-    return nullptr;
-  Runtime& rt = atlas_->runtime();
-  auto d = std::make_shared<Display>();
-  try {
-    d->program = build_program(rt, std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "display.cl"},
-                               storage_options(atlas_->storage()));
-    d->vertices = cl::Kernel(d->program, "display_vertices");
-    d->inside = cl::Kernel(d->program, "display_inside");
-    d->vertex_of = device_ints(rt.context(), texel_vertices());
-  } catch (const cl::Error& e) {
-    throw DeviceError("cannot set up the display arrays on " + rt.info().name + ": " + describe(e));
+  if (!display_) {
+    if (!DisplayArrays::supported(atlas_->runtime()))
+      return nullptr;
+    Runtime& rt = atlas_->runtime();
+    auto d = std::make_shared<Display>();
+    try {
+      d->program = build_program(rt, std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "display.cl"},
+                                 storage_options(atlas_->storage()));
+      d->vertices = cl::Kernel(d->program, "display_vertices");
+      d->inside = cl::Kernel(d->program, "display_inside");
+      d->vertex_of = device_ints(rt.context(), texel_vertices());
+    } catch (const cl::Error& e) {
+      throw DeviceError("cannot set up the display arrays on " + rt.info().name + ": " + describe(e));
+    }
+    d->arrays = std::make_shared<DisplayArrays>(atlas_->shared_runtime(), atlas_->topology().unique_vertices(level_),
+                                                two_sided_);
+    display_ = d;
   }
-  d->arrays = std::make_shared<DisplayArrays>(atlas_->shared_runtime(), atlas_->topology().unique_vertices(level_),
-                                              two_sided_);
-  display_ = d;
-  PatchChanges all;
-  all.all = true;
-  update_display_arrays(all);
-  return display_->arrays;
-}
-
-void PaintSurface::update_display_arrays(const PatchChanges& changes)
-{
-  if (!display_ && !display_arrays())
-    return;
   Display& d = *display_;
+  if (d.shows != 0 && d.shows == change_count_)
+    return d.arrays;
+  const PatchChanges changes = changes_since(d.shows); // everything the first time
   const std::vector<int>* listed = changes.all ? nullptr : &changes.patches;
   const LevelLayout l = atlas_->layout(level_);
   const int count = listed ? int(listed->size()) : l.patches;
@@ -226,22 +220,31 @@ void PaintSurface::update_display_arrays(const PatchChanges& changes)
   try {
     const cl::Memory& positions = atlas_->limit_positions_layer(); // brought up to date first
     const cl::Memory& normals = atlas_->limit_normals_layer();
-    const std::vector<cl::Buffer>& out = d.arrays->begin_write();
     const cl::Buffer list = listed ? device_ints(rt.context(), *listed) : cl::Buffer();
+    // Whatever happens on the device, the arrays go back to the host:
+    // viewers point at them.
+    struct Remap
+    {
+      DisplayArrays& arrays;
+      ~Remap() { arrays.end_write(); }
+    } remap{*d.arrays};
+    const std::vector<cl::Buffer>& out = d.arrays->begin_write();
     if (count > 0) {
       const auto tiles = range_tiles(l, count);
       launch(rt.queue(), d.vertices, tiles.first, tiles.second, positions, normals, *layer(kDiffuse).second,
-             *layer(kSpecular).second, *layer(kMaterial).second, grid(l), list, count, d.vertex_of, out[0], out[1], out[2], out[3],
-             out[4], out[5], out[6], out[7], d.arrays->flags());
+             *layer(kSpecular).second, *layer(kMaterial).second, grid(l), list, count, d.vertex_of, out[0], out[1],
+             out[2], out[3], out[4], out[5], out[6], out[7], d.arrays->flags());
       if (two_sided_)
         launch(rt.queue(), d.inside, tiles.first, tiles.second, *layer(kInsideDiffuse).second,
-               *layer(kInsideSpecular).second, *layer(kInsideMaterial).second, grid(l), list, count, d.vertex_of, out[8], out[9], out[10],
-               d.arrays->flags());
+               *layer(kInsideSpecular).second, *layer(kInsideMaterial).second, grid(l), list, count, d.vertex_of,
+               out[8], out[9], out[10], d.arrays->flags());
     }
-    d.arrays->end_write(); // waits for the kernels, so the list may go
   } catch (const cl::Error& e) {
+    d.shows = 0; // written in part, if at all: all of it next time
     throw DeviceError("updating the display arrays failed on " + rt.info().name + ": " + describe(e));
   }
+  d.shows = change_count_;
+  return d.arrays;
 }
 
 void PaintSurface::changed(const std::vector<int>& patches)

@@ -140,6 +140,18 @@ def save_and_replay(view, tmp_path):
     return arrays(read_vtp(session / "surface.vtp")), arrays(read_vtp(replay / "surface.vtp"))
 
 
+def test_an_undo_budget_smaller_than_a_stroke_keeps_its_pieces(tmp_path):
+    view = open_view(tmp_path)
+    view.SetUndoBudget(0.001)  # 1 KiB: no piece's undo step fits
+    drag(view, line(150, 120, 260, 180, 5))
+    strokes = json.loads(view.GetRecording())["strokes"]
+    assert len(strokes) > 1  # the pieces could not be undone and joined
+    assert view.GetMessage().startswith("undo budget too small for this stroke")
+    live, again = save_and_replay(view, tmp_path)
+    for name in live:
+        assert live[name].tobytes() == again[name].tobytes(), name
+
+
 def test_coarse_level_edits_replay_to_the_same_bits(tmp_path):
     view = open_view(tmp_path)
     for _ in range(3):
