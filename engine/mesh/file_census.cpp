@@ -1,6 +1,6 @@
 #include "mesh/file_census.h"
 
-#include <algorithm> // for std::max, std::all_of
+#include <algorithm> // for std::max, std::all_of, std::none_of
 #include <cctype>    // for std::tolower, std::isprint
 #include <cerrno>    // for errno, ERANGE
 #include <cmath>     // for std::isfinite, std::fabs
@@ -91,8 +91,13 @@ bool check_ply_header_line(const std::vector<std::string>& w, long number, bool 
   else if (k == "format")
     ok = w.size() == 3 && (w[1] == "ascii" || w[1] == "binary_little_endian" || w[1] == "binary_big_endian") &&
          w[2] == "1.0";
-  else if (k == "comment" || k == "obj_info")
+  else if (k == "comment")
     ok = true;
+  else if (k == "obj_info") // OpenMesh reads on in it for keywords: "element" there loops, "property" crashes
+    ok = std::none_of(w.begin() + 1, w.end(), [](const std::string& word) {
+      return word == "ply" || word == "format" || word == "comment" || word == "obj_info" || word == "element" ||
+             word == "property" || word == "end_header";
+    });
   else if (k == "element")
     ok = w.size() == 3 && w[2].find_first_not_of("0123456789") == std::string::npos && w[2].size() < 10;
   else if (k == "property") // OpenMesh leaks on a property outside an element
