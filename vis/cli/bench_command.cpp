@@ -138,7 +138,7 @@ int bench_view(const Args& args);
 
 int bench_command(const Argv& argv)
 {
-  Args args("bench", argv, {"--json"}, {"--level", "--repeats", "--steps", "--tool", "--device", "--storage"});
+  Args args("bench", argv, {"--json"}, {"--level", "--repeats", "--steps", "--tool", "--mesh", "--device", "--storage"});
   const std::string what = args.positionals().empty() ? "" : args.positionals()[0];
   if (what == "subdivide")
     return bench_subdivide(args);
@@ -147,7 +147,8 @@ int bench_command(const Argv& argv)
   if (what == "view")
     return bench_view(args);
   throw InputError("usage: meshpaint bench subdivide MESH [--level L] [--json] [--repeats N] | "
-                   "meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint] | meshpaint bench view [--steps N]");
+                   "meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] | "
+                   "meshpaint bench view [--steps N]");
 }
 
 } // namespace meshpaint::cli

@@ -191,12 +191,15 @@ SmoothingResult bench_smoothing(PaintSurface& surface, int iterations, int repea
 
 int bench_paint(const Args& args)
 {
-  args.expect_positionals(1, 1, "paint [--json] [--steps N] [--tool sculpt|paint]");
+  args.expect_positionals(1, 1, "paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo]");
   const int steps = args.integer("--steps", 21, 1, 1000);
   const std::string tool = args.value("--tool", "sculpt");
   if (tool != "sculpt" && tool != "paint")
     throw InputError("--tool must be sculpt or paint, not '" + tool + "'");
   const bool json = args.flag("--json");
+  const std::string only = args.value("--mesh", "");
+  if (!only.empty() && only != "femur" && only != "armadillo")
+    throw InputError("--mesh must be femur or armadillo, not '" + only + "'");
   auto runtime = open_device(args);
   const AtlasStorage storage =
     args.has("--storage") ? parse_storage(args.value("--storage")) : default_storage(runtime->info());
@@ -208,6 +211,8 @@ int bench_paint(const Args& args)
                 "encoding 1% ms", "10% ms", "50% ms"});
   std::string json_rows, json_smooth, json_coarse;
   for (const Row& row : kRows) {
+    if (!only.empty() && row.mesh != only + ".off")
+      continue;
     const BaseMesh mesh = load_mesh(scans_dir() + "/" + row.mesh);
     PaintSurface surface(runtime, mesh, row.level, storage);
     surface.undo_log().set_recording(false); // the paper's step has no undo
