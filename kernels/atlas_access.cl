@@ -13,6 +13,14 @@
 
 #pragma OPENCL FP_CONTRACT OFF
 
+/* Helpers that a kernel calls per texel: PoCL's compiler leaves some of
+ * them as calls, which keeps its work-item loops from vectorising. */
+#ifdef __clang__
+#define TEXEL_INLINE inline __attribute__((always_inline))
+#else
+#define TEXEL_INLINE inline
+#endif
+
 /* Texel (p, ij) of grid g in patch-major order: buffers of any per-texel
  * data (weights, details) and the buffer storage path share it. */
 #define PATCH_MAJOR_INDEX(g, p, ij) (((p) * (g).x + (ij).y) * (g).x + (ij).x)

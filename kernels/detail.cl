@@ -12,7 +12,7 @@
  * smooth surface U is framed, and each texel is encoded and decoded in the
  * frame of one tile, so a frame need not agree across tiles: it must only
  * turn with the surface. */
-inline void detail_frame(ATLAS_IN pos, int2 g, int p, int2 ij, float3 *t, float3 *b, float3 *n)
+TEXEL_INLINE void detail_frame(ATLAS_IN pos, int2 g, int p, int2 ij, float3 *t, float3 *b, float3 *n)
 {
   const int last = g.x - 1;
   float3 d[2];
@@ -46,7 +46,7 @@ __kernel void encode_details(ATLAS_IN fine, ATLAS_IN smooth, int2 g, int count, 
 }
 
 /* U + frame(U) details at texel ij of patch p. */
-inline float4 decoded(ATLAS_IN smooth, int2 g, int p, int2 ij, __global const float4 *details)
+TEXEL_INLINE float4 decoded(ATLAS_IN smooth, int2 g, int p, int2 ij, __global const float4 *details)
 {
   float3 t, b, n;
   detail_frame(smooth, g, p, ij, &t, &b, &n);
