@@ -235,7 +235,7 @@ inline int tile_part(int2 ij, int n)
  * brush (also on faces the back-face policy skips), and in `plane` the offset
  * from the centre on the brush plane in world units, where the stamp lies.
  * unfold: the dab's PatchUnfolding per listed patch (parameter space). */
-inline float brush_t(__global const BrushDab *dab, __global const PatchUnfolding *unfold, int a, float3 x, float3 nx,
+TEXEL_INLINE float brush_t(__global const BrushDab *dab, __global const PatchUnfolding *unfold, int a, float3 x, float3 nx,
                      int2 ij, int n, float2 *plane)
 {
   const float3 d = x - vload3(0, dab->centre);
@@ -347,10 +347,11 @@ inline float4 paint_blend(__global const BrushDab *dab, int c, float4 surface, f
  * stored copies included, so copies stay identical. unfold: a parameter
  * dab's maps, one per active patch (dab->unfolded; one unused entry for the
  * other spaces). */
-__kernel void paint_dab(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *active, int active_count,
-                        __global const BrushDab *dab, __global const PatchUnfolding *unfold,
-                        __global const float *raster, __global const float *stamp,
-                        __global float4 *diffuse, __global float4 *specular, __global float4 *material)
+__kernel void paint_dab(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *restrict active, int active_count,
+                        __global const BrushDab *restrict dab, __global const PatchUnfolding *restrict unfold,
+                        __global const float *restrict raster, __global const float *restrict stamp,
+                        __global float4 *restrict diffuse, __global float4 *restrict specular,
+                        __global float4 *restrict material)
 {
   const int i = get_global_id(0), y = get_global_id(1);
   const int a = y / g.x, j = y - a * g.x;

@@ -13,10 +13,11 @@
  * falloff x strength x (1 - mask), 0 outside the radius. The mask lives at
  * the finest level (grid gm): texel ij of grid g is texel ij * stride there.
  * unfold: as for paint_dab, one per listed patch; its maps hold at any level. */
-__kernel void dab_weights(ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g, __global const int *list, int count,
-                          __global const BrushDab *dab, __global const PatchUnfolding *unfold,
-                          __global const float *stamp, __global const float4 *material, int2 gm, int stride,
-                          __global float *weights)
+__kernel void dab_weights(ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g, __global const int *restrict list,
+                          int count, __global const BrushDab *restrict dab,
+                          __global const PatchUnfolding *restrict unfold, __global const float *restrict stamp,
+                          __global const float4 *restrict material, int2 gm, int stride,
+                          __global float *restrict weights)
 {
   int p;
   int2 ij;
