@@ -147,7 +147,7 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
   }
   in_stroke_.assign(std::size_t(l.patches), 0);
   mark_.assign(std::size_t(l.patches), 0);
-  record_slot_.assign(std::size_t(l.patches), nullptr);
+  open_sides_.assign(std::size_t(l.patches), 0);
   changed_at_.assign(std::size_t(l.patches), 0);
   const AtlasTopology& topo = atlas_->topology();
   neighbours_.resize(std::size_t(l.patches));
@@ -403,30 +403,37 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
 
   // Flood from the centre's patch over the culled patches; `mark_` holds,
   // per patch, 2 * generation for "culled" and 2 * generation + 1 for
-  // "reached", so nothing needs clearing between dabs.
+  // "reached", so nothing needs clearing between dabs. The flood reads only
+  // arrays indexed by patch: the records lie in the order the kernel
+  // appended them, and looking them up made it wait on memory.
   const std::uint32_t culled = 2 * ++generation_, reached = culled + 1;
   for (const CullRecord& c : records) {
     mark_[std::size_t(c.patch)] = culled;
-    record_slot_[std::size_t(c.patch)] = &c; // for the sides' distances
+    std::uint8_t open = 0;
+    for (int s = 0; s < 4; ++s)
+      open |= std::uint8_t(c.side_distance[s] <= reach) << s;
+    open_sides_[std::size_t(c.patch)] = open;
   }
-  std::vector<int> stack;
+  // Breadth first: a patch waits in the queue long enough for the prefetch
+  // of its neighbours to arrive (depth first pops it at once).
+  std::vector<int> queue;
   const auto visit = [&](int p) {
     if (mark_[std::size_t(p)] == culled) {
       mark_[std::size_t(p)] = reached;
-      stack.push_back(p);
+      queue.push_back(p);
+      __builtin_prefetch(&neighbours_[std::size_t(p)]);
+      __builtin_prefetch(&open_sides_[std::size_t(p)]);
     }
   };
   visit(start_patch);
-  std::size_t count = 0;
-  while (!stack.empty()) {
-    const int p = stack.back();
-    stack.pop_back();
-    ++count;
-    const CullRecord& rec = *record_slot_[std::size_t(p)];
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const int p = queue[head];
+    const std::uint8_t open = open_sides_[std::size_t(p)];
     for (int s = 0; s < 4; ++s)
-      if (rec.side_distance[s] <= reach && neighbours_[std::size_t(p)][s] >= 0)
+      if ((open >> s & 1) && neighbours_[std::size_t(p)][s] >= 0)
         visit(neighbours_[std::size_t(p)][s]);
   }
+  const std::size_t count = queue.size();
   // In patch order: for big brushes a scan of the marks beats a sort.
   std::vector<int> active;
   active.reserve(count);

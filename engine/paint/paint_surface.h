@@ -10,7 +10,7 @@
 #include "paint/undo_log.h"
 
 #include <array>   // for std::array
-#include <cstdint> // for std::uint32_t
+#include <cstdint> // for std::uint32_t, std::uint8_t
 #include <memory>  // for std::unique_ptr
 #include <optional> // for std::optional
 #include <vector> // for std::vector
@@ -248,7 +248,7 @@ private:
   std::vector<char> in_stroke_;       // per patch: already in stroke_before_
   std::vector<std::array<int, 4>> neighbours_; // per patch side: the patch across, -1 on a border
   std::vector<std::uint32_t> mark_;   // per patch: culled / reached in dab `generation_`
-  std::vector<const CullRecord*> record_slot_; // per patch: its record in the current dab
+  std::vector<std::uint8_t> open_sides_; // per patch: bit s set if side s comes within the dab's reach
   std::uint32_t generation_ = 0;
   const std::vector<char>* dab_mask_ = nullptr; // apply(stroke, dabs): the dabs for this surface
   bool two_sided_ = false;
