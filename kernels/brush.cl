@@ -33,72 +33,91 @@ __kernel void patch_bounds(ATLAS_IN pos, int2 g, __global const int *list, int c
   bounds[p] = (float4)(c, sqrt(r2));
 }
 
-/* Range: #patches. Appends a record for each patch with a texel within
- * `radius` of `centre`: its closest texel and the closest distance over each
- * of its sides, from which the host finds the patches connected to the
- * centre along the surface. Patches whose bounding sphere misses the ball
- * cost one test. With `sides_only`, so do patches whose sphere lies inside
- * the ball: their sides then hold an upper bound (within the radius) and
- * closest_texel is -1, as the flood needs no more. `count` may pass
- * `capacity`; the host then grows the record buffer and runs again. */
-__kernel void brush_cull(ATLAS_IN pos, ATLAS_IN nrm, int2 g, int patches, __global const float4 *bounds,
-                         float4 centre, float radius, int sides_only, __global CullRecord *records,
-                         __global int *count, int capacity)
+/* Distance from c to the closest texel of patch p (its tile index in
+ * *texel), and in side[s] to the closest texel on side s. */
+inline float patch_distances(ATLAS_IN pos, int2 g, int p, float3 c, float side[4], int *texel)
 {
-  const int p = get_global_id(0);
-  if (p >= patches)
-    return;
-  const float4 b = bounds[p];
-  const float to_sphere = distance(b.xyz, centre.xyz);
-  if (to_sphere - b.w > radius)
-    return;
-  if (sides_only && to_sphere + b.w <= radius) {
-    const int k = atomic_inc(count);
-    if (k >= capacity)
-      return;
-    CullRecord r;
-    r.patch = p;
-    r.closest_texel = -1;
-    r.distance = fmax(to_sphere - b.w, 0.0f);
-    for (int s = 0; s < 4; ++s)
-      r.side_distance[s] = to_sphere + b.w;
-    r.pad = 0;
-    vstore4(b, 0, r.closest_position);
-    vstore4((float4)(0.0f), 0, r.closest_normal);
-    records[k] = r;
-    return;
-  }
   const int n = g.x - 1;
-  float best = INFINITY, side[4] = {INFINITY, INFINITY, INFINITY, INFINITY};
-  int best_texel = 0;
+  float best = INFINITY;
+  *texel = 0;
+  for (int s = 0; s < 4; ++s)
+    side[s] = INFINITY;
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) {
-      const float d = distance(ATLAS_LOAD(pos, g, p, (int2)(i, j)).xyz, centre.xyz);
+      const float d = distance(ATLAS_LOAD(pos, g, p, (int2)(i, j)).xyz, c);
       if (d < best) {
         best = d;
-        best_texel = j * g.x + i;
+        *texel = j * g.x + i;
       }
       if (j == 0) side[0] = fmin(side[0], d);
       if (i == n) side[1] = fmin(side[1], d);
       if (j == n) side[2] = fmin(side[2], d);
       if (i == 0) side[3] = fmin(side[3], d);
     }
-  if (best > radius)
+  return best;
+}
+
+/* Range: #patches. Appends a record for each patch with a texel within
+ * `radius` of `centre`: its closest texel, from which the host snaps the
+ * brush centre. Patches whose bounding sphere misses the ball cost one test.
+ * `count` may pass `capacity`; the host then grows the record buffer and
+ * runs again. */
+__kernel void brush_cull(ATLAS_IN pos, ATLAS_IN nrm, int2 g, int patches, __global const float4 *bounds,
+                         float4 centre, float radius, __global CullRecord *records, __global int *count,
+                         int capacity)
+{
+  const int p = get_global_id(0);
+  if (p >= patches)
+    return;
+  const float4 b = bounds[p];
+  if (distance(b.xyz, centre.xyz) - b.w > radius)
+    return;
+  CullRecord r;
+  r.distance = patch_distances(pos, g, p, centre.xyz, r.side_distance, &r.closest_texel);
+  if (r.distance > radius)
     return;
   const int k = atomic_inc(count);
   if (k >= capacity)
     return;
-  CullRecord r;
   r.patch = p;
-  r.closest_texel = best_texel;
-  r.distance = best;
-  for (int s = 0; s < 4; ++s)
-    r.side_distance[s] = side[s];
   r.pad = 0;
-  const int2 ij = (int2)(best_texel % g.x, best_texel / g.x);
+  const int2 ij = (int2)(r.closest_texel % g.x, r.closest_texel / g.x);
   vstore4(ATLAS_LOAD(pos, g, p, ij), 0, r.closest_position);
   vstore4(ATLAS_LOAD(nrm, g, p, ij), 0, r.closest_normal);
   records[k] = r;
+}
+
+/* Range: #patches. Appends a record for each patch with a texel within
+ * `reach` of `centre`, with the sides that come within it, from which the
+ * host finds the patches connected to the centre along the surface. A
+ * patch whose bounding sphere lies inside the ball has all four sides open
+ * without a look at its texels. Records are 8 bytes: a big brush appends
+ * most of the atlas. `count` and `capacity` as for brush_cull. */
+__kernel void brush_reach(ATLAS_IN pos, int2 g, int patches, __global const float4 *bounds, float4 centre,
+                          float reach, __global ReachRecord *records, __global int *count, int capacity)
+{
+  const int p = get_global_id(0);
+  if (p >= patches)
+    return;
+  const float4 b = bounds[p];
+  const float to_sphere = distance(b.xyz, centre.xyz);
+  if (to_sphere - b.w > reach)
+    return;
+  int open = 15;
+  if (!(to_sphere + b.w <= reach)) {
+    float side[4];
+    int texel;
+    if (patch_distances(pos, g, p, centre.xyz, side, &texel) > reach)
+      return;
+    open = 0;
+    for (int s = 0; s < 4; ++s)
+      open |= (side[s] <= reach) << s;
+  }
+  const int k = atomic_inc(count);
+  if (k < capacity) {
+    records[k].patch = p;
+    records[k].open_sides = open;
+  }
 }
 
 /* Gradient noise in [-1, 1] from an integer hash: no tables to upload. */

@@ -388,10 +388,10 @@ PatchSet Atlas::patch_set(const std::vector<int>& patches, Reach reach) const
       if (!vertex_seen[std::size_t(v)]) {
         vertex_seen[std::size_t(v)] = 1;
         const CornerRing& ring = topology_.rings[v];
-        bool all = true;
-        for (int m = 0; m < ring.count && all; ++m)
+        bool all = true; // only Reach::All looks at the patches around
+        for (int m = 0; m < ring.count && all && reach == Reach::All; ++m)
           all = listed[std::size_t(topology_.slots[ring.first + m].patch)] != 0;
-        if (reach == Reach::Any || all)
+        if (all)
           set.rings.push_back(device_ring_[v]);
       }
     }

@@ -165,6 +165,7 @@ std::vector<int> Multires::grow(const std::vector<int>& patches, int rings) cons
 {
   const AtlasTopology& topo = atlas_.topology();
   std::vector<char> in(std::size_t(topo.patch_count), 0);
+  std::vector<char> ring_done(topo.rings.size(), 0); // each corner ring once, not once per patch at it
   std::vector<int> out = patches;
   for (const int p : out)
     in[std::size_t(p)] = 1;
@@ -173,7 +174,11 @@ std::vector<int> Multires::grow(const std::vector<int>& patches, int rings) cons
     const std::size_t to = out.size();
     for (std::size_t k = from; k < to; ++k)
       for (int c = 0; c < 4; ++c) {
-        const CornerRing& ring = topo.rings[std::size_t(topo.patch_corners[std::size_t(out[k])][c])];
+        const int v = topo.patch_corners[std::size_t(out[k])][c];
+        if (ring_done[std::size_t(v)])
+          continue;
+        ring_done[std::size_t(v)] = 1;
+        const CornerRing& ring = topo.rings[std::size_t(v)];
         for (int m = 0; m < ring.count; ++m) {
           const int q = topo.slots[std::size_t(ring.first + m)].patch;
           if (!in[std::size_t(q)]) {

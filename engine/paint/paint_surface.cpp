@@ -19,6 +19,42 @@ namespace {
 
 constexpr std::size_t kGroup = 64;
 
+//! A kernel's appended records: a buffer that grows to what a run needed.
+struct AppendBuffer
+{
+  cl::Buffer records;
+  std::size_t capacity = 0;
+};
+
+//! Runs a kernel over `patches` items that appends records of type Record
+//! (its last three arguments: the records, their count and the capacity)
+//! and reads back what it appended, in no particular order. A buffer found
+//! too small grows and the kernel runs once more.
+template <typename Record, typename... Args>
+std::vector<Record> run_appending(Runtime& rt, cl::Kernel& kernel, int patches, AppendBuffer& out,
+                                  const cl::Buffer& count_buffer, const Args&... args)
+{
+  cl_int count = 0;
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    if (out.capacity == 0) {
+      out.capacity = std::min<std::size_t>(std::max(patches, 1), 4096);
+      out.records = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(Record) * out.capacity);
+    }
+    rt.queue().enqueueFillBuffer(count_buffer, cl_int(0), 0, sizeof count); // no wait: the queue is in order
+    launch(rt.queue(), kernel, cl::NDRange(round_up(std::size_t(patches), kGroup)), cl::NDRange(kGroup), args...,
+           out.records, count_buffer, cl_int(out.capacity));
+    rt.queue().enqueueReadBuffer(count_buffer, CL_TRUE, 0, sizeof count, &count);
+    if (std::size_t(count) <= out.capacity)
+      break;
+    out.capacity = std::size_t(count);
+    out.records = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(Record) * out.capacity);
+  }
+  std::vector<Record> records(static_cast<std::size_t>(count));
+  if (count > 0)
+    rt.queue().enqueueReadBuffer(out.records, CL_TRUE, 0, sizeof(Record) * std::size_t(count), records.data());
+  return records;
+}
+
 //! Device bytes painting adds to the atlas at a level: the three channel
 //! layers, the channel and position work layers, the dab weights and the
 //! patch bounds that the constructor allocates.
@@ -88,11 +124,12 @@ struct PaintSurface::LayerKernels
 struct PaintSurface::Device
 {
   LayerKernels positions, channels;
-  cl::Kernel patch_bounds, brush_cull, paint_dab, dab_weights, move_points, dab_pickup;
+  cl::Kernel patch_bounds, brush_cull, brush_reach, paint_dab, dab_weights, move_points, dab_pickup;
   cl::Kernel spray_pick, spray_points;
-  cl::Buffer bounds, records, count, active, dab, weights;
+  cl::Buffer bounds, count, active, dab, weights;
+  AppendBuffer culled, reached; // CullRecord, ReachRecord
   cl::Buffer unfold; // a parameter dab's PatchUnfolding per listed patch (one entry otherwise)
-  std::size_t record_capacity = 0, active_capacity = 0, unfold_capacity = 1;
+  std::size_t active_capacity = 0, unfold_capacity = 1;
   cl::Buffer diffuse, specular, material, channel_work;
   cl::Buffer inside_diffuse, inside_specular, inside_material; // two-sided surfaces
   cl::Buffer raster, stamp; // the stroke's pattern samples and brush image (one float when none)
@@ -118,6 +155,7 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
       d.channels.build(rt, AtlasStorage::Buffer);
     d.patch_bounds = cl::Kernel(d.positions.program, "patch_bounds");
     d.brush_cull = cl::Kernel(d.positions.program, "brush_cull");
+    d.brush_reach = cl::Kernel(d.positions.program, "brush_reach");
     d.paint_dab = cl::Kernel(d.positions.program, "paint_dab");
     d.dab_weights = cl::Kernel(d.positions.program, "dab_weights");
     d.move_points = cl::Kernel(d.positions.program, "move_points");
@@ -336,34 +374,22 @@ bool PaintSurface::step(bool back)
 
 PaintSurface::~PaintSurface() = default;
 
-std::vector<CullRecord> PaintSurface::cull(const Vec3& centre, float radius, bool sides_only)
+std::vector<CullRecord> PaintSurface::cull(const Vec3& centre, float radius)
 {
   Device& d = *device_;
-  Runtime& rt = atlas_->runtime();
   const LevelLayout l = atlas_->layout(level_);
-  const cl_float4 c{{centre[0], centre[1], centre[2], 0.f}};
-  cl_int count = 0;
-  for (int attempt = 0; attempt < 2; ++attempt) {
-    if (d.record_capacity == 0) {
-      d.record_capacity = std::min<std::size_t>(std::max(l.patches, 1), 4096);
-      d.records = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(CullRecord) * d.record_capacity);
-    }
-    count = 0;
-    rt.queue().enqueueWriteBuffer(d.count, CL_TRUE, 0, sizeof count, &count);
-    launch(rt.queue(), d.brush_cull, cl::NDRange(round_up(l.patches, kGroup)), cl::NDRange(kGroup),
-           atlas_->limit_positions_layer(), atlas_->limit_normals_layer(), grid(l), l.patches, d.bounds, c, radius,
-           cl_int(sides_only), d.records, d.count, cl_int(d.record_capacity));
-    rt.queue().enqueueReadBuffer(d.count, CL_TRUE, 0, sizeof count, &count);
-    if (std::size_t(count) <= d.record_capacity)
-      break;
-    d.record_capacity = std::size_t(count); // grow and run once more
-    d.records = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(CullRecord) * d.record_capacity);
-  }
-  std::vector<CullRecord> out(static_cast<std::size_t>(count));
-  if (count > 0)
-    rt.queue().enqueueReadBuffer(d.records, CL_TRUE, 0, sizeof(CullRecord) * count, out.data());
-  // Appends land in any order: callers must not depend on it.
-  return out;
+  return run_appending<CullRecord>(atlas_->runtime(), d.brush_cull, l.patches, d.culled, d.count,
+                                   atlas_->limit_positions_layer(), atlas_->limit_normals_layer(), grid(l), l.patches,
+                                   d.bounds, cl_float4{{centre[0], centre[1], centre[2], 0.f}}, radius);
+}
+
+std::vector<ReachRecord> PaintSurface::reach_records(const Vec3& centre, float radius)
+{
+  Device& d = *device_;
+  const LevelLayout l = atlas_->layout(level_);
+  return run_appending<ReachRecord>(atlas_->runtime(), d.brush_reach, l.patches, d.reached, d.count,
+                                    atlas_->limit_positions_layer(), grid(l), l.patches, d.bounds,
+                                    cl_float4{{centre[0], centre[1], centre[2], 0.f}}, radius);
 }
 
 std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Vec3* centre_out, Vec3* normal_out,
@@ -376,7 +402,7 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
   const float start = std::min(radius, float(1e-3 * atlas_->base_mesh().diagonal()));
   std::vector<CullRecord> near;
   for (float r = start; near.empty(); r = std::min(radius, 8.f * r)) {
-    near = cull(point, r, false);
+    near = cull(point, r);
     if (r >= radius)
       break;
   }
@@ -399,7 +425,7 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
   // The brush reaches the patches connected to the centre's patch through
   // sides that themselves come within the radius: never through the air.
   const int start_patch = best->patch;
-  const std::vector<CullRecord> records = cull(centre, reach, true);
+  const std::vector<ReachRecord> records = reach_records(centre, reach);
 
   // Flood from the centre's patch over the culled patches; `mark_` holds,
   // per patch, 2 * generation for "culled" and 2 * generation + 1 for
@@ -407,12 +433,9 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
   // arrays indexed by patch: the records lie in the order the kernel
   // appended them, and looking them up made it wait on memory.
   const std::uint32_t culled = 2 * ++generation_, reached = culled + 1;
-  for (const CullRecord& c : records) {
+  for (const ReachRecord& c : records) {
     mark_[std::size_t(c.patch)] = culled;
-    std::uint8_t open = 0;
-    for (int s = 0; s < 4; ++s)
-      open |= std::uint8_t(c.side_distance[s] <= reach) << s;
-    open_sides_[std::size_t(c.patch)] = open;
+    open_sides_[std::size_t(c.patch)] = std::uint8_t(c.open_sides);
   }
   // Breadth first: a patch waits in the queue long enough for the prefetch
   // of its neighbours to arrive (depth first pops it at once).
@@ -443,7 +466,7 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
         active.push_back(int(p));
     return active;
   }
-  for (const CullRecord& c : records)
+  for (const ReachRecord& c : records)
     if (mark_[std::size_t(c.patch)] == reached)
       active.push_back(c.patch);
   std::sort(active.begin(), active.end());

@@ -164,9 +164,10 @@ public:
 private:
   struct Device;
   //! Records of the patches with a texel within `radius` of `centre`, in
-  //! no particular order. With `sides_only` the records of patches wholly
-  //! inside carry only their sides (an upper bound), not their closest texel.
-  std::vector<CullRecord> cull(const Vec3& centre, float radius, bool sides_only);
+  //! no particular order, each with its closest texel.
+  std::vector<CullRecord> cull(const Vec3& centre, float radius);
+  //! The same patches, each with the sides that come within `radius`.
+  std::vector<ReachRecord> reach_records(const Vec3& centre, float radius);
   bool step(bool back); // undo (back) or redo
   void paint(const std::vector<int>& patches, const BrushDab& dab);
   //! One dab of spray paint: droplets at random points of the brush's disc
