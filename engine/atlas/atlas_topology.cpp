@@ -2,7 +2,8 @@
 
 #include "core/errors.h"
 
-#include <string> // for std::to_string
+#include <algorithm> // for std::sort
+#include <string>    // for std::to_string
 
 namespace meshpaint {
 
@@ -91,6 +92,44 @@ AtlasTopology build_atlas_topology(const OpenSubdiv::Far::TopologyLevel& level1)
                        " of the first subdivision joins several surface sheets (non-manifold)");
   }
   return topo;
+}
+
+std::vector<int> AtlasTopology::corner_neighbourhood(const std::vector<int>& patches, int layers) const
+{
+  std::vector<char> in(std::size_t(patch_count), 0);
+  std::vector<char> ring_done(rings.size(), 0); // each corner ring once, not once per patch at it
+  std::vector<int> out = patches;
+  for (const int p : out)
+    in[std::size_t(p)] = 1;
+  std::size_t from = 0;
+  for (int r = 0; r < layers; ++r) {
+    const std::size_t to = out.size();
+    for (std::size_t k = from; k < to; ++k)
+      for (int c = 0; c < 4; ++c) {
+        const int v = patch_corners[std::size_t(out[k])][c];
+        if (ring_done[std::size_t(v)])
+          continue;
+        ring_done[std::size_t(v)] = 1;
+        const CornerRing& ring = rings[std::size_t(v)];
+        for (int m = 0; m < ring.count; ++m) {
+          const int q = slots[std::size_t(ring.first + m)].patch;
+          if (!in[std::size_t(q)]) {
+            in[std::size_t(q)] = 1;
+            out.push_back(q);
+          }
+        }
+      }
+    from = to;
+  }
+  if (out.size() * 16 > in.size()) { // in patch order: for big sets a scan of the marks beats a sort
+    out.clear();
+    for (std::size_t p = 0; p < in.size(); ++p)
+      if (in[p])
+        out.push_back(int(p));
+    return out;
+  }
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 } // namespace meshpaint

@@ -22,6 +22,9 @@ struct AtlasTopology
 
   //! Vertices of the welded level-l surface (each stored copy counted once).
   std::size_t unique_vertices(int level) const;
+  //! `patches` and `layers` rings of patches around them (each sharing a
+  //! corner with the ring inside it), in patch order.
+  std::vector<int> corner_neighbourhood(const std::vector<int>& patches, int layers) const;
 };
 
 //! Builds the tables from OpenSubdiv's level-1 topology.

@@ -158,46 +158,7 @@ std::vector<int> Multires::reach(const std::vector<int>& patches) const
 {
   // Each level of subdivision spreads a change by one face of that level:
   // less than two faces of the edit level in all, plus the limit stencil.
-  return grow(patches, atlas_.layout(level_).n >= 4 ? 1 : 2);
-}
-
-std::vector<int> Multires::grow(const std::vector<int>& patches, int rings) const
-{
-  const AtlasTopology& topo = atlas_.topology();
-  std::vector<char> in(std::size_t(topo.patch_count), 0);
-  std::vector<char> ring_done(topo.rings.size(), 0); // each corner ring once, not once per patch at it
-  std::vector<int> out = patches;
-  for (const int p : out)
-    in[std::size_t(p)] = 1;
-  std::size_t from = 0;
-  for (int r = 0; r < rings; ++r) {
-    const std::size_t to = out.size();
-    for (std::size_t k = from; k < to; ++k)
-      for (int c = 0; c < 4; ++c) {
-        const int v = topo.patch_corners[std::size_t(out[k])][c];
-        if (ring_done[std::size_t(v)])
-          continue;
-        ring_done[std::size_t(v)] = 1;
-        const CornerRing& ring = topo.rings[std::size_t(v)];
-        for (int m = 0; m < ring.count; ++m) {
-          const int q = topo.slots[std::size_t(ring.first + m)].patch;
-          if (!in[std::size_t(q)]) {
-            in[std::size_t(q)] = 1;
-            out.push_back(q);
-          }
-        }
-      }
-    from = to;
-  }
-  if (out.size() * 16 > in.size()) { // in patch order: for big sets a scan of the marks beats a sort
-    out.clear();
-    for (std::size_t p = 0; p < in.size(); ++p)
-      if (in[p])
-        out.push_back(int(p));
-    return out;
-  }
-  std::sort(out.begin(), out.end());
-  return out;
+  return atlas_.topology().corner_neighbourhood(patches, atlas_.layout(level_).n >= 4 ? 1 : 2);
 }
 
 void Multires::reconstruct(const std::vector<int>& affected)
@@ -216,7 +177,7 @@ void Multires::reconstruct(const std::vector<int>& affected)
   // on `touched`: the texels it does not write must be S as it is now,
   // whatever changed it since the encoding (an undo, a stroke elsewhere),
   // so they are taken before subdivision overwrites them.
-  const std::vector<int> touched = grow(affected, 1);
+  const std::vector<int> touched = atlas_.topology().corner_neighbourhood(affected, 1);
   copy_level(fine, d.saved, &touched);
   const PatchSet reached = atlas_.patch_set(affected, Reach::Any);
   atlas_.subdivide(level_, finest, &reached);

@@ -97,8 +97,6 @@ private:
   struct Device;
   //! Copies the tiles of `patches` (null: all) of the finest level.
   void copy_level(const cl::Memory& from, const cl::Memory& to, const std::vector<int>* patches = nullptr);
-  //! `patches` and `rings` rings of patches around them (sharing a corner), sorted.
-  std::vector<int> grow(const std::vector<int>& patches, int rings) const;
 
   Atlas& atlas_;
   int level_ = -1;         // in use

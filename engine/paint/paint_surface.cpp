@@ -291,25 +291,7 @@ void PaintSurface::refresh_geometry(const std::vector<int>& patches)
   atlas_->update_limit(atlas_->patch_set(patches, Reach::Any));
   // The limit changed on the patches' sides and corners too, which every
   // patch sharing a corner with them stores: their bounds move as well.
-  const AtlasTopology& topo = atlas_->topology();
-  const std::uint32_t stamp = 2 * ++generation_;
-  std::vector<int> around;
-  std::vector<char> ring_seen(topo.rings.size(), 0); // each ring once, not once per patch at it
-  for (const int p : patches)
-    for (int c = 0; c < 4; ++c) {
-      const int v = topo.patch_corners[std::size_t(p)][c];
-      if (ring_seen[std::size_t(v)])
-        continue;
-      ring_seen[std::size_t(v)] = 1;
-      const CornerRing& ring = topo.rings[std::size_t(v)];
-      for (int m = 0; m < ring.count; ++m) {
-        const int q = topo.slots[std::size_t(ring.first + m)].patch;
-        if (mark_[std::size_t(q)] != stamp) {
-          mark_[std::size_t(q)] = stamp;
-          around.push_back(q);
-        }
-      }
-    }
+  const std::vector<int> around = atlas_->topology().corner_neighbourhood(patches, 1);
   const cl::Buffer list = device_ints(rt.context(), around);
   launch(rt.queue(), d.patch_bounds, cl::NDRange(round_up(around.size(), kGroup)), cl::NDRange(kGroup),
          atlas_->limit_positions_layer(), grid(l), list, int(around.size()), d.bounds);
