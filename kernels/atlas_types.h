@@ -111,12 +111,11 @@ typedef struct {
 } BrushDab;
 
 /* What the culling kernel reports for a patch that reaches into the brush:
- * the patch, its closest texel, and the closest distance over each side. */
+ * the patch and its closest texel, where the host snaps the brush centre. */
 typedef struct {
   mp_int patch;
   mp_int closest_texel;           /* patch-major index within the tile */
   float distance;                 /* closest texel to the centre */
-  float side_distance[4];
   mp_int pad;
   float closest_position[4];      /* that texel on the limit surface */
   float closest_normal[4];        /* and its limit normal */

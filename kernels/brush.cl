@@ -73,7 +73,8 @@ __kernel void brush_cull(ATLAS_IN pos, ATLAS_IN nrm, int2 g, int patches, __glob
   if (distance(b.xyz, centre.xyz) - b.w > radius)
     return;
   CullRecord r;
-  r.distance = patch_distances(pos, g, p, centre.xyz, r.side_distance, &r.closest_texel);
+  float side[4]; /* the flood's business (brush_reach), not the snap's */
+  r.distance = patch_distances(pos, g, p, centre.xyz, side, &r.closest_texel);
   if (r.distance > radius)
     return;
   const int k = atomic_inc(count);
