@@ -1,23 +1,35 @@
 /* Brushes that move geometry or filter a layer: weights, smoothing
  * (Laplacian; Taubin is two passes), sculpt, inflate, flatten. They change a
- * layer of the finest level of a set of patches, reading `src` and writing
- * `dst` (images cannot be read and written by one kernel); the host copies
- * the tiles back. Smoothing follows the atlas's three batches, so each stored
- * copy of a side or corner texel gets one value. Weights are per texel,
- * patch-major, computed from the limit surface. Built after brush.cl, whose
- * falloff and stamp helpers it shares. */
+ * layer of one level on a set of patches. Moves read `src` and write `dst`
+ * (images cannot be read and written by one kernel) and the host copies the
+ * tiles back; smoothing runs on the welded mesh, so each stored copy of a
+ * side or corner texel gets one value. Weights are per texel, patch-major,
+ * computed from the limit surface. Built after brush.cl, whose falloff and
+ * stamp helpers it shares. */
 
 #define WEIGHT_INDEX(g, p, ij) PATCH_MAJOR_INDEX(g, p, ij)
+
+/* The sides (bits 0-3) and corners (bits 4-7) of a patch that texel ij of
+ * an n x n tile lies on. */
+inline int texel_border(int2 ij, int n)
+{
+  const int lo_i = ij.x == 0, hi_i = ij.x == n, lo_j = ij.y == 0, hi_j = ij.y == n;
+  return lo_j | hi_i << 1 | hi_j << 2 | lo_i << 3 | (lo_i & lo_j) << 4 | (hi_i & lo_j) << 5 | (hi_i & hi_j) << 6 |
+         (lo_i & hi_j) << 7;
+}
 
 /* Range: (tile, tile * count). Weight of each texel of the listed patches:
  * falloff x strength x (1 - mask), 0 outside the radius. The mask lives at
  * the finest level (grid gm): texel ij of grid g is texel ij * stride there.
- * unfold: as for paint_dab, one per listed patch; its maps hold at any level. */
+ * unfold: as for paint_dab, one per listed patch; its maps hold at any level.
+ * outside (or null): per listed patch, the sides and corners it shares with
+ * unlisted patches (bits as texel_border); their texels weigh 0, since their
+ * copies there would not move with them. */
 __kernel void dab_weights(ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g, __global const int *restrict list,
                           int count, __global const BrushDab *restrict dab,
                           __global const PatchUnfolding *restrict unfold, __global const float *restrict stamp,
                           __global const float4 *restrict material, int2 gm, int stride,
-                          __global float *restrict weights)
+                          __global const uchar *restrict outside, __global float *restrict weights)
 {
   int p;
   int2 ij;
@@ -28,7 +40,8 @@ __kernel void dab_weights(ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g, __glob
   float2 plane;
   const float t = brush_t(dab, unfold, a, x, BRUSH_NORMAL(dab, limit_nrm, g, p, ij), ij, g.x - 1, &plane);
   const int k = WEIGHT_INDEX(g, p, ij);
-  weights[k] = t <= 1.0f ? falloff_weight(dab->falloff, t) * dab->strength *
+  const int kept = outside && (outside[a] & texel_border(ij, g.x - 1));
+  weights[k] = t <= 1.0f && !kept ? falloff_weight(dab->falloff, t) * dab->strength *
                              (1.0f - material[WEIGHT_INDEX(gm, p, ij * stride)].w) *
                              stamp_weight(dab, stamp, plane)
                          : 0.0f;
@@ -49,78 +62,94 @@ inline float4 umbrella(float4 x, float4 mean, float step)
   return (float4)(x.xyz + step * (mean.xyz - x.xyz), x.w);
 }
 
-/* Range: (tile, tile * count); texels strictly inside the listed patches. */
-__kernel void smooth_interior(ATLAS_IN src, ATLAS_OUT dst, int2 g, __global const int *list, int count,
-                              __global const float *weights, float lambda)
+/* Smoothing on the welded quad mesh: the listed tiles are gathered into
+ * arrays with one entry per vertex (welded_gather), passes read each
+ * neighbour from there (welded_smooth_corners and welded_smooth_texels), and
+ * every stored copy is written back (welded_scatter). Patch corners and the
+ * other vertices have a kernel each: a corner has a ring of any size, the
+ * others four neighbours, which keeps their kernel free of branches. */
+
+/* Range: (tile, tile * count). Every copy of a vertex holds the same bits,
+ * so copies write the same value; both arrays get it, so that vertices no
+ * pass moves read alike from either. The weight is the vertex's own texel's. */
+__kernel void welded_gather(ATLAS_IN layer, int2 g, __global const int *restrict list, int count,
+                            __global const int *restrict vertex_of, __global const int *restrict texel,
+                            __global const float *restrict weights, __global float4 *restrict a,
+                            __global float4 *restrict b, __global float *restrict welded_weights)
 {
   int p;
   int2 ij;
-  if (!interior_texel(g, list, count, &p, &ij))
+  if (!tile_texel(g, list, count, &p, &ij))
     return;
-  const float w = weights[WEIGHT_INDEX(g, p, ij)];
-  const float4 x = ATLAS_LOAD(src, g, p, ij);
-  if (w == 0.0f) {
-    ATLAS_STORE(dst, g, p, ij, x);
-    return;
-  }
-  const float4 mean = 0.25f * ((ATLAS_LOAD(src, g, p, ij + (int2)(-1, 0)) + ATLAS_LOAD(src, g, p, ij + (int2)(1, 0))) +
-                               (ATLAS_LOAD(src, g, p, ij + (int2)(0, -1)) + ATLAS_LOAD(src, g, p, ij + (int2)(0, 1))));
-  ATLAS_STORE(dst, g, p, ij, umbrella(x, mean, lambda * w));
+  const int t = PATCH_MAJOR_INDEX(g, p, ij);
+  const int v = vertex_of[t];
+  const float4 x = ATLAS_LOAD(layer, g, p, ij);
+  a[v] = x;
+  b[v] = x;
+  if (texel[v] == t)
+    welded_weights[v] = weights[t];
 }
 
-/* Range: count; per listed side, its texels. A mesh-boundary
- * side is smoothed along itself, so borders do not pull inwards. */
-__kernel void smooth_edges(ATLAS_IN src, ATLAS_OUT dst, int2 g, __global const PatchEdge *edges,
-                           __global const int *list, int count, __global const float *weights, float lambda)
+/* Range: (tile, tile * count). */
+__kernel void welded_scatter(__global const float4 *restrict welded, ATLAS_OUT layer, int2 g,
+                             __global const int *restrict list, int count, __global const int *restrict vertex_of)
+{
+  int p;
+  int2 ij;
+  if (tile_texel(g, list, count, &p, &ij))
+    ATLAS_STORE(layer, g, p, ij, welded[vertex_of[PATCH_MAJOR_INDEX(g, p, ij)]]);
+}
+
+/* Range: count; one patch corner each (list[k], or k with a null list). Its
+ * ring's neighbours are summed one after another; two neighbours: a border
+ * corner, smoothed along the border; none: the corner of a single face,
+ * which stays. */
+__kernel void welded_smooth_corners(__global const float4 *restrict src, __global float4 *restrict dst,
+                                    __global const int *restrict list, int count, __global const int *restrict first,
+                                    __global const int *restrict ring, __global const float *restrict weights,
+                                    float lambda)
 {
   const int k = get_global_id(0);
   if (k >= count)
     return;
-  const PatchEdge e = edges[LISTED(list, k)];
-  EDGE_FRAMES(e, g);
-  /* Along the side, the texel before, at and after t slide one step a time. */
-  float4 before = EDGE_LOAD(src, g, 0, 0), x = EDGE_LOAD(src, g, 1, 0);
-  for (int t = 1; t < g.x - 1; ++t) {
-    const float4 after = EDGE_LOAD(src, g, t + 1, 0);
-    const float w = weights[WEIGHT_INDEX(g, fp.patch, fp.o + t * fp.dt)];
-    float4 mean;
-    if (e.patch[1] >= 0)
-      mean = 0.25f * ((before + after) + (EDGE_LOAD(src, g, t, 1) + EDGE_LOAD(src, g, t, -1)));
-    else
-      mean = 0.5f * (before + after);
-    EDGE_STORE(dst, g, e, t, w == 0.0f ? x : umbrella(x, mean, lambda * w));
-    before = x;
-    x = after;
-  }
-}
-
-/* Range: count; every copy of the listed patch corners. */
-__kernel void smooth_corners(ATLAS_IN src, ATLAS_OUT dst, int2 g, __global const CornerRing *rings,
-                             __global const CornerSlot *slots, __global const int *list, int count,
-                             __global const float *weights, float lambda)
-{
-  const int k = get_global_id(0);
-  if (k >= count)
-    return;
-  const CornerRing ring = rings[LISTED(list, k)];
-  const CornerSlot first = slots[ring.first], last = slots[ring.first + ring.count - 1];
-  const Frame f0 = side_frame(first.patch, first.corner, g.x - 1);
-  const float w = weights[WEIGHT_INDEX(g, first.patch, f0.o)];
-  const float4 x = CORNER_LOAD(src, g, first, 0, 0);
+  const int v = LISTED(list, k);
+  const float4 x = src[v];
+  const float w = weights[v];
+  const int f = first[v], m = first[v + 1] - f;
   float4 r = x;
-  if (w != 0.0f) {
-    if (ring.boundary) {
-      if (ring.count > 1) /* a corner of one face stays where it is */
-        r = umbrella(x, 0.5f * (CORNER_LOAD(src, g, first, 1, 0) + CORNER_LOAD(src, g, last, 0, 1)), lambda * w);
+  if (w != 0.0f && m > 0) {
+    float4 mean;
+    if (m == 2) {
+      mean = 0.5f * (src[ring[f]] + src[ring[f + 1]]);
     } else {
       float4 sum = (float4)(0.0f);
-      for (int m = 0; m < ring.count; ++m)
-        sum += CORNER_LOAD(src, g, slots[ring.first + m], 1, 0);
-      r = umbrella(x, sum / (float)ring.count, lambda * w);
+      for (int i = 0; i < m; ++i)
+        sum += src[ring[f + i]];
+      mean = sum / (float)m;
     }
+    r = umbrella(x, mean, lambda * w);
   }
-  for (int m = 0; m < ring.count; ++m)
-    CORNER_STORE(dst, g, slots[ring.first + m], r);
+  dst[v] = r;
+}
+
+/* Range: count; one vertex inside a patch or on a patch side each:
+ * list[offset + k], or base + k with a null list. Its four neighbours are
+ * summed in pairs; on a mesh-boundary side they are its two along the side,
+ * each twice, which gives their mean exactly. */
+__kernel void welded_smooth_texels(__global const float4 *restrict src, __global float4 *restrict dst,
+                                   __global const int *restrict list, int offset, int count, int base,
+                                   __global const int4 *restrict around, __global const float *restrict weights,
+                                   float lambda)
+{
+  const int k = get_global_id(0);
+  if (k >= count)
+    return;
+  const int v = list ? list[offset + k] : base + k;
+  const int4 nb = around[v - base];
+  const float4 x = src[v];
+  const float w = weights[v];
+  const float4 mean = 0.25f * ((src[nb.x] + src[nb.y]) + (src[nb.z] + src[nb.w]));
+  dst[v] = w != 0.0f ? umbrella(x, mean, lambda * w) : x;
 }
 
 /* Range: (tile, tile * count). Moves control points: x + amount * w * dir,

@@ -274,6 +274,29 @@ TEST(Multires, UndoOfCoarseAndFineEditsIsBitExact)
   EXPECT_TRUE(same_bits(surface.atlas().read_positions(4), edited));
 }
 
+// The brush's patches come from the finest surface, but a coarse edit weighs
+// the edit level's smoother surface, whose texels on the sides shared with
+// patches outside the brush may fall inside the radius. They must stay put:
+// moving the copies in the brush's patches and not the others would part
+// the edit level's surface there.
+TEST(Multires, CoarseEditsKeepTheEditLevelsCopiesEqual)
+{
+  PaintSurface surface(test::runtime(), test::noisy_sphere(3, 0.05f), 4, AtlasStorage::Buffer);
+  const StrokeScript script = parse_stroke_script(R"({"strokes": [
+      {"tool": "inflate", "points": [[0, 0, 1]], "radius": 0.7, "amount": 0.2, "edit_level": 2},
+      {"tool": "sculpt", "points": [[0, 1, 0]], "radius": 0.6, "amount": 0.15, "edit_level": 2},
+      {"tool": "smooth", "points": [[0, 1, 0]], "radius": 0.6, "iterations": 2, "edit_level": 2},
+      {"tool": "grab", "points": [[1, 0, 0], [1.2, 0.1, 0]], "radius": 0.6, "edit_level": 3}]})");
+  for (const Stroke& s : script.strokes) {
+    surface.apply(s);
+    for (const int level : {2, 3, 4})
+      EXPECT_EQ(test::differing_copies(surface.atlas().topology(), surface.atlas().layout(level),
+                                       surface.atlas().read_positions(level)),
+                0u)
+        << tool_name(s.tool) << " at edit level " << s.edit_level << ": level " << level;
+  }
+}
+
 TEST(Multires, BufferAndImageStorageAgreeBitForBit)
 {
   std::vector<Float4> result[2];

@@ -391,8 +391,10 @@ PatchSet Atlas::patch_set(const std::vector<int>& patches, Reach reach) const
         bool all = true; // only Reach::All looks at the patches around
         for (int m = 0; m < ring.count && all && reach == Reach::All; ++m)
           all = listed[std::size_t(topology_.slots[ring.first + m].patch)] != 0;
-        if (all)
+        if (all) {
           set.rings.push_back(device_ring_[v]);
+          set.corners.push_back(v);
+        }
       }
     }
   return set;

@@ -72,6 +72,7 @@ struct PatchSet
   std::vector<int> patches; //!< sorted
   std::vector<int> edges;   //!< indices into AtlasTopology::edges
   std::vector<int> rings;   //!< indices into the device's ring table
+  std::vector<int> corners; //!< the level-1 vertex of each ring
 };
 
 //! Whether an edge or ring goes with a set of patches when any of its

@@ -1,6 +1,7 @@
 // The size of each level of the atlas, and where tiles lie in it.
 #pragma once
 
+#include <array>   // for std::array
 #include <cstddef> // for std::size_t
 
 namespace meshpaint {
@@ -33,6 +34,20 @@ struct LevelLayout
   //! Texels of the atlas image, unused tiles included.
   std::size_t image_texels() const { return std::size_t(width) * std::size_t(height); }
 };
+
+//! Corner k (0..3, counter-clockwise from the patch's first) of a tile in
+//! tile sides, and the direction of side k, which runs from corner k to
+//! corner k + 1: the host's copy of atlas_access.cl's tables.
+constexpr std::array<int, 2> tile_corner(int k)
+{
+  constexpr int c[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  return {c[k & 3][0], c[k & 3][1]};
+}
+constexpr std::array<int, 2> side_direction(int k)
+{
+  constexpr int d[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+  return {d[k & 3][0], d[k & 3][1]};
+}
 
 //! Layout of `level` (>= 1) for `patches` patches, tiles as square as possible.
 LevelLayout level_layout(int patches, int level);

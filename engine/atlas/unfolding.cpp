@@ -1,5 +1,7 @@
 #include "atlas/unfolding.h"
 
+#include "atlas/patch_layout.h"
+
 #include <algorithm>     // for std::min, std::max
 #include <array>         // for std::array
 #include <climits>       // for INT_MAX
@@ -17,11 +19,8 @@ struct Map
   Point u{1, 0}, v{0, 1}, o{0, 0};
 };
 
-constexpr int kCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}}; // corner k of a tile, in tile sides
-constexpr int kSide[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}}; // side k runs from corner k to corner k + 1
-
-Point corner(int k) { return {kCorner[k & 3][0], kCorner[k & 3][1]}; }
-Point side(int k) { return {kSide[k & 3][0], kSide[k & 3][1]}; }
+Point corner(int k) { return tile_corner(k); }
+Point side(int k) { return side_direction(k); }
 
 Point turn(const Map& m, const Point& p) { return {m.u[0] * p[0] + m.v[0] * p[1], m.u[1] * p[0] + m.v[1] * p[1]}; }
 

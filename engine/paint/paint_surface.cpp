@@ -8,6 +8,7 @@
 #include "core/format.h"
 #include "core/timer.h"
 #include "paint/spray.h"
+#include "paint/welded_smoothing.h"
 
 #include <algorithm> // for std::sort, std::max
 #include <optional>  // for std::optional
@@ -70,7 +71,8 @@ std::string paint_fit_problem(const AtlasTopology& topology, int level, const De
                               AtlasStorage storage)
 {
   const MemoryPlan plan = plan_memory(topology, level, storage);
-  const std::size_t total = plan.total + paint_bytes(plan.finest, storage);
+  const std::size_t total = plan.total + paint_bytes(plan.finest, storage) +
+                            WeldedSmoothing::bytes(plan.finest.texels(), topology.unique_vertices(level));
   if (total > device.global_memory)
     return format_bytes(total) + " with its paint layers, more than the device's memory (" +
            format_bytes(device.global_memory) + ")";
@@ -100,7 +102,8 @@ void check_paint_fits(Atlas& atlas, int level, const std::string& name)
 struct PaintSurface::LayerKernels
 {
   cl::Program program;
-  cl::Kernel copy_tiles, smooth_interior, smooth_edges, smooth_corners, gather_tiles, scatter_tiles;
+  cl::Kernel copy_tiles, gather_tiles, scatter_tiles;
+  WeldedSmoothing::LayerKernels welded;
 
   void build(Runtime& rt, AtlasStorage storage)
   {
@@ -109,9 +112,8 @@ struct PaintSurface::LayerKernels
                                                      "lighting.cl"},
                             storage_options(storage));
     copy_tiles = cl::Kernel(program, "copy_tiles");
-    smooth_interior = cl::Kernel(program, "smooth_interior");
-    smooth_edges = cl::Kernel(program, "smooth_edges");
-    smooth_corners = cl::Kernel(program, "smooth_corners");
+    welded.gather = cl::Kernel(program, "welded_gather");
+    welded.scatter = cl::Kernel(program, "welded_scatter");
     gather_tiles = cl::Kernel(program, "gather_tiles");
     scatter_tiles = cl::Kernel(program, "scatter_tiles");
   }
@@ -134,6 +136,7 @@ struct PaintSurface::Device
   cl::Buffer inside_diffuse, inside_specular, inside_material; // two-sided surfaces
   cl::Buffer raster, stamp; // the stroke's pattern samples and brush image (one float when none)
   cl::Memory position_work; // a scratch copy of the finest level, same storage
+  std::unique_ptr<WeldedSmoothing> smoothing;
 };
 
 PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int level,
@@ -162,6 +165,7 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     d.dab_pickup = cl::Kernel(d.positions.program, "dab_pickup");
     d.spray_pick = cl::Kernel(d.positions.program, "spray_pick");
     d.spray_points = cl::Kernel(d.positions.program, "spray_points");
+    d.smoothing = std::make_unique<WeldedSmoothing>(rt, atlas_->topology(), d.positions.program);
     const std::size_t bytes = l.texels() * sizeof(Float4);
     d.channel_work = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
     d.weights = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, l.texels() * sizeof(float));
@@ -819,9 +823,11 @@ bool PaintSurface::aim(const Stroke& stroke, const Vec3& point, const Vec3& norm
   return true;
 }
 
-void PaintSurface::weigh(const cl::Buffer& list, int count, const BrushDab& dab, int level)
+void PaintSurface::weigh(const std::vector<int>& patches, const cl::Buffer& list, const BrushDab& dab, int level)
 {
   // At a coarser edit level, on the limit of that level's control points.
+  // The patches come from the finest surface, so that level's weights may
+  // reach the sides they share with other patches: those stay put.
   Device& d = *device_;
   Runtime& rt = atlas_->runtime();
   const LevelLayout f = atlas_->layout(level_), l = atlas_->layout(level);
@@ -832,11 +838,18 @@ void PaintSurface::weigh(const cl::Buffer& list, int count, const BrushDab& dab,
     c /= float(stride);
   at_level.texel_size *= float(stride);
   rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof at_level, &at_level);
+  const int count = int(patches.size());
   const auto tiles = range_tiles(l, count);
+  cl::Buffer outside;
+  if (coarse) {
+    std::vector<std::uint8_t> bits = atlas_->topology().shared_outside(patches);
+    bits.resize(std::max<std::size_t>(1, bits.size())); // a valid argument when empty
+    outside = cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bits.size(), bits.data());
+  }
   launch(rt.queue(), d.dab_weights, tiles.first, tiles.second,
          coarse ? multires_->base_positions() : atlas_->limit_positions_layer(),
          coarse ? multires_->base_normals() : atlas_->limit_normals_layer(), grid(l), list, count, d.dab, d.unfold,
-         d.stamp, material_buffer(), grid(f), stride, coarse ? multires_->base_weights() : d.weights);
+         d.stamp, material_buffer(), grid(f), stride, outside, coarse ? multires_->base_weights() : d.weights);
 }
 
 void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke,
@@ -879,7 +892,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   if (reweigh) {
     if (coarse)
       multires_->compute_base_limit(patches);
-    weigh(list, count, dab, level);
+    weigh(patches, list, dab, level);
   }
   const cl::Buffer& weights = coarse ? multires_->base_weights() : d.weights;
   const auto geometry_done = [&] {
@@ -909,9 +922,8 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   // Smoothing: of the control points, or of the colour channels. Edges and
   // corners are smoothed only where every patch sharing them is in the
   // brush; elsewhere their weight is zero anyway.
-  const PatchSet set = atlas_->patch_set(patches, Reach::All);
-  const cl::Buffer edges = device_ints(rt.context(), set.edges), rings = device_ints(rt.context(), set.rings);
-  const int edge_count = int(set.edges.size()), ring_count = int(set.rings.size());
+  const bool everything = count == l.patches;
+  const PatchSet set = everything ? PatchSet() : atlas_->patch_set(patches, Reach::All);
   std::vector<std::pair<LayerKernels*, const cl::Memory*>> layers;
   if (stroke.target_colour)
     layers = {{&d.channels, &diffuse_buffer()}, {&d.channels, &specular_buffer()}};
@@ -923,27 +935,8 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
     if (stroke.taubin && !stroke.target_colour)
       steps.push_back(stroke.mu);
   }
-  for (const auto& [k, layer] : layers) {
-    // Passes alternate between the layer and a work copy; texels no pass
-    // writes (sides and corners shared with patches outside the brush) are
-    // the same in both from the first copy on.
-    const cl::Memory& work = k == &d.positions ? d.position_work : static_cast<const cl::Memory&>(d.channel_work);
-    launch(q, k->copy_tiles, tiles.first, tiles.second, *layer, work, grid(l), list, count);
-    const cl::Memory* from = layer;
-    const cl::Memory* to = &work;
-    for (const float step : steps) {
-      launch(q, k->smooth_interior, tiles.first, tiles.second, *from, *to, grid(l), list, count, weights, step);
-      if (edge_count > 0 && l.n > 1)
-        launch(q, k->smooth_edges, cl::NDRange(round_up(edge_count, kGroup)), cl::NDRange(kGroup),
-               *from, *to, grid(l), atlas_->edge_table(), edges, edge_count, weights, step);
-      if (ring_count > 0)
-        launch(q, k->smooth_corners, cl::NDRange(round_up(ring_count, kGroup)), cl::NDRange(kGroup), *from, *to,
-               grid(l), atlas_->ring_table(), atlas_->slot_table(), rings, ring_count, weights, step);
-      std::swap(from, to);
-    }
-    if (from != layer) // the result is in the work copy
-      launch(q, k->copy_tiles, tiles.first, tiles.second, work, *layer, grid(l), list, count);
-  }
+  for (const auto& [k, layer] : layers)
+    d.smoothing->run(k->welded, *layer, l, everything ? nullptr : &set, weights, steps);
   if (stroke.target_colour)
     q.finish();
   else
@@ -1124,38 +1117,22 @@ std::vector<float> PaintSurface::scattered_light(const Vec3& light, int passes)
   const float len = std::sqrt(light[0] * light[0] + light[1] * light[1] + light[2] * light[2]);
   if (!(len > 0.f))
     throw InputError("the light's direction must not be zero");
-  std::vector<Float4> texels(l.texels());
   try {
     cl::Kernel irradiance(d.positions.program, "irradiance");
     const auto tiles = range_tiles(l, l.patches);
     launch(q, irradiance, tiles.first, tiles.second, atlas_->limit_normals_layer(), grid(l), l.patches,
            cl_float4{{light[0] / len, light[1] / len, light[2] / len, 0.f}}, d.channel_work);
-    // Diffusion over the whole atlas: the smoothing passes at full weight.
+    // Diffusion over the whole surface: the smoothing passes at full weight.
     q.enqueueFillBuffer(d.weights, 1.f, 0, l.texels() * sizeof(float));
-    cl::Buffer other(rt.context(), CL_MEM_READ_WRITE, l.texels() * sizeof(Float4));
-    const cl::Buffer all; // null lists: every patch, edge and ring
-    const int edges = int(atlas_->topology().edges.size()), rings = int(atlas_->topology().rings.size());
-    cl::Buffer* from = &d.channel_work;
-    cl::Buffer* to = &other;
-    for (int k = 0; k < passes; ++k) {
-      launch(q, d.channels.smooth_interior, tiles.first, tiles.second, *from, *to, grid(l), all, l.patches, d.weights,
-             0.5f);
-      if (l.n > 1)
-        launch(q, d.channels.smooth_edges, cl::NDRange(round_up(edges, kGroup)), cl::NDRange(kGroup), *from,
-               *to, grid(l), atlas_->edge_table(), all, edges, d.weights, 0.5f);
-      launch(q, d.channels.smooth_corners, cl::NDRange(round_up(rings, kGroup)), cl::NDRange(kGroup), *from, *to,
-             grid(l), atlas_->ring_table(), atlas_->slot_table(), all, rings, d.weights, 0.5f);
-      std::swap(from, to);
-    }
-    q.enqueueReadBuffer(*from, CL_TRUE, 0, texels.size() * sizeof(Float4), texels.data());
+    const std::vector<Float4> welded = d.smoothing->run_welded(d.channels.welded, d.channel_work, l, d.weights,
+                                                               std::vector<float>(std::size_t(passes), 0.5f));
+    std::vector<float> out(welded.size());
+    for (std::size_t v = 0; v < welded.size(); ++v)
+      out[v] = welded[v][0];
+    return out;
   } catch (const cl::Error& e) {
     throw DeviceError("the subsurface light failed on " + rt.info().name + ": " + describe(e));
   }
-  const std::vector<int> map = weld_map(atlas_->topology(), l);
-  std::vector<float> out(map.empty() ? 0 : std::size_t(*std::max_element(map.begin(), map.end())) + 1);
-  for (std::size_t t = 0; t < map.size(); ++t)
-    out[std::size_t(map[t])] = texels[t][0];
-  return out;
 }
 
 PaintChannels PaintSurface::read_channels()

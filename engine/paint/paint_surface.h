@@ -181,7 +181,7 @@ private:
   void grab(const Stroke& stroke, BrushDab& dab, StrokeReport& report);
   //! Weights of the dab on the patches' texels at `level`, into the weight
   //! buffer of that level.
-  void weigh(const cl::Buffer& list, int count, const BrushDab& dab, int level);
+  void weigh(const std::vector<int>& patches, const cl::Buffer& list, const BrushDab& dab, int level);
   //! After positions changed on `patches`: limit surface and bounds there.
   void refresh_geometry(const std::vector<int>& patches);
   StrokeReport apply_dabs(const Stroke& stroke);

@@ -1,0 +1,109 @@
+#include "paint/welded_smoothing.h"
+
+#include "cl/launch.h"
+#include "cl/runtime.h"
+
+#include <utility> // for std::swap
+
+namespace meshpaint {
+
+namespace {
+
+constexpr std::size_t kGroup = 256;
+
+} // namespace
+
+WeldedSmoothing::WeldedSmoothing(Runtime& runtime, const AtlasTopology& topology, const cl::Program& program)
+  : runtime_(runtime), topology_(topology), smooth_texels_(program, "welded_smooth_texels"),
+    smooth_corners_(program, "welded_smooth_corners")
+{
+}
+
+std::size_t WeldedSmoothing::bytes(std::size_t texels, std::size_t vertices)
+{
+  // Two arrays of values and one of weights, the texel map, and per vertex
+  // its texel and four neighbours (a corner's ring takes about as much).
+  return 2 * vertices * sizeof(Float4) + texels * sizeof(int) + 6 * vertices * sizeof(int);
+}
+
+WeldedSmoothing::Level& WeldedSmoothing::level(const LevelLayout& l)
+{
+  auto found = levels_.find(l.level);
+  if (found != levels_.end())
+    return found->second;
+  Level& w = levels_[l.level];
+  w.host = welded_neighbours(topology_, l);
+  const cl::Context& c = runtime_.context();
+  w.vertex_of = device_ints(c, w.host.vertex_of);
+  w.texel = device_ints(c, w.host.texel);
+  w.first = device_ints(c, w.host.first);
+  w.ring = device_ints(c, w.host.ring);
+  if (w.host.around.empty()) // level 1: corners only
+    w.host.around.push_back({0, 0, 0, 0});
+  w.around = cl::Buffer(c, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(cl_int4) * w.host.around.size(),
+                        w.host.around.data());
+  const std::size_t need = w.host.vertices() * sizeof(Float4);
+  if (need > capacity_) {
+    a_ = cl::Buffer(c, CL_MEM_READ_WRITE, need);
+    b_ = cl::Buffer(c, CL_MEM_READ_WRITE, need);
+    weights_ = cl::Buffer(c, CL_MEM_READ_WRITE, w.host.vertices() * sizeof(float));
+    capacity_ = need;
+  }
+  return w;
+}
+
+const cl::Buffer& WeldedSmoothing::passes(const LayerKernels& k, const cl::Memory& layer, const LevelLayout& l,
+                                          const PatchSet* set, const cl::Buffer& list, const cl::Buffer& weights,
+                                          const std::vector<float>& steps)
+{
+  Level& w = level(l);
+  cl::CommandQueue& q = runtime_.queue();
+  // Null lists: every patch, every vertex.
+  const int count = set ? int(set->patches.size()) : l.patches;
+  // The moved vertices: corners first, then the others.
+  const int corners = set ? int(set->corners.size()) : w.host.edge_base;
+  const int others = set ? int(w.host.moved_count(set->patches.size(), set->edges.size(), 0))
+                         : int(w.host.vertices()) - w.host.edge_base;
+  const cl::Buffer moved =
+    set ? device_ints(runtime_.context(), w.host.moved(set->patches, set->edges, set->corners)) : cl::Buffer();
+  const auto tiles = range_tiles(l, count);
+  cl::Kernel gather = k.gather;
+  launch(q, gather, tiles.first, tiles.second, layer, grid(l), list, count, w.vertex_of, w.texel, weights, a_, b_,
+         weights_);
+  const cl::Buffer* from = &a_;
+  const cl::Buffer* to = &b_;
+  for (const float step : steps) {
+    if (corners > 0)
+      launch(q, smooth_corners_, cl::NDRange(round_up(std::size_t(corners), kGroup)), cl::NDRange(kGroup), *from,
+             *to, moved, corners, w.first, w.ring, weights_, step);
+    if (others > 0)
+      launch(q, smooth_texels_, cl::NDRange(round_up(std::size_t(others), kGroup)), cl::NDRange(kGroup), *from, *to,
+             moved, corners, others, w.host.edge_base, w.around, weights_, step);
+    std::swap(from, to);
+  }
+  return *from;
+}
+
+void WeldedSmoothing::run(const LayerKernels& k, const cl::Memory& layer, const LevelLayout& l, const PatchSet* set,
+                          const cl::Buffer& weights, const std::vector<float>& steps)
+{
+  const cl::Buffer list = set ? device_ints(runtime_.context(), set->patches) : cl::Buffer();
+  const cl::Buffer& result = passes(k, layer, l, set, list, weights, steps);
+  const int count = set ? int(set->patches.size()) : l.patches;
+  const auto tiles = range_tiles(l, count);
+  cl::Kernel scatter = k.scatter;
+  launch(runtime_.queue(), scatter, tiles.first, tiles.second, result, layer, grid(l), list, count,
+         level(l).vertex_of);
+}
+
+std::vector<Float4> WeldedSmoothing::run_welded(const LayerKernels& k, const cl::Memory& layer,
+                                                const LevelLayout& l, const cl::Buffer& weights,
+                                                const std::vector<float>& steps)
+{
+  const cl::Buffer& result = passes(k, layer, l, nullptr, cl::Buffer(), weights, steps);
+  std::vector<Float4> out(level(l).host.vertices());
+  runtime_.queue().enqueueReadBuffer(result, CL_TRUE, 0, out.size() * sizeof(Float4), out.data());
+  return out;
+}
+
+} // namespace meshpaint
