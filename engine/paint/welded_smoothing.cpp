@@ -3,7 +3,7 @@
 #include "cl/launch.h"
 #include "cl/runtime.h"
 
-#include <utility> // for std::swap
+#include <utility> // for std::move, std::swap
 
 namespace meshpaint {
 
@@ -31,25 +31,31 @@ WeldedSmoothing::Level& WeldedSmoothing::level(const LevelLayout& l)
   auto found = levels_.find(l.level);
   if (found != levels_.end())
     return found->second;
-  Level& w = levels_[l.level];
-  w.host = welded_neighbours(topology_, l);
+  Level w; // kept only once every buffer is made
+  WeldedNeighbours host = welded_neighbours(topology_, l);
   const cl::Context& c = runtime_.context();
-  w.vertex_of = device_ints(c, w.host.vertex_of);
-  w.texel = device_ints(c, w.host.texel);
-  w.first = device_ints(c, w.host.first);
-  w.ring = device_ints(c, w.host.ring);
-  if (w.host.around.empty()) // level 1: corners only
-    w.host.around.push_back({0, 0, 0, 0});
-  w.around = cl::Buffer(c, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(cl_int4) * w.host.around.size(),
-                        w.host.around.data());
-  const std::size_t need = w.host.vertices() * sizeof(Float4);
+  w.vertex_of = device_ints(c, host.vertex_of);
+  w.texel = device_ints(c, host.texel);
+  w.first = device_ints(c, host.first);
+  w.ring = device_ints(c, host.ring);
+  if (host.around.empty()) // level 1: corners only
+    host.around.push_back({0, 0, 0, 0});
+  w.around = cl::Buffer(c, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(cl_int4) * host.around.size(),
+                        host.around.data());
+  w.vertices = host.vertices();
+  // The tables live on the device; the host keeps what moved() needs.
+  w.host.level = host.level;
+  w.host.inner = host.inner;
+  w.host.edge_base = host.edge_base;
+  w.host.interior_base = host.interior_base;
+  const std::size_t need = w.vertices * sizeof(Float4);
   if (need > capacity_) {
     a_ = cl::Buffer(c, CL_MEM_READ_WRITE, need);
     b_ = cl::Buffer(c, CL_MEM_READ_WRITE, need);
-    weights_ = cl::Buffer(c, CL_MEM_READ_WRITE, w.host.vertices() * sizeof(float));
+    weights_ = cl::Buffer(c, CL_MEM_READ_WRITE, w.vertices * sizeof(float));
     capacity_ = need;
   }
-  return w;
+  return levels_.emplace(l.level, std::move(w)).first->second;
 }
 
 const cl::Buffer& WeldedSmoothing::passes(const LayerKernels& k, const cl::Memory& layer, const LevelLayout& l,
@@ -63,7 +69,7 @@ const cl::Buffer& WeldedSmoothing::passes(const LayerKernels& k, const cl::Memor
   // The moved vertices: corners first, then the others.
   const int corners = set ? int(set->corners.size()) : w.host.edge_base;
   const int others = set ? int(w.host.moved_count(set->patches.size(), set->edges.size(), 0))
-                         : int(w.host.vertices()) - w.host.edge_base;
+                         : int(w.vertices) - w.host.edge_base;
   const cl::Buffer moved =
     set ? device_ints(runtime_.context(), w.host.moved(set->patches, set->edges, set->corners)) : cl::Buffer();
   const auto tiles = range_tiles(l, count);
@@ -101,7 +107,7 @@ std::vector<Float4> WeldedSmoothing::run_welded(const LayerKernels& k, const cl:
                                                 const std::vector<float>& steps)
 {
   const cl::Buffer& result = passes(k, layer, l, nullptr, cl::Buffer(), weights, steps);
-  std::vector<Float4> out(level(l).host.vertices());
+  std::vector<Float4> out(level(l).vertices);
   runtime_.queue().enqueueReadBuffer(result, CL_TRUE, 0, out.size() * sizeof(Float4), out.data());
   return out;
 }

@@ -45,7 +45,8 @@ public:
 private:
   struct Level
   {
-    WeldedNeighbours host;
+    WeldedNeighbours host; // its counts only
+    std::size_t vertices = 0;
     cl::Buffer vertex_of, texel, first, ring, around;
   };
   Level& level(const LevelLayout& l);
