@@ -119,12 +119,19 @@ inline int tile_texel(int2 g, __global const int *list, int count, int *p, int2 
   return 1;
 }
 
-/* The same for the texels strictly inside patches: returns 0 for texels on a
- * patch side or corner, which the table-driven kernels own. */
+/* The same for a kernel over the texels strictly inside patches (sides and
+ * corners belong to the table-driven kernels), whose range is
+ * (tile - 2, (tile - 2) * count): no work item lands on a side. */
 inline int interior_texel(int2 g, __global const int *list, int count, int *p, int2 *ij)
 {
-  return tile_texel(g, list, count, p, ij) && (*ij).x > 0 && (*ij).y > 0 && (*ij).x < g.x - 1 &&
-         (*ij).y < g.x - 1;
+  const int inner = g.x - 2;
+  const int i = get_global_id(0), y = get_global_id(1);
+  const int a = y / inner;
+  *ij = (int2)(i + 1, y - a * inner + 1);
+  if (a >= count)
+    return 0;
+  *p = list ? list[a] : a;
+  return 1;
 }
 
 /* Item k of a table-driven kernel: list[k], or k itself when list is null. */

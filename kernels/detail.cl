@@ -57,7 +57,7 @@ TEXEL_INLINE float4 decoded(ATLAS_IN smooth, int2 g, int p, int2 ij, __global co
 
 /* Decoding reads U from the finest level and writes into `fine`, another
  * layer holding S: the texels of the listed patches, sides and corners are
- * rebuilt; the rest keep S. Range: (tile, tile * count); texels strictly
+ * rebuilt; the rest keep S. Range: (n - 1, (n - 1) * count); texels strictly
  * inside the listed patches. */
 __kernel void decode_interior(ATLAS_IN smooth, int2 g, __global const int *list, int count,
                               __global const float4 *details, ATLAS_OUT fine)

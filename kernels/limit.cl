@@ -20,7 +20,7 @@ inline void limit_regular(const float4 *q, float4 *pos, float4 *nrm)
 }
 
 /* Lists (patches, edges, rings) select what to update; null: everything.
- * Range: (tile, tile * count); texels strictly inside the patches. */
+ * Range: (n - 1, (n - 1) * count); texels strictly inside the patches. */
 __kernel void limit_interior(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, __global const int *list,
                              int count)
 {

@@ -8,7 +8,7 @@
 
 #define BINOMIAL5(k) ((k) == 0 ? 0.375f : ((k) == 1 || (k) == -1) ? 0.25f : 0.0625f)
 
-/* Range: (dst tile, dst tile * patches); texels strictly inside patches. */
+/* Range: (dst n - 1, (dst n - 1) * patches); texels strictly inside patches. */
 __kernel void reduce_interior(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, int patches)
 {
   int p;

@@ -12,7 +12,7 @@ inline float3 refine_weights(int i)
   return (i & 1) ? (float3)(0.5f, 0.5f, 0.0f) : (float3)(0.125f, 0.75f, 0.125f);
 }
 
-/* Range: (dst tile, dst tile * patches); texels strictly inside patches. */
+/* Range: (dst n - 1, (dst n - 1) * patches); texels strictly inside patches. */
 __kernel void subdivide_interior(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, __global const int *list, int patches)
 {
   int p;

@@ -57,13 +57,27 @@ SetLists set_lists(const cl::Context& context, const AtlasTopology& topology, co
 
 } // namespace
 
+namespace {
+
+//! `count` squares of side x side work items, stacked along the second axis.
+std::pair<cl::NDRange, cl::NDRange> range_squares(std::size_t side, int count)
+{
+  if (side > kGroupTexels)
+    return {cl::NDRange(side, side * std::size_t(count)), cl::NullRange};
+  const std::size_t rows = std::max<std::size_t>(1, kGroupTexels / side);
+  return {cl::NDRange(side, round_up(side * std::size_t(count), rows)), cl::NDRange(side, rows)};
+}
+
+} // namespace
+
 std::pair<cl::NDRange, cl::NDRange> range_tiles(const LevelLayout& l, int count)
 {
-  const std::size_t tile = std::size_t(l.tile);
-  if (tile > kGroupTexels)
-    return {cl::NDRange(tile, tile * std::size_t(count)), cl::NullRange};
-  const std::size_t rows = std::max<std::size_t>(1, kGroupTexels / tile);
-  return {cl::NDRange(tile, round_up(tile * std::size_t(count), rows)), cl::NDRange(tile, rows)};
+  return range_squares(std::size_t(l.tile), count);
+}
+
+std::pair<cl::NDRange, cl::NDRange> range_interiors(const LevelLayout& l, int count)
+{
+  return range_squares(std::size_t(l.n - 1), count);
 }
 
 AtlasStorage parse_storage(const std::string& name)
@@ -297,8 +311,8 @@ void Atlas::subdivide(int from_level, int to_level, const PatchSet* set)
     const LevelLayout s = layout(l), d = layout(l + 1);
     const cl::Memory &in = levels_[l - 1].mem(), &out = levels_[l].mem();
     if (patches > 0) {
-      const auto tiles = range_tiles(d, patches);
-      launch(q, k.subdivide_interior, tiles.first, tiles.second, in, out, grid(s), grid(d), patch_list, patches);
+      const auto inside = range_interiors(d, patches);
+      launch(q, k.subdivide_interior, inside.first, inside.second, in, out, grid(s), grid(d), patch_list, patches);
     }
     if (edges > 0)
       launch(q, k.subdivide_edges, range1d(edges), kLocal1D, in, out, k.edges, edge_list, edges, grid(s), grid(d));
@@ -322,11 +336,12 @@ void Atlas::reduce(int from_level, int to_level)
   for (int l = from_level; l > to_level; --l) {
     const LevelLayout s = layout(l), d = layout(l - 1);
     const cl::Memory &in = levels_[l - 1].mem(), &out = levels_[l - 2].mem();
-    const auto tiles = range_tiles(d, d.patches);
-    launch(q, k.reduce_interior, tiles.first, tiles.second, in, out, grid(s), grid(d), patches);
-    if (d.n > 1)
+    if (d.n > 1) {
+      const auto inside = range_interiors(d, d.patches);
+      launch(q, k.reduce_interior, inside.first, inside.second, in, out, grid(s), grid(d), patches);
       launch(q, k.reduce_edges, range_edges(d.n - 1, edges), kLocalEdges, in, out, k.edges, edges, grid(s),
              grid(d));
+    }
     launch(q, k.reduce_corners, range1d(rings), kLocal1D, in, out, k.rings, k.slots, rings, grid(s),
            grid(d));
   }
@@ -351,9 +366,9 @@ void Atlas::compute_limit_of(int level, const cl::Memory& pos, const cl::Memory&
   const cl::Buffer &patch_list = lists.patches, &edge_list = lists.edges, &ring_list = lists.rings;
   const int patches = lists.patch_count, edges = lists.edge_count, rings = lists.ring_count;
   const cl::Memory& in = levels_[level - 1].mem();
-  if (patches > 0) {
-    const auto tiles = range_tiles(l, patches);
-    launch(q, k.limit_interior, tiles.first, tiles.second, in, pos, nrm, grid(l), patch_list, patches);
+  if (l.n > 1 && patches > 0) {
+    const auto inside = range_interiors(l, patches);
+    launch(q, k.limit_interior, inside.first, inside.second, in, pos, nrm, grid(l), patch_list, patches);
   }
   if (l.n > 1 && edges > 0)
     launch(q, k.limit_edges, range1d(edges), kLocal1D, in, pos, nrm, k.edges, edge_list, edges,

@@ -50,6 +50,9 @@ inline cl_int2 grid(const LevelLayout& l) { return cl_int2{{l.tile, l.tiles_x}};
 //! Global and local range for `count` whole tiles of a level, a work item per
 //! texel: (tile, tile * count).
 std::pair<cl::NDRange, cl::NDRange> range_tiles(const LevelLayout& layout, int count);
+//! The same for the texels strictly inside the tiles (interior_texel() in
+//! atlas_access.cl): (n - 1, (n - 1) * count). Levels from 2 on.
+std::pair<cl::NDRange, cl::NDRange> range_interiors(const LevelLayout& layout, int count);
 
 //! Bytes of one float4 layer of a level in the given storage.
 std::size_t layer_bytes(const LevelLayout& layout, AtlasStorage storage);

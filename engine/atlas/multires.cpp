@@ -187,9 +187,11 @@ void Multires::reconstruct(const std::vector<int>& affected)
   const PatchSet set = atlas_.patch_set(affected, Reach::All);
   const cl::Buffer patches = device_ints(rt.context(), set.patches), edges = device_ints(rt.context(), set.edges),
                    rings = device_ints(rt.context(), set.rings);
-  const auto tiles = range_tiles(f, int(set.patches.size()));
-  launch(q, d.decode_interior, tiles.first, tiles.second, fine, grid(f), patches, int(set.patches.size()), d.details,
-         d.saved);
+  if (f.n > 1 && !set.patches.empty()) {
+    const auto inside = range_interiors(f, int(set.patches.size()));
+    launch(q, d.decode_interior, inside.first, inside.second, fine, grid(f), patches, int(set.patches.size()),
+           d.details, d.saved);
+  }
   if (f.n > 1 && !set.edges.empty())
     launch(q, d.decode_edges, cl::NDRange(round_up(set.edges.size(), kGroup)), cl::NDRange(kGroup), fine,
            grid(f), atlas_.edge_table(), edges, int(set.edges.size()), d.details, d.saved);
