@@ -114,22 +114,27 @@ struct SmoothingResult
   double meshpaint_stroke_ms = 0;                       //!< a whole stroke of `iterations`
 };
 
-//! The cost of one further iteration: runs of `iterations` and of three
-//! times as many, each the median of `repeats`, so that what a run pays once (a
-//! stroke's culling, weights and limit update; VTK's and OpenMesh's set-up)
-//! drops out for every method alike. Also returns the median whole run.
+//! The cost of one further iteration: runs of `iterations` and of `more`
+//! further ones, each the median of `repeats`, so that what a run pays once
+//! (a stroke's culling, weights and limit update; VTK's and OpenMesh's
+//! set-up) drops out for every method alike. Also returns the median run of
+//! `iterations`.
 template <typename Run>
-double per_iteration(int iterations, int repeats, Run run, double* whole = nullptr)
+double per_iteration(int iterations, int more, int repeats, Run run, double* whole = nullptr)
 {
-  std::vector<double> once, thrice;
+  std::vector<double> base, longer;
   for (int k = 0; k < repeats; ++k) {
-    once.push_back(run(iterations));
-    thrice.push_back(run(3 * iterations));
+    base.push_back(run(iterations));
+    longer.push_back(run(iterations + more));
   }
   if (whole)
-    *whole = median(once);
-  return (median(thrice) - median(once)) / (2 * iterations);
+    *whole = median(base);
+  return (median(longer) - median(base)) / more;
 }
+
+//! Further iterations per run: enough on a small mesh that their time stands
+//! well above the noise of a run's one-off costs.
+int further_iterations(std::size_t vertices) { return vertices < 250000 ? 100 : 20; }
 
 //! Per-iteration time of Laplacian smoothing of the whole level-L surface.
 SmoothingResult bench_smoothing(PaintSurface& surface, int iterations, int repeats)
@@ -145,8 +150,9 @@ SmoothingResult bench_smoothing(PaintSurface& surface, int iterations, int repea
   s.radius = float(4 * diagonal); // the whole surface
   s.falloff = FALLOFF_CONSTANT;
   s.taubin = false;
+  const int more = further_iterations(r.vertices);
   r.meshpaint_ms = per_iteration(
-    iterations, repeats,
+    iterations, more, repeats,
     [&](int n) {
       s.iterations = n;
       return surface.apply(s).ms;
@@ -154,7 +160,7 @@ SmoothingResult bench_smoothing(PaintSurface& surface, int iterations, int repea
     &r.meshpaint_stroke_ms);
 
   vtkSmartPointer<vtkPolyData> poly = to_polydata(welded);
-  r.vtk_ms = per_iteration(iterations, repeats, [&](int n) {
+  r.vtk_ms = per_iteration(iterations, more, repeats, [&](int n) {
     auto smooth = vtkSmartPointer<vtkSmoothPolyDataFilter>::New();
     smooth->SetInputData(poly);
     smooth->SetNumberOfIterations(n);
@@ -176,7 +182,7 @@ SmoothingResult bench_smoothing(PaintSurface& surface, int iterations, int repea
   mesh.request_vertex_normals();
   mesh.request_face_normals();
   mesh.update_normals();
-  r.openmesh_ms = per_iteration(iterations, repeats, [&](int n) {
+  r.openmesh_ms = per_iteration(iterations, more, repeats, [&](int n) {
     OpenMesh::Smoother::JacobiLaplaceSmootherT<PolyMesh> smoother(mesh);
     smoother.initialize(OpenMesh::Smoother::SmootherT<PolyMesh>::Tangential_and_Normal,
                         OpenMesh::Smoother::SmootherT<PolyMesh>::C0);
@@ -279,9 +285,11 @@ int bench_paint(const Args& args)
             << "  device " << runtime->info().summary() << ", " << storage_name(storage) << " storage\n\n";
   table.print(std::cout);
   std::cout << "\n  the paper's figures (GeForce 7800) include rendering at 800x600\n\n"
-            << "full-surface Laplacian smoothing, per iteration: runs of 10 and 30 iterations (medians of 5),\n"
-            << "the difference over 20, so that each method's set-up drops out; the last column is a whole\n"
-            << "meshpaint stroke of 10 iterations (culling, weights, smoothing, limit and bounds)\n\n";
+            << "full-surface Laplacian smoothing, per iteration: runs of 10 and of 10 + N iterations (medians\n"
+            << "of 5; N = " << further_iterations(0) << " below 250,000 vertices, else " << further_iterations(250000)
+            << "), the difference over N, so that each method's set-up\n"
+            << "drops out; the last column is a whole meshpaint stroke of 10 iterations (culling, weights,\n"
+            << "smoothing, limit and bounds)\n\n";
   smoothing.print(std::cout);
   std::cout << "\nmultiresolution: one sculpt dab at edit level 1, the finest level rebuilt with its details\n"
             << "(weights on the edit level, its control points moved, subdivision to the finest level,\n"
