@@ -80,9 +80,12 @@ __kernel void limit_edges(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, __global c
   }
 }
 
-/* Range: count; every copy of each patch corner. */
+/* Range: count; every copy of each patch corner. The masks' trigonometry
+ * comes per valence m from `valences` (entries 2m, 2m + 1: see
+ * limit_constants() in atlas.cpp); multiples of the angle by rotation. */
 __kernel void limit_corners(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, __global const CornerRing *rings,
-                            __global const CornerSlot *slots, __global const int *list, int count, int2 g)
+                            __global const CornerSlot *slots, __global const float4 *restrict valences,
+                            __global const int *list, int count, int2 g)
 {
   const int k = get_global_id(0);
   if (k >= count)
@@ -108,31 +111,27 @@ __kernel void limit_corners(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, __global
             CORNER_LOAD(src, g, s1, 1, 1)) *
            (1.0f / 6.0f);
     } else {
-      const float theta = M_PI_F / (float)m;
-      const float c = cos(theta), s = sin(theta);
-      const float denom = 1.0f / ((float)m * (3.0f + c));
-      const float r = (c + 1.0f) / s;
+      const float4 k4 = valences[2 * m + 1]; /* cos, sin of pi/m, denom, r */
+      const float c = k4.x, s = k4.y, r = k4.w;
       t2 = (4.0f * r * (c - 1.0f)) * v + (-r * (1.0f + 2.0f * c)) * (e0 + em);
+      float ci = 1.0f, si = 0.0f; /* cos, sin of i pi/m */
       for (int i = 0; i < m; ++i) {
-        const CornerSlot si = slots[ring.first + i];
-        const float sin_i = sin(i * theta), sin_i1 = sin((i + 1) * theta);
+        const CornerSlot slot = slots[ring.first + i];
+        const float cn = ci * c - si * s, sn = si * c + ci * s;
         if (i > 0)
-          t2 += (4.0f * sin_i) * CORNER_LOAD(src, g, si, 1, 0);
-        t2 += (sin_i + sin_i1) * CORNER_LOAD(src, g, si, 1, 1);
+          t2 += (4.0f * si) * CORNER_LOAD(src, g, slot, 1, 0);
+        t2 += (si + sn) * CORNER_LOAD(src, g, slot, 1, 1);
+        ci = cn;
+        si = sn;
       }
-      t2 *= denom;
+      t2 *= k4.z;
     }
   } else {
-    const float fm = (float)m, theta = 2.0f * M_PI_F / fm;
-    const float c = cos(theta), ch = cos(0.5f * theta);
-    const float lambda = 0.3125f + 0.0625f * (c + ch * sqrt(2.0f * (9.0f + c)));
-    const float face_scale = 1.0f / (4.0f * lambda - 1.0f);
+    const float4 k4 = valences[2 * m]; /* cos, sin of 2pi/m, lambda, 1 / (4 lambda - 1) */
+    const float fm = (float)m, c = k4.x, st = k4.y, face_scale = k4.w;
     float4 es = (float4)(0.0f), ds = (float4)(0.0f);
     t1 = (float4)(0.0f);
     t2 = (float4)(0.0f);
-    /* cos(i theta) by rotation, not a cos() per slot: the corner kernel
-     * runs once per ring and is bound by these. */
-    const float st = sin(theta);
     float cp = c, ci = 1.0f, si_ = 0.0f; /* cos(-theta) = cos(theta) */
     for (int i = 0; i < m; ++i) {
       const CornerSlot slot = slots[ring.first + i];

@@ -8,6 +8,7 @@
 #include "mesh/spatial_order.h"
 
 #include <algorithm> // for std::max, std::sort, std::unique, std::binary_search
+#include <cmath>     // for std::cos, std::sin, std::sqrt
 #include <cstdlib>   // for std::getenv
 
 namespace meshpaint {
@@ -144,7 +145,29 @@ struct Atlas::Kernels
   cl::Kernel limit_interior, limit_edges, limit_corners;
   cl::Kernel reduce_interior, reduce_edges, reduce_corners;
   cl::Buffer edges, rings, slots;
+  cl::Buffer valences; // limit_corners' constants per valence (limit_constants())
 };
+
+//! The corner limit masks' constants for every valence m the rings have, in
+//! double precision: two float4 per m, for an interior vertex
+//! (cos 2pi/m, sin 2pi/m, lambda, 1 / (4 lambda - 1)) and for a boundary one
+//! (cos pi/m, sin pi/m, 1 / (m (3 + cos pi/m)), (cos pi/m + 1) / sin pi/m).
+std::vector<Float4> limit_constants(const AtlasTopology& topo)
+{
+  int most = 1;
+  for (const CornerRing& r : topo.rings)
+    most = std::max(most, int(r.count));
+  std::vector<Float4> out(2 * std::size_t(most + 1), Float4{0.f, 0.f, 0.f, 0.f});
+  for (int m = 1; m <= most; ++m) {
+    const double theta = 2.0 * M_PI / m, c = std::cos(theta), ch = std::cos(0.5 * theta);
+    const double lambda = 0.3125 + 0.0625 * (c + ch * std::sqrt(2.0 * (9.0 + c)));
+    out[2 * std::size_t(m)] = {float(c), float(std::sin(theta)), float(lambda), float(1.0 / (4.0 * lambda - 1.0))};
+    const double half = M_PI / m, bc = std::cos(half), bs = std::sin(half);
+    out[2 * std::size_t(m) + 1] = {float(bc), float(bs), float(1.0 / (m * (3.0 + bc))),
+                                   float(bs != 0.0 ? (bc + 1.0) / bs : 0.0)};
+  }
+  return out;
+}
 
 std::string fit_problem(const AtlasTopology& topo, int level, const DeviceInfo& device, AtlasStorage storage)
 {
@@ -258,6 +281,7 @@ Atlas::Atlas(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int max_lev
     }
     k.edges = upload(topology_.edges);
     k.rings = upload(rings);
+    k.valences = upload(limit_constants(topology_));
     k.slots = upload(topology_.slots);
   } catch (const cl::Error& e) {
     throw DeviceError("cannot set up the atlas on " + device.name + ": " + describe(e));
@@ -374,7 +398,8 @@ void Atlas::compute_limit_of(int level, const cl::Memory& pos, const cl::Memory&
     launch(q, k.limit_edges, range1d(edges), kLocal1D, in, pos, nrm, k.edges, edge_list, edges,
            grid(l));
   if (rings > 0)
-    launch(q, k.limit_corners, range1d(rings), kLocal1D, in, pos, nrm, k.rings, k.slots, ring_list, rings, grid(l));
+    launch(q, k.limit_corners, range1d(rings), kLocal1D, in, pos, nrm, k.rings, k.slots, k.valences, ring_list, rings,
+           grid(l));
   if (set)
     q.finish(); // the lists live until here
 }
