@@ -2,6 +2,7 @@
 // the limit surface kept current on the touched patches.
 
 #include "atlas/weld.h"
+#include "atlas/welded_neighbours.h"
 #include "paint/paint_surface.h"
 #include "support/copies.h"
 #include "support/runtime.h"
@@ -12,6 +13,7 @@
 #include <cmath>   // for std::sqrt, std::sin
 #include <cstring> // for std::memcmp
 #include <map>     // for std::map
+#include <set>     // for std::multiset, std::set
 
 namespace meshpaint {
 namespace {
@@ -62,6 +64,54 @@ Stroke brush(Tool tool, const Vec3& at, float radius)
   s.radius = radius;
   s.falloff = FALLOFF_CONSTANT;
   return s;
+}
+
+// Smoothing's neighbour tables against the quads of the welded surface:
+// every vertex reads its own texel, and its neighbours are the quad mesh's
+// edge neighbours (along the border only, for a border vertex; none for the
+// corner of a single quad).
+TEST(GeometryBrush, WeldedNeighboursAreTheQuadMeshsEdges)
+{
+  for (const std::string& name : test::shape_names()) {
+    Atlas atlas(test::runtime(), test::shape(name), 3, AtlasStorage::Buffer);
+    atlas.subdivide(1, 3);
+    for (int level = 1; level <= 3; ++level) {
+      const LevelLayout l = atlas.layout(level);
+      const WeldedNeighbours w = welded_neighbours(atlas.topology(), l);
+      const WeldedSurface s = weld(atlas.topology(), l, atlas.read_positions(level), nullptr);
+      ASSERT_EQ(w.vertices(), s.points.size()) << name;
+      std::map<std::pair<int, int>, int> edges; // quads per edge
+      for (const auto& q : s.quads)
+        for (int k = 0; k < 4; ++k)
+          ++edges[std::minmax(q[std::size_t(k)], q[std::size_t((k + 1) % 4)])];
+      std::vector<std::multiset<int>> all(w.vertices()), border(w.vertices());
+      std::vector<int> faces(w.vertices(), 0);
+      for (const auto& q : s.quads)
+        for (const int v : q)
+          ++faces[std::size_t(v)];
+      for (const auto& [e, quads] : edges) {
+        all[std::size_t(e.first)].insert(e.second);
+        all[std::size_t(e.second)].insert(e.first);
+        if (quads == 1) {
+          border[std::size_t(e.first)].insert(e.second);
+          border[std::size_t(e.second)].insert(e.first);
+        }
+      }
+      for (std::size_t v = 0; v < w.vertices(); ++v) {
+        ASSERT_EQ(w.vertex_of[std::size_t(w.texel[v])], int(v)) << name << " level " << level;
+        std::multiset<int> got;
+        if (int(v) < w.edge_base)
+          got.insert(w.ring.begin() + w.first[v], w.ring.begin() + w.first[v + 1]);
+        else
+          for (const int n : std::set<int>(w.around[v - std::size_t(w.edge_base)].begin(),
+                                           w.around[v - std::size_t(w.edge_base)].end()))
+            got.insert(n);
+        const std::multiset<int> want =
+          border[v].empty() ? all[v] : faces[v] == 1 && int(v) < w.edge_base ? std::multiset<int>() : border[v];
+        ASSERT_EQ(got, want) << name << " level " << level << " vertex " << v;
+      }
+    }
+  }
 }
 
 TEST(GeometryBrush, SculptMovesTheCentreByAmountAlongTheNormal)

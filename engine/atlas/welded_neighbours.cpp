@@ -2,7 +2,6 @@
 
 #include "atlas/weld.h"
 
-
 namespace meshpaint {
 
 namespace {

@@ -93,6 +93,8 @@ const cl::Buffer& WeldedSmoothing::passes(const LayerKernels& k, const cl::Memor
 void WeldedSmoothing::run(const LayerKernels& k, const cl::Memory& layer, const LevelLayout& l, const PatchSet* set,
                           const cl::Buffer& weights, const std::vector<float>& steps)
 {
+  if (set && set->patches.empty())
+    return;
   const cl::Buffer list = set ? device_ints(runtime_.context(), set->patches) : cl::Buffer();
   const cl::Buffer& result = passes(k, layer, l, set, list, weights, steps);
   const int count = set ? int(set->patches.size()) : l.patches;

@@ -33,7 +33,7 @@ public:
   //! `weights` per texel of that level, patch-major.
   void run(const LayerKernels& kernels, const cl::Memory& layer, const LevelLayout& l, const PatchSet* set,
            const cl::Buffer& weights, const std::vector<float>& steps);
-  //! The same over a buffer with nothing to write back: the result per
+  //! The same on every patch, with nothing written back: the result per
   //! welded vertex (weld_map() order) is read to the host.
   std::vector<Float4> run_welded(const LayerKernels& kernels, const cl::Memory& layer, const LevelLayout& l,
                                  const cl::Buffer& weights, const std::vector<float>& steps);
