@@ -56,10 +56,6 @@ SetLists set_lists(const cl::Context& context, const AtlasTopology& topology, co
           int(set->patches.size()), int(set->edges.size()), int(set->rings.size())};
 }
 
-} // namespace
-
-namespace {
-
 //! `count` squares of side x side work items, stacked along the second axis.
 std::pair<cl::NDRange, cl::NDRange> range_squares(std::size_t side, int count)
 {
@@ -148,6 +144,8 @@ struct Atlas::Kernels
   cl::Buffer valences; // limit_corners' constants per valence (limit_constants())
 };
 
+namespace {
+
 //! The corner limit masks' constants for every valence m the rings have, in
 //! double precision: two float4 per m, for an interior vertex
 //! (cos 2pi/m, sin 2pi/m, lambda, 1 / (4 lambda - 1)) and for a boundary one
@@ -168,6 +166,8 @@ std::vector<Float4> limit_constants(const AtlasTopology& topo)
   }
   return out;
 }
+
+} // namespace
 
 std::string fit_problem(const AtlasTopology& topo, int level, const DeviceInfo& device, AtlasStorage storage)
 {

@@ -142,9 +142,8 @@ std::vector<std::uint8_t> AtlasTopology::shared_outside(const std::vector<int>& 
     const int p = patches[k];
     std::uint8_t bits = 0;
     for (int s = 0; s < 4; ++s) {
-      const PatchEdge& e = edges[std::size_t(patch_sides[std::size_t(p)][s])];
-      const int across = e.patch[0] == p && e.side[0] == s ? e.patch[1] : e.patch[0];
-      if (across >= 0 && !in[std::size_t(across)])
+      const int q = across(p, s);
+      if (q >= 0 && !in[std::size_t(q)])
         bits |= std::uint8_t(1u << s);
       const CornerRing& ring = rings[std::size_t(patch_corners[std::size_t(p)][s])];
       for (int m = 0; m < ring.count; ++m)

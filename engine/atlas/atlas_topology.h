@@ -8,7 +8,7 @@
 
 #include <array>   // for std::array
 #include <cstdint> // for std::uint8_t
-#include <vector> // for std::vector
+#include <vector>  // for std::vector
 
 namespace meshpaint {
 
@@ -21,6 +21,12 @@ struct AtlasTopology
   std::vector<CornerRing> rings;                 //!< #level-1 vertices
   std::vector<CornerSlot> slots;                 //!< sum of ring counts
 
+  //! The patch across side `side` of `patch`, or -1 on a mesh boundary.
+  int across(int patch, int side) const
+  {
+    const PatchEdge& e = edges[std::size_t(patch_sides[std::size_t(patch)][std::size_t(side)])];
+    return e.patch[0] == patch && e.side[0] == side ? e.patch[1] : e.patch[0];
+  }
   //! Vertices of the welded level-l surface (each stored copy counted once).
   std::size_t unique_vertices(int level) const;
   //! `patches` and `layers` rings of patches around them (each sharing a

@@ -194,10 +194,8 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
   const AtlasTopology& topo = atlas_->topology();
   neighbours_.resize(std::size_t(l.patches));
   for (int p = 0; p < l.patches; ++p)
-    for (int s = 0; s < 4; ++s) {
-      const PatchEdge& e = topo.edges[topo.patch_sides[p][s]];
-      neighbours_[std::size_t(p)][s] = e.patch[0] == p && e.side[0] == s ? e.patch[1] : e.patch[0];
-    }
+    for (int s = 0; s < 4; ++s)
+      neighbours_[std::size_t(p)][s] = topo.across(p, s);
 }
 
 
