@@ -20,34 +20,78 @@ inline void limit_regular(const float4 *q, float4 *pos, float4 *nrm)
 }
 
 /* Lists (patches, edges, rings) select what to update; null: everything.
- * Range: (n - 1, (n - 1) * count); texels strictly inside the patches. */
-__kernel void limit_interior(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, __global const int *list,
-                             int count)
+ * The side and corner kernels put their results in compact arrays (a pos,
+ * nrm pair per item), which limit_tiles then copies into whole tiles: every
+ * tile's cache lines are written once, by one kernel. Writing each copy
+ * from the side and corner kernels had each line fetched and written back
+ * by three kernels, and that traffic was most of the limit's time. */
+
+/* Pair k of a compact array: position, normal. */
+#define PAIR_STORE(a, k, pv, nv) \
+  do {                           \
+    (a)[2 * (k)] = (pv);         \
+    (a)[2 * (k) + 1] = (nv);     \
+  } while (0)
+
+/* Range: whole tiles, (tile, tile * count). Texels strictly inside a patch
+ * are computed here; its sides come from `sides` (edge e's texel t of its
+ * first patch's frame at e * (n - 1) + t - 1) and its corners from
+ * `corners` (per device ring), through the patch's tables: per side
+ * 2 * edge + (1 when the patch is the edge's second), per corner the ring.
+ * The tables' edges and rings must have been computed in this update. */
+__kernel void limit_tiles(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, __global const int *list, int count,
+                          __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
+                          __global const float4 *restrict sides, __global const float4 *restrict corners)
 {
   int p;
   int2 ij;
-  if (!interior_texel(g, list, count, &p, &ij))
+  if (!tile_texel(g, list, count, &p, &ij))
     return;
-  float4 q[9];
-  for (int b = -1; b <= 1; ++b)
-    for (int a = -1; a <= 1; ++a)
-      q[3 * (b + 1) + a + 1] = ATLAS_LOAD(src, g, p, ij + (int2)(a, b));
+  const int n = g.x - 1;
   float4 pv, nv;
-  limit_regular(q, &pv, &nv);
+  if (ij.x > 0 && ij.x < n && ij.y > 0 && ij.y < n) {
+    float4 q[9];
+    for (int b = -1; b <= 1; ++b)
+      for (int a = -1; a <= 1; ++a)
+        q[3 * (b + 1) + a + 1] = ATLAS_LOAD(src, g, p, ij + (int2)(a, b));
+    limit_regular(q, &pv, &nv);
+  } else {
+    int k;
+    const int on_x = ij.x == 0 || ij.x == n, on_y = ij.y == 0 || ij.y == n;
+    if (on_x && on_y) {
+      const int c = ij.y == 0 ? (ij.x == 0 ? 0 : 1) : (ij.x == 0 ? 3 : 2);
+      const int4 r = patch_rings[p];
+      k = c == 0 ? r.x : c == 1 ? r.y : c == 2 ? r.z : r.w;
+      pv = corners[2 * k];
+      nv = corners[2 * k + 1];
+    } else {
+      /* Side s and the position t along it in the patch's own frame. */
+      const int s = ij.y == 0 ? 0 : ij.x == n ? 1 : ij.y == n ? 2 : 3;
+      const int t = s == 0 ? ij.x : s == 1 ? ij.y : s == 2 ? n - ij.x : n - ij.y;
+      const int4 e = patch_sides[p];
+      const int code = s == 0 ? e.x : s == 1 ? e.y : s == 2 ? e.z : e.w;
+      k = (code >> 1) * (n - 1) + ((code & 1) ? n - t : t) - 1;
+      pv = sides[2 * k];
+      nv = sides[2 * k + 1];
+    }
+  }
   ATLAS_STORE(pos, g, p, ij, pv);
   ATLAS_STORE(nrm, g, p, ij, nv);
 }
 
-/* Range: count; per edge, its texels on the patch sides, corners excluded. */
-__kernel void limit_edges(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, __global const PatchEdge *edges,
+/* Range: count; per edge, its texels on the patch sides, corners excluded,
+ * into `sides`. */
+__kernel void limit_edges(ATLAS_IN src, __global float4 *restrict sides, __global const PatchEdge *edges,
                           __global const int *list, int count, int2 g)
 {
   const int k = get_global_id(0);
   if (k >= count)
     return;
-  const PatchEdge e = edges[LISTED(list, k)];
+  const int edge = LISTED(list, k);
+  const PatchEdge e = edges[edge];
   EDGE_FRAMES(e, g);
   const int interior = e.patch[1] >= 0;
+  const int first = edge * (g.x - 2) - 1; /* pair of texel t: first + t */
   /* A 3x3 window slides along the side: one new column per texel. Rows
    * b = -1 (across), 0 (the side), 1 (inwards); on a mesh boundary the row
    * across is never read. */
@@ -71,8 +115,7 @@ __kernel void limit_edges(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, __global c
       pv = s0;
       nv = (float4)(normalize(cross(((q[5] - q[3]) * 0.5f).xyz, (s1 - s0).xyz)), 0.0f);
     }
-    EDGE_STORE(pos, g, e, t, pv);
-    EDGE_STORE(nrm, g, e, t, nv);
+    PAIR_STORE(sides, first + t, pv, nv);
     for (int b = 0; b < 9; b += 3) {
       q[b] = q[b + 1];
       q[b + 1] = q[b + 2];
@@ -80,17 +123,18 @@ __kernel void limit_edges(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, __global c
   }
 }
 
-/* Range: count; every copy of each patch corner. The masks' trigonometry
+/* Range: count; each patch corner's ring, into `corners`. The masks' trigonometry
  * comes per valence m from `valences` (entries 2m, 2m + 1: see
  * limit_constants() in atlas.cpp); multiples of the angle by rotation. */
-__kernel void limit_corners(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, __global const CornerRing *rings,
+__kernel void limit_corners(ATLAS_IN src, __global float4 *restrict corners, __global const CornerRing *rings,
                             __global const CornerSlot *slots, __global const float4 *restrict valences,
                             __global const int *list, int count, int2 g)
 {
   const int k = get_global_id(0);
   if (k >= count)
     return;
-  const CornerRing ring = rings[LISTED(list, k)];
+  const int r = LISTED(list, k);
+  const CornerRing ring = rings[r];
   const int m = ring.count;
   const CornerSlot first = slots[ring.first], last = slots[ring.first + m - 1];
   const float4 v = CORNER_LOAD(src, g, first, 0, 0);
@@ -148,9 +192,5 @@ __kernel void limit_corners(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, __global
     }
     p = (fm * fm * v + 4.0f * es + ds) * (1.0f / (fm * (fm + 5.0f)));
   }
-  const float4 nv = (float4)(normalize(cross(t1.xyz, t2.xyz)), 0.0f);
-  for (int i = 0; i < m; ++i) {
-    CORNER_STORE(pos, g, slots[ring.first + i], p);
-    CORNER_STORE(nrm, g, slots[ring.first + i], nv);
-  }
+  PAIR_STORE(corners, r, p, (float4)(normalize(cross(t1.xyz, t2.xyz)), 0.0f));
 }

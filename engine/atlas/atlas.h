@@ -122,7 +122,8 @@ public:
   void compute_limit();
   //! The same for the control points of another level, into the given
   //! layers of that level's layout (the atlas's own limit layers stay);
-  //! with a set, on its interiors, edges and rings only.
+  //! with a set, the whole tiles of its patches only, which needs every
+  //! side and corner of them among its edges and rings (Reach::Any).
   void compute_limit_of(int level, const cl::Memory& positions, const cl::Memory& normals,
                         const PatchSet* set = nullptr);
   //! Waits for every queued kernel.
@@ -131,7 +132,9 @@ public:
   //! The edges and rings that go with `patches` (sorted) by `reach`.
   PatchSet patch_set(const std::vector<int>& patches, Reach reach) const;
   //! Recomputes the limit layers on a set only (after editing positions
-  //! there): the set's interiors, edges and rings.
+  //! there): the whole tiles of the set's patches, as compute_limit_of().
+  //! Every patch holding a copy of a moved texel's limit must be in the set:
+  //! the edited patches' corner neighbourhood.
   void update_limit(const PatchSet& set);
   //! After the finest level was rewritten to what it was except on a set
   //! whose limit the caller recomputes with update_limit(): lets that update

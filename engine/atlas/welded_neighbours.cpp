@@ -27,7 +27,6 @@ std::size_t across_texel(const LevelLayout& l, int patch, int s, int t, int d)
 WeldedNeighbours welded_neighbours(const AtlasTopology& topo, const LevelLayout& l)
 {
   WeldedNeighbours w;
-  w.level = l.level;
   w.inner = l.n - 1;
   w.edge_base = int(topo.rings.size());
   w.interior_base = w.edge_base + int(topo.edges.size()) * w.inner;
@@ -74,8 +73,8 @@ WeldedNeighbours welded_neighbours(const AtlasTopology& topo, const LevelLayout&
   return w;
 }
 
-std::vector<int> WeldedNeighbours::moved(const std::vector<int>& patches, const std::vector<int>& edges,
-                                         const std::vector<int>& corners) const
+std::vector<int> WeldedNumbering::moved(const std::vector<int>& patches, const std::vector<int>& edges,
+                                        const std::vector<int>& corners) const
 {
   const int per_patch = inner * inner;
   std::vector<int> out;

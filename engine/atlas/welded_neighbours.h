@@ -11,19 +11,14 @@
 
 namespace meshpaint {
 
-struct WeldedNeighbours
+//! How weld_map() numbers a level's vertices: corners (one per level-1
+//! vertex), then the side texels edge by edge, then the patch interiors.
+struct WeldedNumbering
 {
-  int level = 1;
-  int inner = 0;                //!< texels along a side between its corners (n - 1)
-  int edge_base = 0;            //!< first side-texel vertex (vertices before it are corners)
-  int interior_base = 0;        //!< first patch-interior vertex
-  std::vector<int> vertex_of;   //!< per texel (patch-major), as weld_map()
-  std::vector<int> texel;       //!< per vertex: the texel its weight is read from
-  std::vector<int> first;       //!< per corner, and one more: where its ring starts in `ring`
-  std::vector<int> ring;        //!< corners' neighbours, in ring order
-  std::vector<std::array<int, 4>> around; //!< per vertex from edge_base on: summed in pairs
+  int inner = 0;         //!< texels along a side between its corners (n - 1)
+  int edge_base = 0;     //!< first side-texel vertex (vertices before it are corners)
+  int interior_base = 0; //!< first patch-interior vertex
 
-  std::size_t vertices() const { return texel.size(); }
   //! The vertices that smoothing moves on a patch set taken with Reach::All:
   //! the interiors of `patches`, the side texels of `edges` and the corners
   //! `corners` (level-1 vertices).
@@ -33,6 +28,18 @@ struct WeldedNeighbours
   {
     return corners + edges * std::size_t(inner) + patches * std::size_t(inner) * std::size_t(inner);
   }
+};
+
+//! The numbering with the tables smoothing reads.
+struct WeldedNeighbours : WeldedNumbering
+{
+  std::vector<int> vertex_of;   //!< per texel (patch-major), as weld_map()
+  std::vector<int> texel;       //!< per vertex: the texel its weight is read from
+  std::vector<int> first;       //!< per corner, and one more: where its ring starts in `ring`
+  std::vector<int> ring;        //!< corners' neighbours, in ring order
+  std::vector<std::array<int, 4>> around; //!< per vertex from edge_base on: summed in pairs
+
+  std::size_t vertices() const { return texel.size(); }
 };
 
 //! Neighbours of every welded vertex of the level: 4 inside a patch and

@@ -290,10 +290,10 @@ void PaintSurface::refresh_geometry(const std::vector<int>& patches)
   Device& d = *device_;
   Runtime& rt = atlas_->runtime();
   const LevelLayout l = atlas_->layout(level_);
-  atlas_->update_limit(atlas_->patch_set(patches, Reach::Any));
   // The limit changed on the patches' sides and corners too, which every
-  // patch sharing a corner with them stores: their bounds move as well.
+  // patch sharing a corner with them stores: their tiles and bounds as well.
   const std::vector<int> around = atlas_->topology().corner_neighbourhood(patches, 1);
+  atlas_->update_limit(atlas_->patch_set(around, Reach::Any));
   const cl::Buffer list = device_ints(rt.context(), around);
   launch(rt.queue(), d.patch_bounds, cl::NDRange(round_up(around.size(), kGroup)), cl::NDRange(kGroup),
          atlas_->limit_positions_layer(), grid(l), list, int(around.size()), d.bounds);

@@ -43,11 +43,7 @@ WeldedSmoothing::Level& WeldedSmoothing::level(const LevelLayout& l)
   w.around = cl::Buffer(c, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(cl_int4) * host.around.size(),
                         host.around.data());
   w.vertices = host.vertices();
-  // The tables live on the device; the host keeps what moved() needs.
-  w.host.level = host.level;
-  w.host.inner = host.inner;
-  w.host.edge_base = host.edge_base;
-  w.host.interior_base = host.interior_base;
+  w.numbering = static_cast<const WeldedNumbering&>(host); // the tables live on the device only
   const std::size_t need = w.vertices * sizeof(Float4);
   if (need > capacity_) {
     a_ = cl::Buffer(c, CL_MEM_READ_WRITE, need);
@@ -67,11 +63,11 @@ const cl::Buffer& WeldedSmoothing::passes(const LayerKernels& k, const cl::Memor
   // Null lists: every patch, every vertex.
   const int count = set ? int(set->patches.size()) : l.patches;
   // The moved vertices: corners first, then the others.
-  const int corners = set ? int(set->corners.size()) : w.host.edge_base;
-  const int others = set ? int(w.host.moved_count(set->patches.size(), set->edges.size(), 0))
-                         : int(w.vertices) - w.host.edge_base;
+  const int corners = set ? int(set->corners.size()) : w.numbering.edge_base;
+  const int others = set ? int(w.numbering.moved_count(set->patches.size(), set->edges.size(), 0))
+                         : int(w.vertices) - w.numbering.edge_base;
   const cl::Buffer moved =
-    set ? device_ints(runtime_.context(), w.host.moved(set->patches, set->edges, set->corners)) : cl::Buffer();
+    set ? device_ints(runtime_.context(), w.numbering.moved(set->patches, set->edges, set->corners)) : cl::Buffer();
   const auto tiles = range_tiles(l, count);
   cl::Kernel gather = k.gather;
   launch(q, gather, tiles.first, tiles.second, layer, grid(l), list, count, w.vertex_of, w.texel, weights, a_, b_,
@@ -84,7 +80,7 @@ const cl::Buffer& WeldedSmoothing::passes(const LayerKernels& k, const cl::Memor
              *to, moved, corners, w.first, w.ring, weights_, step);
     if (others > 0)
       launch(q, smooth_texels_, cl::NDRange(round_up(std::size_t(others), kGroup)), cl::NDRange(kGroup), *from, *to,
-             moved, corners, others, w.host.edge_base, w.around, weights_, step);
+             moved, corners, others, w.numbering.edge_base, w.around, weights_, step);
     std::swap(from, to);
   }
   return *from;

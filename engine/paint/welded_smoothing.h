@@ -45,7 +45,7 @@ public:
 private:
   struct Level
   {
-    WeldedNeighbours host; // its counts only
+    WeldedNumbering numbering; // the host's part: which vertices a set moves
     std::size_t vertices = 0;
     cl::Buffer vertex_of, texel, first, ring, around;
   };
