@@ -55,9 +55,9 @@ TEXEL_INLINE float4 decoded(ATLAS_IN smooth, int2 g, int p, int2 ij, __global co
   return (float4)(s.xyz + (d.x * t + d.y * b + d.z * n), s.w);
 }
 
-/* Decoding reads U from the finest level and writes into `fine`, another
- * layer holding S: the texels of the listed patches, sides and corners are
- * rebuilt; the rest keep S. Range: (n - 1, (n - 1) * count); texels strictly
+/* Decoding reads U from a layer of the finest level's layout and writes
+ * into the finest level, which holds S: the texels of the listed patches,
+ * sides and corners are rebuilt; the rest keep S. Range: (n - 1, (n - 1) * count); texels strictly
  * inside the listed patches. */
 __kernel void decode_interior(ATLAS_IN smooth, int2 g, __global const int *list, int count,
                               __global const float4 *details, ATLAS_OUT fine)
@@ -96,16 +96,6 @@ __kernel void decode_corners(ATLAS_IN smooth, int2 g, __global const CornerRing 
   const float4 v = decoded(smooth, g, first.patch, side_frame(first.patch, first.corner, g.x - 1).o, details);
   for (int m = 0; m < ring.count; ++m)
     CORNER_STORE(fine, g, slots[ring.first + m], v);
-}
-
-/* Range: (tile, tile * count). Copies the listed tiles (null: all) of a
- * level to another layer. */
-__kernel void copy_level(ATLAS_IN from, ATLAS_OUT to, int2 g, __global const int *list, int count)
-{
-  int p;
-  int2 ij;
-  if (tile_texel(g, list, count, &p, &ij))
-    ATLAS_STORE(to, g, p, ij, ATLAS_LOAD(from, g, p, ij));
 }
 
 /* Range: count. Longest grid edge of each listed patch (null: every patch),

@@ -355,7 +355,7 @@ Atlas::Layer Atlas::make_layer(const LevelLayout& l)
 
 void Atlas::subdivide(int from_level, int to_level) { subdivide(from_level, to_level, nullptr); }
 
-void Atlas::subdivide(int from_level, int to_level, const PatchSet* set)
+void Atlas::subdivide(int from_level, int to_level, const PatchSet* set, const cl::Memory* last)
 {
   if (from_level < 1 || to_level > max_level_ || from_level > to_level)
     throw InputError("cannot subdivide from level " + std::to_string(from_level) + " to " +
@@ -365,11 +365,11 @@ void Atlas::subdivide(int from_level, int to_level, const PatchSet* set)
   const SetLists lists = set_lists(runtime_->context(), topology_, set);
   const cl::Buffer &patch_list = lists.patches, &edge_list = lists.edges, &ring_list = lists.rings;
   const int patches = lists.patch_count, edges = lists.edge_count, rings = lists.ring_count;
-  if (to_level == max_level_ && from_level < to_level)
+  if (to_level == max_level_ && from_level < to_level && !last)
     limit_current_ = false;
   for (int l = from_level; l < to_level; ++l) {
     const LevelLayout s = layout(l), d = layout(l + 1);
-    const cl::Memory &in = levels_[l - 1].mem(), &out = levels_[l].mem();
+    const cl::Memory &in = levels_[l - 1].mem(), &out = last && l + 1 == to_level ? *last : levels_[l].mem();
     if (patches > 0) {
       const auto inside = range_interiors(d, patches);
       launch(q, k.subdivide_interior, inside.first, inside.second, in, out, grid(s), grid(d), patch_list, patches);

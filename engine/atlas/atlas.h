@@ -114,8 +114,10 @@ public:
   //! Catmull-Clark kernels: each level l+1 from level l, for from <= l < to.
   void subdivide(int from_level, int to_level);
   //! The same on a set only (its patches' interiors, its edges and rings),
-  //! at every level; the levels must be current around the set.
-  void subdivide(int from_level, int to_level, const PatchSet* set);
+  //! at every level; the levels must be current around the set. With
+  //! `last`, level to_level goes into that layer (of its layout) instead,
+  //! and the atlas's own layer of that level stays as it is.
+  void subdivide(int from_level, int to_level, const PatchSet* set, const cl::Memory* last = nullptr);
   //! Gaussian reduction kernels: each level l-1 from level l, to <= l-1 < from.
   void reduce(int from_level, int to_level);
   //! Limit positions and normals of the surface at max_level.

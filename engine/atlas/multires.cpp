@@ -16,8 +16,8 @@ constexpr std::size_t kGroup = 64;
 struct Multires::Device
 {
   cl::Program program;
-  cl::Kernel encode, decode_interior, decode_edges, decode_corners, copy_level, patch_extent;
-  cl::Memory saved;     // S, the finest level as it stands (decoding writes here first)
+  cl::Kernel encode, decode_interior, decode_edges, decode_corners, patch_extent;
+  cl::Memory smooth;    // U = up(base) at the finest level, where it is needed
   cl::Buffer details;   // per finest texel: (t, b, n) coordinates of S - U
   cl::Buffer weights;   // edit-level weights
   cl::Memory positions, normals; // edit-level limit (layers of the finest size, used in part)
@@ -36,9 +36,8 @@ Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Devic
     d.decode_interior = cl::Kernel(d.program, "decode_interior");
     d.decode_edges = cl::Kernel(d.program, "decode_edges");
     d.decode_corners = cl::Kernel(d.program, "decode_corners");
-    d.copy_level = cl::Kernel(d.program, "copy_level");
     d.patch_extent = cl::Kernel(d.program, "patch_extent");
-    d.saved = allocate_layer(rt, f, atlas_.storage());
+    d.smooth = allocate_layer(rt, f, atlas_.storage());
     d.positions = allocate_layer(rt, f, atlas_.storage());
     d.normals = allocate_layer(rt, f, atlas_.storage());
     d.details = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, f.texels() * sizeof(cl_float4));
@@ -110,19 +109,6 @@ const cl::Buffer& Multires::base_weights() const { return device_->weights; }
 const cl::Memory& Multires::base_positions() const { return device_->positions; }
 const cl::Memory& Multires::base_normals() const { return device_->normals; }
 
-void Multires::copy_level(const cl::Memory& from, const cl::Memory& to, const std::vector<int>* patches)
-{
-  const LevelLayout f = atlas_.layout(atlas_.max_level());
-  const int count = patches ? int(patches->size()) : f.patches;
-  if (count == 0)
-    return;
-  const cl::Buffer list = patches ? device_ints(atlas_.runtime().context(), *patches) : cl::Buffer();
-  const auto tiles = range_tiles(f, count);
-  launch(atlas_.runtime().queue(), device_->copy_level, tiles.first, tiles.second, from, to, grid(f), list, count);
-  if (patches)
-    atlas_.runtime().queue().finish(); // the list lives until here
-}
-
 void Multires::encode(int level)
 {
   const int finest = atlas_.max_level();
@@ -134,14 +120,12 @@ void Multires::encode(int level)
   const LevelLayout f = atlas_.layout(finest);
   const cl::Memory& fine = atlas_.level_layer(finest);
   try {
-    atlas_.limit_positions_layer(); // current before, so that it is current after
-    copy_level(fine, d.saved);
+    // U goes into a layer of its own: the finest level keeps S, and so
+    // does its limit.
     atlas_.reduce(finest, level);
-    atlas_.subdivide(level, finest);
+    atlas_.subdivide(level, finest, nullptr, &d.smooth);
     const auto tiles = range_tiles(f, f.patches);
-    launch(q, d.encode, tiles.first, tiles.second, d.saved, fine, grid(f), f.patches, d.details);
-    copy_level(d.saved, fine);
-    atlas_.assume_limit_current(); // the finest level is S again, and so is its limit
+    launch(q, d.encode, tiles.first, tiles.second, fine, d.smooth, grid(f), f.patches, d.details);
     launch(q, d.patch_extent, cl::NDRange(round_up(f.patches, kGroup)), cl::NDRange(kGroup), fine, grid(f),
            cl::Buffer(), f.patches, d.extent);
     extent_.resize(std::size_t(f.patches));
@@ -171,34 +155,26 @@ void Multires::reconstruct(const std::vector<int>& affected)
   const cl::Memory& fine = atlas_.level_layer(finest);
   // Levels above the edit level hold up(base) (encode() made them so, and
   // every reconstruction keeps them so on what it changes): subdividing the
-  // affected set is enough. It writes U' into the finest level there, and
-  // into the stored copies its sides and corners have in the patches around.
-  // Decoding writes into `saved`, which then goes back to the finest level
-  // on `touched`: the texels it does not write must be S as it is now,
-  // whatever changed it since the encoding (an undo, a stroke elsewhere),
-  // so they are taken before subdivision overwrites them.
-  const std::vector<int> touched = atlas_.topology().corner_neighbourhood(affected, 1);
-  copy_level(fine, d.saved, &touched);
+  // affected set is enough. U' at the finest level goes into `smooth` (the
+  // affected tiles whole), and decoding writes S' from there into the
+  // finest level, whose other texels keep S as it is now, whatever changed
+  // it since the encoding (an undo, a stroke elsewhere).
   const PatchSet reached = atlas_.patch_set(affected, Reach::Any);
-  atlas_.subdivide(level_, finest, &reached);
-  // The limit layers still describe S, which the finest level is again
-  // outside `affected` once decoded; the caller updates them on it.
-  atlas_.assume_limit_current();
+  atlas_.subdivide(level_, finest, &reached, &d.smooth);
   const PatchSet set = atlas_.patch_set(affected, Reach::All);
   const cl::Buffer patches = device_ints(rt.context(), set.patches), edges = device_ints(rt.context(), set.edges),
                    rings = device_ints(rt.context(), set.rings);
   if (f.n > 1 && !set.patches.empty()) {
     const auto inside = range_interiors(f, int(set.patches.size()));
-    launch(q, d.decode_interior, inside.first, inside.second, fine, grid(f), patches, int(set.patches.size()),
-           d.details, d.saved);
+    launch(q, d.decode_interior, inside.first, inside.second, d.smooth, grid(f), patches, int(set.patches.size()),
+           d.details, fine);
   }
   if (f.n > 1 && !set.edges.empty())
-    launch(q, d.decode_edges, cl::NDRange(round_up(set.edges.size(), kGroup)), cl::NDRange(kGroup), fine,
-           grid(f), atlas_.edge_table(), edges, int(set.edges.size()), d.details, d.saved);
+    launch(q, d.decode_edges, cl::NDRange(round_up(set.edges.size(), kGroup)), cl::NDRange(kGroup), d.smooth,
+           grid(f), atlas_.edge_table(), edges, int(set.edges.size()), d.details, fine);
   if (!set.rings.empty())
-    launch(q, d.decode_corners, cl::NDRange(round_up(set.rings.size(), kGroup)), cl::NDRange(kGroup), fine, grid(f),
-           atlas_.ring_table(), atlas_.slot_table(), rings, int(set.rings.size()), d.details, d.saved);
-  copy_level(d.saved, fine, &touched);
+    launch(q, d.decode_corners, cl::NDRange(round_up(set.rings.size(), kGroup)), cl::NDRange(kGroup), d.smooth,
+           grid(f), atlas_.ring_table(), atlas_.slot_table(), rings, int(set.rings.size()), d.details, fine);
   q.finish(); // the lists live until here
 }
 

@@ -95,8 +95,6 @@ public:
 
 private:
   struct Device;
-  //! Copies the tiles of `patches` (null: all) of the finest level.
-  void copy_level(const cl::Memory& from, const cl::Memory& to, const std::vector<int>* patches = nullptr);
 
   Atlas& atlas_;
   int level_ = -1;         // in use
