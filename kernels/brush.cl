@@ -269,7 +269,7 @@ TEXEL_INLINE float brush_t(__global const BrushDab *dab, __global const PatchUnf
     if (!(z > 0.0f))
       return INFINITY;
     *plane = (s - vload2(0, dab->screen_centre)) * dab->centre_depth;
-    return length(*plane) / dab->radius;
+    return sqrt(dot(*plane, *plane)) / dab->radius;
   }
   case SPACE_PARAMETER: {
     /* In the centre patch's texels, through the patch's unfolding: integer
@@ -288,10 +288,10 @@ TEXEL_INLINE float brush_t(__global const BrushDab *dab, __global const PatchUnf
     if (!dab->paint_backfaces && dot(nx, vload3(0, dab->centre_normal)) < 0.0f)
       return INFINITY;
     *plane = (float2)(dot(d, vload3(0, dab->stamp_u)), dot(d, vload3(0, dab->stamp_v)));
-    return length(*plane) / dab->radius;
+    return sqrt(dot(*plane, *plane)) / dab->radius;
   default:
     *plane = (float2)(dot(d, vload3(0, dab->stamp_u)), dot(d, vload3(0, dab->stamp_v)));
-    return length(d) / dab->radius;
+    return sqrt(dot(d, d)) / dab->radius;
   }
 }
 
