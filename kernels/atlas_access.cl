@@ -134,5 +134,27 @@ inline int interior_texel(int2 g, __global const int *list, int count, int *p, i
   return 1;
 }
 
+/* Whole-tile kernels that copy their sides and corners from the compact
+ * results of a side and a corner kernel (an entry per side texel, edge by
+ * edge, and per ring): where texel ij on the border of a tile (n = tile - 1)
+ * finds its value, through the patch's tables: per side 2 * edge + (1 when
+ * the patch is the edge's second), per corner the ring. Returns the ring
+ * for a corner (*corner = 1), else edge * (n - 1) + t - 1 with t along the
+ * edge's first patch's side. */
+inline int border_entry(int2 ij, int n, int4 sides, int4 rings, int *corner)
+{
+  const int on_x = ij.x == 0 || ij.x == n, on_y = ij.y == 0 || ij.y == n;
+  *corner = on_x && on_y;
+  if (*corner) {
+    const int c = ij.y == 0 ? (ij.x == 0 ? 0 : 1) : (ij.x == 0 ? 3 : 2);
+    return c == 0 ? rings.x : c == 1 ? rings.y : c == 2 ? rings.z : rings.w;
+  }
+  /* Side s and the position t along it in the patch's own frame. */
+  const int s = ij.y == 0 ? 0 : ij.x == n ? 1 : ij.y == n ? 2 : 3;
+  const int t = s == 0 ? ij.x : s == 1 ? ij.y : s == 2 ? n - ij.x : n - ij.y;
+  const int code = s == 0 ? sides.x : s == 1 ? sides.y : s == 2 ? sides.z : sides.w;
+  return (code >> 1) * (n - 1) + ((code & 1) ? n - t : t) - 1;
+}
+
 /* Item k of a table-driven kernel: list[k], or k itself when list is null. */
 #define LISTED(list, k) ((list) ? (list)[k] : (k))

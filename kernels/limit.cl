@@ -34,11 +34,9 @@ inline void limit_regular(const float4 *q, float4 *pos, float4 *nrm)
   } while (0)
 
 /* Range: whole tiles, (tile, tile * count). Texels strictly inside a patch
- * are computed here; its sides come from `sides` (edge e's texel t of its
- * first patch's frame at e * (n - 1) + t - 1) and its corners from
- * `corners` (per device ring), through the patch's tables: per side
- * 2 * edge + (1 when the patch is the edge's second), per corner the ring.
- * The tables' edges and rings must have been computed in this update. */
+ * are computed here, its sides and corners copied from `sides` and
+ * `corners` (border_entry()), whose edges and rings must have been
+ * computed in this update. */
 __kernel void limit_tiles(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, __global const int *list, int count,
                           __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
                           __global const float4 *restrict sides, __global const float4 *restrict corners)
@@ -56,24 +54,11 @@ __kernel void limit_tiles(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, __
         q[3 * (b + 1) + a + 1] = ATLAS_LOAD(src, g, p, ij + (int2)(a, b));
     limit_regular(q, &pv, &nv);
   } else {
-    int k;
-    const int on_x = ij.x == 0 || ij.x == n, on_y = ij.y == 0 || ij.y == n;
-    if (on_x && on_y) {
-      const int c = ij.y == 0 ? (ij.x == 0 ? 0 : 1) : (ij.x == 0 ? 3 : 2);
-      const int4 r = patch_rings[p];
-      k = c == 0 ? r.x : c == 1 ? r.y : c == 2 ? r.z : r.w;
-      pv = corners[2 * k];
-      nv = corners[2 * k + 1];
-    } else {
-      /* Side s and the position t along it in the patch's own frame. */
-      const int s = ij.y == 0 ? 0 : ij.x == n ? 1 : ij.y == n ? 2 : 3;
-      const int t = s == 0 ? ij.x : s == 1 ? ij.y : s == 2 ? n - ij.x : n - ij.y;
-      const int4 e = patch_sides[p];
-      const int code = s == 0 ? e.x : s == 1 ? e.y : s == 2 ? e.z : e.w;
-      k = (code >> 1) * (n - 1) + ((code & 1) ? n - t : t) - 1;
-      pv = sides[2 * k];
-      nv = sides[2 * k + 1];
-    }
+    int corner;
+    const int k = border_entry(ij, n, patch_sides[p], patch_rings[p], &corner);
+    __global const float4 *pair = (corner ? corners : sides) + 2 * k;
+    pv = pair[0];
+    nv = pair[1];
   }
   ATLAS_STORE(pos, g, p, ij, pv);
   ATLAS_STORE(nrm, g, p, ij, nv);

@@ -1,7 +1,7 @@
 /* Catmull-Clark refinement of the atlas, level l -> l+1 (n -> 2n quads per
  * patch side). Above level 1 every vertex off a patch corner is regular, so
  * the masks there are the tensor-product cubic B-spline ones; corners use the
- * ring tables. Each stored copy of an edge or corner texel is written from
+ * ring tables. Each stored copy of an edge or corner texel is copied from
  * one computation, so the copies stay bit-identical.
  * sg, dg: grids (tile, tiles_x) of the source and destination levels. */
 
@@ -12,13 +12,28 @@ inline float3 refine_weights(int i)
   return (i & 1) ? (float3)(0.5f, 0.5f, 0.0f) : (float3)(0.125f, 0.75f, 0.125f);
 }
 
-/* Range: (dst n - 1, (dst n - 1) * patches); texels strictly inside patches. */
-__kernel void subdivide_interior(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, __global const int *list, int patches)
+/* The side and corner kernels write compact arrays (border_entry()), and
+ * subdivide_tiles writes whole destination tiles: it computes the texels
+ * strictly inside and copies the rest, so each cache line of the level is
+ * written once, by one kernel (as the limit's kernels do). */
+
+/* Range: whole destination tiles, (dst tile, dst tile * patches); the
+ * sides' and corners' entries must have been computed in this step. */
+__kernel void subdivide_tiles(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, __global const int *list, int patches,
+                              __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
+                              __global const float4 *restrict sides, __global const float4 *restrict corners)
 {
   int p;
   int2 ij;
-  if (!interior_texel(dg, list, patches, &p, &ij))
+  if (!tile_texel(dg, list, patches, &p, &ij))
     return;
+  const int n = dg.x - 1;
+  if (!(ij.x > 0 && ij.x < n && ij.y > 0 && ij.y < n)) {
+    int corner;
+    const int k = border_entry(ij, n, patch_sides[p], patch_rings[p], &corner);
+    ATLAS_STORE(dst, dg, p, ij, corner ? corners[k] : sides[k]);
+    return;
+  }
   const int n_src = sg.x - 1;
   const int ci = (ij.x + 1) >> 1, cj = (ij.y + 1) >> 1;
   const int i0 = ci - 1, i2 = min(ci + 1, n_src);
@@ -33,16 +48,19 @@ __kernel void subdivide_interior(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, 
   ATLAS_STORE(dst, dg, p, ij, v);
 }
 
-/* Range: #edges; texels on patch sides, corners excluded, each work item
- * walking one side so that its frames and rows are set up once. */
-__kernel void subdivide_edges(ATLAS_IN src, ATLAS_OUT dst, __global const PatchEdge *edges,
+/* Range: #edges; texels on patch sides, corners excluded, into `sides`,
+ * each work item walking one side so that its frames and rows are set up
+ * once. */
+__kernel void subdivide_edges(ATLAS_IN src, __global float4 *restrict sides, __global const PatchEdge *edges,
                               __global const int *list, int edge_count, int2 sg, int2 dg)
 {
   const int k = get_global_id(0);
   if (k >= edge_count)
     return;
   const int n_src = sg.x - 1;
-  const PatchEdge e = edges[LISTED(list, k)];
+  const int edge = LISTED(list, k);
+  const PatchEdge e = edges[edge];
+  const int first = edge * (dg.x - 2) - 1; /* texel t at first + t */
   EDGE_FRAMES(e, sg);
   const int interior = e.patch[1] >= 0;
   /* Old samples along the side: the side row and the rows on either side. */
@@ -54,7 +72,7 @@ __kernel void subdivide_edges(ATLAS_IN src, ATLAS_OUT dst, __global const PatchE
     /* Edge point between old samples c-1 and c, then vertex point at c. */
     const float4 across_mid = 0.75f * (prev_row + cur_row) + 0.125f * ((prev_in + cur_in) + (prev_out + cur_out));
     const float4 mid = interior ? 0.5f * across_mid : 0.5f * (prev_row + cur_row);
-    EDGE_STORE(dst, dg, e, 2 * c - 1, mid);
+    sides[first + 2 * c - 1] = mid;
     if (c == n_src)
       break;
     const float4 next_row = EDGE_LOAD(src, sg, c + 1, 0), next_in = EDGE_LOAD(src, sg, c + 1, 1);
@@ -68,21 +86,21 @@ __kernel void subdivide_edges(ATLAS_IN src, ATLAS_OUT dst, __global const PatchE
     } else {
       v = 0.125f * (prev_row + next_row) + 0.75f * cur_row;
     }
-    EDGE_STORE(dst, dg, e, 2 * c, v);
+    sides[first + 2 * c] = v;
     prev_row = cur_row; prev_in = cur_in; prev_out = cur_out;
     cur_row = next_row; cur_in = next_in; cur_out = next_out;
   }
 }
 
-/* Range: #rings; patch corners, i.e. the level-1 vertices and their copies. */
-__kernel void subdivide_corners(ATLAS_IN src, ATLAS_OUT dst, __global const CornerRing *rings,
-                                __global const CornerSlot *slots, __global const int *list, int ring_count, int2 sg,
-                                int2 dg)
+/* Range: #rings; patch corners, i.e. the level-1 vertices, into `corners`. */
+__kernel void subdivide_corners(ATLAS_IN src, __global float4 *restrict corners, __global const CornerRing *rings,
+                                __global const CornerSlot *slots, __global const int *list, int ring_count, int2 sg)
 {
   const int k = get_global_id(0);
   if (k >= ring_count)
     return;
-  const CornerRing ring = rings[LISTED(list, k)];
+  const int index = LISTED(list, k);
+  const CornerRing ring = rings[index];
   const CornerSlot first = slots[ring.first], last = slots[ring.first + ring.count - 1];
   const float4 v = CORNER_LOAD(src, sg, first, 0, 0);
   float4 r;
@@ -101,6 +119,5 @@ __kernel void subdivide_corners(ATLAS_IN src, ATLAS_OUT dst, __global const Corn
     const float n = (float)ring.count;
     r = (1.0f - 1.75f / n) * v + (1.5f / (n * n)) * es + (0.25f / (n * n)) * ds;
   }
-  for (int m = 0; m < ring.count; ++m)
-    CORNER_STORE(dst, dg, slots[ring.first + m], r);
+  corners[index] = r;
 }

@@ -108,8 +108,9 @@ std::size_t layer_bytes(const LevelLayout& l, AtlasStorage storage)
   return 16 * (storage == AtlasStorage::Image ? l.image_texels() : l.texels());
 }
 
-//! Bytes of the limit's per-patch tables and compact results at a level.
-std::size_t limit_work_bytes(const AtlasTopology& topo, const LevelLayout& l)
+//! Bytes of the whole-tile kernels' tables and the compact results of the
+//! side and corner kernels at a level.
+std::size_t border_work_bytes(const AtlasTopology& topo, const LevelLayout& l)
 {
   return std::size_t(topo.patch_count) * 2 * sizeof(cl_int4) +
          (topo.edges.size() * std::size_t(l.n - 1) + topo.rings.size()) * 2 * sizeof(cl_float4);
@@ -123,7 +124,7 @@ MemoryPlan plan_memory(const AtlasTopology& topology, int level, AtlasStorage st
   plan.finest = level_layout(topology.patch_count, level);
   plan.largest_allocation = layer_bytes(plan.finest, storage);
   plan.total += 2 * plan.largest_allocation; // limit positions and normals
-  plan.total += limit_work_bytes(topology, plan.finest);
+  plan.total += border_work_bytes(topology, plan.finest);
   plan.total += topology.edges.size() * sizeof(PatchEdge) +
                 topology.rings.size() * sizeof(CornerRing) +
                 topology.slots.size() * sizeof(CornerSlot);
@@ -145,14 +146,15 @@ struct Atlas::Layer
 struct Atlas::Kernels
 {
   cl::Program program;
-  cl::Kernel subdivide_interior, subdivide_edges, subdivide_corners;
+  cl::Kernel subdivide_tiles, subdivide_edges, subdivide_corners;
   cl::Kernel limit_tiles, limit_edges, limit_corners;
   cl::Kernel reduce_interior, reduce_edges, reduce_corners;
   cl::Buffer edges, rings, slots;
   cl::Buffer valences; // limit_corners' constants per valence (limit_constants())
-  // limit_tiles' tables (limit_tables()) and the side and corner kernels'
-  // results, sized for the finest level.
-  cl::Buffer patch_sides, patch_rings, side_limits, corner_limits;
+  // The whole-tile kernels' tables (border_tables()), and the side and
+  // corner kernels' results (a position and a normal for the limit), sized
+  // for the finest level.
+  cl::Buffer patch_sides, patch_rings, side_work, corner_work;
 };
 
 namespace {
@@ -178,10 +180,11 @@ std::vector<Float4> limit_constants(const AtlasTopology& topo)
   return out;
 }
 
-//! Per patch, for limit_tiles: each side's edge as 2 * edge + (1 when the
-//! patch is the edge's second), and each corner's ring in the device table.
+//! Per patch, for the whole-tile kernels: each side's edge as 2 * edge + (1
+//! when the patch is the edge's second), and each corner's ring in the
+//! device table.
 std::pair<std::vector<std::array<int, 4>>, std::vector<std::array<int, 4>>>
-limit_tables(const AtlasTopology& topo, const std::vector<int>& device_ring)
+border_tables(const AtlasTopology& topo, const std::vector<int>& device_ring)
 {
   std::vector<std::array<int, 4>> sides(std::size_t(topo.patch_count)), rings(sides.size());
   for (std::size_t p = 0; p < sides.size(); ++p)
@@ -276,7 +279,7 @@ Atlas::Atlas(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int max_lev
     k.program = build_program(*runtime_,
                               {"atlas_types.h", "atlas_access.cl", "subdivide.cl", "limit.cl", "reduce.cl"},
                               storage_options(storage_));
-    k.subdivide_interior = cl::Kernel(k.program, "subdivide_interior");
+    k.subdivide_tiles = cl::Kernel(k.program, "subdivide_tiles");
     k.subdivide_edges = cl::Kernel(k.program, "subdivide_edges");
     k.subdivide_corners = cl::Kernel(k.program, "subdivide_corners");
     k.limit_tiles = cl::Kernel(k.program, "limit_tiles");
@@ -310,14 +313,14 @@ Atlas::Atlas(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int max_lev
     k.rings = upload(rings);
     k.valences = upload(limit_constants(topology_));
     k.slots = upload(topology_.slots);
-    const auto [patch_sides, patch_rings] = limit_tables(topology_, device_ring_);
+    const auto [patch_sides, patch_rings] = border_tables(topology_, device_ring_);
     k.patch_sides = upload(patch_sides);
     k.patch_rings = upload(patch_rings);
     const LevelLayout finest = layout(max_level_);
-    k.side_limits = cl::Buffer(runtime_->context(), CL_MEM_READ_WRITE,
+    k.side_work = cl::Buffer(runtime_->context(), CL_MEM_READ_WRITE,
                                std::max<std::size_t>(1, topology_.edges.size() * std::size_t(finest.n - 1)) *
                                    2 * sizeof(cl_float4));
-    k.corner_limits =
+    k.corner_work =
         cl::Buffer(runtime_->context(), CL_MEM_READ_WRITE, topology_.rings.size() * 2 * sizeof(cl_float4));
   } catch (const cl::Error& e) {
     throw DeviceError("cannot set up the atlas on " + device.name + ": " + describe(e));
@@ -370,15 +373,17 @@ void Atlas::subdivide(int from_level, int to_level, const PatchSet* set, const c
   for (int l = from_level; l < to_level; ++l) {
     const LevelLayout s = layout(l), d = layout(l + 1);
     const cl::Memory &in = levels_[l - 1].mem(), &out = last && l + 1 == to_level ? *last : levels_[l].mem();
-    if (patches > 0) {
-      const auto inside = range_interiors(d, patches);
-      launch(q, k.subdivide_interior, inside.first, inside.second, in, out, grid(s), grid(d), patch_list, patches);
-    }
     if (edges > 0)
-      launch(q, k.subdivide_edges, range1d(edges), kLocal1D, in, out, k.edges, edge_list, edges, grid(s), grid(d));
-    if (rings > 0)
-      launch(q, k.subdivide_corners, range1d(rings), kLocal1D, in, out, k.rings, k.slots, ring_list, rings, grid(s),
+      launch(q, k.subdivide_edges, range1d(edges), kLocal1D, in, k.side_work, k.edges, edge_list, edges, grid(s),
              grid(d));
+    if (rings > 0)
+      launch(q, k.subdivide_corners, range1d(rings), kLocal1D, in, k.corner_work, k.rings, k.slots, ring_list, rings,
+             grid(s));
+    if (patches > 0) {
+      const auto tiles = range_tiles(d, patches);
+      launch(q, k.subdivide_tiles, tiles.first, tiles.second, in, out, grid(s), grid(d), patch_list, patches,
+             k.patch_sides, k.patch_rings, k.side_work, k.corner_work);
+    }
   }
   if (set)
     q.finish(); // the lists live until here
@@ -427,14 +432,14 @@ void Atlas::compute_limit_of(int level, const cl::Memory& pos, const cl::Memory&
   const int patches = lists.patch_count, edges = lists.edge_count, rings = lists.ring_count;
   const cl::Memory& in = levels_[level - 1].mem();
   if (l.n > 1 && edges > 0)
-    launch(q, k.limit_edges, range1d(edges), kLocal1D, in, k.side_limits, k.edges, edge_list, edges, grid(l));
+    launch(q, k.limit_edges, range1d(edges), kLocal1D, in, k.side_work, k.edges, edge_list, edges, grid(l));
   if (rings > 0)
-    launch(q, k.limit_corners, range1d(rings), kLocal1D, in, k.corner_limits, k.rings, k.slots, k.valences,
+    launch(q, k.limit_corners, range1d(rings), kLocal1D, in, k.corner_work, k.rings, k.slots, k.valences,
            ring_list, rings, grid(l));
   if (patches > 0) {
     const auto tiles = range_tiles(l, patches);
     launch(q, k.limit_tiles, tiles.first, tiles.second, in, pos, nrm, grid(l), patch_list, patches, k.patch_sides,
-           k.patch_rings, k.side_limits, k.corner_limits);
+           k.patch_rings, k.side_work, k.corner_work);
   }
   if (set)
     q.finish(); // the lists live until here

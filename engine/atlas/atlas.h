@@ -113,8 +113,11 @@ public:
 
   //! Catmull-Clark kernels: each level l+1 from level l, for from <= l < to.
   void subdivide(int from_level, int to_level);
-  //! The same on a set only (its patches' interiors, its edges and rings),
-  //! at every level; the levels must be current around the set. With
+  //! The same on a set only, at every level: the whole tiles of its patches,
+  //! which needs every side and corner of them among its edges and rings
+  //! (Reach::Any); the levels must be current around the set, and every
+  //! patch holding a copy of what changed must be in it (the changed
+  //! patches' corner neighbourhood). With
   //! `last`, level to_level goes into that layer (of its layout) instead,
   //! and the atlas's own layer of that level stays as it is.
   void subdivide(int from_level, int to_level, const PatchSet* set, const cl::Memory* last = nullptr);

@@ -155,11 +155,12 @@ void Multires::reconstruct(const std::vector<int>& affected)
   const cl::Memory& fine = atlas_.level_layer(finest);
   // Levels above the edit level hold up(base) (encode() made them so, and
   // every reconstruction keeps them so on what it changes): subdividing the
-  // affected set is enough. U' at the finest level goes into `smooth` (the
-  // affected tiles whole), and decoding writes S' from there into the
-  // finest level, whose other texels keep S as it is now, whatever changed
-  // it since the encoding (an undo, a stroke elsewhere).
-  const PatchSet reached = atlas_.patch_set(affected, Reach::Any);
+  // affected set and the patches holding copies of its sides and corners
+  // is enough. U' at the finest level goes into `smooth`, and decoding
+  // writes S' from there into the finest level, whose other texels keep S
+  // as it is now, whatever changed it since the encoding (an undo, a stroke
+  // elsewhere).
+  const PatchSet reached = atlas_.patch_set(atlas_.topology().corner_neighbourhood(affected, 1), Reach::Any);
   atlas_.subdivide(level_, finest, &reached, &d.smooth);
   const PatchSet set = atlas_.patch_set(affected, Reach::All);
   const cl::Buffer patches = device_ints(rt.context(), set.patches), edges = device_ints(rt.context(), set.edges),

@@ -264,7 +264,7 @@ void PaintSurface::restore(const Snapshot& s)
     // from them, which the next edit at that level reads around its reach.
     scatter(std::size_t(edit - s.layer_ids.begin()));
     if (s.edit_level + 1 < level_) {
-      const PatchSet set = atlas_->patch_set(s.patches, Reach::Any);
+      const PatchSet set = atlas_->patch_set(atlas_->topology().corner_neighbourhood(s.patches, 1), Reach::Any);
       atlas_->subdivide(s.edit_level, level_ - 1, &set);
     }
   }
