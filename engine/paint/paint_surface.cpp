@@ -285,6 +285,23 @@ void PaintSurface::restore(const Snapshot& s)
   rt.queue().finish();
 }
 
+void PaintSurface::phase_start()
+{
+  if (time_phases_) {
+    atlas_->runtime().queue().finish();
+    phase_clock_.restart();
+  }
+}
+
+void PaintSurface::phase_done(double StepPhases::*phase)
+{
+  if (!time_phases_)
+    return;
+  atlas_->runtime().queue().finish();
+  phases_.*phase += phase_clock_.ms();
+  phase_clock_.restart();
+}
+
 void PaintSurface::refresh_geometry(const std::vector<int>& patches)
 {
   Device& d = *device_;
@@ -293,11 +310,15 @@ void PaintSurface::refresh_geometry(const std::vector<int>& patches)
   // The limit changed on the patches' sides and corners too, which every
   // patch sharing a corner with them stores: their tiles and bounds as well.
   const std::vector<int> around = atlas_->topology().corner_neighbourhood(patches, 1);
-  atlas_->update_limit(atlas_->patch_set(around, Reach::Any));
+  const PatchSet set = atlas_->patch_set(around, Reach::Any);
+  phase_done(&StepPhases::lists);
+  atlas_->update_limit(set);
+  phase_done(&StepPhases::limit);
   const cl::Buffer list = device_ints(rt.context(), around);
   launch(rt.queue(), d.patch_bounds, cl::NDRange(round_up(around.size(), kGroup)), cl::NDRange(kGroup),
          atlas_->limit_positions_layer(), grid(l), list, int(around.size()), d.bounds);
   rt.queue().finish();
+  phase_done(&StepPhases::bounds);
 }
 
 void PaintSurface::remember(const std::vector<int>& patches)
@@ -534,6 +555,7 @@ void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
          atlas_->limit_normals_layer(), grid(l), d.active, cl_int(patches.size()), d.dab, d.unfold, d.raster, d.stamp,
          diffuse_buffer(), specular_buffer(), material_buffer());
   rt.queue().finish();
+  phase_done(&StepPhases::transform);
 }
 
 StrokeReport PaintSurface::apply(const Stroke& stroke, const std::vector<char>& dabs)
@@ -602,6 +624,7 @@ StrokeReport PaintSurface::apply(const Stroke& stroke)
   StrokeReport report;
   stretch_ = 1.f;
   encode_ms_ = 0;
+  phases_ = StepPhases();
   try {
     report = apply_dabs(stroke);
   } catch (...) {
@@ -880,6 +903,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
     multires_->detach();
   }
   remember(coarse ? changed : patches);
+  phase_done(&StepPhases::record);
   Device& d = *device_;
   Runtime& rt = atlas_->runtime();
   cl::CommandQueue& q = rt.queue();
@@ -892,11 +916,13 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
       multires_->compute_base_limit(patches);
     weigh(patches, list, dab, level);
   }
+  phase_done(&StepPhases::weights);
   const cl::Buffer& weights = coarse ? multires_->base_weights() : d.weights;
   const auto geometry_done = [&] {
     if (coarse) {
       multires_->reconstruct(changed);
       stretch_ = std::max(stretch_, multires_->stretch(changed));
+      phase_done(&StepPhases::rebuild);
     }
     refresh_geometry(coarse ? changed : patches);
   };
@@ -913,6 +939,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
            mode, amount, cl_float4{{dab.centre[0], dab.centre[1], dab.centre[2], 0.f}},
            cl_float4{{normal[0], normal[1], normal[2], 0.f}});
     launch(q, d.positions.copy_tiles, tiles.first, tiles.second, d.position_work, pos, grid(l), list, count);
+    phase_done(&StepPhases::transform);
     geometry_done();
     return;
   }
@@ -935,6 +962,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   }
   for (const auto& [k, layer] : layers)
     d.smoothing->run(k->welded, *layer, l, everything ? nullptr : &set, weights, steps);
+  phase_done(&StepPhases::transform);
   if (stroke.target_colour)
     q.finish();
   else
@@ -944,6 +972,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
 StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
 {
   Timer timer;
+  phase_start();
   StrokeReport report;
   BrushDab dab{};
   dab.side_sign = 1.f;
@@ -997,6 +1026,7 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
       grab(stroke, dab, report);
       report.stretch = stretch_;
       report.encode_ms = encode_ms_;
+      report.phases = phases_;
       report.ms = timer.ms();
       return report;
     }
@@ -1033,7 +1063,9 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
         if (!(dab.radius > 0.f))
           continue;
         Vec3 normal;
+        phase_start();
         const std::vector<int> patches = place(stroke, dabs[side], dab, normal);
+        phase_done(&StepPhases::place);
         if (patches.empty())
           continue;
         on_surface = true;
@@ -1060,6 +1092,7 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
   }
   report.stretch = stretch_;
   report.encode_ms = encode_ms_;
+  report.phases = phases_;
   report.ms = timer.ms();
   return report;
 }
@@ -1079,7 +1112,9 @@ void PaintSurface::grab(const Stroke& stroke, BrushDab& dab, StrokeReport& repor
   if (!(dab.radius > 0.f))
     return;
   Vec3 normal;
+  phase_start();
   const std::vector<int> patches = place(stroke, samples.front(), dab, normal);
+  phase_done(&StepPhases::place);
   if (patches.empty()) {
     report.left_surface = true;
     return;

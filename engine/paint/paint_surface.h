@@ -4,6 +4,7 @@
 
 #include "atlas/atlas.h"
 #include "atlas/multires.h"
+#include "core/timer.h"
 #include "mesh/welded_surface.h"
 #include "paint/display_arrays.h"
 #include "paint/stroke.h"
@@ -57,6 +58,21 @@ struct PatchChanges
 };
 
 //! What one stroke did.
+//! Where a stroke's dabs spent their time, summed over the dabs, when
+//! PaintSurface::time_phases() is on. Each phase ends with a wait for the
+//! device, which the phases then pay instead of the next one.
+struct StepPhases
+{
+  double place = 0;     //!< snapping, culling, reach and the flood (brush_patches)
+  double record = 0;    //!< the undo snapshot, and a coarse edit's encoding of details
+  double weights = 0;   //!< dab_weights (a coarse edit's: with the edit level's limit)
+  double transform = 0; //!< the move, the smoothing passes or paint_dab
+  double rebuild = 0;   //!< a coarse edit: subdivision to the finest level and decoding
+  double lists = 0;     //!< the corner neighbourhood and its patch set (host)
+  double limit = 0;     //!< limit positions and normals
+  double bounds = 0;    //!< patch bounds
+};
+
 struct StrokeReport
 {
   std::size_t dabs = 0;            //!< dab positions along the stroke (mirrored ones included)
@@ -66,6 +82,7 @@ struct StrokeReport
   float stretch = 1.f;             //!< edits at a coarser level: worst growth of a patch's sampling (Multires::stretch)
   double ms = 0;                   //!< wall time, device work included
   double encode_ms = 0;            //!< of which the encoding of details for coarse edits (Multires::encode)
+  StepPhases phases;               //!< with PaintSurface::time_phases() on
 };
 
 //! Default material of unpainted surface.
@@ -160,6 +177,9 @@ public:
   bool undo();
   bool redo();
   UndoLog& undo_log() { return undo_; }
+  //! Times each phase of a dab into StrokeReport::phases, waiting for the
+  //! device at the end of each (for benchmarks: the waits cost a little).
+  void time_phases(bool on) { time_phases_ = on; }
 
 private:
   struct Device;
@@ -231,6 +251,10 @@ private:
   void remember(const std::vector<int>& patches);
   //! Per texel of the painting level: its welded vertex (weld_map), made once.
   const std::vector<int>& texel_vertices();
+  //! With time_phases() on: waits for the device and adds the time since
+  //! the last call (or phase_start()) to `phase`.
+  void phase_start();
+  void phase_done(double StepPhases::*phase);
   //! Records a change of these patches, or of everything, for changes_since().
   void changed(const std::vector<int>& patches);
   void changed_all();
@@ -240,6 +264,9 @@ private:
   std::unique_ptr<Multires> multires_; // details for edits at a coarser level, made on first use
   float stretch_ = 1.f;                // the running stroke's worst Multires::stretch
   double encode_ms_ = 0;               // the running stroke's encoding time
+  bool time_phases_ = false;
+  StepPhases phases_;                  // the running stroke's, with time_phases_
+  Timer phase_clock_;
   std::vector<Stroke> history_, undone_;
   std::unique_ptr<Device> device_;
   BaseMaterial base_material_;

@@ -200,6 +200,25 @@ def test_bench_json_line(tmp_path, cube):
     assert result["max_deviation"] <= 1e-5
 
 
+def test_bench_paint_phases_account_for_the_step():
+    r = run("bench", "paint", "--mesh", "femur", "--steps", "1", "--phases", "--json")
+    assert r.returncode == 0, r.stderr
+    result = json.loads(r.stdout.strip().splitlines()[-1])
+    rows = {row["step"]: row for row in result["phases"]}
+    assert set(rows) == {"sculpt 50%", "coarse sculpt 50%"}
+    names = ("place", "record", "weights", "transform", "rebuild", "lists", "limit", "bounds")
+    for step, row in rows.items():
+        parts = [row[name + "_ms"] for name in names]
+        assert all(p >= 0 for p in parts), row
+        # the phases split the step's wall time: together they cannot exceed it
+        assert sum(parts) <= row["whole_ms"], row
+        for ran in ("place", "weights", "transform", "lists", "limit", "bounds"):
+            assert row[ran + "_ms"] > 0, (step, ran)
+    # only a coarse edit rebuilds the finest level
+    assert rows["sculpt 50%"]["rebuild_ms"] == 0
+    assert rows["coarse sculpt 50%"]["rebuild_ms"] > 0
+
+
 def test_demo_writes_its_surface(tmp_path):
     r = run("demo", "--level", "2", "-o", str(tmp_path / "demo"))
     assert r.returncode == 0, r.stderr

@@ -14,6 +14,7 @@
 
 #include <cmath>    // for std::sqrt
 #include <iostream> // for std::cout
+#include <map>      // for std::map
 
 namespace meshpaint::cli {
 namespace {
@@ -138,8 +139,17 @@ int bench_view(const Args& args);
 
 int bench_command(const Argv& argv)
 {
-  Args args("bench", argv, {"--json"}, {"--level", "--repeats", "--steps", "--tool", "--mesh", "--device", "--storage"});
+  Args args("bench", argv, {"--json", "--phases"}, {"--level", "--repeats", "--steps", "--tool", "--mesh", "--device", "--storage"});
   const std::string what = args.positionals().empty() ? "" : args.positionals()[0];
+  // One parser for all three; an option of another benchmark is refused.
+  const std::map<std::string, std::vector<std::string>> foreign = {
+    {"subdivide", {"--phases", "--steps", "--tool", "--mesh"}},
+    {"paint", {"--level", "--repeats"}},
+    {"view", {"--json", "--phases", "--level", "--repeats", "--tool", "--mesh"}}};
+  if (const auto found = foreign.find(what); found != foreign.end())
+    for (const std::string& option : found->second)
+      if (args.has(option) || args.flag(option))
+        throw InputError(option + " is not an option of 'meshpaint bench " + what + "'");
   if (what == "subdivide")
     return bench_subdivide(args);
   if (what == "paint")
@@ -147,7 +157,7 @@ int bench_command(const Argv& argv)
   if (what == "view")
     return bench_view(args);
   throw InputError("usage: meshpaint bench subdivide MESH [--level L] [--json] [--repeats N] | "
-                   "meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] | "
+                   "meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases] | "
                    "meshpaint bench view [--steps N]");
 }
 

@@ -22,6 +22,7 @@
 #include <array>     // for std::array
 #include <cmath>     // for std::sqrt
 #include <iostream>  // for std::cout
+#include <iterator>  // for std::size
 
 namespace meshpaint::cli {
 namespace {
@@ -99,6 +100,33 @@ std::array<std::array<double, 3>, 3> coarse_step_times(PaintSurface& surface, St
     out[1][std::size_t(c)] = median(one);
     out[2][std::size_t(c)] = median(encoding);
   }
+  return out;
+}
+
+//! The phases of a step (StepPhases, in its field order) and their sum.
+const char* const kPhaseNames[] = {"place", "record", "weights", "transform", "rebuild", "lists", "limit", "bounds"};
+constexpr double StepPhases::*kPhaseFields[] = {&StepPhases::place,     &StepPhases::record, &StepPhases::weights,
+                                                &StepPhases::transform, &StepPhases::rebuild, &StepPhases::lists,
+                                                &StepPhases::limit,     &StepPhases::bounds};
+
+//! Median time of each phase of a step at the largest coverage, with a wait
+//! for the device after each phase; the last entry is the whole step's.
+std::vector<double> phase_times(PaintSurface& surface, Stroke s, const std::vector<Float4>& texels, int steps)
+{
+  s.radius = radius_for(texels, s.points.front(), kCoverage[2]);
+  surface.time_phases(true);
+  surface.apply(s); // warm-up
+  std::vector<std::vector<double>> t(std::size(kPhaseFields) + 1);
+  for (int k = 0; k < steps; ++k) {
+    const StrokeReport r = surface.apply(s);
+    for (std::size_t f = 0; f < std::size(kPhaseFields); ++f)
+      t[f].push_back(r.phases.*kPhaseFields[f]);
+    t.back().push_back(r.ms);
+  }
+  surface.time_phases(false);
+  std::vector<double> out;
+  for (std::vector<double>& v : t)
+    out.push_back(median(v));
   return out;
 }
 
@@ -197,12 +225,13 @@ SmoothingResult bench_smoothing(PaintSurface& surface, int iterations, int repea
 
 int bench_paint(const Args& args)
 {
-  args.expect_positionals(1, 1, "paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo]");
+  args.expect_positionals(1, 1, "paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases]");
   const int steps = args.integer("--steps", 21, 1, 1000);
   const std::string tool = args.value("--tool", "sculpt");
   if (tool != "sculpt" && tool != "paint")
     throw InputError("--tool must be sculpt or paint, not '" + tool + "'");
   const bool json = args.flag("--json");
+  const bool phases = args.flag("--phases");
   const std::string only = args.value("--mesh", "");
   if (!only.empty() && only != "femur" && only != "armadillo")
     throw InputError("--mesh must be femur or armadillo, not '" + only + "'");
@@ -215,7 +244,24 @@ int bench_paint(const Args& args)
     {"vertices", "mesh", "meshpaint ms", "VTK ms", "OpenMesh ms", "vs VTK", "vs OpenMesh", "meshpaint stroke ms"});
   Table coarse({"faces", "mesh", "edit level", "dab 1% ms", "10% ms", "50% ms", "stroke 1% ms", "10% ms", "50% ms",
                 "encoding 1% ms", "10% ms", "50% ms"});
-  std::string json_rows, json_smooth, json_coarse;
+  std::vector<std::string> phase_header{"mesh", "step"};
+  for (const char* name : kPhaseNames)
+    phase_header.push_back(std::string(name) + " ms");
+  phase_header.push_back("whole ms");
+  Table phase_table(phase_header);
+  std::string json_rows, json_smooth, json_coarse, json_phases;
+  const auto add_phases = [&](const std::string& name, const std::string& step, const std::vector<double>& ms) {
+    std::vector<std::string> cells{name, step};
+    std::string fields;
+    for (std::size_t f = 0; f < ms.size(); ++f) {
+      cells.push_back(format_fixed(ms[f], 2));
+      fields += std::string(f ? "," : "") + "\"" + (f < std::size(kPhaseNames) ? kPhaseNames[f] : "whole") +
+                "_ms\":" + std::to_string(ms[f]);
+    }
+    phase_table.add(cells);
+    json_phases += std::string(json_phases.empty() ? "" : ",") + "{\"mesh\":" + json_string(name) +
+                   ",\"step\":" + json_string(step) + "," + fields + "}";
+  };
   for (const Row& row : kRows) {
     if (!only.empty() && row.mesh != only + ".off")
       continue;
@@ -235,6 +281,8 @@ int bench_paint(const Args& args)
     s.alpha[CHANNEL_DIFFUSE] = 0.5f;
     const std::array<double, 3> ms = step_times(surface, s, texels, steps);
     const std::string name = row.mesh.substr(0, row.mesh.find('.')) + " L" + std::to_string(row.level);
+    if (phases)
+      add_phases(name, tool + " 50%", phase_times(surface, s, texels, steps));
     table.add({grouped(faces), name, format_fixed(ms[0], 2), format_fixed(ms[1], 2), format_fixed(ms[2], 2),
                format_fixed(row.paper_ms[0], 0) + "/" + format_fixed(row.paper_ms[1], 0) + "/" +
                  format_fixed(row.paper_ms[2], 0),
@@ -250,6 +298,8 @@ int bench_paint(const Args& args)
     m.tool = Tool::Sculpt;
     m.edit_level = 1;
     const auto mr = coarse_step_times(surface, m, texels, steps);
+    if (phases)
+      add_phases(name, "coarse sculpt 50%", phase_times(surface, m, texels, steps));
     coarse.add({grouped(faces), name, "1", format_fixed(mr[0][0], 2), format_fixed(mr[0][1], 2),
                 format_fixed(mr[0][2], 2), format_fixed(mr[1][0], 2), format_fixed(mr[1][1], 2),
                 format_fixed(mr[1][2], 2), format_fixed(mr[2][0], 1), format_fixed(mr[2][1], 1),
@@ -276,7 +326,8 @@ int bench_paint(const Args& args)
   if (json) {
     std::cout << "{\"tool\":" << json_string(tool) << ",\"steps\":" << steps << ",\"device\":"
               << json_string(runtime->info().name) << ",\"brush\":[" << json_rows << "],\"smoothing\":["
-              << json_smooth << "],\"coarse_edit\":[" << json_coarse << "]}\n";
+              << json_smooth << "],\"coarse_edit\":[" << json_coarse << "]"
+              << (phases ? ",\"phases\":[" + json_phases + "]" : std::string()) << "}\n";
     return 0;
   }
   std::cout << "meshpaint bench paint: one " << tool << " brush step (culling, weights, transformation"
@@ -297,6 +348,12 @@ int bench_paint(const Args& args)
             << "such dab, the details kept from the stroke before; and the encoding of the details, which\n"
             << "the first coarse stroke after a finest-level edit pays; medians of " << steps << "\n\n";
   coarse.print(std::cout);
+  if (phases) {
+    std::cout << "\nphases of a step at 50% (--phases): medians of " << steps
+              << ", each phase ended by a wait for the device (see StepPhases);\n"
+              << "the coarse step's encoding is in `record` only when the details were made again\n\n";
+    phase_table.print(std::cout);
+  }
   return 0;
 }
 

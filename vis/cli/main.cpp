@@ -45,7 +45,7 @@ commands:
                                       the scan with the project's channels as point
                                       arrays (label, diffuse, ...); --geometry: moved
                                       as the surface was sculpted or smoothed
-  bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo]
+  bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases]
                                       brush step times as the paper's Table 1, and
                                       smoothing against VTK and OpenMesh
   bench view [--steps N]              the window's frame times while painting, with and
