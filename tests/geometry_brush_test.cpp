@@ -11,8 +11,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>   // for std::sqrt, std::sin
-#include <cstring> // for std::memcmp
-#include <map>     // for std::map
+#include <algorithm>  // for std::max_element
+#include <cstring>    // for std::memcmp
+#include <functional> // for std::function
+#include <map>        // for std::map
 #include <set>     // for std::multiset, std::set
 
 namespace meshpaint {
@@ -133,6 +135,59 @@ TEST(GeometryBrush, SculptMovesTheCentreByAmountAlongTheNormal)
   for (std::size_t v = 0; v < out.points.size(); ++v)
     if (std::hypot(out.points[v][0] - 3.f, out.points[v][1] - 3.f) > 2.5f)
       ASSERT_EQ(out.points[v][2], 0.f);
+}
+
+//! Sculpts a flat grid over (3, 3) with radius 2.5 after `protect` set a
+//! mask; returns the height of every welded point.
+template <typename Protect>
+std::vector<float> heights_after_masked_sculpt(Protect protect)
+{
+  PaintSurface surface(test::runtime(), test::flat_grid(6), 3, AtlasStorage::Buffer);
+  protect(surface);
+  Stroke s = brush(Tool::Sculpt, {3.f, 3.f, 0.f}, 2.5f);
+  s.amount = 0.2f;
+  surface.apply(s);
+  const WeldedSurface out = surface.painted_surface().surface;
+  std::vector<float> z;
+  for (const Vec3& p : out.points)
+    z.push_back(std::hypot(p[0] - 2.f, p[1] - 3.f) < 0.5f ? p[2] : -1.f); // only the masked disc's
+  return z;
+}
+
+TEST(GeometryBrush, AMaskKeepsGeometryInPlace)
+{
+  Stroke mask = brush(Tool::Paint, {2.f, 3.f, 0.f}, 1.f);
+  mask.falloff = FALLOFF_CONSTANT;
+  mask.value[CHANNEL_MASK] = {1.f, 1.f, 1.f, 1.f};
+  mask.alpha[CHANNEL_MASK] = 1.f;
+  // Painted, painted and brought back by undo and redo, and loaded with the
+  // channels: every way a mask arrives protects the control points under it
+  // (and so their limit, which the welded surface shows).
+  const std::map<std::string, std::function<void(PaintSurface&)>> ways = {
+    {"painted", [&](PaintSurface& s) { s.apply(mask); }},
+    {"redone", [&](PaintSurface& s) {
+       s.apply(mask);
+       ASSERT_TRUE(s.undo());
+       ASSERT_TRUE(s.redo());
+     }},
+    {"loaded", [&](PaintSurface& s) {
+       PaintSurface other(test::runtime(), test::flat_grid(6), 3, AtlasStorage::Buffer);
+       other.apply(mask);
+       s.write_channels(other.read_channels());
+     }}};
+  for (const auto& [name, way] : ways) {
+    const std::vector<float> z = heights_after_masked_sculpt(way);
+    int inside = 0;
+    for (const float h : z)
+      if (h != -1.f) {
+        ++inside;
+        EXPECT_EQ(h, 0.f) << name;
+      }
+    EXPECT_GT(inside, 4) << name;
+  }
+  // Without a mask the same stroke lifts that disc.
+  const std::vector<float> free = heights_after_masked_sculpt([](PaintSurface&) {});
+  EXPECT_GT(*std::max_element(free.begin(), free.end()), 0.05f);
 }
 
 TEST(GeometryBrush, LocalLimitUpdateEqualsAFullOne)

@@ -245,6 +245,8 @@ Snapshot PaintSurface::take_snapshot(const std::vector<int>& patches, const std:
 
 void PaintSurface::restore(const Snapshot& s)
 {
+  for (const int id : s.layer_ids) // the tiles put back may carry a mask
+    mask_painted_ = mask_painted_ || id == kMaterial || id == kInsideMaterial;
   Runtime& rt = atlas_->runtime();
   const cl::Buffer list = s.patches.empty() ? cl::Buffer() : device_ints(rt.context(), s.patches);
   const auto scatter = [&](std::size_t k) {
@@ -540,6 +542,7 @@ void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
     return;
   }
   remember(patches);
+  mask_painted_ = mask_painted_ || dab.alpha[CHANNEL_MASK] > 0.f;
   Device& d = *device_;
   Runtime& rt = atlas_->runtime();
   const LevelLayout l = atlas_->layout(level_);
@@ -870,7 +873,8 @@ void PaintSurface::weigh(const std::vector<int>& patches, const cl::Buffer& list
   launch(rt.queue(), d.dab_weights, tiles.first, tiles.second,
          coarse ? multires_->base_positions() : atlas_->limit_positions_layer(),
          coarse ? multires_->base_normals() : atlas_->limit_normals_layer(), grid(l), list, count, d.dab, d.unfold,
-         d.stamp, material_buffer(), grid(f), stride, outside, coarse ? multires_->base_weights() : d.weights);
+         d.stamp, material_buffer(), cl_int(mask_painted_), grid(f), stride, outside,
+         coarse ? multires_->base_weights() : d.weights);
 }
 
 void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke,
@@ -1237,6 +1241,10 @@ void PaintSurface::write_channels(const PaintChannels& c)
   q.enqueueWriteBuffer(device_->diffuse, CL_TRUE, 0, n * sizeof(Float4), c.diffuse.data());
   q.enqueueWriteBuffer(device_->specular, CL_TRUE, 0, n * sizeof(Float4), c.specular.data());
   q.enqueueWriteBuffer(device_->material, CL_TRUE, 0, n * sizeof(Float4), c.material.data());
+  const auto masks = [](const std::vector<Float4>& material) {
+    return std::any_of(material.begin(), material.end(), [](const Float4& m) { return m[3] != 0.f; });
+  };
+  mask_painted_ = masks(c.material) || masks(c.inside_material);
   if (c.inside_diffuse.empty())
     return;
   if (c.inside_diffuse.size() != n || c.inside_specular.size() != n || c.inside_material.size() != n)

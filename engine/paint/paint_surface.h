@@ -264,6 +264,7 @@ private:
   std::unique_ptr<Multires> multires_; // details for edits at a coarser level, made on first use
   float stretch_ = 1.f;                // the running stroke's worst Multires::stretch
   double encode_ms_ = 0;               // the running stroke's encoding time
+  bool mask_painted_ = false;          // a mask may be set somewhere (else weights skip reading it)
   bool time_phases_ = false;
   StepPhases phases_;                  // the running stroke's, with time_phases_
   Timer phase_clock_;
