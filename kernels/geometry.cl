@@ -18,7 +18,7 @@ inline int texel_border(int2 ij, int n)
          (lo_i & hi_j) << 7;
 }
 
-/* Range: (tile, tile * count). Weight of each texel of the listed patches:
+/* Weight of texel ij of p, the a-th listed patch:
  * falloff x strength x (1 - mask), 0 outside the radius. The mask lives at
  * the finest level (grid gm): texel ij of grid g is texel ij * stride there;
  * `masked` 0 says no mask is set anywhere, and its reads are skipped (a
@@ -27,6 +27,22 @@ inline int texel_border(int2 ij, int n)
  * outside (or null): per listed patch, the sides and corners it shares with
  * unlisted patches (bits as texel_border); their texels weigh 0, since their
  * copies there would not move with them. */
+TEXEL_INLINE float dab_weight(ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g, int p, int2 ij, int a,
+                              __global const BrushDab *restrict dab, __global const PatchUnfolding *restrict unfold,
+                              __global const float *restrict stamp, __global const float4 *restrict material,
+                              int masked, int2 gm, int stride, __global const uchar *restrict outside)
+{
+  const float3 x = ATLAS_LOAD(limit_pos, g, p, ij).xyz;
+  float2 plane;
+  const float t = brush_t(dab, unfold, a, x, BRUSH_NORMAL(dab, limit_nrm, g, p, ij), ij, g.x - 1, &plane);
+  const int kept = outside && (outside[a] & texel_border(ij, g.x - 1));
+  return t <= 1.0f && !kept ? falloff_weight(dab->falloff, t) * dab->strength *
+                                (masked ? 1.0f - material[WEIGHT_INDEX(gm, p, ij * stride)].w : 1.0f) *
+                                stamp_weight(dab, stamp, plane)
+                            : 0.0f;
+}
+
+/* Range: (tile, tile * count); the weights of the listed patches' texels. */
 __kernel void dab_weights(ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g, __global const int *restrict list,
                           int count, __global const BrushDab *restrict dab,
                           __global const PatchUnfolding *restrict unfold, __global const float *restrict stamp,
@@ -38,15 +54,8 @@ __kernel void dab_weights(ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g, __glob
   if (!tile_texel(g, list, count, &p, &ij))
     return;
   const int a = get_global_id(1) / g.x; /* p's entry in the list, and in unfold */
-  const float3 x = ATLAS_LOAD(limit_pos, g, p, ij).xyz;
-  float2 plane;
-  const float t = brush_t(dab, unfold, a, x, BRUSH_NORMAL(dab, limit_nrm, g, p, ij), ij, g.x - 1, &plane);
-  const int k = WEIGHT_INDEX(g, p, ij);
-  const int kept = outside && (outside[a] & texel_border(ij, g.x - 1));
-  weights[k] = t <= 1.0f && !kept ? falloff_weight(dab->falloff, t) * dab->strength *
-                             (masked ? 1.0f - material[WEIGHT_INDEX(gm, p, ij * stride)].w : 1.0f) *
-                             stamp_weight(dab, stamp, plane)
-                         : 0.0f;
+  weights[WEIGHT_INDEX(g, p, ij)] =
+    dab_weight(limit_pos, limit_nrm, g, p, ij, a, dab, unfold, stamp, material, masked, gm, stride, outside);
 }
 
 /* Range: (tile, tile * count). Copies whole tiles of the listed patches. */
@@ -157,16 +166,9 @@ __kernel void welded_smooth_texels(__global const float4 *restrict src, __global
 /* Range: (tile, tile * count). Moves control points: x + amount * w * dir,
  * dir by `mode` (MOVE_*); flatten moves by amount * w of the distance to the
  * plane. Every copy computes the same from the same inputs. */
-__kernel void move_points(ATLAS_IN src, ATLAS_OUT dst, ATLAS_IN limit_nrm, int2 g, __global const int *list,
-                          int count, __global const float *weights, int mode, float amount, float4 centre,
-                          float4 centre_normal)
+TEXEL_INLINE float4 moved_point(float4 x, float w, ATLAS_IN limit_nrm, int2 g, int p, int2 ij, int mode, float amount,
+                                float4 centre, float4 centre_normal)
 {
-  int p;
-  int2 ij;
-  if (!tile_texel(g, list, count, &p, &ij))
-    return;
-  const float w = weights[WEIGHT_INDEX(g, p, ij)];
-  float4 x = ATLAS_LOAD(src, g, p, ij);
   if (w != 0.0f) {
     if (mode == MOVE_INFLATE)
       x.xyz += (amount * w) * ATLAS_LOAD(limit_nrm, g, p, ij).xyz;
@@ -175,7 +177,38 @@ __kernel void move_points(ATLAS_IN src, ATLAS_OUT dst, ATLAS_IN limit_nrm, int2 
     else
       x.xyz += (amount * w) * centre_normal.xyz;
   }
-  ATLAS_STORE(dst, g, p, ij, x);
+  return x;
+}
+
+__kernel void move_points(ATLAS_IN src, ATLAS_OUT dst, ATLAS_IN limit_nrm, int2 g, __global const int *list,
+                          int count, __global const float *weights, int mode, float amount, float4 centre,
+                          float4 centre_normal)
+{
+  int p;
+  int2 ij;
+  if (tile_texel(g, list, count, &p, &ij))
+    ATLAS_STORE(dst, g, p, ij,
+                moved_point(ATLAS_LOAD(src, g, p, ij), weights[WEIGHT_INDEX(g, p, ij)], limit_nrm, g, p, ij, mode,
+                            amount, centre, centre_normal));
+}
+
+/* Range: (tile, tile * count). dab_weights and move_points in one pass, at
+ * the painting level, for a move whose weights nothing else reads (sculpt,
+ * inflate, flatten): the weights are not stored. The same bits as the two. */
+__kernel void move_dab(ATLAS_IN src, ATLAS_OUT dst, ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g,
+                       __global const int *restrict list, int count, __global const BrushDab *restrict dab,
+                       __global const PatchUnfolding *restrict unfold, __global const float *restrict stamp,
+                       __global const float4 *restrict material, int masked, int mode, float amount, float4 centre,
+                       float4 centre_normal)
+{
+  int p;
+  int2 ij;
+  if (!tile_texel(g, list, count, &p, &ij))
+    return;
+  const int a = get_global_id(1) / g.x;
+  const float w = dab_weight(limit_pos, limit_nrm, g, p, ij, a, dab, unfold, stamp, material, masked, g, 1, 0);
+  ATLAS_STORE(dst, g, p, ij,
+              moved_point(ATLAS_LOAD(src, g, p, ij), w, limit_nrm, g, p, ij, mode, amount, centre, centre_normal));
 }
 
 /* Range: (tile, tile * count). Copies the listed patches' tiles of a layer

@@ -126,7 +126,7 @@ struct PaintSurface::LayerKernels
 struct PaintSurface::Device
 {
   LayerKernels positions, channels;
-  cl::Kernel patch_bounds, brush_cull, brush_reach, paint_dab, dab_weights, move_points, dab_pickup;
+  cl::Kernel patch_bounds, brush_cull, brush_reach, paint_dab, dab_weights, move_points, move_dab, dab_pickup;
   cl::Kernel spray_pick, spray_points;
   cl::Buffer bounds, count, active, dab, weights;
   AppendBuffer culled, reached; // CullRecord, ReachRecord
@@ -162,6 +162,7 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     d.paint_dab = cl::Kernel(d.positions.program, "paint_dab");
     d.dab_weights = cl::Kernel(d.positions.program, "dab_weights");
     d.move_points = cl::Kernel(d.positions.program, "move_points");
+    d.move_dab = cl::Kernel(d.positions.program, "move_dab");
     d.dab_pickup = cl::Kernel(d.positions.program, "dab_pickup");
     d.spray_pick = cl::Kernel(d.positions.program, "spray_pick");
     d.spray_points = cl::Kernel(d.positions.program, "spray_points");
@@ -915,7 +916,13 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   const int count = int(patches.size());
   const cl::Buffer list = device_ints(rt.context(), patches);
   const auto tiles = range_tiles(l, count);
-  if (reweigh) {
+  const bool moves = stroke.tool == Tool::Sculpt || stroke.tool == Tool::Inflate || stroke.tool == Tool::Flatten ||
+                     stroke.tool == Tool::Grab;
+  // A move at the painting level weighs as it moves (move_dab); the
+  // weights are kept only where something reads them again: a grab's later
+  // dabs, smoothing passes, a coarse edit.
+  const bool weigh_as_moved = moves && !coarse && stroke.tool != Tool::Grab;
+  if (reweigh && !weigh_as_moved) {
     if (coarse)
       multires_->compute_base_limit(patches);
     weigh(patches, list, dab, level);
@@ -931,17 +938,24 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
     refresh_geometry(coarse ? changed : patches);
   };
 
-  if (stroke.tool == Tool::Sculpt || stroke.tool == Tool::Inflate || stroke.tool == Tool::Flatten ||
-      stroke.tool == Tool::Grab) {
+  if (moves) {
     // A grab moves by the path's step (`normal`) times the weight.
     const int mode = stroke.tool == Tool::Inflate ? MOVE_INFLATE : stroke.tool == Tool::Flatten ? MOVE_FLATTEN
                                                                                                  : MOVE_SCULPT;
     const float amount = stroke.tool == Tool::Grab ? 1.f : stroke.amount;
     const cl::Memory& pos = atlas_->level_layer(level);
     const cl::Memory& normals = coarse ? multires_->base_normals() : atlas_->limit_normals_layer();
-    launch(q, d.move_points, tiles.first, tiles.second, pos, d.position_work, normals, grid(l), list, count, weights,
-           mode, amount, cl_float4{{dab.centre[0], dab.centre[1], dab.centre[2], 0.f}},
-           cl_float4{{normal[0], normal[1], normal[2], 0.f}});
+    const cl_float4 centre{{dab.centre[0], dab.centre[1], dab.centre[2], 0.f}};
+    const cl_float4 towards{{normal[0], normal[1], normal[2], 0.f}};
+    if (weigh_as_moved) {
+      q.enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
+      launch(q, d.move_dab, tiles.first, tiles.second, pos, d.position_work, atlas_->limit_positions_layer(), normals,
+             grid(l), list, count, d.dab, d.unfold, d.stamp, material_buffer(), cl_int(mask_painted_), mode, amount,
+             centre, towards);
+    } else {
+      launch(q, d.move_points, tiles.first, tiles.second, pos, d.position_work, normals, grid(l), list, count,
+             weights, mode, amount, centre, towards);
+    }
     launch(q, d.positions.copy_tiles, tiles.first, tiles.second, d.position_work, pos, grid(l), list, count);
     phase_done(&StepPhases::transform);
     geometry_done();
