@@ -134,6 +134,15 @@ inline int interior_texel(int2 g, __global const int *list, int count, int *p, i
   return 1;
 }
 
+/* The sides (bits 0-3) and corners (bits 4-7) of a patch that texel ij of
+ * an n x n tile lies on. */
+inline int texel_border(int2 ij, int n)
+{
+  const int lo_i = ij.x == 0, hi_i = ij.x == n, lo_j = ij.y == 0, hi_j = ij.y == n;
+  return lo_j | hi_i << 1 | hi_j << 2 | lo_i << 3 | (lo_i & lo_j) << 4 | (hi_i & lo_j) << 5 | (hi_i & hi_j) << 6 |
+         (lo_i & hi_j) << 7;
+}
+
 /* Whole-tile kernels that copy their sides and corners from the compact
  * results of a side and a corner kernel (an entry per side texel, edge by
  * edge, and per ring): where texel ij on the border of a tile (n = tile - 1)

@@ -57,45 +57,61 @@ TEXEL_INLINE float4 decoded(ATLAS_IN smooth, int2 g, int p, int2 ij, __global co
 
 /* Decoding reads U from a layer of the finest level's layout and writes
  * into the finest level, which holds S: the texels of the listed patches,
- * sides and corners are rebuilt; the rest keep S. Range: (n - 1, (n - 1) * count); texels strictly
- * inside the listed patches. */
-__kernel void decode_interior(ATLAS_IN smooth, int2 g, __global const int *list, int count,
-                              __global const float4 *details, ATLAS_OUT fine)
+ * sides and corners are rebuilt; the rest keep S. The side and corner
+ * kernels fill compact arrays (border_entry()), and decode_tiles writes the
+ * tiles, each cache line by one kernel.
+ * Range: (tile, tile * count); the listed patches' texels, but not those on
+ * the sides and corners in `outside` (per listed patch, bits as
+ * texel_border()): shared with unlisted patches, they keep S. */
+__kernel void decode_tiles(ATLAS_IN smooth, int2 g, __global const int *list, int count,
+                           __global const float4 *details, ATLAS_OUT fine, __global const int4 *restrict patch_sides,
+                           __global const int4 *restrict patch_rings, __global const float4 *restrict sides,
+                           __global const float4 *restrict corners, __global const uchar *restrict outside)
 {
   int p;
   int2 ij;
-  if (interior_texel(g, list, count, &p, &ij))
+  if (!tile_texel(g, list, count, &p, &ij))
+    return;
+  const int n = g.x - 1;
+  if (ij.x > 0 && ij.x < n && ij.y > 0 && ij.y < n) {
     ATLAS_STORE(fine, g, p, ij, decoded(smooth, g, p, ij, details));
+    return;
+  }
+  if (outside[get_global_id(1) / g.x] & texel_border(ij, n))
+    return;
+  int corner;
+  const int k = border_entry(ij, n, patch_sides[p], patch_rings[p], &corner);
+  ATLAS_STORE(fine, g, p, ij, corner ? corners[k] : sides[k]);
 }
 
-/* Range: count; the listed patch sides, in the first patch's frame, one
- * work item per side walking along it (items side by side vectorise on a
- * CPU, which a range across the texels of one side would not). */
+/* Range: count; the listed patch sides into `sides`, in the first patch's
+ * frame, one work item per side walking along it. */
 __kernel void decode_edges(ATLAS_IN smooth, int2 g, __global const PatchEdge *edges,
-                           __global const int *list, int count, __global const float4 *details, ATLAS_OUT fine)
+                           __global const int *list, int count, __global const float4 *details,
+                           __global float4 *restrict sides)
 {
   const int k = get_global_id(0);
   if (k >= count)
     return;
-  const PatchEdge e = edges[list[k]];
+  const int edge = list[k];
+  const PatchEdge e = edges[edge];
   const Frame f = side_frame(e.patch[0], e.side[0], g.x - 1);
+  const int first = edge * (g.x - 2) - 1; /* texel t at first + t */
   for (int t = 1; t < g.x - 1; ++t)
-    EDGE_STORE(fine, g, e, t, decoded(smooth, g, e.patch[0], f.o + t * f.dt, details));
+    sides[first + t] = decoded(smooth, g, e.patch[0], f.o + t * f.dt, details);
 }
 
-/* Range: count; every copy of the listed corners, in the first slot's frame. */
+/* Range: count; the listed corners into `corners`, in the first slot's frame. */
 __kernel void decode_corners(ATLAS_IN smooth, int2 g, __global const CornerRing *rings,
                              __global const CornerSlot *slots, __global const int *list, int count,
-                             __global const float4 *details, ATLAS_OUT fine)
+                             __global const float4 *details, __global float4 *restrict corners)
 {
   const int k = get_global_id(0);
   if (k >= count)
     return;
   const CornerRing ring = rings[list[k]];
   const CornerSlot first = slots[ring.first];
-  const float4 v = decoded(smooth, g, first.patch, side_frame(first.patch, first.corner, g.x - 1).o, details);
-  for (int m = 0; m < ring.count; ++m)
-    CORNER_STORE(fine, g, slots[ring.first + m], v);
+  corners[list[k]] = decoded(smooth, g, first.patch, side_frame(first.patch, first.corner, g.x - 1).o, details);
 }
 
 /* Range: count. Longest grid edge of each listed patch (null: every patch),

@@ -9,15 +9,6 @@
 
 #define WEIGHT_INDEX(g, p, ij) PATCH_MAJOR_INDEX(g, p, ij)
 
-/* The sides (bits 0-3) and corners (bits 4-7) of a patch that texel ij of
- * an n x n tile lies on. */
-inline int texel_border(int2 ij, int n)
-{
-  const int lo_i = ij.x == 0, hi_i = ij.x == n, lo_j = ij.y == 0, hi_j = ij.y == n;
-  return lo_j | hi_i << 1 | hi_j << 2 | lo_i << 3 | (lo_i & lo_j) << 4 | (hi_i & lo_j) << 5 | (hi_i & hi_j) << 6 |
-         (lo_i & hi_j) << 7;
-}
-
 /* Weight of texel ij of p, the a-th listed patch:
  * falloff x strength x (1 - mask), 0 outside the radius. The mask lives at
  * the finest level (grid gm): texel ij of grid g is texel ij * stride there;

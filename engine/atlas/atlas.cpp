@@ -505,6 +505,10 @@ const cl::Memory& Atlas::limit_normals_layer()
 }
 
 const cl::Buffer& Atlas::edge_table() const { return kernels_->edges; }
+Atlas::BorderWork Atlas::border_work() const
+{
+  return {kernels_->patch_sides, kernels_->patch_rings, kernels_->side_work, kernels_->corner_work};
+}
 const cl::Buffer& Atlas::ring_table() const { return kernels_->rings; }
 const cl::Buffer& Atlas::slot_table() const { return kernels_->slots; }
 

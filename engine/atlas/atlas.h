@@ -150,6 +150,15 @@ public:
   const cl::Memory& level_layer(int level);
   const cl::Memory& limit_normals_layer();
   const cl::Buffer& edge_table() const;
+  //! For whole-tile kernels of other families (border_entry() in
+  //! atlas_access.cl): the per-patch side and ring tables, and room for
+  //! the side and corner kernels' results at the finest level (two float4
+  //! per entry), which the atlas's own kernels also use between launches.
+  struct BorderWork
+  {
+    const cl::Buffer &patch_sides, &patch_rings, &sides, &corners;
+  };
+  BorderWork border_work() const;
   const cl::Buffer& ring_table() const;
   const cl::Buffer& slot_table() const;
 

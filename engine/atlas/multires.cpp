@@ -5,6 +5,8 @@
 #include "core/errors.h"
 
 #include <algorithm> // for std::max
+#include <cstdint>   // for std::uint8_t
+#include <vector>    // for std::vector
 
 namespace meshpaint {
 namespace {
@@ -16,7 +18,7 @@ constexpr std::size_t kGroup = 64;
 struct Multires::Device
 {
   cl::Program program;
-  cl::Kernel encode, decode_interior, decode_edges, decode_corners, patch_extent;
+  cl::Kernel encode, decode_tiles, decode_edges, decode_corners, patch_extent;
   cl::Memory smooth;    // U = up(base) at the finest level, where it is needed
   cl::Buffer details;   // per finest texel: (t, b, n) coordinates of S - U
   cl::Buffer weights;   // edit-level weights
@@ -33,7 +35,7 @@ Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Devic
     d.program = build_program(rt, std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "detail.cl"},
                               storage_options(atlas_.storage()));
     d.encode = cl::Kernel(d.program, "encode_details");
-    d.decode_interior = cl::Kernel(d.program, "decode_interior");
+    d.decode_tiles = cl::Kernel(d.program, "decode_tiles");
     d.decode_edges = cl::Kernel(d.program, "decode_edges");
     d.decode_corners = cl::Kernel(d.program, "decode_corners");
     d.patch_extent = cl::Kernel(d.program, "patch_extent");
@@ -165,17 +167,22 @@ void Multires::reconstruct(const std::vector<int>& affected)
   const PatchSet set = atlas_.patch_set(affected, Reach::All);
   const cl::Buffer patches = device_ints(rt.context(), set.patches), edges = device_ints(rt.context(), set.edges),
                    rings = device_ints(rt.context(), set.rings);
-  if (f.n > 1 && !set.patches.empty()) {
-    const auto inside = range_interiors(f, int(set.patches.size()));
-    launch(q, d.decode_interior, inside.first, inside.second, d.smooth, grid(f), patches, int(set.patches.size()),
-           d.details, fine);
-  }
+  const Atlas::BorderWork work = atlas_.border_work();
   if (f.n > 1 && !set.edges.empty())
     launch(q, d.decode_edges, cl::NDRange(round_up(set.edges.size(), kGroup)), cl::NDRange(kGroup), d.smooth,
-           grid(f), atlas_.edge_table(), edges, int(set.edges.size()), d.details, fine);
+           grid(f), atlas_.edge_table(), edges, int(set.edges.size()), d.details, work.sides);
   if (!set.rings.empty())
     launch(q, d.decode_corners, cl::NDRange(round_up(set.rings.size(), kGroup)), cl::NDRange(kGroup), d.smooth,
-           grid(f), atlas_.ring_table(), atlas_.slot_table(), rings, int(set.rings.size()), d.details, fine);
+           grid(f), atlas_.ring_table(), atlas_.slot_table(), rings, int(set.rings.size()), d.details, work.corners);
+  if (!set.patches.empty()) {
+    // The sides and corners shared with patches outside keep S.
+    const std::vector<std::uint8_t> outside = atlas_.topology().shared_outside(set.patches);
+    const cl::Buffer kept(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, outside.size(),
+                          const_cast<std::uint8_t*>(outside.data()));
+    const auto tiles = range_tiles(f, int(set.patches.size()));
+    launch(q, d.decode_tiles, tiles.first, tiles.second, d.smooth, grid(f), patches, int(set.patches.size()),
+           d.details, fine, work.patch_sides, work.patch_rings, work.sides, work.corners, kept);
+  }
   q.finish(); // the lists live until here
 }
 
