@@ -143,6 +143,22 @@ inline int texel_border(int2 ij, int n)
          (lo_i & hi_j) << 7;
 }
 
+/* The part of a tile texel ij lies in: UNFOLD_INTERIOR, UNFOLD_SIDE + side
+ * or UNFOLD_CORNER + corner. */
+inline int tile_part(int2 ij, int n)
+{
+  const int lo_i = ij.x == 0, hi_i = ij.x == n, lo_j = ij.y == 0, hi_j = ij.y == n;
+  if ((lo_i || hi_i) && (lo_j || hi_j))
+    return UNFOLD_CORNER + (lo_j ? (lo_i ? 0 : 1) : (hi_i ? 2 : 3));
+  if (lo_j)
+    return UNFOLD_SIDE + 0;
+  if (hi_i)
+    return UNFOLD_SIDE + 1;
+  if (hi_j)
+    return UNFOLD_SIDE + 2;
+  return lo_i ? UNFOLD_SIDE + 3 : UNFOLD_INTERIOR;
+}
+
 /* Whole-tile kernels that copy their sides and corners from the compact
  * results of a side and a corner kernel (an entry per side texel, edge by
  * edge, and per ring): where texel ij on the border of a tile (n = tile - 1)
@@ -152,14 +168,14 @@ inline int texel_border(int2 ij, int n)
  * edge's first patch's side. */
 inline int border_entry(int2 ij, int n, int4 sides, int4 rings, int *corner)
 {
-  const int on_x = ij.x == 0 || ij.x == n, on_y = ij.y == 0 || ij.y == n;
-  *corner = on_x && on_y;
+  const int part = tile_part(ij, n);
+  *corner = part >= UNFOLD_CORNER;
   if (*corner) {
-    const int c = ij.y == 0 ? (ij.x == 0 ? 0 : 1) : (ij.x == 0 ? 3 : 2);
+    const int c = part - UNFOLD_CORNER;
     return c == 0 ? rings.x : c == 1 ? rings.y : c == 2 ? rings.z : rings.w;
   }
   /* Side s and the position t along it in the patch's own frame. */
-  const int s = ij.y == 0 ? 0 : ij.x == n ? 1 : ij.y == n ? 2 : 3;
+  const int s = part - UNFOLD_SIDE;
   const int t = s == 0 ? ij.x : s == 1 ? ij.y : s == 2 ? n - ij.x : n - ij.y;
   const int code = s == 0 ? sides.x : s == 1 ? sides.y : s == 2 ? sides.z : sides.w;
   return (code >> 1) * (n - 1) + ((code & 1) ? n - t : t) - 1;

@@ -234,22 +234,6 @@ inline float2 screen_point(__global const BrushDab *dab, float3 x, float *z)
   return (float2)(dot(v, vload3(0, dab->view_right)), dot(v, vload3(0, dab->view_up))) / *z;
 }
 
-/* The part of a tile texel ij lies in: UNFOLD_INTERIOR, UNFOLD_SIDE + side
- * or UNFOLD_CORNER + corner. */
-inline int tile_part(int2 ij, int n)
-{
-  const int lo_i = ij.x == 0, hi_i = ij.x == n, lo_j = ij.y == 0, hi_j = ij.y == n;
-  if ((lo_i || hi_i) && (lo_j || hi_j))
-    return UNFOLD_CORNER + (lo_j ? (lo_i ? 0 : 1) : (hi_i ? 2 : 3));
-  if (lo_j)
-    return UNFOLD_SIDE + 0;
-  if (hi_i)
-    return UNFOLD_SIDE + 1;
-  if (hi_j)
-    return UNFOLD_SIDE + 2;
-  return lo_i ? UNFOLD_SIDE + 3 : UNFOLD_INTERIOR;
-}
-
 /* Where texel ij (position x, normal nx) of the a-th listed patch lies in
  * the dab's brush space: returns distance / radius, above 1 outside the
  * brush (also on faces the back-face policy skips), and in `plane` the offset
