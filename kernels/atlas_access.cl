@@ -38,6 +38,7 @@
 #define ATLAS_STORE(a, g, p, ij, v) ((a)[ATLAS_INDEX(g, p, ij)] = (v))
 #endif
 
+
 /* Texel of the patch's first corner in the atlas image. */
 inline int2 tile_origin(int patch, int2 g)
 {
@@ -104,6 +105,62 @@ inline Frame across_frame(int patch, int side, int n)
  * side, b along its incoming side. */
 #define CORNER_LOAD(src, g, slot, a, b) FRAME_LOAD(src, g, side_frame((slot).patch, (slot).corner, (g).x - 1), a, b)
 #define CORNER_STORE(dst, g, slot, v) FRAME_STORE(dst, g, side_frame((slot).patch, (slot).corner, (g).x - 1), 0, 0, v)
+
+/* Prefetching for the kernels that gather around edges and rings, which
+ * they take in list order, their tiles in no order. A CPU runs a
+ * work-group's items one after another and waited on each miss in turn;
+ * an item that asks for the tiles of the item PREFETCH_AHEAD places after
+ * it overlaps them. Only where the host asks for it (-D ATLAS_PREFETCH:
+ * CPU devices, buffer storage). */
+#define PREFETCH_AHEAD 8
+#if defined(ATLAS_PREFETCH) && defined(__clang__) && !defined(ATLAS_IMAGE)
+/* A tile's cache lines (the first 8 of a big one, whose side kernels walk
+ * far enough for the hardware's own prefetch). */
+inline void prefetch_tile(__global const float4 *a, int2 g, int p)
+{
+  __global const char *t = (__global const char *)(a + PATCH_MAJOR_INDEX(g, p, (int2)(0, 0)));
+  const int lines = min((g.x * g.x * 16 + 63) / 64, 8);
+  for (int k = 0; k < lines; ++k)
+    __builtin_prefetch(t + 64 * k);
+}
+
+/* The tiles on both sides of edge list[k + PREFETCH_AHEAD]. */
+inline void prefetch_edge_ahead(__global const float4 *a, int2 g, __global const PatchEdge *edges,
+                                __global const int *list, int k, int count)
+{
+  if (k + PREFETCH_AHEAD >= count)
+    return;
+  const PatchEdge e = edges[list ? list[k + PREFETCH_AHEAD] : k + PREFETCH_AHEAD];
+  prefetch_tile(a, g, e.patch[0]);
+  if (e.patch[1] >= 0)
+    prefetch_tile(a, g, e.patch[1]);
+}
+
+/* The texels at the corners of ring list[k + PREFETCH_AHEAD]. */
+inline void prefetch_ring_ahead(__global const float4 *a, int2 g, __global const CornerRing *rings,
+                                __global const CornerSlot *slots, __global const int *list, int k, int count)
+{
+  if (k + PREFETCH_AHEAD >= count)
+    return;
+  const CornerRing ring = rings[list ? list[k + PREFETCH_AHEAD] : k + PREFETCH_AHEAD];
+  for (int i = 0; i < ring.count; ++i) {
+    const CornerSlot slot = slots[ring.first + i];
+    const Frame f = side_frame(slot.patch, slot.corner, g.x - 1);
+    __builtin_prefetch(a + PATCH_MAJOR_INDEX(g, f.patch, f.o));
+    __builtin_prefetch(a + PATCH_MAJOR_INDEX(g, f.patch, f.o + f.dt + f.dd));
+  }
+}
+#define PREFETCH_TILE(a, g, p) prefetch_tile((a), (g), (p))
+#define PREFETCH_TEXEL(a, g, p, ij) __builtin_prefetch((a) + PATCH_MAJOR_INDEX(g, p, ij))
+#define PREFETCH_EDGE_AHEAD(a, g, edges, list, k, count) prefetch_edge_ahead((a), (g), (edges), (list), (k), (count))
+#define PREFETCH_RING_AHEAD(a, g, rings, slots, list, k, count) \
+  prefetch_ring_ahead((a), (g), (rings), (slots), (list), (k), (count))
+#else
+#define PREFETCH_TILE(a, g, p) ((void)0)
+#define PREFETCH_TEXEL(a, g, p, ij) ((void)0)
+#define PREFETCH_EDGE_AHEAD(a, g, edges, list, k, count) ((void)0)
+#define PREFETCH_RING_AHEAD(a, g, rings, slots, list, k, count) ((void)0)
+#endif
 
 /* Patch and texel of a work item of a kernel over whole tiles, whose range
  * is (tile, tile * count): the patch is list[a], or a itself when list is
@@ -183,3 +240,4 @@ inline int border_entry(int2 ij, int n, int4 sides, int4 rings, int *corner)
 
 /* Item k of a table-driven kernel: list[k], or k itself when list is null. */
 #define LISTED(list, k) ((list) ? (list)[k] : (k))
+

@@ -121,12 +121,9 @@ typedef struct {
   float closest_normal[4];        /* and its limit normal */
 } CullRecord;
 
-/* What the reach kernel reports for a patch within the brush's reach: the
- * patch, and as bit s of open_sides whether its side s comes within it. */
-typedef struct {
-  mp_int patch;
-  mp_int open_sides;
-} ReachRecord;
+/* What the reach kernel reports for a patch no texel of which comes within
+ * the brush's reach; otherwise bit s says whether side s does. */
+#define REACH_NONE 255
 
 /* Where a parameter-space dab lays some texels of a patch: texel (i, j)
  * lies at i * u + j * v + n * offset in the texels of the patch under the

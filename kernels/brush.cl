@@ -88,37 +88,34 @@ __kernel void brush_cull(ATLAS_IN pos, ATLAS_IN nrm, int2 g, int patches, __glob
   records[k] = r;
 }
 
-/* Range: #patches. Appends a record for each patch with a texel within
- * `reach` of `centre`, with the sides that come within it, from which the
- * host finds the patches connected to the centre along the surface. A
- * patch whose bounding sphere lies inside the ball has all four sides open
- * without a look at its texels. Records are 8 bytes: a big brush appends
- * most of the atlas. `count` and `capacity` as for brush_cull. */
+/* Range: #patches. Per patch, in `open`: the sides that come within
+ * `reach` of `centre` (bits 0-3) when a texel of it does, else
+ * REACH_NONE; from these the host finds the patches connected to the
+ * centre along the surface. A patch whose bounding sphere lies inside the
+ * ball has all four sides open without a look at its texels. A byte per
+ * patch rather than appended records: a big brush reaches most of the
+ * atlas, and appending made both cores take turns on one counter. */
 __kernel void brush_reach(ATLAS_IN pos, int2 g, int patches, __global const float4 *bounds, float4 centre,
-                          float reach, __global ReachRecord *records, __global int *count, int capacity)
+                          float reach, __global uchar *open)
 {
   const int p = get_global_id(0);
   if (p >= patches)
     return;
   const float4 b = bounds[p];
   const float to_sphere = distance(b.xyz, centre.xyz);
-  if (to_sphere - b.w > reach)
-    return;
-  int open = 15;
-  if (!(to_sphere + b.w <= reach)) {
+  uchar sides = REACH_NONE;
+  if (to_sphere + b.w <= reach) {
+    sides = 15;
+  } else if (!(to_sphere - b.w > reach)) {
     float side[4];
     int texel;
-    if (patch_distances(pos, g, p, centre.xyz, side, &texel) > reach)
-      return;
-    open = 0;
-    for (int s = 0; s < 4; ++s)
-      open |= (side[s] <= reach) << s;
+    if (!(patch_distances(pos, g, p, centre.xyz, side, &texel) > reach)) {
+      sides = 0;
+      for (int s = 0; s < 4; ++s)
+        sides |= (side[s] <= reach) << s;
+    }
   }
-  const int k = atomic_inc(count);
-  if (k < capacity) {
-    records[k].patch = p;
-    records[k].open_sides = open;
-  }
+  open[p] = sides;
 }
 
 /* Gradient noise in [-1, 1] from an integer hash: no tables to upload. */

@@ -95,6 +95,11 @@ __kernel void decode_edges(ATLAS_IN smooth, int2 g, __global const PatchEdge *ed
     return;
   const int edge = list[k];
   const PatchEdge e = edges[edge];
+  if (k + PREFETCH_AHEAD < count) {
+    const int ahead = edges[list[k + PREFETCH_AHEAD]].patch[0];
+    PREFETCH_TILE(smooth, g, ahead);
+    PREFETCH_TILE(details, g, ahead);
+  }
   const Frame f = side_frame(e.patch[0], e.side[0], g.x - 1);
   const int first = edge * (g.x - 2) - 1; /* texel t at first + t */
   for (int t = 1; t < g.x - 1; ++t)
@@ -110,6 +115,13 @@ __kernel void decode_corners(ATLAS_IN smooth, int2 g, __global const CornerRing 
   if (k >= count)
     return;
   const CornerRing ring = rings[list[k]];
+  if (k + PREFETCH_AHEAD < count) {
+    const CornerSlot ahead = slots[rings[list[k + PREFETCH_AHEAD]].first];
+    const Frame f = side_frame(ahead.patch, ahead.corner, g.x - 1);
+    PREFETCH_TEXEL(smooth, g, f.patch, f.o);
+    PREFETCH_TEXEL(smooth, g, f.patch, f.o + f.dd);
+    PREFETCH_TEXEL(details, g, f.patch, f.o);
+  }
   const CornerSlot first = slots[ring.first];
   corners[list[k]] = decoded(smooth, g, first.patch, side_frame(first.patch, first.corner, g.x - 1).o, details);
 }

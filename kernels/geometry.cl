@@ -1,13 +1,24 @@
 /* Brushes that move geometry or filter a layer: weights, smoothing
  * (Laplacian; Taubin is two passes), sculpt, inflate, flatten. They change a
- * layer of one level on a set of patches. Moves read `src` and write `dst`
- * (images cannot be read and written by one kernel) and the host copies the
- * tiles back; smoothing runs on the welded mesh, so each stored copy of a
+ * layer of one level on a set of patches. Moves read `src` and write `dst`:
+ * with images (which one kernel cannot read and write) another layer, whose
+ * tiles the host copies back; with buffers the same one, each texel read
+ * and written by its own work item. Smoothing runs on the welded mesh, so each stored copy of a
  * side or corner texel gets one value. Weights are per texel, patch-major,
  * computed from the limit surface. Built after brush.cl, whose falloff and
  * stamp helpers it shares. */
 
 #define WEIGHT_INDEX(g, p, ij) PATCH_MAJOR_INDEX(g, p, ij)
+
+/* The layers a move reads and writes: without restrict for buffers, which
+ * may be one. */
+#ifdef ATLAS_IMAGE
+#define MOVED_IN ATLAS_IN
+#define MOVED_OUT ATLAS_OUT
+#else
+#define MOVED_IN __global const float4 *
+#define MOVED_OUT __global float4 *
+#endif
 
 /* Weight of texel ij of p, the a-th listed patch:
  * falloff x strength x (1 - mask), 0 outside the radius. The mask lives at
@@ -171,7 +182,7 @@ TEXEL_INLINE float4 moved_point(float4 x, float w, ATLAS_IN limit_nrm, int2 g, i
   return x;
 }
 
-__kernel void move_points(ATLAS_IN src, ATLAS_OUT dst, ATLAS_IN limit_nrm, int2 g, __global const int *list,
+__kernel void move_points(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_nrm, int2 g, __global const int *list,
                           int count, __global const float *weights, int mode, float amount, float4 centre,
                           float4 centre_normal)
 {
@@ -186,7 +197,7 @@ __kernel void move_points(ATLAS_IN src, ATLAS_OUT dst, ATLAS_IN limit_nrm, int2 
 /* Range: (tile, tile * count). dab_weights and move_points in one pass, at
  * the painting level, for a move whose weights nothing else reads (sculpt,
  * inflate, flatten): the weights are not stored. The same bits as the two. */
-__kernel void move_dab(ATLAS_IN src, ATLAS_OUT dst, ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g,
+__kernel void move_dab(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g,
                        __global const int *restrict list, int count, __global const BrushDab *restrict dab,
                        __global const PatchUnfolding *restrict unfold, __global const float *restrict stamp,
                        __global const float4 *restrict material, int masked, int mode, float amount, float4 centre,

@@ -74,6 +74,7 @@ __kernel void limit_edges(ATLAS_IN src, __global float4 *restrict sides, __globa
     return;
   const int edge = LISTED(list, k);
   const PatchEdge e = edges[edge];
+  PREFETCH_EDGE_AHEAD(src, g, edges, list, k, count);
   EDGE_FRAMES(e, g);
   const int interior = e.patch[1] >= 0;
   const int first = edge * (g.x - 2) - 1; /* pair of texel t: first + t */
@@ -120,6 +121,7 @@ __kernel void limit_corners(ATLAS_IN src, __global float4 *restrict corners, __g
     return;
   const int r = LISTED(list, k);
   const CornerRing ring = rings[r];
+  PREFETCH_RING_AHEAD(src, g, rings, slots, list, k, count);
   const int m = ring.count;
   const CornerSlot first = slots[ring.first], last = slots[ring.first + m - 1];
   const float4 v = CORNER_LOAD(src, g, first, 0, 0);

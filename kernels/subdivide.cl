@@ -60,6 +60,7 @@ __kernel void subdivide_edges(ATLAS_IN src, __global float4 *restrict sides, __g
   const int n_src = sg.x - 1;
   const int edge = LISTED(list, k);
   const PatchEdge e = edges[edge];
+  PREFETCH_EDGE_AHEAD(src, sg, edges, list, k, edge_count);
   const int first = edge * (dg.x - 2) - 1; /* texel t at first + t */
   EDGE_FRAMES(e, sg);
   const int interior = e.patch[1] >= 0;
@@ -101,6 +102,7 @@ __kernel void subdivide_corners(ATLAS_IN src, __global float4 *restrict corners,
     return;
   const int index = LISTED(list, k);
   const CornerRing ring = rings[index];
+  PREFETCH_RING_AHEAD(src, sg, rings, slots, list, k, ring_count);
   const CornerSlot first = slots[ring.first], last = slots[ring.first + ring.count - 1];
   const float4 v = CORNER_LOAD(src, sg, first, 0, 0);
   float4 r;

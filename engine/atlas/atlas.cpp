@@ -86,9 +86,11 @@ AtlasStorage parse_storage(const std::string& name)
   throw InputError("unknown atlas storage '" + name + "' (buffer or image)");
 }
 
-std::string storage_options(AtlasStorage storage)
+std::string storage_options(AtlasStorage storage, const DeviceInfo& device)
 {
-  return std::string("-cl-std=CL1.2") + (storage == AtlasStorage::Image ? " -D ATLAS_IMAGE" : "");
+  if (storage == AtlasStorage::Image)
+    return "-cl-std=CL1.2 -D ATLAS_IMAGE";
+  return device.gpu ? "-cl-std=CL1.2" : "-cl-std=CL1.2 -D ATLAS_PREFETCH";
 }
 
 const char* storage_name(AtlasStorage storage)
@@ -278,7 +280,7 @@ Atlas::Atlas(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int max_lev
     Kernels& k = *kernels_;
     k.program = build_program(*runtime_,
                               {"atlas_types.h", "atlas_access.cl", "subdivide.cl", "limit.cl", "reduce.cl"},
-                              storage_options(storage_));
+                              storage_options(storage_, runtime_->info()));
     k.subdivide_tiles = cl::Kernel(k.program, "subdivide_tiles");
     k.subdivide_edges = cl::Kernel(k.program, "subdivide_edges");
     k.subdivide_corners = cl::Kernel(k.program, "subdivide_corners");
@@ -445,40 +447,87 @@ void Atlas::compute_limit_of(int level, const cl::Memory& pos, const cl::Memory&
     q.finish(); // the lists live until here
 }
 
+namespace {
+
+//! The patches marked in `marks`, in patch order, given that `listed` holds
+//! them in any order: for big sets a scan of the marks beats a sort.
+std::vector<int> in_patch_order(std::vector<int> listed, const Marks& marks, int patch_count)
+{
+  if (listed.size() * 16 <= std::size_t(patch_count)) {
+    std::sort(listed.begin(), listed.end());
+    return listed;
+  }
+  listed.clear();
+  for (int p = 0; p < patch_count; ++p)
+    if (marks.marked(std::size_t(p)))
+      listed.push_back(p);
+  return listed;
+}
+
+} // namespace
+
 PatchSet Atlas::patch_set(const std::vector<int>& patches, Reach reach) const
 {
-  // Marks instead of sorting: linear in the patches plus one pass of memset.
-  PatchSet set;
-  std::vector<char> listed(std::size_t(topology_.patch_count), 0);
+  patch_marks_.begin(std::size_t(topology_.patch_count));
+  std::vector<int> listed;
+  listed.reserve(patches.size());
   for (const int p : patches)
-    listed[std::size_t(p)] = 1;
-  for (int p = 0; p < topology_.patch_count; ++p)
-    if (listed[std::size_t(p)])
-      set.patches.push_back(p);
-  std::vector<char> edge_seen(topology_.edges.size(), 0), vertex_seen(topology_.rings.size(), 0);
+    if (patch_marks_.mark(std::size_t(p)))
+      listed.push_back(p);
+  return marked_set(in_patch_order(std::move(listed), patch_marks_, topology_.patch_count), reach);
+}
+
+PatchSet Atlas::marked_set(std::vector<int> patches, Reach reach) const
+{
+  PatchSet set;
+  set.patches = std::move(patches);
+  edge_marks_.begin(topology_.edges.size());
+  ring_marks_.begin(topology_.rings.size());
   for (const int p : set.patches)
     for (int s = 0; s < 4; ++s) {
-      const int e = topology_.patch_sides[p][s];
-      if (!edge_seen[std::size_t(e)]) {
-        edge_seen[std::size_t(e)] = 1;
-        const PatchEdge& pe = topology_.edges[e];
-        if (reach == Reach::Any || (listed[std::size_t(pe.patch[0])] && (pe.patch[1] < 0 || listed[std::size_t(pe.patch[1])])))
+      const int e = topology_.patch_sides[std::size_t(p)][std::size_t(s)];
+      if (edge_marks_.mark(std::size_t(e))) {
+        const PatchEdge& pe = topology_.edges[std::size_t(e)];
+        if (reach == Reach::Any ||
+            (patch_marks_.marked(std::size_t(pe.patch[0])) && (pe.patch[1] < 0 || patch_marks_.marked(std::size_t(pe.patch[1])))))
           set.edges.push_back(e);
       }
-      const int v = topology_.patch_corners[p][s];
-      if (!vertex_seen[std::size_t(v)]) {
-        vertex_seen[std::size_t(v)] = 1;
-        const CornerRing& ring = topology_.rings[v];
+      const int v = topology_.patch_corners[std::size_t(p)][std::size_t(s)];
+      if (ring_marks_.mark(std::size_t(v))) {
+        const CornerRing& ring = topology_.rings[std::size_t(v)];
         bool all = true; // only Reach::All looks at the patches around
         for (int m = 0; m < ring.count && all && reach == Reach::All; ++m)
-          all = listed[std::size_t(topology_.slots[ring.first + m].patch)] != 0;
+          all = patch_marks_.marked(std::size_t(topology_.slots[std::size_t(ring.first + m)].patch));
         if (all) {
-          set.rings.push_back(device_ring_[v]);
+          set.rings.push_back(device_ring_[std::size_t(v)]);
           set.corners.push_back(v);
         }
       }
     }
   return set;
+}
+
+PatchSet Atlas::neighbourhood_set(const std::vector<int>& changed) const
+{
+  // The rings at the changed patches' corners hold the neighbourhood; the
+  // set's edges and rings are then every side and corner of it.
+  patch_marks_.begin(std::size_t(topology_.patch_count));
+  ring_seen_.begin(topology_.rings.size());
+  std::vector<int> around;
+  around.reserve(2 * changed.size());
+  for (const int p : changed)
+    for (int c = 0; c < 4; ++c) {
+      const int v = topology_.patch_corners[std::size_t(p)][std::size_t(c)];
+      if (!ring_seen_.mark(std::size_t(v)))
+        continue;
+      const CornerRing& ring = topology_.rings[std::size_t(v)];
+      for (int m = 0; m < ring.count; ++m) {
+        const int q = topology_.slots[std::size_t(ring.first + m)].patch;
+        if (patch_marks_.mark(std::size_t(q)))
+          around.push_back(q);
+      }
+    }
+  return marked_set(in_patch_order(std::move(around), patch_marks_, topology_.patch_count), Reach::Any);
 }
 
 void Atlas::update_limit(const PatchSet& set)

@@ -5,6 +5,7 @@
 #include "atlas/atlas_topology.h"
 #include "atlas/patch_layout.h"
 #include "cl/runtime.h"
+#include "core/marks.h"
 #include "core/vec.h"
 #include "mesh/base_mesh.h"
 
@@ -29,8 +30,9 @@ AtlasStorage default_storage(const DeviceInfo& device);
 //! \throw InputError for anything but "buffer" or "image".
 AtlasStorage parse_storage(const std::string& name);
 const char* storage_name(AtlasStorage storage);
-//! Build options of kernels that address atlas layers in `storage`.
-std::string storage_options(AtlasStorage storage);
+//! Build options of kernels that address atlas layers in `storage` on
+//! `device` (CPUs prefetch tiles that gathering kernels read out of order).
+std::string storage_options(AtlasStorage storage, const DeviceInfo& device);
 
 //! A zero-filled float4 layer of a level in the given storage: scratch and
 //! saved copies of levels, which the atlas's kernels address alike.
@@ -136,6 +138,10 @@ public:
 
   //! The edges and rings that go with `patches` (sorted) by `reach`.
   PatchSet patch_set(const std::vector<int>& patches, Reach reach) const;
+  //! The set that subdivide() and update_limit() take after the positions
+  //! of `changed` moved: those patches and every patch sharing a corner
+  //! with one (each holds copies of moved texels' limit), by Reach::Any.
+  PatchSet neighbourhood_set(const std::vector<int>& changed) const;
   //! Recomputes the limit layers on a set only (after editing positions
   //! there): the whole tiles of the set's patches, as compute_limit_of().
   //! Every patch holding a copy of a moved texel's limit must be in the set:
@@ -178,6 +184,8 @@ private:
   std::vector<Float4> read_layer(const Layer& layer, const LevelLayout& l);
   void write_layer(Layer& layer, const LevelLayout& l, const std::vector<Float4>& texels);
   Layer make_layer(const LevelLayout& l);
+  //! The set of `patches` (in patch order, and the ones patch_marks_ holds).
+  PatchSet marked_set(std::vector<int> patches, Reach reach) const;
 
   std::shared_ptr<Runtime> runtime_;
   AtlasStorage storage_;
@@ -190,6 +198,9 @@ private:
   bool limit_current_ = false; // limit layers match the finest level
   std::unique_ptr<Kernels> kernels_;
   std::vector<int> device_ring_; // level-1 vertex -> index in the device's ring table
+  // Scratch of patch_set() and neighbourhood_set(), which a brush step calls
+  // on most of the atlas: kept, so that a call costs only what it visits.
+  mutable Marks patch_marks_, edge_marks_, ring_marks_, ring_seen_;
 };
 
 } // namespace meshpaint

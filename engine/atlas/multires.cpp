@@ -33,7 +33,7 @@ Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Devic
   Device& d = *device_;
   try {
     d.program = build_program(rt, std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "detail.cl"},
-                              storage_options(atlas_.storage()));
+                              storage_options(atlas_.storage(), rt.info()));
     d.encode = cl::Kernel(d.program, "encode_details");
     d.decode_tiles = cl::Kernel(d.program, "decode_tiles");
     d.decode_edges = cl::Kernel(d.program, "decode_edges");
@@ -162,7 +162,7 @@ void Multires::reconstruct(const std::vector<int>& affected)
   // writes S' from there into the finest level, whose other texels keep S
   // as it is now, whatever changed it since the encoding (an undo, a stroke
   // elsewhere).
-  const PatchSet reached = atlas_.patch_set(atlas_.topology().corner_neighbourhood(affected, 1), Reach::Any);
+  const PatchSet reached = atlas_.neighbourhood_set(affected);
   atlas_.subdivide(level_, finest, &reached, &d.smooth);
   const PatchSet set = atlas_.patch_set(affected, Reach::All);
   const cl::Buffer patches = device_ints(rt.context(), set.patches), edges = device_ints(rt.context(), set.edges),

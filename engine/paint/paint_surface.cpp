@@ -57,12 +57,13 @@ std::vector<Record> run_appending(Runtime& rt, cl::Kernel& kernel, int patches, 
 }
 
 //! Device bytes painting adds to the atlas at a level: the three channel
-//! layers, the channel and position work layers, the dab weights and the
-//! patch bounds that the constructor allocates.
+//! layers, the channel work layer, the position work layer (images only),
+//! the dab weights, the patch bounds and reach bytes that the constructor
+//! allocates.
 std::size_t paint_bytes(const LevelLayout& l, AtlasStorage storage)
 {
-  return 4 * l.texels() * sizeof(Float4) + layer_bytes(l, storage) + l.texels() * sizeof(float) +
-         std::size_t(l.patches) * sizeof(cl_float4);
+  return 4 * l.texels() * sizeof(Float4) + (storage == AtlasStorage::Image ? layer_bytes(l, storage) : 0) +
+         l.texels() * sizeof(float) + std::size_t(l.patches) * (sizeof(cl_float4) + 1);
 }
 
 //! Why the atlas and the painting layers at `level` do not fit the device,
@@ -110,7 +111,7 @@ struct PaintSurface::LayerKernels
     program = build_program(rt,
                             std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "brush.cl", "geometry.cl",
                                                      "lighting.cl"},
-                            storage_options(storage));
+                            storage_options(storage, rt.info()));
     copy_tiles = cl::Kernel(program, "copy_tiles");
     welded.gather = cl::Kernel(program, "welded_gather");
     welded.scatter = cl::Kernel(program, "welded_scatter");
@@ -129,13 +130,14 @@ struct PaintSurface::Device
   cl::Kernel patch_bounds, brush_cull, brush_reach, paint_dab, dab_weights, move_points, move_dab, dab_pickup;
   cl::Kernel spray_pick, spray_points;
   cl::Buffer bounds, count, active, dab, weights;
-  AppendBuffer culled, reached; // CullRecord, ReachRecord
+  cl::Buffer open_sides; // brush_reach: a byte per patch
+  AppendBuffer culled;   // CullRecord
   cl::Buffer unfold; // a parameter dab's PatchUnfolding per listed patch (one entry otherwise)
   std::size_t active_capacity = 0, unfold_capacity = 1;
   cl::Buffer diffuse, specular, material, channel_work;
   cl::Buffer inside_diffuse, inside_specular, inside_material; // two-sided surfaces
   cl::Buffer raster, stamp; // the stroke's pattern samples and brush image (one float when none)
-  cl::Memory position_work; // a scratch copy of the finest level, same storage
+  cl::Memory position_work; // image storage: a scratch layer of the finest level for moves
   std::unique_ptr<WeldedSmoothing> smoothing;
 };
 
@@ -170,7 +172,8 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     const std::size_t bytes = l.texels() * sizeof(Float4);
     d.channel_work = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
     d.weights = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, l.texels() * sizeof(float));
-    d.position_work = allocate_layer(rt, l, storage);
+    if (storage == AtlasStorage::Image)
+      d.position_work = allocate_layer(rt, l, storage);
     d.diffuse = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
     d.specular = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
     d.material = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
@@ -180,6 +183,7 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     rt.queue().enqueueFillBuffer(d.material, cl_float4{{material.roughness, 0.f, 0.f, 0.f}}, 0, bytes);
     d.bounds = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_float4) * l.patches);
     d.count = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_int));
+    d.open_sides = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, std::size_t(l.patches));
     d.dab = cl::Buffer(rt.context(), CL_MEM_READ_ONLY, sizeof(BrushDab));
     d.unfold = cl::Buffer(rt.context(), CL_MEM_READ_ONLY, sizeof(PatchUnfolding) * d.unfold_capacity);
     launch(rt.queue(), d.patch_bounds, cl::NDRange(round_up(l.patches, kGroup)), cl::NDRange(kGroup),
@@ -267,7 +271,7 @@ void PaintSurface::restore(const Snapshot& s)
     // from them, which the next edit at that level reads around its reach.
     scatter(std::size_t(edit - s.layer_ids.begin()));
     if (s.edit_level + 1 < level_) {
-      const PatchSet set = atlas_->patch_set(atlas_->topology().corner_neighbourhood(s.patches, 1), Reach::Any);
+      const PatchSet set = atlas_->neighbourhood_set(s.patches);
       atlas_->subdivide(s.edit_level, level_ - 1, &set);
     }
   }
@@ -312,14 +316,13 @@ void PaintSurface::refresh_geometry(const std::vector<int>& patches)
   const LevelLayout l = atlas_->layout(level_);
   // The limit changed on the patches' sides and corners too, which every
   // patch sharing a corner with them stores: their tiles and bounds as well.
-  const std::vector<int> around = atlas_->topology().corner_neighbourhood(patches, 1);
-  const PatchSet set = atlas_->patch_set(around, Reach::Any);
+  const PatchSet set = atlas_->neighbourhood_set(patches);
   phase_done(&StepPhases::lists);
   atlas_->update_limit(set);
   phase_done(&StepPhases::limit);
-  const cl::Buffer list = device_ints(rt.context(), around);
-  launch(rt.queue(), d.patch_bounds, cl::NDRange(round_up(around.size(), kGroup)), cl::NDRange(kGroup),
-         atlas_->limit_positions_layer(), grid(l), list, int(around.size()), d.bounds);
+  const cl::Buffer list = device_ints(rt.context(), set.patches);
+  launch(rt.queue(), d.patch_bounds, cl::NDRange(round_up(set.patches.size(), kGroup)), cl::NDRange(kGroup),
+         atlas_->limit_positions_layer(), grid(l), list, int(set.patches.size()), d.bounds);
   rt.queue().finish();
   phase_done(&StepPhases::bounds);
 }
@@ -391,13 +394,15 @@ std::vector<CullRecord> PaintSurface::cull(const Vec3& centre, float radius)
                                    d.bounds, cl_float4{{centre[0], centre[1], centre[2], 0.f}}, radius);
 }
 
-std::vector<ReachRecord> PaintSurface::reach_records(const Vec3& centre, float radius)
+void PaintSurface::reach_sides(const Vec3& centre, float radius)
 {
   Device& d = *device_;
+  Runtime& rt = atlas_->runtime();
   const LevelLayout l = atlas_->layout(level_);
-  return run_appending<ReachRecord>(atlas_->runtime(), d.brush_reach, l.patches, d.reached, d.count,
-                                    atlas_->limit_positions_layer(), grid(l), l.patches, d.bounds,
-                                    cl_float4{{centre[0], centre[1], centre[2], 0.f}}, radius);
+  launch(rt.queue(), d.brush_reach, cl::NDRange(round_up(std::size_t(l.patches), kGroup)), cl::NDRange(kGroup),
+         atlas_->limit_positions_layer(), grid(l), l.patches, d.bounds,
+         cl_float4{{centre[0], centre[1], centre[2], 0.f}}, radius, d.open_sides);
+  rt.queue().enqueueReadBuffer(d.open_sides, CL_TRUE, 0, open_sides_.size(), open_sides_.data());
 }
 
 std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Vec3* centre_out, Vec3* normal_out,
@@ -433,27 +438,20 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
   // The brush reaches the patches connected to the centre's patch through
   // sides that themselves come within the radius: never through the air.
   const int start_patch = best->patch;
-  const std::vector<ReachRecord> records = reach_records(centre, reach);
+  reach_sides(centre, reach);
 
-  // Flood from the centre's patch over the culled patches; `mark_` holds,
-  // per patch, 2 * generation for "culled" and 2 * generation + 1 for
-  // "reached", so nothing needs clearing between dabs. The flood reads only
-  // arrays indexed by patch: the records lie in the order the kernel
-  // appended them, and looking them up made it wait on memory.
-  const std::uint32_t culled = 2 * ++generation_, reached = culled + 1;
-  for (const ReachRecord& c : records) {
-    mark_[std::size_t(c.patch)] = culled;
-    open_sides_[std::size_t(c.patch)] = std::uint8_t(c.open_sides);
-  }
+  // Flood from the centre's patch over the patches within reach; `mark_`
+  // holds the generation of the flood that reached a patch, so nothing
+  // needs clearing between dabs.
+  const std::uint32_t reached = ++generation_;
   // Breadth first: a patch waits in the queue long enough for the prefetch
   // of its neighbours to arrive (depth first pops it at once).
   std::vector<int> queue;
   const auto visit = [&](int p) {
-    if (mark_[std::size_t(p)] == culled) {
+    if (open_sides_[std::size_t(p)] != REACH_NONE && mark_[std::size_t(p)] != reached) {
       mark_[std::size_t(p)] = reached;
       queue.push_back(p);
       __builtin_prefetch(&neighbours_[std::size_t(p)]);
-      __builtin_prefetch(&open_sides_[std::size_t(p)]);
     }
   };
   visit(start_patch);
@@ -464,21 +462,17 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
       if ((open >> s & 1) && neighbours_[std::size_t(p)][s] >= 0)
         visit(neighbours_[std::size_t(p)][s]);
   }
-  const std::size_t count = queue.size();
   // In patch order: for big brushes a scan of the marks beats a sort.
-  std::vector<int> active;
-  active.reserve(count);
-  if (count * 16 > mark_.size()) {
+  if (queue.size() * 16 > mark_.size()) {
+    std::vector<int> active;
+    active.reserve(queue.size());
     for (std::size_t p = 0; p < mark_.size(); ++p)
       if (mark_[p] == reached)
         active.push_back(int(p));
     return active;
   }
-  for (const ReachRecord& c : records)
-    if (mark_[std::size_t(c.patch)] == reached)
-      active.push_back(c.patch);
-  std::sort(active.begin(), active.end());
-  return active;
+  std::sort(queue.begin(), queue.end());
+  return queue;
 }
 
 void PaintSurface::spray(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke,
@@ -944,19 +938,22 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
                                                                                                  : MOVE_SCULPT;
     const float amount = stroke.tool == Tool::Grab ? 1.f : stroke.amount;
     const cl::Memory& pos = atlas_->level_layer(level);
+    const bool in_place = atlas_->storage() == AtlasStorage::Buffer; // see geometry.cl
+    const cl::Memory& moved = in_place ? pos : d.position_work;
     const cl::Memory& normals = coarse ? multires_->base_normals() : atlas_->limit_normals_layer();
     const cl_float4 centre{{dab.centre[0], dab.centre[1], dab.centre[2], 0.f}};
     const cl_float4 towards{{normal[0], normal[1], normal[2], 0.f}};
     if (weigh_as_moved) {
       q.enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
-      launch(q, d.move_dab, tiles.first, tiles.second, pos, d.position_work, atlas_->limit_positions_layer(), normals,
+      launch(q, d.move_dab, tiles.first, tiles.second, pos, moved, atlas_->limit_positions_layer(), normals,
              grid(l), list, count, d.dab, d.unfold, d.stamp, material_buffer(), cl_int(mask_painted_), mode, amount,
              centre, towards);
     } else {
-      launch(q, d.move_points, tiles.first, tiles.second, pos, d.position_work, normals, grid(l), list, count,
+      launch(q, d.move_points, tiles.first, tiles.second, pos, moved, normals, grid(l), list, count,
              weights, mode, amount, centre, towards);
     }
-    launch(q, d.positions.copy_tiles, tiles.first, tiles.second, d.position_work, pos, grid(l), list, count);
+    if (!in_place)
+      launch(q, d.positions.copy_tiles, tiles.first, tiles.second, d.position_work, pos, grid(l), list, count);
     phase_done(&StepPhases::transform);
     geometry_done();
     return;

@@ -188,7 +188,8 @@ private:
   //! no particular order, each with its closest texel.
   std::vector<CullRecord> cull(const Vec3& centre, float radius);
   //! The same patches, each with the sides that come within `radius`.
-  std::vector<ReachRecord> reach_records(const Vec3& centre, float radius);
+  //! Fills open_sides_ from brush_reach.
+  void reach_sides(const Vec3& centre, float radius);
   bool step(bool back); // undo (back) or redo
   void paint(const std::vector<int>& patches, const BrushDab& dab);
   //! One dab of spray paint: droplets at random points of the brush's disc
@@ -277,8 +278,8 @@ private:
   std::vector<int> stroke_layers_;    // the layers the running stroke changes
   std::vector<char> in_stroke_;       // per patch: already in stroke_before_
   std::vector<std::array<int, 4>> neighbours_; // per patch side: the patch across, -1 on a border
-  std::vector<std::uint32_t> mark_;   // per patch: culled / reached in dab `generation_`
-  std::vector<std::uint8_t> open_sides_; // per patch: bit s set if side s comes within the dab's reach
+  std::vector<std::uint32_t> mark_;      // per patch: reached by the flood of dab `generation_`
+  std::vector<std::uint8_t> open_sides_; // per patch: bit s set if side s comes within the dab's reach, or REACH_NONE
   std::uint32_t generation_ = 0;
   const std::vector<char>* dab_mask_ = nullptr; // apply(stroke, dabs): the dabs for this surface
   bool two_sided_ = false;

@@ -198,7 +198,7 @@ std::shared_ptr<DisplayArrays> PaintSurface::display_arrays()
     auto d = std::make_shared<Display>();
     try {
       d->program = build_program(rt, std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "display.cl"},
-                                 storage_options(atlas_->storage()));
+                                 storage_options(atlas_->storage(), rt.info()));
       d->vertices = cl::Kernel(d->program, "display_vertices");
       d->inside = cl::Kernel(d->program, "display_inside");
       d->vertex_of = device_ints(rt.context(), texel_vertices());
