@@ -477,34 +477,59 @@ PatchSet Atlas::patch_set(const std::vector<int>& patches, Reach reach) const
   return marked_set(in_patch_order(std::move(listed), patch_marks_, topology_.patch_count), reach);
 }
 
+std::uint8_t Atlas::outside_bits(int p) const
+{
+  std::uint8_t bits = 0;
+  for (int s = 0; s < 4; ++s) {
+    const int q = topology_.across(p, s);
+    if (q >= 0 && !patch_marks_.marked(std::size_t(q)))
+      bits |= std::uint8_t(1u << s);
+    const CornerRing& ring = topology_.rings[std::size_t(topology_.patch_corners[std::size_t(p)][std::size_t(s)])];
+    for (int m = 0; m < ring.count; ++m)
+      if (!patch_marks_.marked(std::size_t(topology_.slots[std::size_t(ring.first + m)].patch))) {
+        bits |= std::uint8_t(16u << s);
+        break;
+      }
+  }
+  return bits;
+}
+
 PatchSet Atlas::marked_set(std::vector<int> patches, Reach reach) const
 {
   PatchSet set;
   set.patches = std::move(patches);
   edge_marks_.begin(topology_.edges.size());
   ring_marks_.begin(topology_.rings.size());
-  for (const int p : set.patches)
+  if (reach == Reach::All)
+    set.outside.reserve(set.patches.size());
+  for (const int p : set.patches) {
+    // By Reach::All, a side or corner shared with a patch outside stays out.
+    const std::uint8_t outside = reach == Reach::All ? outside_bits(p) : 0;
+    if (reach == Reach::All)
+      set.outside.push_back(outside);
     for (int s = 0; s < 4; ++s) {
       const int e = topology_.patch_sides[std::size_t(p)][std::size_t(s)];
-      if (edge_marks_.mark(std::size_t(e))) {
-        const PatchEdge& pe = topology_.edges[std::size_t(e)];
-        if (reach == Reach::Any ||
-            (patch_marks_.marked(std::size_t(pe.patch[0])) && (pe.patch[1] < 0 || patch_marks_.marked(std::size_t(pe.patch[1])))))
-          set.edges.push_back(e);
-      }
+      if (edge_marks_.mark(std::size_t(e)) && !(outside >> s & 1))
+        set.edges.push_back(e);
       const int v = topology_.patch_corners[std::size_t(p)][std::size_t(s)];
-      if (ring_marks_.mark(std::size_t(v))) {
-        const CornerRing& ring = topology_.rings[std::size_t(v)];
-        bool all = true; // only Reach::All looks at the patches around
-        for (int m = 0; m < ring.count && all && reach == Reach::All; ++m)
-          all = patch_marks_.marked(std::size_t(topology_.slots[std::size_t(ring.first + m)].patch));
-        if (all) {
-          set.rings.push_back(device_ring_[std::size_t(v)]);
-          set.corners.push_back(v);
-        }
+      if (ring_marks_.mark(std::size_t(v)) && !(outside >> (4 + s) & 1)) {
+        set.rings.push_back(device_ring_[std::size_t(v)]);
+        set.corners.push_back(v);
       }
     }
+  }
   return set;
+}
+
+std::vector<std::uint8_t> Atlas::shared_outside(const std::vector<int>& patches) const
+{
+  patch_marks_.begin(std::size_t(topology_.patch_count));
+  for (const int p : patches)
+    patch_marks_.mark(std::size_t(p));
+  std::vector<std::uint8_t> out(patches.size());
+  for (std::size_t k = 0; k < patches.size(); ++k)
+    out[k] = outside_bits(patches[k]);
+  return out;
 }
 
 PatchSet Atlas::neighbourhood_set(const std::vector<int>& changed) const

@@ -10,6 +10,7 @@
 #include "mesh/base_mesh.h"
 
 #include <array>   // for std::array
+#include <cstdint> // for std::uint8_t
 #include <memory>  // for std::shared_ptr, std::unique_ptr
 #include <utility> // for std::pair
 #include <string>  // for std::string
@@ -78,6 +79,9 @@ struct PatchSet
   std::vector<int> edges;   //!< indices into AtlasTopology::edges
   std::vector<int> rings;   //!< indices into the device's ring table
   std::vector<int> corners; //!< the level-1 vertex of each ring
+  //! Reach::All only: per patch, the sides (bits 0-3) and corners (bits
+  //! 4-7) it shares with a patch outside the set (texel_border()'s bits).
+  std::vector<std::uint8_t> outside;
 };
 
 //! Whether an edge or ring goes with a set of patches when any of its
@@ -142,6 +146,9 @@ public:
   //! of `changed` moved: those patches and every patch sharing a corner
   //! with one (each holds copies of moved texels' limit), by Reach::Any.
   PatchSet neighbourhood_set(const std::vector<int>& changed) const;
+  //! Per patch of `patches`, the sides (bits 0-3) and corners (bits 4-7) it
+  //! shares with a patch not listed (as PatchSet::outside).
+  std::vector<std::uint8_t> shared_outside(const std::vector<int>& patches) const;
   //! Recomputes the limit layers on a set only (after editing positions
   //! there): the whole tiles of the set's patches, as compute_limit_of().
   //! Every patch holding a copy of a moved texel's limit must be in the set:
@@ -186,6 +193,8 @@ private:
   Layer make_layer(const LevelLayout& l);
   //! The set of `patches` (in patch order, and the ones patch_marks_ holds).
   PatchSet marked_set(std::vector<int> patches, Reach reach) const;
+  //! PatchSet::outside of patch p, the set being what patch_marks_ holds.
+  std::uint8_t outside_bits(int p) const;
 
   std::shared_ptr<Runtime> runtime_;
   AtlasStorage storage_;

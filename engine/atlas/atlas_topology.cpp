@@ -132,29 +132,4 @@ std::vector<int> AtlasTopology::corner_neighbourhood(const std::vector<int>& pat
   return out;
 }
 
-std::vector<std::uint8_t> AtlasTopology::shared_outside(const std::vector<int>& patches) const
-{
-  std::vector<char> in(std::size_t(patch_count), 0);
-  for (const int p : patches)
-    in[std::size_t(p)] = 1;
-  std::vector<std::uint8_t> out(patches.size(), 0);
-  for (std::size_t k = 0; k < patches.size(); ++k) {
-    const int p = patches[k];
-    std::uint8_t bits = 0;
-    for (int s = 0; s < 4; ++s) {
-      const int q = across(p, s);
-      if (q >= 0 && !in[std::size_t(q)])
-        bits |= std::uint8_t(1u << s);
-      const CornerRing& ring = rings[std::size_t(patch_corners[std::size_t(p)][s])];
-      for (int m = 0; m < ring.count; ++m)
-        if (!in[std::size_t(slots[std::size_t(ring.first + m)].patch)]) {
-          bits |= std::uint8_t(16u << s);
-          break;
-        }
-    }
-    out[k] = bits;
-  }
-  return out;
-}
-
 } // namespace meshpaint

@@ -7,7 +7,6 @@
 #include <opensubdiv/far/topologyLevel.h> // for Far::TopologyLevel
 
 #include <array>   // for std::array
-#include <cstdint> // for std::uint8_t
 #include <vector>  // for std::vector
 
 namespace meshpaint {
@@ -32,9 +31,6 @@ struct AtlasTopology
   //! `patches` and `layers` rings of patches around them (each sharing a
   //! corner with the ring inside it), in patch order.
   std::vector<int> corner_neighbourhood(const std::vector<int>& patches, int layers) const;
-  //! Per listed patch, the sides (bits 0-3) and corners (bits 4-7) it shares
-  //! with a patch that is not listed.
-  std::vector<std::uint8_t> shared_outside(const std::vector<int>& patches) const;
 };
 
 //! Builds the tables from OpenSubdiv's level-1 topology.

@@ -149,6 +149,11 @@ std::vector<int> Multires::reach(const std::vector<int>& patches) const
 
 void Multires::reconstruct(const std::vector<int>& affected)
 {
+  reconstruct(affected, atlas_.neighbourhood_set(affected));
+}
+
+void Multires::reconstruct(const std::vector<int>& affected, const PatchSet& around)
+{
   Device& d = *device_;
   Runtime& rt = atlas_.runtime();
   cl::CommandQueue& q = rt.queue();
@@ -162,8 +167,7 @@ void Multires::reconstruct(const std::vector<int>& affected)
   // writes S' from there into the finest level, whose other texels keep S
   // as it is now, whatever changed it since the encoding (an undo, a stroke
   // elsewhere).
-  const PatchSet reached = atlas_.neighbourhood_set(affected);
-  atlas_.subdivide(level_, finest, &reached, &d.smooth);
+  atlas_.subdivide(level_, finest, &around, &d.smooth);
   const PatchSet set = atlas_.patch_set(affected, Reach::All);
   const cl::Buffer patches = device_ints(rt.context(), set.patches), edges = device_ints(rt.context(), set.edges),
                    rings = device_ints(rt.context(), set.rings);
@@ -176,9 +180,8 @@ void Multires::reconstruct(const std::vector<int>& affected)
            grid(f), atlas_.ring_table(), atlas_.slot_table(), rings, int(set.rings.size()), d.details, work.corners);
   if (!set.patches.empty()) {
     // The sides and corners shared with patches outside keep S.
-    const std::vector<std::uint8_t> outside = atlas_.topology().shared_outside(set.patches);
-    const cl::Buffer kept(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, outside.size(),
-                          const_cast<std::uint8_t*>(outside.data()));
+    const cl::Buffer kept(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, set.outside.size(),
+                          const_cast<std::uint8_t*>(set.outside.data()));
     const auto tiles = range_tiles(f, int(set.patches.size()));
     launch(q, d.decode_tiles, tiles.first, tiles.second, d.smooth, grid(f), patches, int(set.patches.size()),
            d.details, fine, work.patch_sides, work.patch_rings, work.sides, work.corners, kept);

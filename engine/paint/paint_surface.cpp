@@ -311,13 +311,18 @@ void PaintSurface::phase_done(double StepPhases::*phase)
 
 void PaintSurface::refresh_geometry(const std::vector<int>& patches)
 {
-  Device& d = *device_;
-  Runtime& rt = atlas_->runtime();
-  const LevelLayout l = atlas_->layout(level_);
   // The limit changed on the patches' sides and corners too, which every
   // patch sharing a corner with them stores: their tiles and bounds as well.
   const PatchSet set = atlas_->neighbourhood_set(patches);
   phase_done(&StepPhases::lists);
+  refresh_geometry(set);
+}
+
+void PaintSurface::refresh_geometry(const PatchSet& set)
+{
+  Device& d = *device_;
+  Runtime& rt = atlas_->runtime();
+  const LevelLayout l = atlas_->layout(level_);
   atlas_->update_limit(set);
   phase_done(&StepPhases::limit);
   const cl::Buffer list = device_ints(rt.context(), set.patches);
@@ -861,7 +866,7 @@ void PaintSurface::weigh(const std::vector<int>& patches, const cl::Buffer& list
   const auto tiles = range_tiles(l, count);
   cl::Buffer outside;
   if (coarse) {
-    std::vector<std::uint8_t> bits = atlas_->topology().shared_outside(patches);
+    std::vector<std::uint8_t> bits = atlas_->shared_outside(patches);
     bits.resize(std::max<std::size_t>(1, bits.size())); // a valid argument when empty
     outside = cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bits.size(), bits.data());
   }
@@ -924,12 +929,16 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   phase_done(&StepPhases::weights);
   const cl::Buffer& weights = coarse ? multires_->base_weights() : d.weights;
   const auto geometry_done = [&] {
-    if (coarse) {
-      multires_->reconstruct(changed);
-      stretch_ = std::max(stretch_, multires_->stretch(changed));
-      phase_done(&StepPhases::rebuild);
+    if (!coarse) {
+      refresh_geometry(patches);
+      return;
     }
-    refresh_geometry(coarse ? changed : patches);
+    const PatchSet around = atlas_->neighbourhood_set(changed);
+    phase_done(&StepPhases::lists);
+    multires_->reconstruct(changed, around);
+    stretch_ = std::max(stretch_, multires_->stretch(changed));
+    phase_done(&StepPhases::rebuild);
+    refresh_geometry(around);
   };
 
   if (moves) {

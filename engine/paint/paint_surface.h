@@ -206,6 +206,8 @@ private:
   void weigh(const std::vector<int>& patches, const cl::Buffer& list, const BrushDab& dab, int level);
   //! After positions changed on `patches`: limit surface and bounds there.
   void refresh_geometry(const std::vector<int>& patches);
+  //! The same given Atlas::neighbourhood_set() of the moved patches.
+  void refresh_geometry(const PatchSet& around);
   StrokeReport apply_dabs(const Stroke& stroke);
   //! One dab of the smear brush: lays down `carried`, then picks up the
   //! weighted mean colour under the dab into it.
