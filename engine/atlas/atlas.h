@@ -207,8 +207,9 @@ private:
   bool limit_current_ = false; // limit layers match the finest level
   std::unique_ptr<Kernels> kernels_;
   std::vector<int> device_ring_; // level-1 vertex -> index in the device's ring table
-  // Scratch of patch_set() and neighbourhood_set(), which a brush step calls
-  // on most of the atlas: kept, so that a call costs only what it visits.
+  // Scratch of patch_set(), neighbourhood_set() and shared_outside(), which
+  // a brush step calls on most of the atlas: kept, so that a call costs only
+  // what it visits (and two calls on one atlas must not overlap).
   mutable Marks patch_marks_, edge_marks_, ring_marks_, ring_seen_;
 };
 
