@@ -1,15 +1,15 @@
 // Marks on items 0..n-1 that all clear at once.
 #pragma once
 
-#include <cstddef>   // for std::size_t
-#include <cstdint>   // for std::uint8_t
-#include <vector>    // for std::vector
+#include <cstddef> // for std::size_t
+#include <cstdint> // for std::uint8_t
+#include <vector>  // for std::vector
 
 namespace meshpaint {
 
 //! Each begin() starts a new generation instead of writing n zeros (but
-//! once in 255), so a
-//! pass that marks a few items of many costs only those items.
+//! once in 255), so a pass that marks a few items of many costs only those
+//! items.
 class Marks
 {
 public:
