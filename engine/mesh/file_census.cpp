@@ -237,6 +237,36 @@ FileCensus& check_counts(long vertices, long faces, long size, long min_bytes, F
   return c;
 }
 
+//! The body of a binary OFF file after its counts: three floats per vertex,
+//! then per face a corner count and that many vertex indices. OpenMesh
+//! reserves what a face's count says before it reads, and goes on reading
+//! past the end of the file: every count must be a face's and fit the file.
+FileCensus& check_binary_off_faces(std::istream& in, long vertices, long faces, long size, FileCensus& c)
+{
+  if (!in.seekg(12 * vertices, std::ios::cur) || in.peek() == std::char_traits<char>::eof()) {
+    if (faces > 0)
+      c.problem = "the binary OFF vertices run past the end of the file";
+    return c;
+  }
+  for (long f = 0; f < faces; ++f) {
+    std::int32_t corners = 0;
+    if (!in.read(reinterpret_cast<char*>(&corners), sizeof corners)) {
+      c.problem = "binary OFF face " + std::to_string(f) + " runs past the end of the file";
+      break;
+    }
+    if (corners < 1 || corners > vertices) {
+      c.problem = "binary OFF face " + std::to_string(f) + " has " + std::to_string(corners) +
+                  " corners, but there are only " + std::to_string(vertices) + " vertices";
+      break;
+    }
+    if (!in.seekg(4 * std::streamoff(corners), std::ios::cur) || long(in.tellg()) > size) {
+      c.problem = "binary OFF face " + std::to_string(f) + " runs past the end of the file";
+      break;
+    }
+  }
+  return c;
+}
+
 } // namespace
 
 FileCensus take_census(const std::string& path, const std::string& ext)
@@ -279,6 +309,8 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         else
           check_counts(counts[0], counts[1], file_size, 12, c);
         c.declared_faces = counts[1];
+        if (c.problem.empty())
+          check_binary_off_faces(in, counts[0], counts[1], file_size, c);
         return c;
       }
       const std::size_t hash = line.find('#');
