@@ -447,25 +447,6 @@ void Atlas::compute_limit_of(int level, const cl::Memory& pos, const cl::Memory&
     q.finish(); // the lists live until here
 }
 
-namespace {
-
-//! The patches marked in `marks`, in patch order, given that `listed` holds
-//! them in any order: for big sets a scan of the marks beats a sort.
-std::vector<int> in_patch_order(std::vector<int> listed, const Marks& marks, int patch_count)
-{
-  if (listed.size() * 16 <= std::size_t(patch_count)) {
-    std::sort(listed.begin(), listed.end());
-    return listed;
-  }
-  listed.clear();
-  for (int p = 0; p < patch_count; ++p)
-    if (marks.marked(std::size_t(p)))
-      listed.push_back(p);
-  return listed;
-}
-
-} // namespace
-
 PatchSet Atlas::patch_set(const std::vector<int>& patches, Reach reach) const
 {
   patch_marks_.begin(std::size_t(topology_.patch_count));
@@ -474,7 +455,7 @@ PatchSet Atlas::patch_set(const std::vector<int>& patches, Reach reach) const
   for (const int p : patches)
     if (patch_marks_.mark(std::size_t(p)))
       listed.push_back(p);
-  return marked_set(in_patch_order(std::move(listed), patch_marks_, topology_.patch_count), reach);
+  return marked_set(marked_in_order(std::move(listed), patch_marks_, std::size_t(topology_.patch_count)), reach);
 }
 
 std::uint8_t Atlas::outside_bits(int p) const
@@ -552,7 +533,7 @@ PatchSet Atlas::neighbourhood_set(const std::vector<int>& changed) const
           around.push_back(q);
       }
     }
-  return marked_set(in_patch_order(std::move(around), patch_marks_, topology_.patch_count), Reach::Any);
+  return marked_set(marked_in_order(std::move(around), patch_marks_, std::size_t(topology_.patch_count)), Reach::Any);
 }
 
 void Atlas::update_limit(const PatchSet& set)

@@ -1,9 +1,9 @@
 #include "atlas/atlas_topology.h"
 
 #include "core/errors.h"
+#include "core/marks.h"
 
-#include <algorithm> // for std::sort
-#include <string>    // for std::to_string
+#include <string> // for std::to_string
 
 namespace meshpaint {
 
@@ -96,40 +96,30 @@ AtlasTopology build_atlas_topology(const OpenSubdiv::Far::TopologyLevel& level1)
 
 std::vector<int> AtlasTopology::corner_neighbourhood(const std::vector<int>& patches, int layers) const
 {
-  std::vector<char> in(std::size_t(patch_count), 0);
-  std::vector<char> ring_done(rings.size(), 0); // each corner ring once, not once per patch at it
+  Marks in, ring_done; // each corner ring once, not once per patch at it
+  in.begin(std::size_t(patch_count));
+  ring_done.begin(rings.size());
   std::vector<int> out = patches;
   for (const int p : out)
-    in[std::size_t(p)] = 1;
+    in.mark(std::size_t(p));
   std::size_t from = 0;
   for (int r = 0; r < layers; ++r) {
     const std::size_t to = out.size();
     for (std::size_t k = from; k < to; ++k)
       for (int c = 0; c < 4; ++c) {
         const int v = patch_corners[std::size_t(out[k])][c];
-        if (ring_done[std::size_t(v)])
+        if (!ring_done.mark(std::size_t(v)))
           continue;
-        ring_done[std::size_t(v)] = 1;
         const CornerRing& ring = rings[std::size_t(v)];
         for (int m = 0; m < ring.count; ++m) {
           const int q = slots[std::size_t(ring.first + m)].patch;
-          if (!in[std::size_t(q)]) {
-            in[std::size_t(q)] = 1;
+          if (in.mark(std::size_t(q)))
             out.push_back(q);
-          }
         }
       }
     from = to;
   }
-  if (out.size() * 16 > in.size()) { // in patch order: for big sets a scan of the marks beats a sort
-    out.clear();
-    for (std::size_t p = 0; p < in.size(); ++p)
-      if (in[p])
-        out.push_back(int(p));
-    return out;
-  }
-  std::sort(out.begin(), out.end());
-  return out;
+  return marked_in_order(std::move(out), in, std::size_t(patch_count));
 }
 
 } // namespace meshpaint

@@ -1,9 +1,10 @@
 // Marks on items 0..n-1 that all clear at once.
 #pragma once
 
-#include <cstddef> // for std::size_t
-#include <cstdint> // for std::uint8_t
-#include <vector>  // for std::vector
+#include <algorithm> // for std::sort
+#include <cstddef>   // for std::size_t
+#include <cstdint>   // for std::uint8_t
+#include <vector>    // for std::vector
 
 namespace meshpaint {
 
@@ -35,5 +36,21 @@ private:
   std::vector<std::uint8_t> mark_; // bytes: a quarter of the cache lines of wider marks
   std::uint8_t generation_ = 0;
 };
+
+//! The items marked in `marks` (of n), in increasing order, given that
+//! `listed` holds them in any order: for many a scan of the marks beats a
+//! sort.
+inline std::vector<int> marked_in_order(std::vector<int> listed, const Marks& marks, std::size_t n)
+{
+  if (listed.size() * 16 <= n) {
+    std::sort(listed.begin(), listed.end());
+    return listed;
+  }
+  listed.clear();
+  for (std::size_t i = 0; i < n; ++i)
+    if (marks.marked(i))
+      listed.push_back(int(i));
+  return listed;
+}
 
 } // namespace meshpaint

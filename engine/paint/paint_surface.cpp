@@ -193,7 +193,6 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     throw DeviceError("cannot set up painting on " + rt.info().name + ": " + describe(e));
   }
   in_stroke_.assign(std::size_t(l.patches), 0);
-  mark_.assign(std::size_t(l.patches), 0);
   open_sides_.assign(std::size_t(l.patches), 0);
   changed_at_.assign(std::size_t(l.patches), 0);
   const AtlasTopology& topo = atlas_->topology();
@@ -445,16 +444,13 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
   const int start_patch = best->patch;
   reach_sides(centre, reach);
 
-  // Flood from the centre's patch over the patches within reach; `mark_`
-  // holds the generation of the flood that reached a patch, so nothing
-  // needs clearing between dabs.
-  const std::uint32_t reached = ++generation_;
+  // Flood from the centre's patch over the patches within reach.
+  reached_.begin(open_sides_.size());
   // Breadth first: a patch waits in the queue long enough for the prefetch
   // of its neighbours to arrive (depth first pops it at once).
   std::vector<int> queue;
   const auto visit = [&](int p) {
-    if (open_sides_[std::size_t(p)] != REACH_NONE && mark_[std::size_t(p)] != reached) {
-      mark_[std::size_t(p)] = reached;
+    if (open_sides_[std::size_t(p)] != REACH_NONE && reached_.mark(std::size_t(p))) {
       queue.push_back(p);
       __builtin_prefetch(&neighbours_[std::size_t(p)]);
     }
@@ -467,17 +463,7 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
       if ((open >> s & 1) && neighbours_[std::size_t(p)][s] >= 0)
         visit(neighbours_[std::size_t(p)][s]);
   }
-  // In patch order: for big brushes a scan of the marks beats a sort.
-  if (queue.size() * 16 > mark_.size()) {
-    std::vector<int> active;
-    active.reserve(queue.size());
-    for (std::size_t p = 0; p < mark_.size(); ++p)
-      if (mark_[p] == reached)
-        active.push_back(int(p));
-    return active;
-  }
-  std::sort(queue.begin(), queue.end());
-  return queue;
+  return marked_in_order(std::move(queue), reached_, open_sides_.size());
 }
 
 void PaintSurface::spray(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke,

@@ -4,6 +4,7 @@
 
 #include "atlas/atlas.h"
 #include "atlas/multires.h"
+#include "core/marks.h"
 #include "core/timer.h"
 #include "mesh/welded_surface.h"
 #include "paint/display_arrays.h"
@@ -11,7 +12,7 @@
 #include "paint/undo_log.h"
 
 #include <array>   // for std::array
-#include <cstdint> // for std::uint32_t, std::uint8_t
+#include <cstdint> // for std::uint8_t, std::uint64_t
 #include <memory>  // for std::unique_ptr
 #include <optional> // for std::optional
 #include <vector> // for std::vector
@@ -280,9 +281,8 @@ private:
   std::vector<int> stroke_layers_;    // the layers the running stroke changes
   std::vector<char> in_stroke_;       // per patch: already in stroke_before_
   std::vector<std::array<int, 4>> neighbours_; // per patch side: the patch across, -1 on a border
-  std::vector<std::uint32_t> mark_;      // per patch: reached by the flood of dab `generation_`
+  Marks reached_;                        // per patch: reached by this dab's flood
   std::vector<std::uint8_t> open_sides_; // per patch: bit s set if side s comes within the dab's reach, or REACH_NONE
-  std::uint32_t generation_ = 0;
   const std::vector<char>* dab_mask_ = nullptr; // apply(stroke, dabs): the dabs for this surface
   bool two_sided_ = false;
   bool inside_ = false; // the running dab paints the inside
