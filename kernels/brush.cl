@@ -57,27 +57,33 @@ inline float patch_distances(ATLAS_IN pos, int2 g, int p, float3 c, float side[4
   return best;
 }
 
-/* Range: #patches. Appends a record for each patch with a texel within
- * `radius` of `centre`: its closest texel, from which the host snaps the
- * brush centre. Patches whose bounding sphere misses the ball cost one test.
- * `count` may pass `capacity`; the host then grows the record buffer and
- * runs again. */
+/* Range: #patches. Finds the texel nearest to `centre` within `radius`,
+ * in one pass over the patches: counters[1] holds the nearest distance found
+ * so far (float bits, which order as ints for distances >= 0; the host sets
+ * it to `radius`), and a patch appends a record of its closest texel when
+ * that comes no further than it. The nearest patches are among the records
+ * (ties included); the host picks from them. A patch whose bounding sphere
+ * lies beyond the nearest distance costs one test: a stale read of it is
+ * only larger. counters[0] counts records and may pass `capacity`; the host
+ * then grows the record buffer and runs again. */
 __kernel void brush_cull(ATLAS_IN pos, ATLAS_IN nrm, int2 g, int patches, __global const float4 *bounds,
-                         float4 centre, float radius, __global CullRecord *records, __global int *count,
-                         int capacity)
+                         float4 centre, __global CullRecord *records, volatile __global int *counters, int capacity)
 {
   const int p = get_global_id(0);
   if (p >= patches)
     return;
   const float4 b = bounds[p];
-  if (distance(b.xyz, centre.xyz) - b.w > radius)
+  const float3 d = b.xyz - centre.xyz;
+  const float nearest = as_float(counters[1]);
+  /* Only a filter: the slack covers its rounding, the texels decide. */
+  if (sqrt(dot(d, d)) - b.w > nearest + 1e-5f * (b.w + nearest))
     return;
   CullRecord r;
   float side[4]; /* the flood's business (brush_reach), not the snap's */
   r.distance = patch_distances(pos, g, p, centre.xyz, side, &r.closest_texel);
-  if (r.distance > radius)
+  if (r.distance > as_float(atomic_min(&counters[1], as_int(r.distance))))
     return;
-  const int k = atomic_inc(count);
+  const int k = atomic_inc(&counters[0]);
   if (k >= capacity)
     return;
   r.patch = p;

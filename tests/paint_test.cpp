@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm> // for std::min
 #include <cmath>   // for std::sqrt
 #include <cstring> // for std::memcmp
 
@@ -92,6 +93,30 @@ TEST(Paint, CopyWithConstantFalloffPaintsExactlyTheDisc)
       ASSERT_EQ(ch.diffuse[t][k], expect[k]) << "texel " << t << " at distance " << distance(pos[t], centre);
   }
   EXPECT_GT(inside, 100u);
+}
+
+TEST(Paint, BrushCentreSnapsToTheNearestTexelFromNearAndFar)
+{
+  // One culling pass finds the nearest texel wherever the point lies within
+  // the radius; checked against every limit texel.
+  PaintSurface surface(test::runtime(), test::noisy_sphere(8, 0.05f), 3, AtlasStorage::Buffer);
+  const auto pos = surface.atlas().read_limit_positions();
+  for (const float out : {0.f, 1e-4f, 0.05f, 0.4f, 1.5f}) {
+    const Vec3 point{0.3f * (1.f + out), 0.5f * (1.f + out), 0.81f * (1.f + out)};
+    double nearest = 1e30;
+    for (const Float4& p : pos)
+      nearest = std::min(nearest, distance(p, point));
+    Vec3 centre;
+    const auto patches = surface.brush_patches(point, 3.f, &centre);
+    ASSERT_FALSE(patches.empty()) << "point moved out by " << out;
+    double snapped = 1e30;
+    for (const Float4& p : pos)
+      if (p[0] == centre[0] && p[1] == centre[1] && p[2] == centre[2])
+        snapped = distance(p, point);
+    EXPECT_EQ(snapped, nearest) << "point moved out by " << out;
+    // Beyond the radius nothing is reached.
+    EXPECT_TRUE(surface.brush_patches(point, float(nearest) * 0.99f).empty()) << "point moved out by " << out;
+  }
 }
 
 TEST(Paint, DoesNotBleedThroughTheAir)

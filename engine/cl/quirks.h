@@ -4,7 +4,8 @@
 namespace meshpaint {
 
 //! Settings that must be in place before the first OpenCL call. PoCL: keep
-//! compiled kernels in its cache; anything the user set wins.
+//! compiled kernels in its cache, and pin its workers where every CPU is
+//! the process's; anything the user set wins.
 void apply_runtime_quirks();
 
 } // namespace meshpaint

@@ -13,6 +13,7 @@
 #include <algorithm> // for std::sort, std::max
 #include <optional>  // for std::optional
 #include <cmath>     // for std::sqrt
+#include <cstring>   // for std::memcpy
 #include <limits>    // for std::numeric_limits
 
 namespace meshpaint {
@@ -28,12 +29,14 @@ struct AppendBuffer
 };
 
 //! Runs a kernel over `patches` items that appends records of type Record
-//! (its last three arguments: the records, their count and the capacity)
-//! and reads back what it appended, in no particular order. A buffer found
-//! too small grows and the kernel runs once more.
+//! (its last three arguments: the records, two counters and the capacity)
+//! and reads back what it appended, in no particular order. The counters
+//! start each run at `start`; the first counts the records, the second is
+//! the kernel's own. A buffer found too small grows and the kernel runs once
+//! more.
 template <typename Record, typename... Args>
 std::vector<Record> run_appending(Runtime& rt, cl::Kernel& kernel, int patches, AppendBuffer& out,
-                                  const cl::Buffer& count_buffer, const Args&... args)
+                                  const cl::Buffer& counters, cl_int2 start, const Args&... args)
 {
   cl_int count = 0;
   for (int attempt = 0; attempt < 2; ++attempt) {
@@ -41,10 +44,10 @@ std::vector<Record> run_appending(Runtime& rt, cl::Kernel& kernel, int patches, 
       out.capacity = std::min<std::size_t>(std::max(patches, 1), 4096);
       out.records = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(Record) * out.capacity);
     }
-    rt.queue().enqueueFillBuffer(count_buffer, cl_int(0), 0, sizeof count); // no wait: the queue is in order
+    rt.queue().enqueueFillBuffer(counters, start, 0, sizeof start); // no wait: the queue is in order
     launch(rt.queue(), kernel, cl::NDRange(round_up(std::size_t(patches), kGroup)), cl::NDRange(kGroup), args...,
-           out.records, count_buffer, cl_int(out.capacity));
-    rt.queue().enqueueReadBuffer(count_buffer, CL_TRUE, 0, sizeof count, &count);
+           out.records, counters, cl_int(out.capacity));
+    rt.queue().enqueueReadBuffer(counters, CL_TRUE, 0, sizeof count, &count);
     if (std::size_t(count) <= out.capacity)
       break;
     out.capacity = std::size_t(count);
@@ -129,7 +132,7 @@ struct PaintSurface::Device
   LayerKernels positions, channels;
   cl::Kernel patch_bounds, brush_cull, brush_reach, paint_dab, dab_weights, move_points, move_dab, dab_pickup;
   cl::Kernel spray_pick, spray_points;
-  cl::Buffer bounds, count, active, dab, weights;
+  cl::Buffer bounds, counters, active, dab, weights;
   cl::Buffer open_sides; // brush_reach: a byte per patch
   AppendBuffer culled;   // CullRecord
   cl::Buffer unfold; // a parameter dab's PatchUnfolding per listed patch (one entry otherwise)
@@ -182,7 +185,7 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     rt.queue().enqueueFillBuffer(d.specular, f4(material.specular), 0, bytes);
     rt.queue().enqueueFillBuffer(d.material, cl_float4{{material.roughness, 0.f, 0.f, 0.f}}, 0, bytes);
     d.bounds = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_float4) * l.patches);
-    d.count = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_int));
+    d.counters = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_int2));
     d.open_sides = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, std::size_t(l.patches));
     d.dab = cl::Buffer(rt.context(), CL_MEM_READ_ONLY, sizeof(BrushDab));
     d.unfold = cl::Buffer(rt.context(), CL_MEM_READ_ONLY, sizeof(PatchUnfolding) * d.unfold_capacity);
@@ -393,9 +396,12 @@ std::vector<CullRecord> PaintSurface::cull(const Vec3& centre, float radius)
 {
   Device& d = *device_;
   const LevelLayout l = atlas_->layout(level_);
-  return run_appending<CullRecord>(atlas_->runtime(), d.brush_cull, l.patches, d.culled, d.count,
-                                   atlas_->limit_positions_layer(), atlas_->limit_normals_layer(), grid(l), l.patches,
-                                   d.bounds, cl_float4{{centre[0], centre[1], centre[2], 0.f}}, radius);
+  cl_int radius_bits;
+  std::memcpy(&radius_bits, &radius, sizeof radius_bits); // brush_cull's nearest distance so far
+  return run_appending<CullRecord>(atlas_->runtime(), d.brush_cull, l.patches, d.culled, d.counters,
+                                   cl_int2{{0, radius_bits}}, atlas_->limit_positions_layer(),
+                                   atlas_->limit_normals_layer(), grid(l), l.patches, d.bounds,
+                                   cl_float4{{centre[0], centre[1], centre[2], 0.f}});
 }
 
 void PaintSurface::reach_sides(const Vec3& centre, float radius)
@@ -414,15 +420,8 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
 {
   if (!(reach > 0.f))
     reach = radius;
-  // Snap: the closest texel within the radius is the brush centre. A point
-  // on the surface needs only a small search; grow it up to the radius.
-  const float start = std::min(radius, float(1e-3 * atlas_->base_mesh().diagonal()));
-  std::vector<CullRecord> near;
-  for (float r = start; near.empty(); r = std::min(radius, 8.f * r)) {
-    near = cull(point, r);
-    if (r >= radius)
-      break;
-  }
+  // Snap: the closest texel within the radius is the brush centre.
+  const std::vector<CullRecord> near = cull(point, radius);
   if (near.empty())
     return {};
   const CullRecord* best = &near.front();

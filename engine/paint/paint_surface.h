@@ -185,10 +185,12 @@ public:
 
 private:
   struct Device;
-  //! Records of the patches with a texel within `radius` of `centre`, in
-  //! no particular order, each with its closest texel.
+  //! Records, in no particular order and each with its closest texel, of
+  //! patches with a texel within `radius` of `centre`: among them every
+  //! patch whose closest texel is the nearest (brush_cull).
   std::vector<CullRecord> cull(const Vec3& centre, float radius);
-  //! The same patches, each with the sides that come within `radius`.
+  //! The patches with a texel within `radius`, each with the sides that
+  //! come within it.
   //! Fills open_sides_ from brush_reach.
   void reach_sides(const Vec3& centre, float radius);
   bool step(bool back); // undo (back) or redo
