@@ -938,10 +938,11 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
     const cl_float4 centre{{dab.centre[0], dab.centre[1], dab.centre[2], 0.f}};
     const cl_float4 towards{{normal[0], normal[1], normal[2], 0.f}};
     if (weigh_as_moved) {
+      const bool plain = dab.space == SPACE_OBJECT && dab.stamp_size[0] == 0 && !mask_painted_;
       q.enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
       launch(q, d.move_dab, tiles.first, tiles.second, pos, moved, atlas_->limit_positions_layer(), normals,
              grid(l), list, count, d.dab, d.unfold, d.stamp, material_buffer(), cl_int(mask_painted_), mode, amount,
-             centre, towards);
+             centre, towards, cl_int(plain), dab.radius, cl_int(dab.falloff), dab.strength);
     } else {
       launch(q, d.move_points, tiles.first, tiles.second, pos, moved, normals, grid(l), list, count,
              weights, mode, amount, centre, towards);
