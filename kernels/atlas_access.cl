@@ -176,6 +176,28 @@ inline int tile_texel(int2 g, __global const int *list, int count, int *p, int2 
   return 1;
 }
 
+/* Whole-tile kernels come in two forms: a work item per texel (*_tiles,
+ * range (tile, tile * count)), which GPUs want, and a work item per patch
+ * walking its tile row by row (*_patches, range count). CPUs run a group's
+ * items one after another: there the item per patch reads the patch's
+ * tables once and spends nothing on working out its patch and texel
+ * (15-40% fewer perf samples). The body of a *_patches kernel: runs the
+ * statement given last for each texel ij of patch p (list[k] for item k, or
+ * k when list is null), with the patch's tables ps and pr. */
+#define FOR_EACH_PATCH_TEXEL(g, list, count, patch_sides, patch_rings, ...) \
+  do {                                                                      \
+    const int k_ = get_global_id(0);                                        \
+    if (k_ >= (count))                                                      \
+      break;                                                                \
+    const int p = (list) ? (list)[k_] : k_;                                 \
+    const int4 ps = (patch_sides)[p], pr = (patch_rings)[p];                \
+    for (int j_ = 0; j_ < (g).x; ++j_)                                      \
+      for (int i_ = 0; i_ < (g).x; ++i_) {                                  \
+        const int2 ij = (int2)(i_, j_);                                     \
+        __VA_ARGS__;                                                        \
+      }                                                                     \
+  } while (0)
+
 /* The same for a kernel over the texels strictly inside patches (sides and
  * corners belong to the table-driven kernels), whose range is
  * (tile - 2, (tile - 2) * count): no work item lands on a side. */

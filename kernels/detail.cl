@@ -58,11 +58,30 @@ TEXEL_INLINE float4 decoded(ATLAS_IN smooth, int2 g, int p, int2 ij, __global co
 /* Decoding reads U from a layer of the finest level's layout and writes
  * into the finest level, which holds S: the texels of the listed patches,
  * sides and corners are rebuilt; the rest keep S. The side and corner
- * kernels fill compact arrays (border_entry()), and decode_tiles writes the
- * tiles, each cache line by one kernel.
- * Range: (tile, tile * count); the listed patches' texels, but not those on
- * the sides and corners in `outside` (per listed patch, bits as
- * texel_border()): shared with unlisted patches, they keep S. */
+ * kernels fill compact arrays (border_entry()), and decode_tiles (or
+ * decode_patches) writes the tiles, each cache line by one kernel: the
+ * listed patches' texels, but not those on the sides and corners in
+ * `outside` (per listed patch, bits as texel_border()): shared with unlisted
+ * patches, they keep S. */
+
+/* Texel ij of patch p, the a-th listed (ps, pr: its tables). */
+TEXEL_INLINE void decode_texel(ATLAS_IN smooth, int2 g, int p, int2 ij, int a, __global const float4 *details,
+                               ATLAS_OUT fine, int4 ps, int4 pr, __global const float4 *restrict sides,
+                               __global const float4 *restrict corners, __global const uchar *restrict outside)
+{
+  const int n = g.x - 1;
+  if (ij.x > 0 && ij.x < n && ij.y > 0 && ij.y < n) {
+    ATLAS_STORE(fine, g, p, ij, decoded(smooth, g, p, ij, details));
+    return;
+  }
+  if (outside[a] & texel_border(ij, n))
+    return;
+  int corner;
+  const int k = border_entry(ij, n, ps, pr, &corner);
+  ATLAS_STORE(fine, g, p, ij, corner ? corners[k] : sides[k]);
+}
+
+/* Range: (tile, tile * count). */
 __kernel void decode_tiles(ATLAS_IN smooth, int2 g, __global const int *list, int count,
                            __global const float4 *details, ATLAS_OUT fine, __global const int4 *restrict patch_sides,
                            __global const int4 *restrict patch_rings, __global const float4 *restrict sides,
@@ -70,18 +89,20 @@ __kernel void decode_tiles(ATLAS_IN smooth, int2 g, __global const int *list, in
 {
   int p;
   int2 ij;
-  if (!tile_texel(g, list, count, &p, &ij))
-    return;
-  const int n = g.x - 1;
-  if (ij.x > 0 && ij.x < n && ij.y > 0 && ij.y < n) {
-    ATLAS_STORE(fine, g, p, ij, decoded(smooth, g, p, ij, details));
-    return;
-  }
-  if (outside[get_global_id(1) / g.x] & texel_border(ij, n))
-    return;
-  int corner;
-  const int k = border_entry(ij, n, patch_sides[p], patch_rings[p], &corner);
-  ATLAS_STORE(fine, g, p, ij, corner ? corners[k] : sides[k]);
+  if (tile_texel(g, list, count, &p, &ij))
+    decode_texel(smooth, g, p, ij, get_global_id(1) / g.x, details, fine, patch_sides[p], patch_rings[p], sides,
+                 corners, outside);
+}
+
+/* Range: count; the same with a work item per patch (see FOR_EACH_PATCH_TEXEL). */
+__kernel void decode_patches(ATLAS_IN smooth, int2 g, __global const int *list, int count,
+                             __global const float4 *details, ATLAS_OUT fine, __global const int4 *restrict patch_sides,
+                             __global const int4 *restrict patch_rings, __global const float4 *restrict sides,
+                             __global const float4 *restrict corners, __global const uchar *restrict outside)
+{
+  FOR_EACH_PATCH_TEXEL(g, list, count, patch_sides, patch_rings,
+                       decode_texel(smooth, g, p, ij, get_global_id(0), details, fine, ps, pr, sides, corners,
+                                    outside));
 }
 
 /* Range: count; the listed patch sides into `sides`, in the first patch's

@@ -33,18 +33,13 @@ inline void limit_regular(const float4 *q, float4 *pos, float4 *nrm)
     (a)[2 * (k) + 1] = (nv);     \
   } while (0)
 
-/* Range: whole tiles, (tile, tile * count). Texels strictly inside a patch
- * are computed here, its sides and corners copied from `sides` and
- * `corners` (border_entry()), whose edges and rings must have been
- * computed in this update. */
-__kernel void limit_tiles(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, __global const int *list, int count,
-                          __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
-                          __global const float4 *restrict sides, __global const float4 *restrict corners)
+/* Texel ij of patch p: strictly inside, computed here; on a side or corner,
+ * copied from `sides` and `corners` (border_entry(), with the patch's
+ * tables ps and pr), whose edges and rings must have been computed in this
+ * update. */
+TEXEL_INLINE void limit_texel(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, int p, int2 ij, int4 ps, int4 pr,
+                              __global const float4 *restrict sides, __global const float4 *restrict corners)
 {
-  int p;
-  int2 ij;
-  if (!tile_texel(g, list, count, &p, &ij))
-    return;
   const int n = g.x - 1;
   float4 pv, nv;
   if (ij.x > 0 && ij.x < n && ij.y > 0 && ij.y < n) {
@@ -55,13 +50,33 @@ __kernel void limit_tiles(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, __
     limit_regular(q, &pv, &nv);
   } else {
     int corner;
-    const int k = border_entry(ij, n, patch_sides[p], patch_rings[p], &corner);
+    const int k = border_entry(ij, n, ps, pr, &corner);
     __global const float4 *pair = (corner ? corners : sides) + 2 * k;
     pv = pair[0];
     nv = pair[1];
   }
   ATLAS_STORE(pos, g, p, ij, pv);
   ATLAS_STORE(nrm, g, p, ij, nv);
+}
+
+/* Range: whole tiles, (tile, tile * count): a work item per texel. */
+__kernel void limit_tiles(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, __global const int *list, int count,
+                          __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
+                          __global const float4 *restrict sides, __global const float4 *restrict corners)
+{
+  int p;
+  int2 ij;
+  if (tile_texel(g, list, count, &p, &ij))
+    limit_texel(src, pos, nrm, g, p, ij, patch_sides[p], patch_rings[p], sides, corners);
+}
+
+/* Range: count; the same with a work item per patch (see FOR_EACH_PATCH_TEXEL). */
+__kernel void limit_patches(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, __global const int *list, int count,
+                            __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
+                            __global const float4 *restrict sides, __global const float4 *restrict corners)
+{
+  FOR_EACH_PATCH_TEXEL(g, list, count, patch_sides, patch_rings,
+                       limit_texel(src, pos, nrm, g, p, ij, ps, pr, sides, corners));
 }
 
 /* Range: count; per edge, its texels on the patch sides, corners excluded,

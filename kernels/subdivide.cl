@@ -17,20 +17,15 @@ inline float3 refine_weights(int i)
  * strictly inside and copies the rest, so each cache line of the level is
  * written once, by one kernel (as the limit's kernels do). */
 
-/* Range: whole destination tiles, (dst tile, dst tile * patches); the
- * sides' and corners' entries must have been computed in this step. */
-__kernel void subdivide_tiles(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, __global const int *list, int patches,
-                              __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
-                              __global const float4 *restrict sides, __global const float4 *restrict corners)
+/* Destination texel ij of patch p; the sides' and corners' entries must
+ * have been computed in this step (ps, pr: the patch's tables). */
+TEXEL_INLINE void subdivide_texel(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, int p, int2 ij, int4 ps, int4 pr,
+                                  __global const float4 *restrict sides, __global const float4 *restrict corners)
 {
-  int p;
-  int2 ij;
-  if (!tile_texel(dg, list, patches, &p, &ij))
-    return;
   const int n = dg.x - 1;
   if (!(ij.x > 0 && ij.x < n && ij.y > 0 && ij.y < n)) {
     int corner;
-    const int k = border_entry(ij, n, patch_sides[p], patch_rings[p], &corner);
+    const int k = border_entry(ij, n, ps, pr, &corner);
     ATLAS_STORE(dst, dg, p, ij, corner ? corners[k] : sides[k]);
     return;
   }
@@ -46,6 +41,26 @@ __kernel void subdivide_tiles(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, __g
   const float4 v = wj.x * ROW(j0) + wj.y * ROW(cj) + wj.z * ROW(j2);
 #undef ROW
   ATLAS_STORE(dst, dg, p, ij, v);
+}
+
+/* Range: whole destination tiles, (dst tile, dst tile * patches). */
+__kernel void subdivide_tiles(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, __global const int *list, int patches,
+                              __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
+                              __global const float4 *restrict sides, __global const float4 *restrict corners)
+{
+  int p;
+  int2 ij;
+  if (tile_texel(dg, list, patches, &p, &ij))
+    subdivide_texel(src, dst, sg, dg, p, ij, patch_sides[p], patch_rings[p], sides, corners);
+}
+
+/* Range: patches; the same with a work item per patch (see FOR_EACH_PATCH_TEXEL). */
+__kernel void subdivide_patches(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, __global const int *list, int patches,
+                                __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
+                                __global const float4 *restrict sides, __global const float4 *restrict corners)
+{
+  FOR_EACH_PATCH_TEXEL(dg, list, patches, patch_sides, patch_rings,
+                       subdivide_texel(src, dst, sg, dg, p, ij, ps, pr, sides, corners));
 }
 
 /* Range: #edges; texels on patch sides, corners excluded, into `sides`,

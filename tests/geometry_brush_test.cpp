@@ -206,6 +206,40 @@ TEST(GeometryBrush, LocalLimitUpdateEqualsAFullOne)
   ASSERT_EQ(std::memcmp(local_nrm.data(), full_nrm.data(), full_nrm.size() * sizeof(Float4)), 0);
 }
 
+TEST(GeometryBrush, PatchItemsAndTexelItemsGiveTheSameBits)
+{
+  // The whole-tile kernels' two forms (a work item per patch, per texel):
+  // a finest-level sculpt and a coarse one, whose rebuild runs subdivision
+  // and decoding, then the limit, under each.
+  std::vector<std::vector<Float4>> results;
+  for (const bool per_patch : {true, false}) {
+    PaintSurface surface(test::runtime(), test::genus_two(), 4, AtlasStorage::Buffer);
+    surface.atlas().set_patch_items(per_patch);
+    Stroke s = brush(Tool::Sculpt, {1.5f, 0.5f, 1.f}, 0.7f);
+    s.falloff = FALLOFF_SMOOTHSTEP;
+    s.amount = 0.1f;
+    surface.apply(s);
+    s.edit_level = 2;
+    s.points = {{0.5f, 0.5f, 1.f}};
+    surface.apply(s);
+    results.push_back(surface.atlas().read_positions(4));
+    results.push_back(surface.atlas().read_limit_positions());
+    results.push_back(surface.atlas().read_limit_normals());
+  }
+  for (std::size_t k = 0; k < 3; ++k) {
+    ASSERT_EQ(results[k].size(), results[k + 3].size());
+    EXPECT_EQ(std::memcmp(results[k].data(), results[k + 3].data(), results[k].size() * sizeof(Float4)), 0)
+      << "layer " << k;
+  }
+  EXPECT_NE(std::memcmp(results[0].data(), PaintSurface(test::runtime(), test::genus_two(), 4, AtlasStorage::Buffer)
+                                              .atlas()
+                                              .read_positions(4)
+                                              .data(),
+                        results[0].size() * sizeof(Float4)),
+            0)
+    << "the strokes moved nothing";
+}
+
 TEST(GeometryBrush, TaubinSmoothingRemovesNoiseAndKeepsTheVolume)
 {
   const BaseMesh sphere = test::noisy_sphere(8, 0.f);

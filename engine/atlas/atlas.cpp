@@ -148,8 +148,8 @@ struct Atlas::Layer
 struct Atlas::Kernels
 {
   cl::Program program;
-  cl::Kernel subdivide_tiles, subdivide_edges, subdivide_corners;
-  cl::Kernel limit_tiles, limit_edges, limit_corners;
+  cl::Kernel subdivide_tiles, subdivide_patches, subdivide_edges, subdivide_corners;
+  cl::Kernel limit_tiles, limit_patches, limit_edges, limit_corners;
   cl::Kernel reduce_interior, reduce_edges, reduce_corners;
   cl::Buffer edges, rings, slots;
   cl::Buffer valences; // limit_corners' constants per valence (limit_constants())
@@ -282,9 +282,12 @@ Atlas::Atlas(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int max_lev
                               {"atlas_types.h", "atlas_access.cl", "subdivide.cl", "limit.cl", "reduce.cl"},
                               storage_options(storage_, runtime_->info()));
     k.subdivide_tiles = cl::Kernel(k.program, "subdivide_tiles");
+    k.subdivide_patches = cl::Kernel(k.program, "subdivide_patches");
     k.subdivide_edges = cl::Kernel(k.program, "subdivide_edges");
     k.subdivide_corners = cl::Kernel(k.program, "subdivide_corners");
     k.limit_tiles = cl::Kernel(k.program, "limit_tiles");
+    k.limit_patches = cl::Kernel(k.program, "limit_patches");
+    patch_items_ = !runtime_->info().gpu;
     k.limit_edges = cl::Kernel(k.program, "limit_edges");
     k.limit_corners = cl::Kernel(k.program, "limit_corners");
     k.reduce_interior = cl::Kernel(k.program, "reduce_interior");
@@ -381,7 +384,10 @@ void Atlas::subdivide(int from_level, int to_level, const PatchSet* set, const c
     if (rings > 0)
       launch(q, k.subdivide_corners, range1d(rings), kLocal1D, in, k.corner_work, k.rings, k.slots, ring_list, rings,
              grid(s));
-    if (patches > 0) {
+    if (patches > 0 && patch_items_) {
+      launch(q, k.subdivide_patches, range1d(patches), kLocal1D, in, out, grid(s), grid(d), patch_list, patches,
+             k.patch_sides, k.patch_rings, k.side_work, k.corner_work);
+    } else if (patches > 0) {
       const auto tiles = range_tiles(d, patches);
       launch(q, k.subdivide_tiles, tiles.first, tiles.second, in, out, grid(s), grid(d), patch_list, patches,
              k.patch_sides, k.patch_rings, k.side_work, k.corner_work);
@@ -438,7 +444,10 @@ void Atlas::compute_limit_of(int level, const cl::Memory& pos, const cl::Memory&
   if (rings > 0)
     launch(q, k.limit_corners, range1d(rings), kLocal1D, in, k.corner_work, k.rings, k.slots, k.valences,
            ring_list, rings, grid(l));
-  if (patches > 0) {
+  if (patches > 0 && patch_items_) {
+    launch(q, k.limit_patches, range1d(patches), kLocal1D, in, pos, nrm, grid(l), patch_list, patches,
+           k.patch_sides, k.patch_rings, k.side_work, k.corner_work);
+  } else if (patches > 0) {
     const auto tiles = range_tiles(l, patches);
     launch(q, k.limit_tiles, tiles.first, tiles.second, in, pos, nrm, grid(l), patch_list, patches, k.patch_sides,
            k.patch_rings, k.side_work, k.corner_work);

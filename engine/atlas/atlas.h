@@ -110,6 +110,11 @@ public:
 
   int max_level() const { return max_level_; }
   AtlasStorage storage() const { return storage_; }
+  //! Whether whole-tile kernels run a work item per patch (CPU devices; see
+  //! atlas_access.cl) or per texel; both give the same bits, and the setter
+  //! is there to compare them.
+  bool patch_items() const { return patch_items_; }
+  void set_patch_items(bool on) { patch_items_ = on; }
   const AtlasTopology& topology() const { return topology_; }
   const BaseMesh& base_mesh() const { return base_; }
   const std::vector<int>& base_face_order() const { return base_face_order_; }
@@ -198,6 +203,7 @@ private:
 
   std::shared_ptr<Runtime> runtime_;
   AtlasStorage storage_;
+  bool patch_items_ = false;
   int max_level_;
   BaseMesh base_;
   std::vector<int> base_face_order_;

@@ -18,7 +18,7 @@ constexpr std::size_t kGroup = 64;
 struct Multires::Device
 {
   cl::Program program;
-  cl::Kernel encode, decode_tiles, decode_edges, decode_corners, patch_extent;
+  cl::Kernel encode, decode_tiles, decode_patches, decode_edges, decode_corners, patch_extent;
   cl::Memory smooth;    // U = up(base) at the finest level, where it is needed
   cl::Buffer details;   // per finest texel: (t, b, n) coordinates of S - U
   cl::Buffer weights;   // edit-level weights
@@ -36,6 +36,7 @@ Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Devic
                               storage_options(atlas_.storage(), rt.info()));
     d.encode = cl::Kernel(d.program, "encode_details");
     d.decode_tiles = cl::Kernel(d.program, "decode_tiles");
+    d.decode_patches = cl::Kernel(d.program, "decode_patches");
     d.decode_edges = cl::Kernel(d.program, "decode_edges");
     d.decode_corners = cl::Kernel(d.program, "decode_corners");
     d.patch_extent = cl::Kernel(d.program, "patch_extent");
@@ -182,9 +183,16 @@ void Multires::reconstruct(const std::vector<int>& affected, const PatchSet& aro
     // The sides and corners shared with patches outside keep S.
     const cl::Buffer kept(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, set.outside.size(),
                           const_cast<std::uint8_t*>(set.outside.data()));
-    const auto tiles = range_tiles(f, int(set.patches.size()));
-    launch(q, d.decode_tiles, tiles.first, tiles.second, d.smooth, grid(f), patches, int(set.patches.size()),
-           d.details, fine, work.patch_sides, work.patch_rings, work.sides, work.corners, kept);
+    const int count = int(set.patches.size());
+    if (atlas_.patch_items()) {
+      launch(q, d.decode_patches, cl::NDRange(round_up(set.patches.size(), kGroup)), cl::NDRange(kGroup), d.smooth,
+             grid(f), patches, count, d.details, fine, work.patch_sides, work.patch_rings, work.sides, work.corners,
+             kept);
+    } else {
+      const auto tiles = range_tiles(f, count);
+      launch(q, d.decode_tiles, tiles.first, tiles.second, d.smooth, grid(f), patches, count, d.details, fine,
+             work.patch_sides, work.patch_rings, work.sides, work.corners, kept);
+    }
   }
   q.finish(); // the lists live until here
 }
