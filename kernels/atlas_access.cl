@@ -183,19 +183,18 @@ inline int tile_texel(int2 g, __global const int *list, int count, int *p, int2 
  * tables once and spends nothing on working out its patch and texel
  * (15-40% fewer perf samples). The body of a *_patches kernel: runs the
  * statement given last for each texel ij of patch p (list[k] for item k, or
- * k when list is null), with the patch's tables ps and pr. */
-#define FOR_EACH_PATCH_TEXEL(g, list, count, patch_sides, patch_rings, ...) \
-  do {                                                                      \
-    const int k_ = get_global_id(0);                                        \
-    if (k_ >= (count))                                                      \
-      break;                                                                \
-    const int p = (list) ? (list)[k_] : k_;                                 \
-    const int4 ps = (patch_sides)[p], pr = (patch_rings)[p];                \
-    for (int j_ = 0; j_ < (g).x; ++j_)                                      \
-      for (int i_ = 0; i_ < (g).x; ++i_) {                                  \
-        const int2 ij = (int2)(i_, j_);                                     \
-        __VA_ARGS__;                                                        \
-      }                                                                     \
+ * k when list is null), row by row; k is `patch_item`. */
+#define FOR_EACH_PATCH_TEXEL(g, list, count, ...)         \
+  do {                                                    \
+    const int patch_item = get_global_id(0);              \
+    if (patch_item >= (count))                            \
+      break;                                              \
+    const int p = (list) ? (list)[patch_item] : patch_item; \
+    for (int j_ = 0; j_ < (g).x; ++j_)                    \
+      for (int i_ = 0; i_ < (g).x; ++i_) {                \
+        const int2 ij = (int2)(i_, j_);                   \
+        __VA_ARGS__;                                      \
+      }                                                   \
   } while (0)
 
 /* The same for a kernel over the texels strictly inside patches (sides and

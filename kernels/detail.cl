@@ -100,9 +100,9 @@ __kernel void decode_patches(ATLAS_IN smooth, int2 g, __global const int *list, 
                              __global const int4 *restrict patch_rings, __global const float4 *restrict sides,
                              __global const float4 *restrict corners, __global const uchar *restrict outside)
 {
-  FOR_EACH_PATCH_TEXEL(g, list, count, patch_sides, patch_rings,
-                       decode_texel(smooth, g, p, ij, get_global_id(0), details, fine, ps, pr, sides, corners,
-                                    outside));
+  FOR_EACH_PATCH_TEXEL(g, list, count,
+                       decode_texel(smooth, g, p, ij, patch_item, details, fine, patch_sides[p], patch_rings[p],
+                                    sides, corners, outside));
 }
 
 /* Range: count; the listed patch sides into `sides`, in the first patch's

@@ -200,6 +200,25 @@ __kernel void move_points(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_nrm, int2 
  * `plain` (a ball with no stamp and no mask, the usual sculpt) takes the
  * weight from the arguments after it, without dab_weight's reads of the
  * dab: a third of the kernel's time. */
+TEXEL_INLINE void move_texel(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g, int p,
+                             int2 ij, int a, __global const BrushDab *restrict dab,
+                             __global const PatchUnfolding *restrict unfold, __global const float *restrict stamp,
+                             __global const float4 *restrict material, int masked, int mode, float amount,
+                             float4 centre, float4 centre_normal, int plain, float radius, int falloff, float strength)
+{
+  float w;
+  if (plain) {
+    /* dab_weight's own sums for a ball with no stamp or mask: the same bits */
+    const float3 d = ATLAS_LOAD(limit_pos, g, p, ij).xyz - centre.xyz;
+    const float t = sqrt(dot(d, d)) / radius;
+    w = t <= 1.0f ? falloff_weight(falloff, t) * strength : 0.0f;
+  } else {
+    w = dab_weight(limit_pos, limit_nrm, g, p, ij, a, dab, unfold, stamp, material, masked, g, 1, 0);
+  }
+  ATLAS_STORE(dst, g, p, ij,
+              moved_point(ATLAS_LOAD(src, g, p, ij), w, limit_nrm, g, p, ij, mode, amount, centre, centre_normal));
+}
+
 __kernel void move_dab(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g,
                        __global const int *restrict list, int count, __global const BrushDab *restrict dab,
                        __global const PatchUnfolding *restrict unfold, __global const float *restrict stamp,
@@ -208,20 +227,23 @@ __kernel void move_dab(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_pos, ATLAS_IN
 {
   int p;
   int2 ij;
-  if (!tile_texel(g, list, count, &p, &ij))
-    return;
-  float w;
-  if (plain) {
-    /* dab_weight's own sums for a ball with no stamp or mask: the same bits */
-    const float3 d = ATLAS_LOAD(limit_pos, g, p, ij).xyz - centre.xyz;
-    const float t = sqrt(dot(d, d)) / radius;
-    w = t <= 1.0f ? falloff_weight(falloff, t) * strength : 0.0f;
-  } else {
-    const int a = get_global_id(1) / g.x;
-    w = dab_weight(limit_pos, limit_nrm, g, p, ij, a, dab, unfold, stamp, material, masked, g, 1, 0);
-  }
-  ATLAS_STORE(dst, g, p, ij,
-              moved_point(ATLAS_LOAD(src, g, p, ij), w, limit_nrm, g, p, ij, mode, amount, centre, centre_normal));
+  if (tile_texel(g, list, count, &p, &ij))
+    move_texel(src, dst, limit_pos, limit_nrm, g, p, ij, get_global_id(1) / g.x, dab, unfold, stamp, material,
+               masked, mode, amount, centre, centre_normal, plain, radius, falloff, strength);
+}
+
+/* Range: count; the same with a work item per patch (see FOR_EACH_PATCH_TEXEL). */
+__kernel void move_dab_patches(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g,
+                               __global const int *restrict list, int count, __global const BrushDab *restrict dab,
+                               __global const PatchUnfolding *restrict unfold, __global const float *restrict stamp,
+                               __global const float4 *restrict material, int masked, int mode, float amount,
+                               float4 centre, float4 centre_normal, int plain, float radius, int falloff,
+                               float strength)
+{
+  FOR_EACH_PATCH_TEXEL(g, list, count,
+                       move_texel(src, dst, limit_pos, limit_nrm, g, p, ij, patch_item, dab, unfold, stamp,
+                                  material, masked, mode, amount, centre, centre_normal, plain, radius, falloff,
+                                  strength));
 }
 
 /* Range: (tile, tile * count). Copies the listed patches' tiles of a layer

@@ -75,8 +75,8 @@ __kernel void limit_patches(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, 
                             __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
                             __global const float4 *restrict sides, __global const float4 *restrict corners)
 {
-  FOR_EACH_PATCH_TEXEL(g, list, count, patch_sides, patch_rings,
-                       limit_texel(src, pos, nrm, g, p, ij, ps, pr, sides, corners));
+  FOR_EACH_PATCH_TEXEL(g, list, count,
+                       limit_texel(src, pos, nrm, g, p, ij, patch_sides[p], patch_rings[p], sides, corners));
 }
 
 /* Range: count; per edge, its texels on the patch sides, corners excluded,

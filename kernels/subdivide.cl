@@ -59,8 +59,8 @@ __kernel void subdivide_patches(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, _
                                 __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
                                 __global const float4 *restrict sides, __global const float4 *restrict corners)
 {
-  FOR_EACH_PATCH_TEXEL(dg, list, patches, patch_sides, patch_rings,
-                       subdivide_texel(src, dst, sg, dg, p, ij, ps, pr, sides, corners));
+  FOR_EACH_PATCH_TEXEL(dg, list, patches,
+                       subdivide_texel(src, dst, sg, dg, p, ij, patch_sides[p], patch_rings[p], sides, corners));
 }
 
 /* Range: #edges; texels on patch sides, corners excluded, into `sides`,

@@ -130,7 +130,8 @@ struct PaintSurface::LayerKernels
 struct PaintSurface::Device
 {
   LayerKernels positions, channels;
-  cl::Kernel patch_bounds, brush_cull, brush_reach, paint_dab, dab_weights, move_points, move_dab, dab_pickup;
+  cl::Kernel patch_bounds, brush_cull, brush_reach, paint_dab, dab_weights, move_points, move_dab, move_dab_patches;
+  cl::Kernel dab_pickup;
   cl::Kernel spray_pick, spray_points;
   cl::Buffer bounds, counters, active, dab, weights;
   cl::Buffer open_sides; // brush_reach: a byte per patch
@@ -168,6 +169,7 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     d.dab_weights = cl::Kernel(d.positions.program, "dab_weights");
     d.move_points = cl::Kernel(d.positions.program, "move_points");
     d.move_dab = cl::Kernel(d.positions.program, "move_dab");
+    d.move_dab_patches = cl::Kernel(d.positions.program, "move_dab_patches");
     d.dab_pickup = cl::Kernel(d.positions.program, "dab_pickup");
     d.spray_pick = cl::Kernel(d.positions.program, "spray_pick");
     d.spray_points = cl::Kernel(d.positions.program, "spray_points");
@@ -940,7 +942,10 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
     if (weigh_as_moved) {
       const bool plain = dab.space == SPACE_OBJECT && dab.stamp_size[0] == 0 && !mask_painted_;
       q.enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
-      launch(q, d.move_dab, tiles.first, tiles.second, pos, moved, atlas_->limit_positions_layer(), normals,
+      const bool per_patch = atlas_->patch_items();
+      launch(q, per_patch ? d.move_dab_patches : d.move_dab,
+             per_patch ? cl::NDRange(round_up(std::size_t(count), kGroup)) : tiles.first,
+             per_patch ? cl::NDRange(kGroup) : tiles.second, pos, moved, atlas_->limit_positions_layer(), normals,
              grid(l), list, count, d.dab, d.unfold, d.stamp, material_buffer(), cl_int(mask_painted_), mode, amount,
              centre, towards, cl_int(plain), dab.radius, cl_int(dab.falloff), dab.strength);
     } else {
