@@ -72,6 +72,15 @@ std::pair<cl::NDRange, cl::NDRange> range_tiles(const LevelLayout& l, int count)
   return range_squares(std::size_t(l.tile), count);
 }
 
+Atlas::TileLaunch Atlas::tile_launch(cl::Kernel& per_texel, cl::Kernel& per_patch, const LevelLayout& l,
+                                     int count) const
+{
+  if (patch_items_)
+    return {per_patch, range1d(count), kLocal1D};
+  const auto tiles = range_tiles(l, count);
+  return {per_texel, tiles.first, tiles.second};
+}
+
 std::pair<cl::NDRange, cl::NDRange> range_interiors(const LevelLayout& l, int count)
 {
   return range_squares(std::size_t(l.n - 1), count);
@@ -384,13 +393,10 @@ void Atlas::subdivide(int from_level, int to_level, const PatchSet* set, const c
     if (rings > 0)
       launch(q, k.subdivide_corners, range1d(rings), kLocal1D, in, k.corner_work, k.rings, k.slots, ring_list, rings,
              grid(s));
-    if (patches > 0 && patch_items_) {
-      launch(q, k.subdivide_patches, range1d(patches), kLocal1D, in, out, grid(s), grid(d), patch_list, patches,
-             k.patch_sides, k.patch_rings, k.side_work, k.corner_work);
-    } else if (patches > 0) {
-      const auto tiles = range_tiles(d, patches);
-      launch(q, k.subdivide_tiles, tiles.first, tiles.second, in, out, grid(s), grid(d), patch_list, patches,
-             k.patch_sides, k.patch_rings, k.side_work, k.corner_work);
+    if (patches > 0) {
+      const TileLaunch t = tile_launch(k.subdivide_tiles, k.subdivide_patches, d, patches);
+      launch(q, t.kernel, t.global, t.local, in, out, grid(s), grid(d), patch_list, patches, k.patch_sides,
+             k.patch_rings, k.side_work, k.corner_work);
     }
   }
   if (set)
@@ -444,12 +450,9 @@ void Atlas::compute_limit_of(int level, const cl::Memory& pos, const cl::Memory&
   if (rings > 0)
     launch(q, k.limit_corners, range1d(rings), kLocal1D, in, k.corner_work, k.rings, k.slots, k.valences,
            ring_list, rings, grid(l));
-  if (patches > 0 && patch_items_) {
-    launch(q, k.limit_patches, range1d(patches), kLocal1D, in, pos, nrm, grid(l), patch_list, patches,
-           k.patch_sides, k.patch_rings, k.side_work, k.corner_work);
-  } else if (patches > 0) {
-    const auto tiles = range_tiles(l, patches);
-    launch(q, k.limit_tiles, tiles.first, tiles.second, in, pos, nrm, grid(l), patch_list, patches, k.patch_sides,
+  if (patches > 0) {
+    const TileLaunch t = tile_launch(k.limit_tiles, k.limit_patches, l, patches);
+    launch(q, t.kernel, t.global, t.local, in, pos, nrm, grid(l), patch_list, patches, k.patch_sides,
            k.patch_rings, k.side_work, k.corner_work);
   }
   if (set)

@@ -115,6 +115,15 @@ public:
   //! is there to compare them.
   bool patch_items() const { return patch_items_; }
   void set_patch_items(bool on) { patch_items_ = on; }
+  //! A whole-tile kernel over `count` patches of a level in that form: the
+  //! per-patch kernel over count items, or the per-texel one over
+  //! range_tiles(). The arguments are the same for both.
+  struct TileLaunch
+  {
+    cl::Kernel& kernel;
+    cl::NDRange global, local;
+  };
+  TileLaunch tile_launch(cl::Kernel& per_texel, cl::Kernel& per_patch, const LevelLayout& layout, int count) const;
   const AtlasTopology& topology() const { return topology_; }
   const BaseMesh& base_mesh() const { return base_; }
   const std::vector<int>& base_face_order() const { return base_face_order_; }

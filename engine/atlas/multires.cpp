@@ -184,15 +184,9 @@ void Multires::reconstruct(const std::vector<int>& affected, const PatchSet& aro
     const cl::Buffer kept(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, set.outside.size(),
                           const_cast<std::uint8_t*>(set.outside.data()));
     const int count = int(set.patches.size());
-    if (atlas_.patch_items()) {
-      launch(q, d.decode_patches, cl::NDRange(round_up(set.patches.size(), kGroup)), cl::NDRange(kGroup), d.smooth,
-             grid(f), patches, count, d.details, fine, work.patch_sides, work.patch_rings, work.sides, work.corners,
-             kept);
-    } else {
-      const auto tiles = range_tiles(f, count);
-      launch(q, d.decode_tiles, tiles.first, tiles.second, d.smooth, grid(f), patches, count, d.details, fine,
-             work.patch_sides, work.patch_rings, work.sides, work.corners, kept);
-    }
+    const Atlas::TileLaunch t = atlas_.tile_launch(d.decode_tiles, d.decode_patches, f, count);
+    launch(q, t.kernel, t.global, t.local, d.smooth, grid(f), patches, count, d.details, fine, work.patch_sides,
+           work.patch_rings, work.sides, work.corners, kept);
   }
   q.finish(); // the lists live until here
 }

@@ -942,12 +942,10 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
     if (weigh_as_moved) {
       const bool plain = dab.space == SPACE_OBJECT && dab.stamp_size[0] == 0 && !mask_painted_;
       q.enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
-      const bool per_patch = atlas_->patch_items();
-      launch(q, per_patch ? d.move_dab_patches : d.move_dab,
-             per_patch ? cl::NDRange(round_up(std::size_t(count), kGroup)) : tiles.first,
-             per_patch ? cl::NDRange(kGroup) : tiles.second, pos, moved, atlas_->limit_positions_layer(), normals,
-             grid(l), list, count, d.dab, d.unfold, d.stamp, material_buffer(), cl_int(mask_painted_), mode, amount,
-             centre, towards, cl_int(plain), dab.radius, cl_int(dab.falloff), dab.strength);
+      const Atlas::TileLaunch t = atlas_->tile_launch(d.move_dab, d.move_dab_patches, l, count);
+      launch(q, t.kernel, t.global, t.local, pos, moved, atlas_->limit_positions_layer(), normals, grid(l), list,
+             count, d.dab, d.unfold, d.stamp, material_buffer(), cl_int(mask_painted_), mode, amount, centre, towards,
+             cl_int(plain), dab.radius, cl_int(dab.falloff), dab.strength);
     } else {
       launch(q, d.move_points, tiles.first, tiles.second, pos, moved, normals, grid(l), list, count,
              weights, mode, amount, centre, towards);
