@@ -237,6 +237,12 @@ inline int tile_part(int2 ij, int n)
   return lo_i ? UNFOLD_SIDE + 3 : UNFOLD_INTERIOR;
 }
 
+/* Component c (0..3) of v. */
+inline int int4_at(int4 v, int c)
+{
+  return c == 0 ? v.x : c == 1 ? v.y : c == 2 ? v.z : v.w;
+}
+
 /* Whole-tile kernels that copy their sides and corners from the compact
  * results of a side and a corner kernel (an entry per side texel, edge by
  * edge, and per ring): where texel ij on the border of a tile (n = tile - 1)
@@ -248,16 +254,69 @@ inline int border_entry(int2 ij, int n, int4 sides, int4 rings, int *corner)
 {
   const int part = tile_part(ij, n);
   *corner = part >= UNFOLD_CORNER;
-  if (*corner) {
-    const int c = part - UNFOLD_CORNER;
-    return c == 0 ? rings.x : c == 1 ? rings.y : c == 2 ? rings.z : rings.w;
-  }
+  if (*corner)
+    return int4_at(rings, part - UNFOLD_CORNER);
   /* Side s and the position t along it in the patch's own frame. */
   const int s = part - UNFOLD_SIDE;
   const int t = s == 0 ? ij.x : s == 1 ? ij.y : s == 2 ? n - ij.x : n - ij.y;
-  const int code = s == 0 ? sides.x : s == 1 ? sides.y : s == 2 ? sides.z : sides.w;
+  const int code = int4_at(sides, s);
   return (code >> 1) * (n - 1) + ((code & 1) ? n - t : t) - 1;
 }
+
+/* Entry of texel t along side s of a patch with side table ps. */
+#define SIDE_ENTRY(n, ps, s, t)                                  \
+  ((int4_at(ps, s) >> 1) * ((n) - 1) - 1 + ((int4_at(ps, s) & 1) ? (n) - (t) : (t)))
+
+/* The per-patch walk of a tile whose border comes from compact arrays,
+ * row by row as the tile lies in memory, but with no texel asking which
+ * part it is in: BORDER(ij, k, corner, bit) for each texel on a side or
+ * corner, with border_entry()'s k and corner, and bit the texel_border()
+ * bit of its part; INSIDE(ij) for each texel strictly inside. n = tile - 1;
+ * ps, pr: the patch's tables. */
+#define FOR_EACH_TILE_PART(n, ps, pr, BORDER, INSIDE)                          \
+  do {                                                                         \
+    BORDER((int2)(0, 0), (pr).x, 1, 16);                                       \
+    for (int t_ = 1; t_ < (n); ++t_)                                           \
+      BORDER((int2)(t_, 0), SIDE_ENTRY(n, ps, 0, t_), 0, 1);                   \
+    BORDER((int2)((n), 0), (pr).y, 1, 32);                                     \
+    for (int j_ = 1; j_ < (n); ++j_) {                                         \
+      BORDER((int2)(0, j_), SIDE_ENTRY(n, ps, 3, (n) - j_), 0, 8);             \
+      for (int i_ = 1; i_ < (n); ++i_)                                         \
+        INSIDE((int2)(i_, j_));                                                \
+      BORDER((int2)((n), j_), SIDE_ENTRY(n, ps, 1, j_), 0, 2);                 \
+    }                                                                          \
+    BORDER((int2)(0, (n)), (pr).w, 1, 128);                                    \
+    for (int t_ = 1; t_ < (n); ++t_)                                           \
+      BORDER((int2)((n) - t_, (n)), SIDE_ENTRY(n, ps, 2, t_), 0, 4);           \
+    BORDER((int2)((n), (n)), (pr).z, 1, 64);                                   \
+  } while (0)
+
+/* Kernel bodies over whole tiles whose border comes from compact arrays,
+ * in the two forms: PATCH_ITEM_PARTS for a work item per patch (range
+ * count) walking its tile with FOR_EACH_TILE_PART, TILE_TEXEL_PART for a
+ * work item per texel (tile_texel()'s range) sent to BORDER or INSIDE.
+ * Both declare p, n = tile - 1 and item (the patch's place in the list),
+ * and end the kernel for the rounding tail. */
+#define PATCH_ITEM_PARTS(g, list, count, patch_sides, patch_rings, BORDER, INSIDE) \
+  const int item = get_global_id(0);                                              \
+  if (item >= (count))                                                            \
+    return;                                                                       \
+  const int p = LISTED(list, item), n = (g).x - 1;                                \
+  const int4 ps_ = (patch_sides)[p], pr_ = (patch_rings)[p];                      \
+  FOR_EACH_TILE_PART(n, ps_, pr_, BORDER, INSIDE)
+
+#define TILE_TEXEL_PART(g, list, count, patch_sides, patch_rings, BORDER, INSIDE)      \
+  int p, corner_;                                                                     \
+  int2 ij;                                                                            \
+  if (!tile_texel(g, list, count, &p, &ij))                                           \
+    return;                                                                           \
+  const int n = (g).x - 1, item = get_global_id(1) / (g).x;                           \
+  if (ij.x > 0 && ij.x < n && ij.y > 0 && ij.y < n) {                                 \
+    INSIDE(ij);                                                                       \
+  } else {                                                                            \
+    const int k_ = border_entry(ij, n, (patch_sides)[p], (patch_rings)[p], &corner_); \
+    BORDER(ij, k_, corner_, texel_border(ij, n));                                     \
+  }
 
 /* Item k of a table-driven kernel: list[k], or k itself when list is null. */
 #define LISTED(list, k) ((list) ? (list)[k] : (k))

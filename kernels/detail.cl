@@ -64,22 +64,15 @@ TEXEL_INLINE float4 decoded(ATLAS_IN smooth, int2 g, int p, int2 ij, __global co
  * `outside` (per listed patch, bits as texel_border()): shared with unlisted
  * patches, they keep S. */
 
-/* Texel ij of patch p, the a-th listed (ps, pr: its tables). */
-TEXEL_INLINE void decode_texel(ATLAS_IN smooth, int2 g, int p, int2 ij, int a, __global const float4 *details,
-                               ATLAS_OUT fine, int4 ps, int4 pr, __global const float4 *restrict sides,
-                               __global const float4 *restrict corners, __global const uchar *restrict outside)
-{
-  const int n = g.x - 1;
-  if (ij.x > 0 && ij.x < n && ij.y > 0 && ij.y < n) {
-    ATLAS_STORE(fine, g, p, ij, decoded(smooth, g, p, ij, details));
-    return;
-  }
-  if (outside[a] & texel_border(ij, n))
-    return;
-  int corner;
-  const int k = border_entry(ij, n, ps, pr, &corner);
-  ATLAS_STORE(fine, g, p, ij, corner ? corners[k] : sides[k]);
-}
+/* Texel ij of patch p on a side or corner, the item-th listed: entry k of
+ * `corners` or `sides`, unless the part (bit) is shared with an unlisted
+ * patch. */
+#define DECODE_COPY(ij, k, corner, bit)                                  \
+  do {                                                                   \
+    if (!(outside[item] & (bit)))                                           \
+      ATLAS_STORE(fine, g, p, ij, (corner) ? corners[k] : sides[k]);     \
+  } while (0)
+#define DECODE_INSIDE(ij) ATLAS_STORE(fine, g, p, ij, decoded(smooth, g, p, ij, details))
 
 /* Range: (tile, tile * count). */
 __kernel void decode_tiles(ATLAS_IN smooth, int2 g, __global const int *list, int count,
@@ -87,22 +80,17 @@ __kernel void decode_tiles(ATLAS_IN smooth, int2 g, __global const int *list, in
                            __global const int4 *restrict patch_rings, __global const float4 *restrict sides,
                            __global const float4 *restrict corners, __global const uchar *restrict outside)
 {
-  int p;
-  int2 ij;
-  if (tile_texel(g, list, count, &p, &ij))
-    decode_texel(smooth, g, p, ij, get_global_id(1) / g.x, details, fine, patch_sides[p], patch_rings[p], sides,
-                 corners, outside);
+  TILE_TEXEL_PART(g, list, count, patch_sides, patch_rings, DECODE_COPY, DECODE_INSIDE);
 }
 
-/* Range: count; the same with a work item per patch (see FOR_EACH_PATCH_TEXEL). */
+/* Range: count; the same with a work item per patch walking its tile
+ * (FOR_EACH_TILE_PART). */
 __kernel void decode_patches(ATLAS_IN smooth, int2 g, __global const int *list, int count,
                              __global const float4 *details, ATLAS_OUT fine, __global const int4 *restrict patch_sides,
                              __global const int4 *restrict patch_rings, __global const float4 *restrict sides,
                              __global const float4 *restrict corners, __global const uchar *restrict outside)
 {
-  FOR_EACH_PATCH_TEXEL(g, list, count,
-                       decode_texel(smooth, g, p, ij, patch_item, details, fine, patch_sides[p], patch_rings[p],
-                                    sides, corners, outside));
+  PATCH_ITEM_PARTS(g, list, count, patch_sides, patch_rings, DECODE_COPY, DECODE_INSIDE);
 }
 
 /* Range: count; the listed patch sides into `sides`, in the first patch's

@@ -33,50 +33,43 @@ inline void limit_regular(const float4 *q, float4 *pos, float4 *nrm)
     (a)[2 * (k) + 1] = (nv);     \
   } while (0)
 
-/* Texel ij of patch p: strictly inside, computed here; on a side or corner,
- * copied from `sides` and `corners` (border_entry(), with the patch's
- * tables ps and pr), whose edges and rings must have been computed in this
- * update. */
-TEXEL_INLINE void limit_texel(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, int p, int2 ij, int4 ps, int4 pr,
-                              __global const float4 *restrict sides, __global const float4 *restrict corners)
+/* Texel ij strictly inside patch p, from its 3x3 neighbourhood. */
+TEXEL_INLINE void limit_inside(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, int p, int2 ij)
 {
-  const int n = g.x - 1;
-  float4 pv, nv;
-  if (ij.x > 0 && ij.x < n && ij.y > 0 && ij.y < n) {
-    float4 q[9];
-    for (int b = -1; b <= 1; ++b)
-      for (int a = -1; a <= 1; ++a)
-        q[3 * (b + 1) + a + 1] = ATLAS_LOAD(src, g, p, ij + (int2)(a, b));
-    limit_regular(q, &pv, &nv);
-  } else {
-    int corner;
-    const int k = border_entry(ij, n, ps, pr, &corner);
-    __global const float4 *pair = (corner ? corners : sides) + 2 * k;
-    pv = pair[0];
-    nv = pair[1];
-  }
+  float4 q[9], pv, nv;
+  for (int b = -1; b <= 1; ++b)
+    for (int a = -1; a <= 1; ++a)
+      q[3 * (b + 1) + a + 1] = ATLAS_LOAD(src, g, p, ij + (int2)(a, b));
+  limit_regular(q, &pv, &nv);
   ATLAS_STORE(pos, g, p, ij, pv);
   ATLAS_STORE(nrm, g, p, ij, nv);
 }
+
+/* Texel ij of patch p on a side or corner: entry k of `corners` or `sides`,
+ * whose edges and rings must have been computed in this update. */
+#define LIMIT_COPY(ij, k, corner, bit)                                        \
+  do {                                                                        \
+    __global const float4 *pair_ = ((corner) ? corners : sides) + 2 * (k);     \
+    ATLAS_STORE(pos, g, p, ij, pair_[0]);                                     \
+    ATLAS_STORE(nrm, g, p, ij, pair_[1]);                                     \
+  } while (0)
+#define LIMIT_INSIDE(ij) limit_inside(src, pos, nrm, g, p, ij)
 
 /* Range: whole tiles, (tile, tile * count): a work item per texel. */
 __kernel void limit_tiles(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, __global const int *list, int count,
                           __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
                           __global const float4 *restrict sides, __global const float4 *restrict corners)
 {
-  int p;
-  int2 ij;
-  if (tile_texel(g, list, count, &p, &ij))
-    limit_texel(src, pos, nrm, g, p, ij, patch_sides[p], patch_rings[p], sides, corners);
+  TILE_TEXEL_PART(g, list, count, patch_sides, patch_rings, LIMIT_COPY, LIMIT_INSIDE);
 }
 
-/* Range: count; the same with a work item per patch (see FOR_EACH_PATCH_TEXEL). */
+/* Range: count; the same with a work item per patch walking its tile
+ * (FOR_EACH_TILE_PART). */
 __kernel void limit_patches(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, __global const int *list, int count,
                             __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
                             __global const float4 *restrict sides, __global const float4 *restrict corners)
 {
-  FOR_EACH_PATCH_TEXEL(g, list, count,
-                       limit_texel(src, pos, nrm, g, p, ij, patch_sides[p], patch_rings[p], sides, corners));
+  PATCH_ITEM_PARTS(g, list, count, patch_sides, patch_rings, LIMIT_COPY, LIMIT_INSIDE);
 }
 
 /* Range: count; per edge, its texels on the patch sides, corners excluded,

@@ -17,18 +17,9 @@ inline float3 refine_weights(int i)
  * strictly inside and copies the rest, so each cache line of the level is
  * written once, by one kernel (as the limit's kernels do). */
 
-/* Destination texel ij of patch p; the sides' and corners' entries must
- * have been computed in this step (ps, pr: the patch's tables). */
-TEXEL_INLINE void subdivide_texel(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, int p, int2 ij, int4 ps, int4 pr,
-                                  __global const float4 *restrict sides, __global const float4 *restrict corners)
+/* Destination texel ij strictly inside patch p. */
+TEXEL_INLINE void subdivide_inside(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, int p, int2 ij)
 {
-  const int n = dg.x - 1;
-  if (!(ij.x > 0 && ij.x < n && ij.y > 0 && ij.y < n)) {
-    int corner;
-    const int k = border_entry(ij, n, ps, pr, &corner);
-    ATLAS_STORE(dst, dg, p, ij, corner ? corners[k] : sides[k]);
-    return;
-  }
   const int n_src = sg.x - 1;
   const int ci = (ij.x + 1) >> 1, cj = (ij.y + 1) >> 1;
   const int i0 = ci - 1, i2 = min(ci + 1, n_src);
@@ -43,24 +34,26 @@ TEXEL_INLINE void subdivide_texel(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg,
   ATLAS_STORE(dst, dg, p, ij, v);
 }
 
+/* Destination texel ij of patch p on a side or corner: entry k of `corners`
+ * or `sides`, which must have been computed in this step. */
+#define SUBDIVIDE_COPY(ij, k, corner, bit) ATLAS_STORE(dst, dg, p, ij, (corner) ? corners[k] : sides[k])
+#define SUBDIVIDE_INSIDE(ij) subdivide_inside(src, dst, sg, dg, p, ij)
+
 /* Range: whole destination tiles, (dst tile, dst tile * patches). */
 __kernel void subdivide_tiles(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, __global const int *list, int patches,
                               __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
                               __global const float4 *restrict sides, __global const float4 *restrict corners)
 {
-  int p;
-  int2 ij;
-  if (tile_texel(dg, list, patches, &p, &ij))
-    subdivide_texel(src, dst, sg, dg, p, ij, patch_sides[p], patch_rings[p], sides, corners);
+  TILE_TEXEL_PART(dg, list, patches, patch_sides, patch_rings, SUBDIVIDE_COPY, SUBDIVIDE_INSIDE);
 }
 
-/* Range: patches; the same with a work item per patch (see FOR_EACH_PATCH_TEXEL). */
+/* Range: patches; the same with a work item per patch walking its tile
+ * (FOR_EACH_TILE_PART). */
 __kernel void subdivide_patches(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, __global const int *list, int patches,
                                 __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
                                 __global const float4 *restrict sides, __global const float4 *restrict corners)
 {
-  FOR_EACH_PATCH_TEXEL(dg, list, patches,
-                       subdivide_texel(src, dst, sg, dg, p, ij, patch_sides[p], patch_rings[p], sides, corners));
+  PATCH_ITEM_PARTS(dg, list, patches, patch_sides, patch_rings, SUBDIVIDE_COPY, SUBDIVIDE_INSIDE);
 }
 
 /* Range: #edges; texels on patch sides, corners excluded, into `sides`,
