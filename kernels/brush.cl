@@ -8,31 +8,6 @@
 
 #define CHANNEL_INDEX(tile, p, ij) (((p) * (tile) + (ij).y) * (tile) + (ij).x)
 
-/* Range: count. Bounding sphere (centre xyz, radius w) of the listed
- * patches (list null: every patch). */
-__kernel void patch_bounds(ATLAS_IN pos, int2 g, __global const int *list, int count, __global float4 *bounds)
-{
-  const int k = get_global_id(0);
-  if (k >= count)
-    return;
-  const int p = LISTED(list, k);
-  float3 lo = (float3)(INFINITY), hi = (float3)(-INFINITY);
-  for (int j = 0; j < g.x; ++j)
-    for (int i = 0; i < g.x; ++i) {
-      const float3 x = ATLAS_LOAD(pos, g, p, (int2)(i, j)).xyz;
-      lo = fmin(lo, x);
-      hi = fmax(hi, x);
-    }
-  const float3 c = 0.5f * (lo + hi);
-  float r2 = 0.0f; /* one square root per patch, not per texel */
-  for (int j = 0; j < g.x; ++j)
-    for (int i = 0; i < g.x; ++i) {
-      const float3 d = ATLAS_LOAD(pos, g, p, (int2)(i, j)).xyz - c;
-      r2 = fmax(r2, dot(d, d));
-    }
-  bounds[p] = (float4)(c, sqrt(r2));
-}
-
 /* Distance from c to the closest texel of patch p (its tile index in
  * *texel), and in side[s] to the closest texel on side s. */
 inline float patch_distances(ATLAS_IN pos, int2 g, int p, float3 c, float side[4], int *texel)

@@ -55,6 +55,38 @@ TEXEL_INLINE void limit_inside(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 
   } while (0)
 #define LIMIT_INSIDE(ij) limit_inside(src, pos, nrm, g, p, ij)
 
+/* Bounding sphere (centre xyz, radius w) of the positions in patch p's
+ * tile: the centre of their box, and one square root per patch. */
+TEXEL_INLINE float4 tile_bounds(ATLAS_IN pos, int2 g, int p)
+{
+  float3 lo = (float3)(INFINITY), hi = (float3)(-INFINITY);
+  for (int j = 0; j < g.x; ++j)
+    for (int i = 0; i < g.x; ++i) {
+      const float3 x = ATLAS_LOAD(pos, g, p, (int2)(i, j)).xyz;
+      lo = fmin(lo, x);
+      hi = fmax(hi, x);
+    }
+  const float3 c = 0.5f * (lo + hi);
+  float r2 = 0.0f;
+  for (int j = 0; j < g.x; ++j)
+    for (int i = 0; i < g.x; ++i) {
+      const float3 d = ATLAS_LOAD(pos, g, p, (int2)(i, j)).xyz - c;
+      r2 = fmax(r2, dot(d, d));
+    }
+  return (float4)(c, sqrt(r2));
+}
+
+/* Range: count. tile_bounds() of the listed patches (list null: every
+ * patch), after the limit kernels that did not make them. */
+__kernel void patch_bounds(ATLAS_IN pos, int2 g, __global const int *list, int count, __global float4 *bounds)
+{
+  const int k = get_global_id(0);
+  if (k < count) {
+    const int p = LISTED(list, k);
+    bounds[p] = tile_bounds(pos, g, p);
+  }
+}
+
 /* Range: whole tiles, (tile, tile * count): a work item per texel. */
 __kernel void limit_tiles(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, __global const int *list, int count,
                           __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
@@ -64,12 +96,20 @@ __kernel void limit_tiles(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, __
 }
 
 /* Range: count; the same with a work item per patch walking its tile
- * (FOR_EACH_TILE_PART). */
+ * (FOR_EACH_TILE_PART), and with buffer storage the patch's tile_bounds()
+ * into `bounds` unless it is null. */
 __kernel void limit_patches(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, __global const int *list, int count,
                             __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
-                            __global const float4 *restrict sides, __global const float4 *restrict corners)
+                            __global const float4 *restrict sides, __global const float4 *restrict corners,
+                            __global float4 *restrict bounds)
 {
   PATCH_ITEM_PARTS(g, list, count, patch_sides, patch_rings, LIMIT_COPY, LIMIT_INSIDE);
+#ifndef ATLAS_IMAGE
+  /* The tile the item has just written, still in its cache: the bounds
+   * cost a pass there instead of a kernel over the set. */
+  if (bounds)
+    bounds[p] = tile_bounds(pos, g, p);
+#endif
 }
 
 /* Range: count; per edge, its texels on the patch sides, corners excluded,

@@ -158,7 +158,7 @@ struct Atlas::Kernels
 {
   cl::Program program;
   cl::Kernel subdivide_tiles, subdivide_patches, subdivide_edges, subdivide_corners;
-  cl::Kernel limit_tiles, limit_patches, limit_edges, limit_corners;
+  cl::Kernel limit_tiles, limit_patches, limit_edges, limit_corners, patch_bounds;
   cl::Kernel reduce_interior, reduce_edges, reduce_corners;
   cl::Buffer edges, rings, slots;
   cl::Buffer valences; // limit_corners' constants per valence (limit_constants())
@@ -299,6 +299,7 @@ Atlas::Atlas(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int max_lev
     patch_items_ = !runtime_->info().gpu;
     k.limit_edges = cl::Kernel(k.program, "limit_edges");
     k.limit_corners = cl::Kernel(k.program, "limit_corners");
+    k.patch_bounds = cl::Kernel(k.program, "patch_bounds");
     k.reduce_interior = cl::Kernel(k.program, "reduce_interior");
     k.reduce_edges = cl::Kernel(k.program, "reduce_edges");
     k.reduce_corners = cl::Kernel(k.program, "reduce_corners");
@@ -431,12 +432,14 @@ void Atlas::compute_limit()
   if (!limit_positions_) {
     limit_positions_ = std::make_unique<Layer>(make_layer(layout(max_level_)));
     limit_normals_ = std::make_unique<Layer>(make_layer(layout(max_level_)));
+    limit_bounds_ = cl::Buffer(runtime_->context(), CL_MEM_READ_WRITE, sizeof(cl_float4) * topology_.patch_count);
   }
-  compute_limit_of(max_level_, limit_positions_->mem(), limit_normals_->mem());
+  compute_limit_of(max_level_, limit_positions_->mem(), limit_normals_->mem(), nullptr, &limit_bounds_);
   limit_current_ = true;
 }
 
-void Atlas::compute_limit_of(int level, const cl::Memory& pos, const cl::Memory& nrm, const PatchSet* set)
+void Atlas::compute_limit_of(int level, const cl::Memory& pos, const cl::Memory& nrm, const PatchSet* set,
+                             const cl::Buffer* bounds)
 {
   const LevelLayout l = layout(level);
   Kernels& k = *kernels_;
@@ -452,8 +455,15 @@ void Atlas::compute_limit_of(int level, const cl::Memory& pos, const cl::Memory&
            ring_list, rings, grid(l));
   if (patches > 0) {
     const TileLaunch t = tile_launch(k.limit_tiles, k.limit_patches, l, patches);
+    // The per-patch kernel makes the bounds as it goes where it may read
+    // back what it wrote (buffers); otherwise a kernel of their own.
+    const bool fused = bounds && patch_items_ && storage_ == AtlasStorage::Buffer;
+    if (patch_items_)
+      k.limit_patches.setArg(10, fused ? *bounds : cl::Buffer()); // its last, beyond limit_tiles' own
     launch(q, t.kernel, t.global, t.local, in, pos, nrm, grid(l), patch_list, patches, k.patch_sides,
            k.patch_rings, k.side_work, k.corner_work);
+    if (bounds && !fused)
+      launch(q, k.patch_bounds, range1d(patches), kLocal1D, pos, grid(l), patch_list, patches, *bounds);
   }
   if (set)
     q.finish(); // the lists live until here
@@ -554,7 +564,7 @@ void Atlas::update_limit(const PatchSet& set)
     compute_limit(); // everything: no lists to build or upload
     return;
   }
-  compute_limit_of(max_level_, limit_positions_->mem(), limit_normals_->mem(), &set);
+  compute_limit_of(max_level_, limit_positions_->mem(), limit_normals_->mem(), &set, &limit_bounds_);
 }
 
 const cl::Memory& Atlas::level_layer(int level)
@@ -639,6 +649,13 @@ const cl::Memory& Atlas::limit_positions_layer()
   if (!limit_current_)
     compute_limit();
   return limit_positions_->mem();
+}
+
+const cl::Buffer& Atlas::limit_bounds()
+{
+  if (!limit_current_)
+    compute_limit();
+  return limit_bounds_;
 }
 
 std::vector<Float4> Atlas::read_limit_positions()

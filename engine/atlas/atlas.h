@@ -149,8 +149,10 @@ public:
   //! layers of that level's layout (the atlas's own limit layers stay);
   //! with a set, the whole tiles of its patches only, which needs every
   //! side and corner of them among its edges and rings (Reach::Any).
+  //! With `bounds`, also each computed patch's bounding sphere of its limit
+  //! positions there (centre xyz, radius w; float4 per patch).
   void compute_limit_of(int level, const cl::Memory& positions, const cl::Memory& normals,
-                        const PatchSet* set = nullptr);
+                        const PatchSet* set = nullptr, const cl::Buffer* bounds = nullptr);
   //! Waits for every queued kernel.
   void finish();
 
@@ -196,6 +198,9 @@ public:
   //! The device layer is for kernels of other families (brush.cl), which
   //! address it with the same storage macros.
   const cl::Memory& limit_positions_layer();
+  //! Per patch, the bounding sphere of its limit positions (centre xyz,
+  //! radius w), kept with the limit layers.
+  const cl::Buffer& limit_bounds();
   std::vector<Float4> read_limit_positions();
   std::vector<Float4> read_limit_normals();
 
@@ -219,6 +224,7 @@ private:
   AtlasTopology topology_;
   std::vector<Layer> levels_;  // index l - 1
   std::unique_ptr<Layer> limit_positions_, limit_normals_;
+  cl::Buffer limit_bounds_;
   bool limit_current_ = false; // limit layers match the finest level
   std::unique_ptr<Kernels> kernels_;
   std::vector<int> device_ring_; // level-1 vertex -> index in the device's ring table

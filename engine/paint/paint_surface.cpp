@@ -130,10 +130,10 @@ struct PaintSurface::LayerKernels
 struct PaintSurface::Device
 {
   LayerKernels positions, channels;
-  cl::Kernel patch_bounds, brush_cull, brush_reach, paint_dab, dab_weights, move_points, move_dab, move_dab_patches;
+  cl::Kernel brush_cull, brush_reach, paint_dab, dab_weights, move_points, move_dab, move_dab_patches;
   cl::Kernel dab_pickup;
   cl::Kernel spray_pick, spray_points;
-  cl::Buffer bounds, counters, active, dab, weights;
+  cl::Buffer counters, active, dab, weights;
   cl::Buffer open_sides; // brush_reach: a byte per patch
   AppendBuffer culled;   // CullRecord
   cl::Buffer unfold; // a parameter dab's PatchUnfolding per listed patch (one entry otherwise)
@@ -162,7 +162,6 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
       d.channels = d.positions;
     else
       d.channels.build(rt, AtlasStorage::Buffer);
-    d.patch_bounds = cl::Kernel(d.positions.program, "patch_bounds");
     d.brush_cull = cl::Kernel(d.positions.program, "brush_cull");
     d.brush_reach = cl::Kernel(d.positions.program, "brush_reach");
     d.paint_dab = cl::Kernel(d.positions.program, "paint_dab");
@@ -186,13 +185,10 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     rt.queue().enqueueFillBuffer(d.diffuse, f4(material.diffuse), 0, bytes);
     rt.queue().enqueueFillBuffer(d.specular, f4(material.specular), 0, bytes);
     rt.queue().enqueueFillBuffer(d.material, cl_float4{{material.roughness, 0.f, 0.f, 0.f}}, 0, bytes);
-    d.bounds = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_float4) * l.patches);
     d.counters = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_int2));
     d.open_sides = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, std::size_t(l.patches));
     d.dab = cl::Buffer(rt.context(), CL_MEM_READ_ONLY, sizeof(BrushDab));
     d.unfold = cl::Buffer(rt.context(), CL_MEM_READ_ONLY, sizeof(PatchUnfolding) * d.unfold_capacity);
-    launch(rt.queue(), d.patch_bounds, cl::NDRange(round_up(l.patches, kGroup)), cl::NDRange(kGroup),
-           atlas_->limit_positions_layer(), grid(l), cl::Buffer(), l.patches, d.bounds);
     rt.queue().finish();
   } catch (const cl::Error& e) {
     throw DeviceError("cannot set up painting on " + rt.info().name + ": " + describe(e));
@@ -324,16 +320,8 @@ void PaintSurface::refresh_geometry(const std::vector<int>& patches)
 
 void PaintSurface::refresh_geometry(const PatchSet& set)
 {
-  Device& d = *device_;
-  Runtime& rt = atlas_->runtime();
-  const LevelLayout l = atlas_->layout(level_);
-  atlas_->update_limit(set);
+  atlas_->update_limit(set); // and the patches' bounds
   phase_done(&StepPhases::limit);
-  const cl::Buffer list = device_ints(rt.context(), set.patches);
-  launch(rt.queue(), d.patch_bounds, cl::NDRange(round_up(set.patches.size(), kGroup)), cl::NDRange(kGroup),
-         atlas_->limit_positions_layer(), grid(l), list, int(set.patches.size()), d.bounds);
-  rt.queue().finish();
-  phase_done(&StepPhases::bounds);
 }
 
 void PaintSurface::remember(const std::vector<int>& patches)
@@ -402,7 +390,7 @@ std::vector<CullRecord> PaintSurface::cull(const Vec3& centre, float radius)
   std::memcpy(&radius_bits, &radius, sizeof radius_bits); // brush_cull's nearest distance so far
   return run_appending<CullRecord>(atlas_->runtime(), d.brush_cull, l.patches, d.culled, d.counters,
                                    cl_int2{{0, radius_bits}}, atlas_->limit_positions_layer(),
-                                   atlas_->limit_normals_layer(), grid(l), l.patches, d.bounds,
+                                   atlas_->limit_normals_layer(), grid(l), l.patches, atlas_->limit_bounds(),
                                    cl_float4{{centre[0], centre[1], centre[2], 0.f}});
 }
 
@@ -412,7 +400,7 @@ void PaintSurface::reach_sides(const Vec3& centre, float radius)
   Runtime& rt = atlas_->runtime();
   const LevelLayout l = atlas_->layout(level_);
   launch(rt.queue(), d.brush_reach, cl::NDRange(round_up(std::size_t(l.patches), kGroup)), cl::NDRange(kGroup),
-         atlas_->limit_positions_layer(), grid(l), l.patches, d.bounds,
+         atlas_->limit_positions_layer(), grid(l), l.patches, atlas_->limit_bounds(),
          cl_float4{{centre[0], centre[1], centre[2], 0.f}}, radius, d.open_sides);
   rt.queue().enqueueReadBuffer(d.open_sides, CL_TRUE, 0, open_sides_.size(), open_sides_.data());
 }
@@ -492,7 +480,7 @@ void PaintSurface::spray(const std::vector<int>& patches, const BrushDab& dab, c
   const auto tiles = range_tiles(l, int(patches.size()));
   const cl::Memory &pos = atlas_->limit_positions_layer(), &nrm = atlas_->limit_normals_layer();
   for (const int pass : {0, 1})
-    launch(q, d.spray_pick, tiles.first, tiles.second, pos, nrm, grid(l), list, int(patches.size()), d.dab, d.bounds,
+    launch(q, d.spray_pick, tiles.first, tiles.second, pos, nrm, grid(l), list, int(patches.size()), d.dab, atlas_->limit_bounds(),
            drop_buffer, k, pass, keys, texels);
   launch(q, d.spray_points, cl::NDRange(round_up(std::size_t(k), kGroup)), cl::NDRange(kGroup), pos, grid(l), texels, k,
          points);
@@ -825,7 +813,7 @@ bool PaintSurface::aim(const Stroke& stroke, const Vec3& point, const Vec3& norm
   if (stroke.space == SPACE_PARAMETER) {
     const LevelLayout l = atlas_->layout(level_);
     cl_float4 bound;
-    atlas_->runtime().queue().enqueueReadBuffer(device_->bounds, CL_TRUE, sizeof(cl_float4) * closest.patch,
+    atlas_->runtime().queue().enqueueReadBuffer(atlas_->limit_bounds(), CL_TRUE, sizeof(cl_float4) * closest.patch,
                                                 sizeof bound, &bound);
     dab.centre_texel[0] = float(closest.closest_texel % l.tile);
     dab.centre_texel[1] = float(closest.closest_texel / l.tile);
@@ -1146,12 +1134,8 @@ void PaintSurface::geometry_changed()
   changed_all();
   if (multires_)
     multires_->invalidate();
-  const LevelLayout l = atlas_->layout(level_);
-  Runtime& rt = atlas_->runtime();
-  atlas_->compute_limit();
-  launch(rt.queue(), device_->patch_bounds, cl::NDRange(round_up(l.patches, kGroup)), cl::NDRange(kGroup),
-         atlas_->limit_positions_layer(), grid(l), cl::Buffer(), l.patches, device_->bounds);
-  rt.queue().finish();
+  atlas_->compute_limit(); // and the bounds
+  atlas_->finish();
 }
 
 std::vector<float> PaintSurface::scattered_light(const Vec3& light, int passes)

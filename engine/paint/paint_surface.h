@@ -71,8 +71,7 @@ struct StepPhases
   double transform = 0; //!< the move (with its weights: move_dab), the smoothing passes or paint_dab
   double rebuild = 0;   //!< a coarse edit: subdivision to the finest level and decoding
   double lists = 0;     //!< the corner neighbourhood and its patch set (host)
-  double limit = 0;     //!< limit positions and normals
-  double bounds = 0;    //!< patch bounds
+  double limit = 0;     //!< limit positions, normals and patch bounds
 };
 
 struct StrokeReport

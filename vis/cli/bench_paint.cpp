@@ -104,10 +104,10 @@ std::array<std::array<double, 3>, 3> coarse_step_times(PaintSurface& surface, St
 }
 
 //! The phases of a step (StepPhases, in its field order) and their sum.
-const char* const kPhaseNames[] = {"place", "record", "weights", "transform", "rebuild", "lists", "limit", "bounds"};
+const char* const kPhaseNames[] = {"place", "record", "weights", "transform", "rebuild", "lists", "limit"};
 constexpr double StepPhases::*kPhaseFields[] = {&StepPhases::place,     &StepPhases::record, &StepPhases::weights,
                                                 &StepPhases::transform, &StepPhases::rebuild, &StepPhases::lists,
-                                                &StepPhases::limit,     &StepPhases::bounds};
+                                                &StepPhases::limit};
 
 //! Median time of each phase of a step at the largest coverage, with a wait
 //! for the device after each phase; the last entry is the whole step's.
