@@ -603,12 +603,15 @@ StrokeReport PaintSurface::apply(const Stroke& stroke)
   stretch_ = 1.f;
   encode_ms_ = 0;
   phases_ = StepPhases();
+  const Timer timer;
   try {
     report = apply_dabs(stroke);
+    atlas_->finish(); // the stroke's time holds all of its device work
   } catch (...) {
     finish_stroke();
     throw;
   }
+  report.ms = timer.ms();
   finish_stroke();
   return report;
 }
@@ -972,7 +975,6 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
 
 StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
 {
-  Timer timer;
   phase_start();
   StrokeReport report;
   BrushDab dab{};
@@ -1020,7 +1022,6 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
       paint(all, dab);
       report.dabs = report.dabs_applied = 1;
       report.patches_touched = all.size();
-      report.ms = timer.ms();
       return report;
     }
     if (stroke.tool == Tool::Grab) {
@@ -1028,7 +1029,6 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
       report.stretch = stretch_;
       report.encode_ms = encode_ms_;
       report.phases = phases_;
-      report.ms = timer.ms();
       return report;
     }
     // The mirror plane passes through the centre of the base mesh's bounds.
@@ -1094,7 +1094,6 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
   report.stretch = stretch_;
   report.encode_ms = encode_ms_;
   report.phases = phases_;
-  report.ms = timer.ms();
   return report;
 }
 
