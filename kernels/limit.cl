@@ -4,19 +4,31 @@
  * vertices (the boundary cross tangents follow Biermann et al., as OpenSubdiv
  * does). Outputs: positions and unit normals, float4 with w = 0 for normals. */
 
+/* The masks are separable: each row b of a 3x3 neighbourhood gives a
+ * smoothed value s and a difference d along the first axis (limit_row),
+ * and limit_rows() combines three rows across. */
+inline void limit_row(float4 left, float4 mid, float4 right, float4 *s, float4 *d)
+{
+  *s = (left + 4.0f * mid + right) * (1.0f / 6.0f);
+  *d = (right - left) * 0.5f;
+}
+
+inline void limit_rows(const float4 *s, const float4 *d, float4 *pos, float4 *nrm)
+{
+  *pos = (s[0] + 4.0f * s[1] + s[2]) * (1.0f / 6.0f);
+  const float4 du = (d[0] + 4.0f * d[1] + d[2]) * (1.0f / 6.0f);
+  const float4 dv = (s[2] - s[0]) * 0.5f;
+  *nrm = (float4)(normalize(cross(du.xyz, dv.xyz)), 0.0f);
+}
+
 /* Limit point and normal from a 3x3 neighbourhood q[(b+1)*3 + (a+1)], where a
  * runs along the first axis and b along the second of a right-handed frame. */
 inline void limit_regular(const float4 *q, float4 *pos, float4 *nrm)
 {
   float4 s[3], d[3];
-  for (int b = 0; b < 3; ++b) {
-    s[b] = (q[3 * b] + 4.0f * q[3 * b + 1] + q[3 * b + 2]) * (1.0f / 6.0f);
-    d[b] = (q[3 * b + 2] - q[3 * b]) * 0.5f;
-  }
-  *pos = (s[0] + 4.0f * s[1] + s[2]) * (1.0f / 6.0f);
-  const float4 du = (d[0] + 4.0f * d[1] + d[2]) * (1.0f / 6.0f);
-  const float4 dv = (s[2] - s[0]) * 0.5f;
-  *nrm = (float4)(normalize(cross(du.xyz, dv.xyz)), 0.0f);
+  for (int b = 0; b < 3; ++b)
+    limit_row(q[3 * b], q[3 * b + 1], q[3 * b + 2], &s[b], &d[b]);
+  limit_rows(s, d, pos, nrm);
 }
 
 /* Lists (patches, edges, rings) select what to update; null: everything.
@@ -43,6 +55,33 @@ TEXEL_INLINE void limit_inside(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 
   limit_regular(q, &pv, &nv);
   ATLAS_STORE(pos, g, p, ij, pv);
   ATLAS_STORE(nrm, g, p, ij, nv);
+}
+
+/* Every texel strictly inside patch p, column by column: walking down a
+ * column, two of the three rows' sums carry over to the next texel (the
+ * same sums, so the same bits as limit_inside()). */
+TEXEL_INLINE void limit_inside_columns(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, int p)
+{
+  const int n = g.x - 1;
+#define ROW_SUMS(i, j, b) \
+  limit_row(ATLAS_LOAD(src, g, p, (int2)((i) - 1, j)), ATLAS_LOAD(src, g, p, (int2)(i, j)), \
+            ATLAS_LOAD(src, g, p, (int2)((i) + 1, j)), &s[b], &d[b])
+  for (int i = 1; i < n; ++i) {
+    float4 s[3], d[3], pv, nv;
+    ROW_SUMS(i, 0, 0);
+    ROW_SUMS(i, 1, 1);
+    for (int j = 1; j < n; ++j) {
+      ROW_SUMS(i, j + 1, 2);
+      limit_rows(s, d, &pv, &nv);
+      ATLAS_STORE(pos, g, p, (int2)(i, j), pv);
+      ATLAS_STORE(nrm, g, p, (int2)(i, j), nv);
+      s[0] = s[1];
+      s[1] = s[2];
+      d[0] = d[1];
+      d[1] = d[2];
+    }
+  }
+#undef ROW_SUMS
 }
 
 /* Texel ij of patch p on a side or corner: entry k of `corners` or `sides`,
@@ -95,15 +134,18 @@ __kernel void limit_tiles(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, __
   TILE_TEXEL_PART(g, list, count, patch_sides, patch_rings, LIMIT_COPY, LIMIT_INSIDE);
 }
 
-/* Range: count; the same with a work item per patch walking its tile
- * (FOR_EACH_TILE_PART), and with buffer storage the patch's tile_bounds()
- * into `bounds` unless it is null. */
+/* Range: count; the same with a work item per patch walking its border
+ * (FOR_EACH_TILE_PART) and then its interior by columns; with buffer
+ * storage also the patch's tile_bounds() into `bounds` unless it is null. */
 __kernel void limit_patches(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, __global const int *list, int count,
                             __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
                             __global const float4 *restrict sides, __global const float4 *restrict corners,
                             __global float4 *restrict bounds)
 {
-  PATCH_ITEM_PARTS(g, list, count, patch_sides, patch_rings, LIMIT_COPY, LIMIT_INSIDE);
+#define LIMIT_LATER(ij) ((void)0)
+  PATCH_ITEM_PARTS(g, list, count, patch_sides, patch_rings, LIMIT_COPY, LIMIT_LATER);
+#undef LIMIT_LATER
+  limit_inside_columns(src, pos, nrm, g, p);
 #ifndef ATLAS_IMAGE
   /* The tile the item has just written, still in its cache: the bounds
    * cost a pass there instead of a kernel over the set. */
