@@ -5,10 +5,25 @@
  * Details are per texel, patch-major. Every stored copy of a side or corner
  * texel decodes in one frame (the first patch's), so the copies stay equal. */
 
-/* Orthonormal frame of texel ij of patch p from the control points around
- * it in its tile (differences along the patch parameters, one-sided at the
- * tile's border): n across them, t the first parameter direction (the
- * second where the first vanishes) with n taken out, b = n x t. Only the
+/* Orthonormal frame from differences d0, d1 of control points along the
+ * two patch parameters: n across them, t the first parameter direction (the
+ * second where the first vanishes) with n taken out, b = n x t. */
+TEXEL_INLINE void frame_of(float3 d0, float3 d1, float3 *t, float3 *b, float3 *n)
+{
+  const float3 d[2] = {d0, d1};
+  const float3 c = cross(d[0], d[1]);
+  *n = dot(c, c) > 1e-30f ? normalize(c) : (float3)(0.0f, 0.0f, 1.0f);
+  float3 u = (float3)(0.0f);
+  for (int axis = 0; axis < 2 && !(dot(u, u) > 1e-30f); ++axis)
+    u = d[axis] - dot(d[axis], *n) * *n;
+  if (!(dot(u, u) > 1e-30f)) /* a collapsed tile: any direction across the normal */
+    u = fabs((*n).x) < 0.9f ? (float3)(1.0f, 0.0f, 0.0f) - (*n).x * *n : (float3)(0.0f, 1.0f, 0.0f) - (*n).y * *n;
+  *t = normalize(u);
+  *b = cross(*n, *t);
+}
+
+/* The frame of texel ij of patch p from the control points around it in
+ * its tile (one-sided differences at the tile's border). Only the
  * smooth surface U is framed, and each texel is encoded and decoded in the
  * frame of one tile, so a frame need not agree across tiles: it must only
  * turn with the surface. */
@@ -21,15 +36,7 @@ TEXEL_INLINE void detail_frame(ATLAS_IN pos, int2 g, int p, int2 ij, float3 *t, 
     const int2 lo = clamp(ij - step, (int2)(0), (int2)(last)), hi = clamp(ij + step, (int2)(0), (int2)(last));
     d[axis] = ATLAS_LOAD(pos, g, p, hi).xyz - ATLAS_LOAD(pos, g, p, lo).xyz;
   }
-  const float3 c = cross(d[0], d[1]);
-  *n = dot(c, c) > 1e-30f ? normalize(c) : (float3)(0.0f, 0.0f, 1.0f);
-  float3 u = (float3)(0.0f);
-  for (int axis = 0; axis < 2 && !(dot(u, u) > 1e-30f); ++axis)
-    u = d[axis] - dot(d[axis], *n) * *n;
-  if (!(dot(u, u) > 1e-30f)) /* a collapsed tile: any direction across the normal */
-    u = fabs((*n).x) < 0.9f ? (float3)(1.0f, 0.0f, 0.0f) - (*n).x * *n : (float3)(0.0f, 1.0f, 0.0f) - (*n).y * *n;
-  *t = normalize(u);
-  *b = cross(*n, *t);
+  frame_of(d[0], d[1], t, b, n);
 }
 
 /* Range: (tile, tile * count), every patch. details = frame(U)^T (S - U). */
@@ -46,13 +53,30 @@ __kernel void encode_details(ATLAS_IN fine, ATLAS_IN smooth, int2 g, int count, 
 }
 
 /* U + frame(U) details at texel ij of patch p. */
+TEXEL_INLINE float4 with_detail(ATLAS_IN smooth, int2 g, int p, int2 ij, __global const float4 *details, float3 t,
+                                float3 b, float3 n)
+{
+  const float4 s = ATLAS_LOAD(smooth, g, p, ij);
+  const float4 d = details[PATCH_MAJOR_INDEX(g, p, ij)];
+  return (float4)(s.xyz + (d.x * t + d.y * b + d.z * n), s.w);
+}
+
 TEXEL_INLINE float4 decoded(ATLAS_IN smooth, int2 g, int p, int2 ij, __global const float4 *details)
 {
   float3 t, b, n;
   detail_frame(smooth, g, p, ij, &t, &b, &n);
-  const float4 s = ATLAS_LOAD(smooth, g, p, ij);
-  const float4 d = details[PATCH_MAJOR_INDEX(g, p, ij)];
-  return (float4)(s.xyz + (d.x * t + d.y * b + d.z * n), s.w);
+  return with_detail(smooth, g, p, ij, details, t, b, n);
+}
+
+/* decoded() for a texel strictly inside its tile, whose differences need
+ * no clamping: the same values, with the loads spelt out. */
+TEXEL_INLINE float4 decoded_inside(ATLAS_IN smooth, int2 g, int p, int2 ij, __global const float4 *details)
+{
+  float3 t, b, n;
+  frame_of(ATLAS_LOAD(smooth, g, p, ij + (int2)(1, 0)).xyz - ATLAS_LOAD(smooth, g, p, ij - (int2)(1, 0)).xyz,
+           ATLAS_LOAD(smooth, g, p, ij + (int2)(0, 1)).xyz - ATLAS_LOAD(smooth, g, p, ij - (int2)(0, 1)).xyz, &t, &b,
+           &n);
+  return with_detail(smooth, g, p, ij, details, t, b, n);
 }
 
 /* Decoding reads U from a layer of the finest level's layout and writes
@@ -72,7 +96,7 @@ TEXEL_INLINE float4 decoded(ATLAS_IN smooth, int2 g, int p, int2 ij, __global co
     if (!(outside[item] & (bit)))                                           \
       ATLAS_STORE(fine, g, p, ij, (corner) ? corners[k] : sides[k]);     \
   } while (0)
-#define DECODE_INSIDE(ij) ATLAS_STORE(fine, g, p, ij, decoded(smooth, g, p, ij, details))
+#define DECODE_INSIDE(ij) ATLAS_STORE(fine, g, p, ij, decoded_inside(smooth, g, p, ij, details))
 
 /* Range: (tile, tile * count). */
 __kernel void decode_tiles(ATLAS_IN smooth, int2 g, __global const int *list, int count,
