@@ -39,17 +39,40 @@ TEXEL_INLINE void detail_frame(ATLAS_IN pos, int2 g, int p, int2 ij, float3 *t, 
   frame_of(d[0], d[1], t, b, n);
 }
 
-/* Range: (tile, tile * count), every patch. details = frame(U)^T (S - U). */
+/* detail_frame() of a texel strictly inside its tile, whose differences
+ * need no clamping: the same values, with the loads spelt out. */
+TEXEL_INLINE void inside_frame(ATLAS_IN pos, int2 g, int p, int2 ij, float3 *t, float3 *b, float3 *n)
+{
+  frame_of(ATLAS_LOAD(pos, g, p, ij + (int2)(1, 0)).xyz - ATLAS_LOAD(pos, g, p, ij - (int2)(1, 0)).xyz,
+           ATLAS_LOAD(pos, g, p, ij + (int2)(0, 1)).xyz - ATLAS_LOAD(pos, g, p, ij - (int2)(0, 1)).xyz, t, b, n);
+}
+
+/* details = frame(U)^T (S - U) at texel ij of patch p. */
+TEXEL_INLINE void encode_texel(ATLAS_IN fine, ATLAS_IN smooth, int2 g, int p, int2 ij, __global float4 *details)
+{
+  const int last = g.x - 1;
+  float3 t, b, n;
+  if (ij.x > 0 && ij.x < last && ij.y > 0 && ij.y < last)
+    inside_frame(smooth, g, p, ij, &t, &b, &n);
+  else
+    detail_frame(smooth, g, p, ij, &t, &b, &n);
+  const float3 d = ATLAS_LOAD(fine, g, p, ij).xyz - ATLAS_LOAD(smooth, g, p, ij).xyz;
+  details[PATCH_MAJOR_INDEX(g, p, ij)] = (float4)(dot(d, t), dot(d, b), dot(d, n), 0.0f);
+}
+
+/* Range: (tile, tile * count), every patch. */
 __kernel void encode_details(ATLAS_IN fine, ATLAS_IN smooth, int2 g, int count, __global float4 *details)
 {
   int p;
   int2 ij;
-  if (!tile_texel(g, 0, count, &p, &ij))
-    return;
-  float3 t, b, n;
-  detail_frame(smooth, g, p, ij, &t, &b, &n);
-  const float3 d = ATLAS_LOAD(fine, g, p, ij).xyz - ATLAS_LOAD(smooth, g, p, ij).xyz;
-  details[PATCH_MAJOR_INDEX(g, p, ij)] = (float4)(dot(d, t), dot(d, b), dot(d, n), 0.0f);
+  if (tile_texel(g, 0, count, &p, &ij))
+    encode_texel(fine, smooth, g, p, ij, details);
+}
+
+/* Range: count; the same with a work item per patch (see FOR_EACH_PATCH_TEXEL). */
+__kernel void encode_patches(ATLAS_IN fine, ATLAS_IN smooth, int2 g, int count, __global float4 *details)
+{
+  FOR_EACH_PATCH_TEXEL(g, (__global const int *)0, count, encode_texel(fine, smooth, g, p, ij, details));
 }
 
 /* U + frame(U) details at texel ij of patch p. */
@@ -68,14 +91,11 @@ TEXEL_INLINE float4 decoded(ATLAS_IN smooth, int2 g, int p, int2 ij, __global co
   return with_detail(smooth, g, p, ij, details, t, b, n);
 }
 
-/* decoded() for a texel strictly inside its tile, whose differences need
- * no clamping: the same values, with the loads spelt out. */
+/* decoded() for a texel strictly inside its tile. */
 TEXEL_INLINE float4 decoded_inside(ATLAS_IN smooth, int2 g, int p, int2 ij, __global const float4 *details)
 {
   float3 t, b, n;
-  frame_of(ATLAS_LOAD(smooth, g, p, ij + (int2)(1, 0)).xyz - ATLAS_LOAD(smooth, g, p, ij - (int2)(1, 0)).xyz,
-           ATLAS_LOAD(smooth, g, p, ij + (int2)(0, 1)).xyz - ATLAS_LOAD(smooth, g, p, ij - (int2)(0, 1)).xyz, &t, &b,
-           &n);
+  inside_frame(smooth, g, p, ij, &t, &b, &n);
   return with_detail(smooth, g, p, ij, details, t, b, n);
 }
 

@@ -18,7 +18,7 @@ constexpr std::size_t kGroup = 64;
 struct Multires::Device
 {
   cl::Program program;
-  cl::Kernel encode, decode_tiles, decode_patches, decode_edges, decode_corners, patch_extent;
+  cl::Kernel encode_details, encode_patches, decode_tiles, decode_patches, decode_edges, decode_corners, patch_extent;
   cl::Memory smooth;    // U = up(base) at the finest level, where it is needed
   cl::Buffer details;   // per finest texel: (t, b, n) coordinates of S - U
   cl::Buffer weights;   // edit-level weights
@@ -34,7 +34,8 @@ Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Devic
   try {
     d.program = build_program(rt, std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "detail.cl"},
                               storage_options(atlas_.storage(), rt.info()));
-    d.encode = cl::Kernel(d.program, "encode_details");
+    d.encode_details = cl::Kernel(d.program, "encode_details");
+    d.encode_patches = cl::Kernel(d.program, "encode_patches");
     d.decode_tiles = cl::Kernel(d.program, "decode_tiles");
     d.decode_patches = cl::Kernel(d.program, "decode_patches");
     d.decode_edges = cl::Kernel(d.program, "decode_edges");
@@ -127,8 +128,8 @@ void Multires::encode(int level)
     // does its limit.
     atlas_.reduce(finest, level);
     atlas_.subdivide(level, finest, nullptr, &d.smooth);
-    const auto tiles = range_tiles(f, f.patches);
-    launch(q, d.encode, tiles.first, tiles.second, fine, d.smooth, grid(f), f.patches, d.details);
+    const Atlas::TileLaunch t = atlas_.tile_launch(d.encode_details, d.encode_patches, f, f.patches);
+    launch(q, t.kernel, t.global, t.local, fine, d.smooth, grid(f), f.patches, d.details);
     launch(q, d.patch_extent, cl::NDRange(round_up(f.patches, kGroup)), cl::NDRange(kGroup), fine, grid(f),
            cl::Buffer(), f.patches, d.extent);
     extent_.resize(std::size_t(f.patches));
