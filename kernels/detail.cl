@@ -186,12 +186,15 @@ __kernel void patch_extent(ATLAS_IN pos, int2 g, __global const int *list, int c
   const int k = get_global_id(0);
   if (k >= count)
     return;
-  const int p = LISTED(list, k), n = g.x - 1;
+  const int p = LISTED(list, k);
+  /* Squared lengths, one square root at the end; along each row, then
+   * between each row and the one before it. */
   float longest = 0.0f;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i < n; ++i) {
-      longest = fmax(longest, distance(ATLAS_LOAD(pos, g, p, (int2)(i, j)).xyz, ATLAS_LOAD(pos, g, p, (int2)(i + 1, j)).xyz));
-      longest = fmax(longest, distance(ATLAS_LOAD(pos, g, p, (int2)(j, i)).xyz, ATLAS_LOAD(pos, g, p, (int2)(j, i + 1)).xyz));
+  for (int j = 0; j < g.x; ++j)
+    for (int i = 1; i < g.x; ++i) {
+      const float3 along = ATLAS_LOAD(pos, g, p, (int2)(i, j)).xyz - ATLAS_LOAD(pos, g, p, (int2)(i - 1, j)).xyz;
+      const float3 across = ATLAS_LOAD(pos, g, p, (int2)(j, i)).xyz - ATLAS_LOAD(pos, g, p, (int2)(j, i - 1)).xyz;
+      longest = fmax(longest, fmax(dot(along, along), dot(across, across)));
     }
-  out[k] = longest;
+  out[k] = sqrt(longest);
 }

@@ -487,14 +487,29 @@ std::uint8_t Atlas::outside_bits(int p) const
     const int q = topology_.across(p, s);
     if (q >= 0 && !patch_marks_.marked(std::size_t(q)))
       bits |= std::uint8_t(1u << s);
-    const CornerRing& ring = topology_.rings[std::size_t(topology_.patch_corners[std::size_t(p)][std::size_t(s)])];
-    for (int m = 0; m < ring.count; ++m)
-      if (!patch_marks_.marked(std::size_t(topology_.slots[std::size_t(ring.first + m)].patch))) {
-        bits |= std::uint8_t(16u << s);
-        break;
-      }
+    if (ring_outside(topology_.patch_corners[std::size_t(p)][std::size_t(s)]))
+      bits |= std::uint8_t(16u << s);
   }
   return bits;
+}
+
+bool Atlas::ring_outside(int v) const
+{
+  // About four patches meet at a corner: each ring is scanned once.
+  if (ring_known_.mark(std::size_t(v))) {
+    const CornerRing& ring = topology_.rings[std::size_t(v)];
+    bool outside = false;
+    for (int m = 0; m < ring.count && !outside; ++m)
+      outside = !patch_marks_.marked(std::size_t(topology_.slots[std::size_t(ring.first + m)].patch));
+    ring_outside_[std::size_t(v)] = outside;
+  }
+  return ring_outside_[std::size_t(v)];
+}
+
+void Atlas::begin_outside() const
+{
+  ring_known_.begin(topology_.rings.size());
+  ring_outside_.resize(topology_.rings.size());
 }
 
 PatchSet Atlas::marked_set(std::vector<int> patches, Reach reach) const
@@ -503,8 +518,10 @@ PatchSet Atlas::marked_set(std::vector<int> patches, Reach reach) const
   set.patches = std::move(patches);
   edge_marks_.begin(topology_.edges.size());
   ring_marks_.begin(topology_.rings.size());
-  if (reach == Reach::All)
+  if (reach == Reach::All) {
     set.outside.reserve(set.patches.size());
+    begin_outside();
+  }
   for (const int p : set.patches) {
     // By Reach::All, a side or corner shared with a patch outside stays out.
     const std::uint8_t outside = reach == Reach::All ? outside_bits(p) : 0;
@@ -529,6 +546,7 @@ std::vector<std::uint8_t> Atlas::shared_outside(const std::vector<int>& patches)
   patch_marks_.begin(std::size_t(topology_.patch_count));
   for (const int p : patches)
     patch_marks_.mark(std::size_t(p));
+  begin_outside();
   std::vector<std::uint8_t> out(patches.size());
   for (std::size_t k = 0; k < patches.size(); ++k)
     out[k] = outside_bits(patches[k]);

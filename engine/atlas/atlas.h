@@ -212,8 +212,12 @@ private:
   Layer make_layer(const LevelLayout& l);
   //! The set of `patches` (in patch order, and the ones patch_marks_ holds).
   PatchSet marked_set(std::vector<int> patches, Reach reach) const;
-  //! PatchSet::outside of patch p, the set being what patch_marks_ holds.
+  //! PatchSet::outside of patch p, the set being what patch_marks_ holds
+  //! (after begin_outside()).
   std::uint8_t outside_bits(int p) const;
+  //! Whether a patch at corner v lies outside that set (kept per ring).
+  bool ring_outside(int v) const;
+  void begin_outside() const;
 
   std::shared_ptr<Runtime> runtime_;
   AtlasStorage storage_;
@@ -231,7 +235,8 @@ private:
   // Scratch of patch_set(), neighbourhood_set() and shared_outside(), which
   // a brush step calls on most of the atlas: kept, so that a call costs only
   // what it visits (and two calls on one atlas must not overlap).
-  mutable Marks patch_marks_, edge_marks_, ring_marks_, ring_seen_;
+  mutable Marks patch_marks_, edge_marks_, ring_marks_, ring_seen_, ring_known_;
+  mutable std::vector<std::uint8_t> ring_outside_; // ring_outside(), where ring_known_
 };
 
 } // namespace meshpaint

@@ -600,7 +600,8 @@ StrokeReport PaintSurface::apply(const Stroke& stroke)
     for (const int id : std::vector<int>(stroke_layers_))
       stroke_layers_.push_back(id + kInsideDiffuse - kDiffuse);
   StrokeReport report;
-  stretch_ = 1.f;
+  stretched_.clear();
+  stretched_marks_.begin(std::size_t(atlas_->topology().patch_count));
   encode_ms_ = 0;
   phases_ = StepPhases();
   const Timer timer;
@@ -914,7 +915,9 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
     const PatchSet around = atlas_->neighbourhood_set(changed);
     phase_done(&StepPhases::lists);
     multires_->reconstruct(changed, around);
-    stretch_ = std::max(stretch_, multires_->stretch(changed));
+    for (const int p : changed)
+      if (stretched_marks_.mark(std::size_t(p)))
+        stretched_.push_back(p);
     phase_done(&StepPhases::rebuild);
     refresh_geometry(around);
   };
@@ -1026,7 +1029,7 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
     }
     if (stroke.tool == Tool::Grab) {
       grab(stroke, dab, report);
-      report.stretch = stretch_;
+      report.stretch = stroke_stretch();
       report.encode_ms = encode_ms_;
       report.phases = phases_;
       return report;
@@ -1091,10 +1094,20 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
   } catch (const cl::Error& e) {
     throw DeviceError("painting failed on " + atlas_->runtime().info().name + ": " + describe(e));
   }
-  report.stretch = stretch_;
+  report.stretch = stroke_stretch();
   report.encode_ms = encode_ms_;
   report.phases = phases_;
   return report;
+}
+
+float PaintSurface::stroke_stretch()
+{
+  if (stretched_.empty())
+    return 1.f;
+  phase_start();
+  const float worst = multires_->stretch(stretched_);
+  phase_done(&StepPhases::rebuild);
+  return worst;
 }
 
 void PaintSurface::grab(const Stroke& stroke, BrushDab& dab, StrokeReport& report)

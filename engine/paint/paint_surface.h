@@ -264,11 +264,15 @@ private:
   //! Records a change of these patches, or of everything, for changes_since().
   void changed(const std::vector<int>& patches);
   void changed_all();
+  //! Multires::stretch of what the running stroke rebuilt, once at its end:
+  //! what the edit leaves is what the warning is about.
+  float stroke_stretch();
 
   std::unique_ptr<Atlas> atlas_;
   int level_;
   std::unique_ptr<Multires> multires_; // details for edits at a coarser level, made on first use
-  float stretch_ = 1.f;                // the running stroke's worst Multires::stretch
+  std::vector<int> stretched_;         // patches the running stroke rebuilt from a coarser level
+  Marks stretched_marks_;              // per patch: in stretched_
   double encode_ms_ = 0;               // the running stroke's encoding time
   bool mask_painted_ = false;          // a mask may be set somewhere (else weights skip reading it)
   bool time_phases_ = false;
