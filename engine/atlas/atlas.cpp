@@ -400,8 +400,8 @@ void Atlas::subdivide(int from_level, int to_level, const PatchSet* set, const c
              k.patch_rings, k.side_work, k.corner_work);
     }
   }
-  if (set)
-    q.finish(); // the lists live until here
+  // No wait: a list released here lives on until the kernels using it end,
+  // and the host goes on with its next sets while they run.
 }
 
 void Atlas::reduce(int from_level, int to_level)
@@ -465,8 +465,6 @@ void Atlas::compute_limit_of(int level, const cl::Memory& pos, const cl::Memory&
     if (bounds && !fused)
       launch(q, k.patch_bounds, range1d(patches), kLocal1D, pos, grid(l), patch_list, patches, *bounds);
   }
-  if (set)
-    q.finish(); // the lists live until here
 }
 
 PatchSet Atlas::patch_set(const std::vector<int>& patches, Reach reach) const

@@ -170,6 +170,7 @@ void Multires::reconstruct(const std::vector<int>& affected, const PatchSet& aro
   // as it is now, whatever changed it since the encoding (an undo, a stroke
   // elsewhere).
   atlas_.subdivide(level_, finest, &around, &d.smooth);
+  // Made while the subdivision runs.
   const PatchSet set = atlas_.patch_set(affected, Reach::All);
   const cl::Buffer patches = device_ints(rt.context(), set.patches), edges = device_ints(rt.context(), set.edges),
                    rings = device_ints(rt.context(), set.rings);
@@ -189,7 +190,6 @@ void Multires::reconstruct(const std::vector<int>& affected, const PatchSet& aro
     launch(q, t.kernel, t.global, t.local, d.smooth, grid(f), patches, count, d.details, fine, work.patch_sides,
            work.patch_rings, work.sides, work.corners, kept);
   }
-  q.finish(); // the lists live until here
 }
 
 float Multires::stretch(const std::vector<int>& patches)
