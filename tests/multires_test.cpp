@@ -118,13 +118,16 @@ TEST(Multires, DetailsFollowARigidMotionOfTheBase)
   EXPECT_LT(worst, 1e-4 * b.diagonal);
 }
 
-TEST(Multires, RebuildingTheReachEqualsRebuildingEverything)
+//! An edit of the base at `edit_level` near one point, rebuilt on the
+//! reach of the patches it moved, against everything rebuilt.
+void expect_reach_enough(int edit_level)
 {
+  SCOPED_TRACE("edit level " + std::to_string(edit_level));
   BumpyAtlas b;
   Multires multires(b.atlas);
-  multires.encode(2);
+  multires.encode(edit_level);
   // Move the base near one point, smoothly, the same for every copy.
-  std::vector<Float4> base = b.atlas.read_positions(2);
+  std::vector<Float4> base = b.atlas.read_positions(edit_level);
   const Float4 at = base[base.size() / 3];
   for (Float4& p : base) {
     const double d = distance(p, at);
@@ -132,12 +135,13 @@ TEST(Multires, RebuildingTheReachEqualsRebuildingEverything)
       for (int k = 0; k < 3; ++k)
         p[k] += float(0.2 * (1 - d / 0.5) * (k == 2 ? 1.0 : 0.3));
   }
-  b.atlas.write_positions(2, base);
+  b.atlas.write_positions(edit_level, base);
+  // Every patch holding a copy of a moved point, as a brush's patches are.
   std::vector<int> moved;
-  const LevelLayout l2 = b.atlas.layout(2);
-  for (int p = 0; p < l2.patches; ++p)
-    for (int t = 0; t < l2.tile * l2.tile; ++t)
-      if (distance(base[l2.index(p, 0, 0) + std::size_t(t)], at) < 0.6) {
+  const LevelLayout le = b.atlas.layout(edit_level);
+  for (int p = 0; p < le.patches; ++p)
+    for (int t = 0; t < le.tile * le.tile; ++t)
+      if (distance(base[le.index(p, 0, 0) + std::size_t(t)], at) < 0.6) {
         moved.push_back(p);
         break;
       }
@@ -151,6 +155,12 @@ TEST(Multires, RebuildingTheReachEqualsRebuildingEverything)
   EXPECT_LT(worst, 1e-6 * b.diagonal);
   EXPECT_FALSE(same_bits(local, b.fine));
   EXPECT_EQ(test::differing_copies(b.atlas.topology(), b.atlas.layout(kLevel), local), 0u);
+}
+
+TEST(Multires, RebuildingTheReachEqualsRebuildingEverything)
+{
+  for (int level = 1; level <= 3; ++level)
+    expect_reach_enough(level);
 }
 
 Stroke coarse_inflate(const Vec3& centre, float radius, float amount, int edit_level)

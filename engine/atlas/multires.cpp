@@ -144,9 +144,13 @@ void Multires::encode(int level)
 
 std::vector<int> Multires::reach(const std::vector<int>& patches) const
 {
-  // Each level of subdivision spreads a change by one face of that level:
-  // less than two faces of the edit level in all, plus the limit stencil.
-  return atlas_.topology().corner_neighbourhood(patches, atlas_.layout(level_).n >= 4 ? 1 : 2);
+  // What an edit moves has every patch holding a copy of it in `patches`
+  // (its weights are 0 on what they share with others). The first step of
+  // subdivision stays inside those patches; each further step spreads by
+  // a face of its level, and the frames by a finest texel: less than one
+  // patch in all, so one ring. The limit stencil is the caller's
+  // neighbourhood_set().
+  return atlas_.topology().corner_neighbourhood(patches, 1);
 }
 
 void Multires::reconstruct(const std::vector<int>& affected)

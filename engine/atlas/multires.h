@@ -67,7 +67,8 @@ public:
   void encode(int level);
 
   //! Patches whose finest texels can change when the edit level changes on
-  //! `patches`: the Catmull-Clark support, two faces of the edit level.
+  //! `patches`, where every patch holding a copy of a moved point is in
+  //! `patches`: they and one ring around them.
   std::vector<int> reach(const std::vector<int>& patches) const;
 
   //! Rebuilds the finest level from the edit level on `affected` (from
