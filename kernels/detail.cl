@@ -206,7 +206,7 @@ __kernel void patch_extent(ATLAS_IN pos, int2 g, __global const int *list, int c
     for (int i = 1; i < g.x; ++i) {
       const float3 along = ATLAS_LOAD(pos, g, p, (int2)(i, j)).xyz - ATLAS_LOAD(pos, g, p, (int2)(i - 1, j)).xyz;
       const float3 across = ATLAS_LOAD(pos, g, p, (int2)(j, i)).xyz - ATLAS_LOAD(pos, g, p, (int2)(j, i - 1)).xyz;
-      longest = fmax(longest, fmax(dot(along, along), dot(across, across)));
+      longest = max(longest, max(dot(along, along), dot(across, across))); /* finite: see tile_bounds() */
     }
   out[k] = sqrt(longest);
 }
