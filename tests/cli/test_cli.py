@@ -198,12 +198,21 @@ def test_bench_json_line(tmp_path, cube):
         assert key in result
     assert result["vertices"] == 386
     assert result["max_deviation"] <= 1e-5
+    assert_host_memory(result)
+
+
+def assert_host_memory(result):
+    # the host's dependent-read probe rides with every bench's figures
+    probe = result["host_memory_ns"]
+    assert set(probe) == {"2MiB", "64MiB"}
+    assert all(0 < ns < 1e6 for ns in probe.values()), probe
 
 
 def test_bench_paint_phases_account_for_the_step():
     r = run("bench", "paint", "--mesh", "femur", "--steps", "1", "--phases", "--json")
     assert r.returncode == 0, r.stderr
     result = json.loads(r.stdout.strip().splitlines()[-1])
+    assert_host_memory(result)
     rows = {row["step"]: row for row in result["phases"]}
     assert set(rows) == {"sculpt 50%", "coarse sculpt 50%"}
     names = ("place", "record", "weights", "transform", "rebuild", "lists", "limit")

@@ -2,6 +2,7 @@
 // in one run on the same mesh and level, with the results compared.
 
 #include "commands.h"
+#include "host_memory.h"
 #include "table.h"
 
 #include "atlas/atlas.h"
@@ -104,7 +105,7 @@ int bench_subdivide(const Args& args)
               << ",\"engine_gb_per_s\":" << gbps(engine_bytes, e_ms)
               << ",\"opensubdiv_gb_per_s\":" << gbps(peer.bytes_moved(), o_ms)
               << ",\"atlas_setup_ms\":" << atlas_ms << ",\"stencil_build_ms\":" << peer.build_ms()
-              << ",\"max_deviation\":" << deviation << "}\n";
+              << ",\"max_deviation\":" << deviation << ",\"host_memory_ns\":" << probe_host_memory().json() << "}\n";
     return 0;
   }
   std::ostream& os = std::cout;
@@ -113,7 +114,8 @@ int bench_subdivide(const Args& args)
      << " faces; level " << level << ": " << grouped(verts) << " vertices (" << grouped(texels)
      << " atlas texels)\n";
   os << "  device " << runtime->info().summary() << ", " << storage_name(storage) << " storage; median of "
-     << repeats << " runs after a warm-up\n\n";
+     << repeats << " runs after a warm-up\n"
+     << "  " << probe_host_memory().text() << "\n\n";
   Table table({"method", "median ms", "min ms", "Mverts/s", "GB/s"});
   table.add({"meshpaint kernels (levels 1->" + std::to_string(level) + ")", format_fixed(e_ms, 2),
              format_fixed(min_of(engine), 2), format_fixed(mverts(e_ms), 1),

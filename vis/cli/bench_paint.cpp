@@ -3,6 +3,7 @@
 // and OpenMesh on the same surface, all in one run.
 
 #include "commands.h"
+#include "host_memory.h"
 #include "table.h"
 
 #include "SurfaceConversion.h"
@@ -323,9 +324,10 @@ int bench_paint(const Args& args)
                      ",\"meshpaint_stroke_ms\":" + std::to_string(r.meshpaint_stroke_ms) + "}";
     }
   }
+  const HostMemory host = probe_host_memory();
   if (json) {
     std::cout << "{\"tool\":" << json_string(tool) << ",\"steps\":" << steps << ",\"device\":"
-              << json_string(runtime->info().name) << ",\"brush\":[" << json_rows << "],\"smoothing\":["
+              << json_string(runtime->info().name) << ",\"host_memory_ns\":" << host.json() << ",\"brush\":[" << json_rows << "],\"smoothing\":["
               << json_smooth << "],\"coarse_edit\":[" << json_coarse << "]"
               << (phases ? ",\"phases\":[" + json_phases + "]" : std::string()) << "}\n";
     return 0;
@@ -333,7 +335,8 @@ int bench_paint(const Args& args)
   std::cout << "meshpaint bench paint: one " << tool << " brush step (culling, weights, transformation"
             << (tool == "sculpt" ? ", limit normals and bounds on the touched patches" : "")
             << "), median of " << steps << " steps after a warm-up; rendering not included\n"
-            << "  device " << runtime->info().summary() << ", " << storage_name(storage) << " storage\n\n";
+            << "  device " << runtime->info().summary() << ", " << storage_name(storage) << " storage\n"
+            << "  " << host.text() << "\n\n";
   table.print(std::cout);
   std::cout << "\n  the paper's figures (GeForce 7800) include rendering at 800x600\n\n"
             << "full-surface Laplacian smoothing, per iteration: runs of 10 and of 10 + N iterations (medians\n"
