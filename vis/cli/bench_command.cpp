@@ -94,6 +94,7 @@ int bench_subdivide(const Args& args)
   const auto mverts = [&](double ms) { return double(verts) / (ms * 1e3); };
   const auto gbps = [](std::size_t bytes, double ms) { return double(bytes) / (ms * 1e6); };
 
+  const HostMemory host = probe_host_memory();
   if (json) {
     std::cout << "{\"mesh\":" << json_string(path) << ",\"level\":" << level << ",\"vertices\":" << verts
               << ",\"texels\":" << texels << ",\"device\":" << json_string(runtime->info().name) << ",\"storage\":\""
@@ -105,7 +106,7 @@ int bench_subdivide(const Args& args)
               << ",\"engine_gb_per_s\":" << gbps(engine_bytes, e_ms)
               << ",\"opensubdiv_gb_per_s\":" << gbps(peer.bytes_moved(), o_ms)
               << ",\"atlas_setup_ms\":" << atlas_ms << ",\"stencil_build_ms\":" << peer.build_ms()
-              << ",\"max_deviation\":" << deviation << ",\"host_memory_ns\":" << probe_host_memory().json() << "}\n";
+              << ",\"max_deviation\":" << deviation << ",\"host_memory_ns\":" << host.json() << "}\n";
     return 0;
   }
   std::ostream& os = std::cout;
@@ -115,7 +116,7 @@ int bench_subdivide(const Args& args)
      << " atlas texels)\n";
   os << "  device " << runtime->info().summary() << ", " << storage_name(storage) << " storage; median of "
      << repeats << " runs after a warm-up\n"
-     << "  " << probe_host_memory().text() << "\n\n";
+     << "  " << host.text() << "\n\n";
   Table table({"method", "median ms", "min ms", "Mverts/s", "GB/s"});
   table.add({"meshpaint kernels (levels 1->" + std::to_string(level) + ")", format_fixed(e_ms, 2),
              format_fixed(min_of(engine), 2), format_fixed(mverts(e_ms), 1),

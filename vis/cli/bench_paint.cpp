@@ -327,8 +327,8 @@ int bench_paint(const Args& args)
   const HostMemory host = probe_host_memory();
   if (json) {
     std::cout << "{\"tool\":" << json_string(tool) << ",\"steps\":" << steps << ",\"device\":"
-              << json_string(runtime->info().name) << ",\"host_memory_ns\":" << host.json() << ",\"brush\":[" << json_rows << "],\"smoothing\":["
-              << json_smooth << "],\"coarse_edit\":[" << json_coarse << "]"
+              << json_string(runtime->info().name) << ",\"host_memory_ns\":" << host.json() << ",\"brush\":["
+              << json_rows << "],\"smoothing\":[" << json_smooth << "],\"coarse_edit\":[" << json_coarse << "]"
               << (phases ? ",\"phases\":[" + json_phases + "]" : std::string()) << "}\n";
     return 0;
   }
