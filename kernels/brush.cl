@@ -9,14 +9,14 @@
 #define CHANNEL_INDEX(tile, p, ij) (((p) * (tile) + (ij).y) * (tile) + (ij).x)
 
 /* Distance from c to the closest texel of patch p (its tile index in
- * *texel), and in side[s] to the closest texel on side s. */
-inline float patch_distances(ATLAS_IN pos, int2 g, int p, float3 c, float side[4], int *texel)
+ * *texel), and in component s of *side to the closest texel on side s (a
+ * vector, not an array: PoCL keeps private arrays in memory). */
+inline float patch_distances(ATLAS_IN pos, int2 g, int p, float3 c, float4 *side, int *texel)
 {
   const int n = g.x - 1;
   float best = INFINITY;
+  float4 sides = (float4)(INFINITY);
   *texel = 0;
-  for (int s = 0; s < 4; ++s)
-    side[s] = INFINITY;
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) {
       const float d = distance(ATLAS_LOAD(pos, g, p, (int2)(i, j)).xyz, c);
@@ -24,11 +24,12 @@ inline float patch_distances(ATLAS_IN pos, int2 g, int p, float3 c, float side[4
         best = d;
         *texel = j * g.x + i;
       }
-      if (j == 0) side[0] = fmin(side[0], d);
-      if (i == n) side[1] = fmin(side[1], d);
-      if (j == n) side[2] = fmin(side[2], d);
-      if (i == 0) side[3] = fmin(side[3], d);
+      if (j == 0) sides.x = fmin(sides.x, d);
+      if (i == n) sides.y = fmin(sides.y, d);
+      if (j == n) sides.z = fmin(sides.z, d);
+      if (i == 0) sides.w = fmin(sides.w, d);
     }
+  *side = sides;
   return best;
 }
 
@@ -54,8 +55,8 @@ __kernel void brush_cull(ATLAS_IN pos, ATLAS_IN nrm, int2 g, int patches, __glob
   if (sqrt(dot(d, d)) - b.w > nearest + 1e-5f * (b.w + nearest))
     return;
   CullRecord r;
-  float side[4]; /* the flood's business (brush_reach), not the snap's */
-  r.distance = patch_distances(pos, g, p, centre.xyz, side, &r.closest_texel);
+  float4 side; /* the flood's business (brush_reach), not the snap's */
+  r.distance = patch_distances(pos, g, p, centre.xyz, &side, &r.closest_texel);
   if (r.distance > as_float(atomic_min(&counters[1], as_int(r.distance))))
     return;
   const int k = atomic_inc(&counters[0]);
@@ -88,12 +89,11 @@ __kernel void brush_reach(ATLAS_IN pos, int2 g, int patches, __global const floa
   if (to_sphere + b.w <= reach) {
     sides = 15;
   } else if (!(to_sphere - b.w > reach)) {
-    float side[4];
+    float4 side;
     int texel;
-    if (!(patch_distances(pos, g, p, centre.xyz, side, &texel) > reach)) {
-      sides = 0;
-      for (int s = 0; s < 4; ++s)
-        sides |= (side[s] <= reach) << s;
+    if (!(patch_distances(pos, g, p, centre.xyz, &side, &texel) > reach)) {
+      const int4 in = -(side <= (float4)(reach)); /* a vector compare gives -1 for true */
+      sides = (uchar)(in.x | in.y << 1 | in.z << 2 | in.w << 3);
     }
   }
   open[p] = sides;

@@ -23,11 +23,10 @@ TEXEL_INLINE void frame_of(float3 d0, float3 d1, float3 *t, float3 *b, float3 *n
     *b = cross(*n, *t);
     return;
   }
-  const float3 d[2] = {d0, d1};
   *n = squares.x > 1e-30f ? normalize(c) : (float3)(0.0f, 0.0f, 1.0f);
-  float3 u = (float3)(0.0f);
-  for (int axis = 0; axis < 2 && !(dot(u, u) > 1e-30f); ++axis)
-    u = d[axis] - dot(d[axis], *n) * *n;
+  float3 u = d0 - dot(d0, *n) * *n;
+  if (!(dot(u, u) > 1e-30f))
+    u = d1 - dot(d1, *n) * *n;
   if (!(dot(u, u) > 1e-30f)) /* a collapsed tile: any direction across the normal */
     u = fabs((*n).x) < 0.9f ? (float3)(1.0f, 0.0f, 0.0f) - (*n).x * *n : (float3)(0.0f, 1.0f, 0.0f) - (*n).y * *n;
   *t = normalize(u);
@@ -41,14 +40,13 @@ TEXEL_INLINE void frame_of(float3 d0, float3 d1, float3 *t, float3 *b, float3 *n
  * turn with the surface. */
 TEXEL_INLINE void detail_frame(ATLAS_IN pos, int2 g, int p, int2 ij, float3 *t, float3 *b, float3 *n)
 {
-  const int last = g.x - 1;
-  float3 d[2];
-  for (int axis = 0; axis < 2; ++axis) {
-    const int2 step = axis == 0 ? (int2)(1, 0) : (int2)(0, 1);
-    const int2 lo = clamp(ij - step, (int2)(0), (int2)(last)), hi = clamp(ij + step, (int2)(0), (int2)(last));
-    d[axis] = ATLAS_LOAD(pos, g, p, hi).xyz - ATLAS_LOAD(pos, g, p, lo).xyz;
-  }
-  frame_of(d[0], d[1], t, b, n);
+  /* Named values, not an array: PoCL keeps private arrays in memory, a
+   * copy per work item. */
+  const int2 last = (int2)(g.x - 1);
+#define DIFF(step) \
+  (ATLAS_LOAD(pos, g, p, min(ij + (step), last)).xyz - ATLAS_LOAD(pos, g, p, max(ij - (step), (int2)(0))).xyz)
+  frame_of(DIFF((int2)(1, 0)), DIFF((int2)(0, 1)), t, b, n);
+#undef DIFF
 }
 
 /* detail_frame() of a texel strictly inside its tile, whose differences

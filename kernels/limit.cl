@@ -13,22 +13,39 @@ inline void limit_row(float4 left, float4 mid, float4 right, float4 *s, float4 *
   *d = (right - left) * 0.5f;
 }
 
-inline void limit_rows(const float4 *s, const float4 *d, float4 *pos, float4 *nrm)
+inline void limit_rows(float4 s0, float4 s1, float4 s2, float4 d0, float4 d1, float4 d2, float4 *pos, float4 *nrm)
 {
-  *pos = (s[0] + 4.0f * s[1] + s[2]) * (1.0f / 6.0f);
-  const float4 du = (d[0] + 4.0f * d[1] + d[2]) * (1.0f / 6.0f);
-  const float4 dv = (s[2] - s[0]) * 0.5f;
+  *pos = (s0 + 4.0f * s1 + s2) * (1.0f / 6.0f);
+  const float4 du = (d0 + 4.0f * d1 + d2) * (1.0f / 6.0f);
+  const float4 dv = (s2 - s0) * 0.5f;
   *nrm = (float4)(normalize(cross(du.xyz, dv.xyz)), 0.0f);
 }
 
-/* Limit point and normal from a 3x3 neighbourhood q[(b+1)*3 + (a+1)], where a
- * runs along the first axis and b along the second of a right-handed frame. */
-inline void limit_regular(const float4 *q, float4 *pos, float4 *nrm)
+/* Limit point and normal from a 3x3 neighbourhood in three rows of three
+ * (across a0..a2, along m0..m2, inwards i0..i2), the first axis running
+ * along a row and the second across the rows, a right-handed frame. Named
+ * values, not arrays: PoCL kept a kernel's private arrays in memory, one
+ * copy per work item, and the window's loads and stores through it were a
+ * quarter of the side kernel's time. */
+inline void limit_window(float4 a0, float4 a1, float4 a2, float4 m0, float4 m1, float4 m2, float4 i0, float4 i1,
+                         float4 i2, float4 *pos, float4 *nrm)
 {
-  float4 s[3], d[3];
-  for (int b = 0; b < 3; ++b)
-    limit_row(q[3 * b], q[3 * b + 1], q[3 * b + 2], &s[b], &d[b]);
-  limit_rows(s, d, pos, nrm);
+  float4 s0, s1, s2, d0, d1, d2;
+  limit_row(a0, a1, a2, &s0, &d0);
+  limit_row(m0, m1, m2, &s1, &d1);
+  limit_row(i0, i1, i2, &s2, &d2);
+  limit_rows(s0, s1, s2, d0, d1, d2, pos, nrm);
+}
+
+/* A mesh boundary's: the crease curve's limit from the row along (m) and a
+ * B-spline cross tangent towards the row inwards (i). */
+inline void limit_crease_window(float4 m0, float4 m1, float4 m2, float4 i0, float4 i1, float4 i2, float4 *pos,
+                                float4 *nrm)
+{
+  const float4 s0 = (m0 + 4.0f * m1 + m2) * (1.0f / 6.0f);
+  const float4 s1 = (i0 + 4.0f * i1 + i2) * (1.0f / 6.0f);
+  *pos = s0;
+  *nrm = (float4)(normalize(cross(((m2 - m0) * 0.5f).xyz, (s1 - s0).xyz)), 0.0f);
 }
 
 /* Lists (patches, edges, rings) select what to update; null: everything.
@@ -48,11 +65,11 @@ inline void limit_regular(const float4 *q, float4 *pos, float4 *nrm)
 /* Texel ij strictly inside patch p, from its 3x3 neighbourhood. */
 TEXEL_INLINE void limit_inside(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, int p, int2 ij)
 {
-  float4 q[9], pv, nv;
-  for (int b = -1; b <= 1; ++b)
-    for (int a = -1; a <= 1; ++a)
-      q[3 * (b + 1) + a + 1] = ATLAS_LOAD(src, g, p, ij + (int2)(a, b));
-  limit_regular(q, &pv, &nv);
+#define AT(a, b) ATLAS_LOAD(src, g, p, ij + (int2)(a, b))
+  float4 pv, nv;
+  limit_window(AT(-1, -1), AT(0, -1), AT(1, -1), AT(-1, 0), AT(0, 0), AT(1, 0), AT(-1, 1), AT(0, 1), AT(1, 1), &pv,
+               &nv);
+#undef AT
   ATLAS_STORE(pos, g, p, ij, pv);
   ATLAS_STORE(nrm, g, p, ij, nv);
 }
@@ -63,22 +80,22 @@ TEXEL_INLINE void limit_inside(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 
 TEXEL_INLINE void limit_inside_columns(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, int p)
 {
   const int n = g.x - 1;
-#define ROW_SUMS(i, j, b) \
+#define ROW_SUMS(i, j, s, d) \
   limit_row(ATLAS_LOAD(src, g, p, (int2)((i) - 1, j)), ATLAS_LOAD(src, g, p, (int2)(i, j)), \
-            ATLAS_LOAD(src, g, p, (int2)((i) + 1, j)), &s[b], &d[b])
+            ATLAS_LOAD(src, g, p, (int2)((i) + 1, j)), &s, &d)
   for (int i = 1; i < n; ++i) {
-    float4 s[3], d[3], pv, nv;
-    ROW_SUMS(i, 0, 0);
-    ROW_SUMS(i, 1, 1);
+    float4 s0, s1, s2, d0, d1, d2, pv, nv;
+    ROW_SUMS(i, 0, s0, d0);
+    ROW_SUMS(i, 1, s1, d1);
     for (int j = 1; j < n; ++j) {
-      ROW_SUMS(i, j + 1, 2);
-      limit_rows(s, d, &pv, &nv);
+      ROW_SUMS(i, j + 1, s2, d2);
+      limit_rows(s0, s1, s2, d0, d1, d2, &pv, &nv);
       ATLAS_STORE(pos, g, p, (int2)(i, j), pv);
       ATLAS_STORE(nrm, g, p, (int2)(i, j), nv);
-      s[0] = s[1];
-      s[1] = s[2];
-      d[0] = d[1];
-      d[1] = d[2];
+      s0 = s1;
+      s1 = s2;
+      d0 = d1;
+      d1 = d2;
     }
   }
 #undef ROW_SUMS
@@ -170,50 +187,37 @@ __kernel void limit_edges(ATLAS_IN src, __global float4 *restrict sides, __globa
   EDGE_FRAMES(e, g);
   const int interior = e.patch[1] >= 0;
   const int first = edge * (g.x - 2) - 1; /* pair of texel t: first + t */
-  /* A 3x3 window slides along the side: one new column per texel. Rows
-   * b = -1 (across), 0 (the side), 1 (inwards); on a mesh boundary the row
-   * across is never read. */
-  float4 q[9];
-  for (int a = 0; a < 2; ++a) {
-    q[a + 3] = EDGE_LOAD(src, g, a, 0);
-    q[a + 6] = EDGE_LOAD(src, g, a, 1);
-    q[a] = interior ? EDGE_LOAD(src, g, a, -1) : q[a + 3];
-  }
+  /* A 3x3 window slides along the side, one new column per texel: rows
+   * across (a), along the side (m) and inwards (i); on a mesh boundary the
+   * row across is never read. */
+  float4 m0 = EDGE_LOAD(src, g, 0, 0), m1 = EDGE_LOAD(src, g, 1, 0);
+  float4 i0 = EDGE_LOAD(src, g, 0, 1), i1 = EDGE_LOAD(src, g, 1, 1);
+  float4 a0 = interior ? EDGE_LOAD(src, g, 0, -1) : m0, a1 = interior ? EDGE_LOAD(src, g, 1, -1) : m1;
   for (int t = 1; t < g.x - 1; ++t) {
-    q[5] = EDGE_LOAD(src, g, t + 1, 0);
-    q[8] = EDGE_LOAD(src, g, t + 1, 1);
-    q[2] = interior ? EDGE_LOAD(src, g, t + 1, -1) : q[5];
+    const float4 m2 = EDGE_LOAD(src, g, t + 1, 0), i2 = EDGE_LOAD(src, g, t + 1, 1);
+    const float4 a2 = interior ? EDGE_LOAD(src, g, t + 1, -1) : m2;
     float4 pv, nv;
-    if (interior) {
-      limit_regular(q, &pv, &nv);
-    } else {
-      /* Mesh boundary: the crease curve's limit and a B-spline cross tangent. */
-      const float4 s0 = (q[3] + 4.0f * q[4] + q[5]) * (1.0f / 6.0f);
-      const float4 s1 = (q[6] + 4.0f * q[7] + q[8]) * (1.0f / 6.0f);
-      pv = s0;
-      nv = (float4)(normalize(cross(((q[5] - q[3]) * 0.5f).xyz, (s1 - s0).xyz)), 0.0f);
-    }
+    if (interior)
+      limit_window(a0, a1, a2, m0, m1, m2, i0, i1, i2, &pv, &nv);
+    else
+      limit_crease_window(m0, m1, m2, i0, i1, i2, &pv, &nv);
     PAIR_STORE(sides, first + t, pv, nv);
-    for (int b = 0; b < 9; b += 3) {
-      q[b] = q[b + 1];
-      q[b + 1] = q[b + 2];
-    }
+    a0 = a1;
+    a1 = a2;
+    m0 = m1;
+    m1 = m2;
+    i0 = i1;
+    i1 = i2;
   }
 }
 
-/* Range: count; each patch corner's ring, into `corners`. The masks' trigonometry
+/* The limit point and normal of ring r's vertex. The masks' trigonometry
  * comes per valence m from `valences` (entries 2m, 2m + 1: see
- * limit_constants() in atlas.cpp); multiples of the angle by rotation. */
-__kernel void limit_corners(ATLAS_IN src, __global float4 *restrict corners, __global const CornerRing *rings,
-                            __global const CornerSlot *slots, __global const float4 *restrict valences,
-                            __global const int *list, int count, int2 g)
+ * limit_constants() in atlas.cpp); multiples of the angle by rotation.
+ * Summed from the ring's first slot whichever patch asks. */
+TEXEL_INLINE void limit_ring(ATLAS_IN src, int2 g, const CornerRing ring, __global const CornerSlot *slots,
+                             __global const float4 *restrict valences, float4 *pos, float4 *nrm)
 {
-  const int k = get_global_id(0);
-  if (k >= count)
-    return;
-  const int r = LISTED(list, k);
-  const CornerRing ring = rings[r];
-  PREFETCH_RING_AHEAD(src, g, rings, slots, list, k, count);
   const int m = ring.count;
   const CornerSlot first = slots[ring.first], last = slots[ring.first + m - 1];
   const float4 v = CORNER_LOAD(src, g, first, 0, 0);
@@ -271,5 +275,21 @@ __kernel void limit_corners(ATLAS_IN src, __global float4 *restrict corners, __g
     }
     p = (fm * fm * v + 4.0f * es + ds) * (1.0f / (fm * (fm + 5.0f)));
   }
-  PAIR_STORE(corners, r, p, (float4)(normalize(cross(t1.xyz, t2.xyz)), 0.0f));
+  *pos = p;
+  *nrm = (float4)(normalize(cross(t1.xyz, t2.xyz)), 0.0f);
+}
+
+/* Range: count; each patch corner's ring, into `corners`. */
+__kernel void limit_corners(ATLAS_IN src, __global float4 *restrict corners, __global const CornerRing *rings,
+                            __global const CornerSlot *slots, __global const float4 *restrict valences,
+                            __global const int *list, int count, int2 g)
+{
+  const int k = get_global_id(0);
+  if (k >= count)
+    return;
+  const int r = LISTED(list, k);
+  PREFETCH_RING_AHEAD(src, g, rings, slots, list, k, count);
+  float4 pv, nv;
+  limit_ring(src, g, rings[r], slots, valences, &pv, &nv);
+  PAIR_STORE(corners, r, pv, nv);
 }
