@@ -836,6 +836,14 @@ void PaintSurface::weigh(const std::vector<int>& patches, const cl::Buffer& list
   const LevelLayout f = atlas_->layout(level_), l = atlas_->layout(level);
   const bool coarse = level < level_;
   const int stride = f.n / l.n;
+  // The outside bits first: the blocking write below waits for the kernels
+  // queued before it (a coarse edit's limit), which run meanwhile.
+  cl::Buffer outside;
+  if (coarse) {
+    std::vector<std::uint8_t> bits = atlas_->shared_outside(patches);
+    bits.resize(std::max<std::size_t>(1, bits.size())); // a valid argument when empty
+    outside = cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bits.size(), bits.data());
+  }
   BrushDab at_level = dab; // parameter space counts texels of the level
   for (float& c : at_level.centre_texel)
     c /= float(stride);
@@ -843,12 +851,6 @@ void PaintSurface::weigh(const std::vector<int>& patches, const cl::Buffer& list
   rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof at_level, &at_level);
   const int count = int(patches.size());
   const auto tiles = range_tiles(l, count);
-  cl::Buffer outside;
-  if (coarse) {
-    std::vector<std::uint8_t> bits = atlas_->shared_outside(patches);
-    bits.resize(std::max<std::size_t>(1, bits.size())); // a valid argument when empty
-    outside = cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bits.size(), bits.data());
-  }
   launch(rt.queue(), d.dab_weights, tiles.first, tiles.second,
          coarse ? multires_->base_positions() : atlas_->limit_positions_layer(),
          coarse ? multires_->base_normals() : atlas_->limit_normals_layer(), grid(l), list, count, d.dab, d.unfold,
@@ -881,6 +883,14 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
       atlas_->runtime().queue().finish();
       encode_ms_ += encoding.ms();
     }
+    // The edit level's limit, which the weights stand on, is computed on
+    // the device while the host works out what the edit reaches (and, in
+    // weigh(), which sides it shares): neither waits for the other.
+    phase_done(&StepPhases::record); // the encoding, if any
+    if (reweigh) {
+      multires_->compute_base_limit(patches);
+      phase_done(&StepPhases::weights);
+    }
     changed = multires_->reach(patches);
   } else if (!stroke.target_colour && multires_) {
     multires_->detach();
@@ -900,11 +910,8 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   // weights are kept only where something reads them again: a grab's later
   // dabs, smoothing passes, a coarse edit.
   const bool weigh_as_moved = moves && !coarse && stroke.tool != Tool::Grab;
-  if (reweigh && !weigh_as_moved) {
-    if (coarse)
-      multires_->compute_base_limit(patches);
+  if (reweigh && !weigh_as_moved)
     weigh(patches, list, dab, level);
-  }
   phase_done(&StepPhases::weights);
   const cl::Buffer& weights = coarse ? multires_->base_weights() : d.weights;
   const auto geometry_done = [&] {
