@@ -480,14 +480,20 @@ PatchSet Atlas::patch_set(const std::vector<int>& patches, Reach reach) const
 
 std::uint8_t Atlas::outside_bits(int p) const
 {
-  std::uint8_t bits = 0;
-  for (int s = 0; s < 4; ++s) {
-    const int q = topology_.across(p, s);
-    if (q >= 0 && !patch_marks_.marked(std::size_t(q)))
-      bits |= std::uint8_t(1u << s);
-    if (ring_outside(topology_.patch_corners[std::size_t(p)][std::size_t(s)]))
-      bits |= std::uint8_t(16u << s);
-  }
+  std::uint8_t corners = 0;
+  for (int c = 0; c < 4; ++c)
+    if (ring_outside(topology_.patch_corners[std::size_t(p)][std::size_t(c)]))
+      corners |= std::uint8_t(1u << c);
+  // Side s runs from corner s to corner s + 1, and the patch across it is
+  // in both corners' rings (one fan each): only where both rings reach
+  // outside can it be outside, so most patches look up no side at all.
+  std::uint8_t bits = std::uint8_t(corners << 4);
+  for (int s = 0; s < 4; ++s)
+    if ((corners >> s & 1) && (corners >> ((s + 1) & 3) & 1)) {
+      const int q = topology_.across(p, s);
+      if (q >= 0 && !patch_marks_.marked(std::size_t(q)))
+        bits |= std::uint8_t(1u << s);
+    }
   return bits;
 }
 
