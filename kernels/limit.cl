@@ -6,7 +6,7 @@
 
 /* The masks are separable: each row b of a 3x3 neighbourhood gives a
  * smoothed value s and a difference d along the first axis (limit_row),
- * and limit_rows() combines three rows across. */
+ * and limit_rows_cross() combines three rows across. */
 inline void limit_row(float4 left, float4 mid, float4 right, float4 *s, float4 *d)
 {
   *s = (left + 4.0f * mid + right) * (1.0f / 6.0f);
@@ -22,13 +22,6 @@ inline void limit_rows_cross(float4 s0, float4 s1, float4 s2, float4 d0, float4 
   const float4 du = (d0 + 4.0f * d1 + d2) * (1.0f / 6.0f);
   const float4 dv = (s2 - s0) * 0.5f;
   *c = cross(du.xyz, dv.xyz);
-}
-
-inline void limit_rows(float4 s0, float4 s1, float4 s2, float4 d0, float4 d1, float4 d2, float4 *pos, float4 *nrm)
-{
-  float3 c;
-  limit_rows_cross(s0, s1, s2, d0, d1, d2, pos, &c);
-  *nrm = (float4)(normalize(c), 0.0f);
 }
 
 /* normalize() of four vectors, as float4 normals, with one vector square
@@ -75,9 +68,10 @@ inline void unit_normals4(float3 c0, float3 c1, float3 c2, float3 c3, float4 *n0
       STORE(k4_ + 3, p3_, n3_);                                                      \
   }
 
-/* Limit point and normal from a 3x3 neighbourhood in three rows of three
- * (across a0..a2, along m0..m2, inwards i0..i2), the first axis running
- * along a row and the second across the rows, a right-handed frame. Named
+/* Limit point and unnormalised normal from a 3x3 neighbourhood in three
+ * rows of three (across a0..a2, along m0..m2, inwards i0..i2), the first
+ * axis running along a row and the second across the rows, a right-handed
+ * frame (limit_window(): the normal normalised). Named
  * values, not arrays: PoCL kept a kernel's private arrays in memory, one
  * copy per work item, and the window's loads and stores through it were a
  * quarter of the side kernel's time. */
@@ -286,13 +280,19 @@ __kernel void limit_edges(ATLAS_IN src, __global float4 *restrict sides, __globa
 #undef NEXT_TEXEL
 }
 
-/* The limit point and normal of ring r's vertex. The masks' trigonometry
+/* Range: count; each patch corner's ring, into `corners`. The masks' trigonometry
  * comes per valence m from `valences` (entries 2m, 2m + 1: see
- * limit_constants() in atlas.cpp); multiples of the angle by rotation.
- * Summed from the ring's first slot whichever patch asks. */
-TEXEL_INLINE void limit_ring(ATLAS_IN src, int2 g, const CornerRing ring, __global const CornerSlot *slots,
-                             __global const float4 *restrict valences, float4 *pos, float4 *nrm)
+ * limit_constants() in atlas.cpp); multiples of the angle by rotation. */
+__kernel void limit_corners(ATLAS_IN src, __global float4 *restrict corners, __global const CornerRing *rings,
+                            __global const CornerSlot *slots, __global const float4 *restrict valences,
+                            __global const int *list, int count, int2 g)
 {
+  const int k = get_global_id(0);
+  if (k >= count)
+    return;
+  const int r = LISTED(list, k);
+  const CornerRing ring = rings[r];
+  PREFETCH_RING_AHEAD(src, g, rings, slots, list, k, count);
   const int m = ring.count;
   const CornerSlot first = slots[ring.first], last = slots[ring.first + m - 1];
   const float4 v = CORNER_LOAD(src, g, first, 0, 0);
@@ -350,21 +350,5 @@ TEXEL_INLINE void limit_ring(ATLAS_IN src, int2 g, const CornerRing ring, __glob
     }
     p = (fm * fm * v + 4.0f * es + ds) * (1.0f / (fm * (fm + 5.0f)));
   }
-  *pos = p;
-  *nrm = (float4)(normalize(cross(t1.xyz, t2.xyz)), 0.0f);
-}
-
-/* Range: count; each patch corner's ring, into `corners`. */
-__kernel void limit_corners(ATLAS_IN src, __global float4 *restrict corners, __global const CornerRing *rings,
-                            __global const CornerSlot *slots, __global const float4 *restrict valences,
-                            __global const int *list, int count, int2 g)
-{
-  const int k = get_global_id(0);
-  if (k >= count)
-    return;
-  const int r = LISTED(list, k);
-  PREFETCH_RING_AHEAD(src, g, rings, slots, list, k, count);
-  float4 pv, nv;
-  limit_ring(src, g, rings[r], slots, valences, &pv, &nv);
-  PAIR_STORE(corners, r, pv, nv);
+  PAIR_STORE(corners, r, p, (float4)(normalize(cross(t1.xyz, t2.xyz)), 0.0f));
 }
