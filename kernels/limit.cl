@@ -30,7 +30,7 @@ inline void limit_rows_cross(float4 s0, float4 s1, float4 s2, float4 d0, float4 
  * float (on every texel of a sound surface); elsewhere normalize()
  * itself. One square root and division per texel, with normalize()'s
  * tests, had been a sixth to a quarter of the limit kernels' time. */
-inline void unit_normals4(float3 c0, float3 c1, float3 c2, float3 c3, float4 *n0, float4 *n1, float4 *n2,
+TEXEL_INLINE void unit_normals4(float3 c0, float3 c1, float3 c2, float3 c3, float4 *n0, float4 *n1, float4 *n2,
                           float4 *n3)
 {
   const float4 l2 = (float4)(dot(c0, c0), dot(c1, c1), dot(c2, c2), dot(c3, c3));
@@ -47,6 +47,13 @@ inline void unit_normals4(float3 c0, float3 c1, float3 c2, float3 c3, float4 *n0
  * writes it; the lanes past the end are neither made nor stored. */
 #define IN_FOURS(start, end, NEXT, STORE)                                            \
   for (int k4_ = (start); k4_ < (end); k4_ += 4) {                                   \
+    if (k4_ + 1 == (end)) { /* a last texel alone: normalize() */                     \
+      float4 p_;                                                                     \
+      float3 c_;                                                                     \
+      NEXT(k4_, p_, c_);                                                             \
+      STORE(k4_, p_, (float4)(normalize(c_), 0.0f));                                 \
+      break;                                                                         \
+    }                                                                                \
     const float3 unused_ = (float3)(0.0f, 0.0f, 1.0f);                               \
     float4 p0_, p1_ = (float4)(0.0f), p2_ = (float4)(0.0f), p3_ = (float4)(0.0f);    \
     float4 n0_, n1_, n2_, n3_;                                                       \
