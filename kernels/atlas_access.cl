@@ -296,19 +296,23 @@ inline int border_entry(int2 ij, int n, int4 sides, int4 rings, int *corner)
  * count) walking its tile with FOR_EACH_TILE_PART, TILE_TEXEL_PART for a
  * work item per texel (tile_texel()'s range) sent to BORDER or INSIDE.
  * Both declare p, n = tile - 1 and item (the patch's place in the list),
- * and end the kernel for the rounding tail. */
-#define PATCH_ITEM_PARTS(g, list, count, patch_sides, patch_rings, BORDER, INSIDE) \
+ * and end the kernel for the rounding tail and for a patch p where
+ * SKIP(p) holds (NO_SKIP, or a set's flags: UNFLAGGED). */
+#define NO_SKIP(p) 0
+#define PATCH_ITEM_PARTS(g, list, count, SKIP, patch_sides, patch_rings, BORDER, INSIDE) \
   const int item = get_global_id(0);                                              \
   if (item >= (count))                                                            \
     return;                                                                       \
   const int p = LISTED(list, item), n = (g).x - 1;                                \
+  if (SKIP(p))                                                                    \
+    return;                                                                       \
   const int4 ps_ = (patch_sides)[p], pr_ = (patch_rings)[p];                      \
   FOR_EACH_TILE_PART(n, ps_, pr_, BORDER, INSIDE)
 
-#define TILE_TEXEL_PART(g, list, count, patch_sides, patch_rings, BORDER, INSIDE)      \
+#define TILE_TEXEL_PART(g, list, count, SKIP, patch_sides, patch_rings, BORDER, INSIDE) \
   int p, corner_;                                                                     \
   int2 ij;                                                                            \
-  if (!tile_texel(g, list, count, &p, &ij))                                           \
+  if (!tile_texel(g, list, count, &p, &ij) || SKIP(p))                                \
     return;                                                                           \
   const int n = (g).x - 1, item = get_global_id(1) / (g).x;                           \
   if (ij.x > 0 && ij.x < n && ij.y > 0 && ij.y < n) {                                 \
@@ -320,4 +324,10 @@ inline int border_entry(int2 ij, int n, int4 sides, int4 rings, int *corner)
 
 /* Item k of a table-driven kernel: list[k], or k itself when list is null. */
 #define LISTED(list, k) ((list) ? (list)[k] : (k))
+
+/* A set worked out on the device (select.cl) comes as flags over every
+ * item, not as a list: item x is in it when flags[x] holds the set's
+ * generation. Kernels that take one run over every item (list null) and
+ * leave the others, or over their list when flags is null. */
+#define UNFLAGGED(flags, generation, x) ((flags) && (flags)[x] != (uchar)(generation))
 

@@ -134,7 +134,7 @@ __kernel void decode_tiles(ATLAS_IN smooth, int2 g, __global const int *list, in
                            __global const int4 *restrict patch_rings, __global const float4 *restrict sides,
                            __global const float4 *restrict corners, __global const uchar *restrict outside)
 {
-  TILE_TEXEL_PART(g, list, count, patch_sides, patch_rings, DECODE_COPY, DECODE_INSIDE);
+  TILE_TEXEL_PART(g, list, count, NO_SKIP, patch_sides, patch_rings, DECODE_COPY, DECODE_INSIDE);
 }
 
 /* Range: count; the same with a work item per patch walking its tile
@@ -144,7 +144,7 @@ __kernel void decode_patches(ATLAS_IN smooth, int2 g, __global const int *list, 
                              __global const int4 *restrict patch_rings, __global const float4 *restrict sides,
                              __global const float4 *restrict corners, __global const uchar *restrict outside)
 {
-  PATCH_ITEM_PARTS(g, list, count, patch_sides, patch_rings, DECODE_COPY, DECODE_INSIDE);
+  PATCH_ITEM_PARTS(g, list, count, NO_SKIP, patch_sides, patch_rings, DECODE_COPY, DECODE_INSIDE);
 }
 
 /* Range: count; the listed patch sides into `sides`, in the first patch's

@@ -112,7 +112,8 @@ inline void limit_crease_cross(float4 m0, float4 m1, float4 m2, float4 i0, float
   *c = cross(((m2 - m0) * 0.5f).xyz, (s1 - s0).xyz);
 }
 
-/* Lists (patches, edges, rings) select what to update; null: everything.
+/* Lists (patches, edges, rings) or flags (UNFLAGGED) select what to
+ * update; neither: everything.
  * The side and corner kernels put their results in compact arrays (a pos,
  * nrm pair per item), which limit_tiles then copies into whole tiles: every
  * tile's cache lines are written once, by one kernel. Writing each copy
@@ -182,6 +183,7 @@ TEXEL_INLINE void limit_inside_columns(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nr
     ATLAS_STORE(nrm, g, p, ij, pair_[1]);                                     \
   } while (0)
 #define LIMIT_INSIDE(ij) limit_inside(src, pos, nrm, g, p, ij)
+#define LIMIT_SKIP(q) UNFLAGGED(flags, generation, q)
 
 /* Bounding sphere (centre xyz, radius w) of the positions in patch p's
  * tile: the centre of their box, and one square root per patch. min/max,
@@ -206,35 +208,37 @@ TEXEL_INLINE float4 tile_bounds(ATLAS_IN pos, int2 g, int p)
   return (float4)(c, sqrt(r2));
 }
 
-/* Range: count. tile_bounds() of the listed patches (list null: every
- * patch), after the limit kernels that did not make them. */
-__kernel void patch_bounds(ATLAS_IN pos, int2 g, __global const int *list, int count, __global float4 *bounds)
+/* Range: count. tile_bounds() of the listed or flagged patches (neither:
+ * every patch), after the limit kernels that did not make them. */
+__kernel void patch_bounds(ATLAS_IN pos, int2 g, __global const int *list, int count, __global const uchar *flags,
+                           int generation, __global float4 *bounds)
 {
   const int k = get_global_id(0);
   if (k < count) {
     const int p = LISTED(list, k);
-    bounds[p] = tile_bounds(pos, g, p);
+    if (!UNFLAGGED(flags, generation, p))
+      bounds[p] = tile_bounds(pos, g, p);
   }
 }
 
 /* Range: whole tiles, (tile, tile * count): a work item per texel. */
 __kernel void limit_tiles(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, __global const int *list, int count,
-                          __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
+                          __global const uchar *flags, int generation, __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
                           __global const float4 *restrict sides, __global const float4 *restrict corners)
 {
-  TILE_TEXEL_PART(g, list, count, patch_sides, patch_rings, LIMIT_COPY, LIMIT_INSIDE);
+  TILE_TEXEL_PART(g, list, count, LIMIT_SKIP, patch_sides, patch_rings, LIMIT_COPY, LIMIT_INSIDE);
 }
 
 /* Range: count; the same with a work item per patch walking its border
  * (FOR_EACH_TILE_PART) and then its interior by columns; with buffer
  * storage also the patch's tile_bounds() into `bounds` unless it is null. */
 __kernel void limit_patches(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, __global const int *list, int count,
-                            __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
+                            __global const uchar *flags, int generation, __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
                             __global const float4 *restrict sides, __global const float4 *restrict corners,
                             __global float4 *restrict bounds)
 {
 #define LIMIT_LATER(ij) ((void)0)
-  PATCH_ITEM_PARTS(g, list, count, patch_sides, patch_rings, LIMIT_COPY, LIMIT_LATER);
+  PATCH_ITEM_PARTS(g, list, count, LIMIT_SKIP, patch_sides, patch_rings, LIMIT_COPY, LIMIT_LATER);
 #undef LIMIT_LATER
   limit_inside_columns(src, pos, nrm, g, p);
 #ifndef ATLAS_IMAGE
@@ -248,12 +252,14 @@ __kernel void limit_patches(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, 
 /* Range: count; per edge, its texels on the patch sides, corners excluded,
  * into `sides`. */
 __kernel void limit_edges(ATLAS_IN src, __global float4 *restrict sides, __global const PatchEdge *edges,
-                          __global const int *list, int count, int2 g)
+                          __global const int *list, int count, __global const uchar *flags, int generation, int2 g)
 {
   const int k = get_global_id(0);
   if (k >= count)
     return;
   const int edge = LISTED(list, k);
+  if (UNFLAGGED(flags, generation, edge))
+    return;
   const PatchEdge e = edges[edge];
   PREFETCH_EDGE_AHEAD(src, g, edges, list, k, count);
   EDGE_FRAMES(e, g);
@@ -292,12 +298,15 @@ __kernel void limit_edges(ATLAS_IN src, __global float4 *restrict sides, __globa
  * limit_constants() in atlas.cpp); multiples of the angle by rotation. */
 __kernel void limit_corners(ATLAS_IN src, __global float4 *restrict corners, __global const CornerRing *rings,
                             __global const CornerSlot *slots, __global const float4 *restrict valences,
-                            __global const int *list, int count, int2 g)
+                            __global const int *list, int count, __global const uchar *flags, int generation,
+                            int2 g)
 {
   const int k = get_global_id(0);
   if (k >= count)
     return;
   const int r = LISTED(list, k);
+  if (UNFLAGGED(flags, generation, r))
+    return;
   const CornerRing ring = rings[r];
   PREFETCH_RING_AHEAD(src, g, rings, slots, list, k, count);
   const int m = ring.count;

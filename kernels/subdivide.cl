@@ -44,7 +44,7 @@ __kernel void subdivide_tiles(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, __g
                               __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
                               __global const float4 *restrict sides, __global const float4 *restrict corners)
 {
-  TILE_TEXEL_PART(dg, list, patches, patch_sides, patch_rings, SUBDIVIDE_COPY, SUBDIVIDE_INSIDE);
+  TILE_TEXEL_PART(dg, list, patches, NO_SKIP, patch_sides, patch_rings, SUBDIVIDE_COPY, SUBDIVIDE_INSIDE);
 }
 
 /* Range: patches; the same with a work item per patch walking its tile
@@ -53,7 +53,7 @@ __kernel void subdivide_patches(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, _
                                 __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
                                 __global const float4 *restrict sides, __global const float4 *restrict corners)
 {
-  PATCH_ITEM_PARTS(dg, list, patches, patch_sides, patch_rings, SUBDIVIDE_COPY, SUBDIVIDE_INSIDE);
+  PATCH_ITEM_PARTS(dg, list, patches, NO_SKIP, patch_sides, patch_rings, SUBDIVIDE_COPY, SUBDIVIDE_INSIDE);
 }
 
 /* Range: #edges; texels on patch sides, corners excluded, into `sides`,

@@ -190,20 +190,48 @@ TEST(GeometryBrush, AMaskKeepsGeometryInPlace)
   EXPECT_GT(*std::max_element(free.begin(), free.end()), 0.05f);
 }
 
+std::vector<Float4> read_bounds(Atlas& atlas)
+{
+  std::vector<Float4> out(std::size_t(atlas.topology().patch_count));
+  atlas.runtime().queue().enqueueReadBuffer(atlas.limit_bounds(), CL_TRUE, 0, out.size() * sizeof(Float4), out.data());
+  return out;
+}
+
 TEST(GeometryBrush, LocalLimitUpdateEqualsAFullOne)
 {
-  PaintSurface surface(test::runtime(), test::genus_two(), 4, AtlasStorage::Buffer);
-  Stroke s = brush(Tool::Inflate, {1.5f, 0.5f, 1.f}, 0.7f);
-  s.falloff = FALLOFF_SMOOTHSTEP;
-  s.amount = 0.1f;
-  surface.apply(s);
-  const auto local_pos = surface.atlas().read_limit_positions();
-  const auto local_nrm = surface.atlas().read_limit_normals();
-  surface.atlas().compute_limit();
-  const auto full_pos = surface.atlas().read_limit_positions();
-  const auto full_nrm = surface.atlas().read_limit_normals();
-  ASSERT_EQ(std::memcmp(local_pos.data(), full_pos.data(), full_pos.size() * sizeof(Float4)), 0);
-  ASSERT_EQ(std::memcmp(local_nrm.data(), full_nrm.data(), full_nrm.size() * sizeof(Float4)), 0);
+  // The set to update comes as host lists for a small brush and as flags
+  // made on the device for a large one (Atlas::update_limit_around()): both
+  // must give the bits of the whole surface's limit, and bounds, under each
+  // storage and each form of the whole-tile kernels.
+  std::set<bool> large_seen;
+  for (const AtlasStorage storage : {AtlasStorage::Buffer, AtlasStorage::Image})
+    for (const bool per_patch : {true, false})
+      for (const float radius : {0.3f, 0.7f, 1.5f}) {
+        const std::string what = std::string(storage == AtlasStorage::Image ? "image" : "buffer") +
+                                 (per_patch ? ", per patch" : ", per texel") + ", radius " + std::to_string(radius);
+        PaintSurface surface(test::runtime(), test::genus_two(), 4, storage);
+        surface.atlas().set_patch_items(per_patch);
+        Stroke s = brush(Tool::Inflate, {1.5f, 0.5f, 1.f}, radius);
+        s.falloff = FALLOFF_SMOOTHSTEP;
+        s.amount = 0.1f;
+        const StrokeReport r = surface.apply(s);
+        const int patches = surface.atlas().topology().patch_count;
+        ASSERT_GT(r.patches_touched, 0u) << what;
+        ASSERT_LT(r.patches_touched, std::size_t(patches)) << what; // a local update, not everything
+        large_seen.insert(r.patches_touched * 8 >= std::size_t(patches));
+        const auto local_pos = surface.atlas().read_limit_positions();
+        const auto local_nrm = surface.atlas().read_limit_normals();
+        const auto local_bounds = read_bounds(surface.atlas());
+        surface.atlas().compute_limit();
+        const auto full_pos = surface.atlas().read_limit_positions();
+        const auto full_nrm = surface.atlas().read_limit_normals();
+        const auto full_bounds = read_bounds(surface.atlas());
+        EXPECT_EQ(std::memcmp(local_pos.data(), full_pos.data(), full_pos.size() * sizeof(Float4)), 0) << what;
+        EXPECT_EQ(std::memcmp(local_nrm.data(), full_nrm.data(), full_nrm.size() * sizeof(Float4)), 0) << what;
+        EXPECT_EQ(std::memcmp(local_bounds.data(), full_bounds.data(), full_bounds.size() * sizeof(Float4)), 0)
+          << what;
+      }
+  EXPECT_EQ(large_seen, (std::set<bool>{false, true})) << "both ways of making the set ran";
 }
 
 TEST(GeometryBrush, PatchItemsAndTexelItemsGiveTheSameBits)

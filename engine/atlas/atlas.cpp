@@ -38,22 +38,36 @@ void for_each_tile_row(const LevelLayout& l, F&& f)
 
 } // namespace
 
-namespace {
-
-//! A set's patches, edges and rings as device lists for the kernels that
-//! take a subset; without a set, null lists (every one) and the full counts.
+//! A set's patches, edges and rings for the kernels that take a subset:
+//! device lists and their lengths; or null lists and the full counts, and
+//! then either flags (select.cl: the items whose flag holds `generation`)
+//! or nothing (every item).
 struct SetLists
 {
   cl::Buffer patches, edges, rings;
-  int patch_count, edge_count, ring_count;
+  int patch_count = 0, edge_count = 0, ring_count = 0;
+  cl::Buffer patch_flags, edge_flags, ring_flags;
+  int generation = 0;
 };
+
+namespace {
 
 SetLists set_lists(const cl::Context& context, const AtlasTopology& topology, const PatchSet* set)
 {
-  if (!set)
-    return {{}, {}, {}, topology.patch_count, int(topology.edges.size()), int(topology.rings.size())};
-  return {device_ints(context, set->patches), device_ints(context, set->edges), device_ints(context, set->rings),
-          int(set->patches.size()), int(set->edges.size()), int(set->rings.size())};
+  SetLists lists;
+  if (!set) {
+    lists.patch_count = topology.patch_count;
+    lists.edge_count = int(topology.edges.size());
+    lists.ring_count = int(topology.rings.size());
+    return lists;
+  }
+  lists.patches = device_ints(context, set->patches);
+  lists.edges = device_ints(context, set->edges);
+  lists.rings = device_ints(context, set->rings);
+  lists.patch_count = int(set->patches.size());
+  lists.edge_count = int(set->edges.size());
+  lists.ring_count = int(set->rings.size());
+  return lists;
 }
 
 //! `count` squares of side x side work items, stacked along the second axis.
@@ -166,6 +180,11 @@ struct Atlas::Kernels
   // corner kernels' results (a position and a normal for the limit), sized
   // for the finest level.
   cl::Buffer patch_sides, patch_rings, side_work, corner_work;
+  // Sets worked out on the device (select.cl): a byte per patch, edge and
+  // ring, and the generation of the last set.
+  cl::Kernel flag_corners, flag_ring_patches, flag_borders;
+  cl::Buffer patch_flags, edge_flags, ring_flags;
+  std::uint8_t generation = 0;
 };
 
 namespace {
@@ -288,7 +307,7 @@ Atlas::Atlas(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int max_lev
     kernels_ = std::make_unique<Kernels>();
     Kernels& k = *kernels_;
     k.program = build_program(*runtime_,
-                              {"atlas_types.h", "atlas_access.cl", "subdivide.cl", "limit.cl", "reduce.cl"},
+                              {"atlas_types.h", "atlas_access.cl", "subdivide.cl", "limit.cl", "select.cl", "reduce.cl"},
                               storage_options(storage_, runtime_->info()));
     k.subdivide_tiles = cl::Kernel(k.program, "subdivide_tiles");
     k.subdivide_patches = cl::Kernel(k.program, "subdivide_patches");
@@ -300,6 +319,9 @@ Atlas::Atlas(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int max_lev
     k.limit_edges = cl::Kernel(k.program, "limit_edges");
     k.limit_corners = cl::Kernel(k.program, "limit_corners");
     k.patch_bounds = cl::Kernel(k.program, "patch_bounds");
+    k.flag_corners = cl::Kernel(k.program, "flag_corners");
+    k.flag_ring_patches = cl::Kernel(k.program, "flag_ring_patches");
+    k.flag_borders = cl::Kernel(k.program, "flag_borders");
     k.reduce_interior = cl::Kernel(k.program, "reduce_interior");
     k.reduce_edges = cl::Kernel(k.program, "reduce_edges");
     k.reduce_corners = cl::Kernel(k.program, "reduce_corners");
@@ -337,6 +359,15 @@ Atlas::Atlas(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int max_lev
                                    2 * sizeof(cl_float4));
     k.corner_work =
         cl::Buffer(runtime_->context(), CL_MEM_READ_WRITE, topology_.rings.size() * 2 * sizeof(cl_float4));
+    const auto flags = [&](std::size_t n) {
+      const std::size_t bytes = round_up(std::max<std::size_t>(1, n), sizeof(cl_uint)); // whole fill patterns
+      cl::Buffer b(runtime_->context(), CL_MEM_READ_WRITE, bytes);
+      runtime_->queue().enqueueFillBuffer(b, cl_uint(0), 0, bytes);
+      return b;
+    };
+    k.patch_flags = flags(std::size_t(topology_.patch_count));
+    k.edge_flags = flags(topology_.edges.size());
+    k.ring_flags = flags(topology_.rings.size());
   } catch (const cl::Error& e) {
     throw DeviceError("cannot set up the atlas on " + device.name + ": " + describe(e));
   }
@@ -441,29 +472,36 @@ void Atlas::compute_limit()
 void Atlas::compute_limit_of(int level, const cl::Memory& pos, const cl::Memory& nrm, const PatchSet* set,
                              const cl::Buffer* bounds)
 {
+  limit_on(level, pos, nrm, set_lists(runtime_->context(), topology_, set), bounds);
+}
+
+void Atlas::limit_on(int level, const cl::Memory& pos, const cl::Memory& nrm, const SetLists& lists,
+                     const cl::Buffer* bounds)
+{
   const LevelLayout l = layout(level);
   Kernels& k = *kernels_;
   cl::CommandQueue& q = runtime_->queue();
-  const SetLists lists = set_lists(runtime_->context(), topology_, set);
-  const cl::Buffer &patch_list = lists.patches, &edge_list = lists.edges, &ring_list = lists.rings;
   const int patches = lists.patch_count, edges = lists.edge_count, rings = lists.ring_count;
+  const cl_int generation = lists.generation;
   const cl::Memory& in = levels_[level - 1].mem();
   if (l.n > 1 && edges > 0)
-    launch(q, k.limit_edges, range1d(edges), kLocal1D, in, k.side_work, k.edges, edge_list, edges, grid(l));
+    launch(q, k.limit_edges, range1d(edges), kLocal1D, in, k.side_work, k.edges, lists.edges, edges,
+           lists.edge_flags, generation, grid(l));
   if (rings > 0)
     launch(q, k.limit_corners, range1d(rings), kLocal1D, in, k.corner_work, k.rings, k.slots, k.valences,
-           ring_list, rings, grid(l));
+           lists.rings, rings, lists.ring_flags, generation, grid(l));
   if (patches > 0) {
     const TileLaunch t = tile_launch(k.limit_tiles, k.limit_patches, l, patches);
     // The per-patch kernel makes the bounds as it goes where it may read
     // back what it wrote (buffers); otherwise a kernel of their own.
     const bool fused = bounds && patch_items_ && storage_ == AtlasStorage::Buffer;
     if (patch_items_)
-      k.limit_patches.setArg(10, fused ? *bounds : cl::Buffer()); // its last, beyond limit_tiles' own
-    launch(q, t.kernel, t.global, t.local, in, pos, nrm, grid(l), patch_list, patches, k.patch_sides,
-           k.patch_rings, k.side_work, k.corner_work);
+      k.limit_patches.setArg(12, fused ? *bounds : cl::Buffer()); // its last, beyond limit_tiles' own
+    launch(q, t.kernel, t.global, t.local, in, pos, nrm, grid(l), lists.patches, patches, lists.patch_flags,
+           generation, k.patch_sides, k.patch_rings, k.side_work, k.corner_work);
     if (bounds && !fused)
-      launch(q, k.patch_bounds, range1d(patches), kLocal1D, pos, grid(l), patch_list, patches, *bounds);
+      launch(q, k.patch_bounds, range1d(patches), kLocal1D, pos, grid(l), lists.patches, patches,
+             lists.patch_flags, generation, *bounds);
   }
 }
 
@@ -587,6 +625,41 @@ void Atlas::update_limit(const PatchSet& set)
     return;
   }
   compute_limit_of(max_level_, limit_positions_->mem(), limit_normals_->mem(), &set, &limit_bounds_);
+}
+
+void Atlas::update_limit_around(const std::vector<int>& changed, const cl::Buffer* list)
+{
+  // A host list costs per patch listed, the flags' passes per patch of the
+  // atlas: past an eighth of it the flags cost less (and the host is free
+  // for the next dab meanwhile).
+  if (!limit_positions_ || !limit_current_ || changed.size() * 8 < std::size_t(topology_.patch_count)) {
+    update_limit(neighbourhood_set(changed));
+    return;
+  }
+  Kernels& k = *kernels_;
+  cl::CommandQueue& q = runtime_->queue();
+  if (++k.generation == 0) { // a flag may still hold any other generation
+    for (const cl::Buffer* b : {&k.patch_flags, &k.edge_flags, &k.ring_flags})
+      q.enqueueFillBuffer(*b, cl_uint(0), 0, b->getInfo<CL_MEM_SIZE>());
+    k.generation = 1;
+  }
+  const cl_int generation = k.generation, count = cl_int(changed.size()), patches = topology_.patch_count,
+               rings = cl_int(topology_.rings.size());
+  const cl::Buffer uploaded = list ? cl::Buffer() : device_ints(runtime_->context(), changed);
+  // The changed patches' corners, the patches there, and their sides and
+  // corners: a subset of the last, so the ring flags serve both.
+  launch(q, k.flag_corners, range1d(count), kLocal1D, list ? *list : uploaded, count, k.patch_rings, generation,
+         k.ring_flags);
+  launch(q, k.flag_ring_patches, range1d(rings), kLocal1D, k.ring_flags, rings, k.rings, k.slots, generation,
+         k.patch_flags);
+  launch(q, k.flag_borders, range1d(patches), kLocal1D, k.patch_flags, patches, k.patch_sides, k.patch_rings,
+         generation, k.edge_flags, k.ring_flags);
+  SetLists flagged = set_lists(runtime_->context(), topology_, nullptr);
+  flagged.patch_flags = k.patch_flags;
+  flagged.edge_flags = k.edge_flags;
+  flagged.ring_flags = k.ring_flags;
+  flagged.generation = generation;
+  limit_on(max_level_, limit_positions_->mem(), limit_normals_->mem(), flagged, &limit_bounds_);
 }
 
 const cl::Memory& Atlas::level_layer(int level)

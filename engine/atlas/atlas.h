@@ -92,6 +92,8 @@ enum class Reach
   All
 };
 
+struct SetLists; // a set as the device takes it (atlas.cpp)
+
 class Atlas
 {
 public:
@@ -170,6 +172,10 @@ public:
   //! Every patch holding a copy of a moved texel's limit must be in the set:
   //! the edited patches' corner neighbourhood.
   void update_limit(const PatchSet& set);
+  //! update_limit(neighbourhood_set(changed)); `list`, if given, holds
+  //! `changed` on the device already. Where the changed patches are many,
+  //! the set is worked out on the device as flags instead of host lists.
+  void update_limit_around(const std::vector<int>& changed, const cl::Buffer* list = nullptr);
   //! After the finest level was rewritten to what it was except on a set
   //! whose limit the caller recomputes with update_limit(): lets that update
   //! stay on the set instead of covering everything.
@@ -210,6 +216,9 @@ private:
   std::vector<Float4> read_layer(const Layer& layer, const LevelLayout& l);
   void write_layer(Layer& layer, const LevelLayout& l, const std::vector<Float4>& texels);
   Layer make_layer(const LevelLayout& l);
+  //! compute_limit_of() on a set as device lists or flags.
+  void limit_on(int level, const cl::Memory& positions, const cl::Memory& normals, const SetLists& lists,
+                const cl::Buffer* bounds);
   //! The set of `patches` (in patch order, and the ones patch_marks_ holds).
   PatchSet marked_set(std::vector<int> patches, Reach reach) const;
   //! PatchSet::outside of patch p, the set being what patch_marks_ holds

@@ -309,13 +309,15 @@ void PaintSurface::phase_done(double StepPhases::*phase)
   phase_clock_.restart();
 }
 
-void PaintSurface::refresh_geometry(const std::vector<int>& patches)
+void PaintSurface::refresh_geometry(const std::vector<int>& patches, const cl::Buffer* list)
 {
   // The limit changed on the patches' sides and corners too, which every
-  // patch sharing a corner with them stores: their tiles and bounds as well.
-  const PatchSet set = atlas_->neighbourhood_set(patches);
+  // patch sharing a corner with them stores: their tiles and bounds as well
+  // (Atlas::neighbourhood_set()). With many patches the set is made on the
+  // device and `lists` times the flags' kernels only.
   phase_done(&StepPhases::lists);
-  refresh_geometry(set);
+  atlas_->update_limit_around(patches, list);
+  phase_done(&StepPhases::limit);
 }
 
 void PaintSurface::refresh_geometry(const PatchSet& set)
@@ -916,7 +918,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   const cl::Buffer& weights = coarse ? multires_->base_weights() : d.weights;
   const auto geometry_done = [&] {
     if (!coarse) {
-      refresh_geometry(patches);
+      refresh_geometry(patches, &list);
       return;
     }
     const PatchSet around = atlas_->neighbourhood_set(changed);

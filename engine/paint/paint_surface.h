@@ -207,7 +207,8 @@ private:
   //! buffer of that level.
   void weigh(const std::vector<int>& patches, const cl::Buffer& list, const BrushDab& dab, int level);
   //! After positions changed on `patches`: limit surface and bounds there.
-  void refresh_geometry(const std::vector<int>& patches);
+  //! `list`, if given, holds the patches on the device.
+  void refresh_geometry(const std::vector<int>& patches, const cl::Buffer* list = nullptr);
   //! The same given Atlas::neighbourhood_set() of the moved patches.
   void refresh_geometry(const PatchSet& around);
   StrokeReport apply_dabs(const Stroke& stroke);
