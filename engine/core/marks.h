@@ -38,18 +38,19 @@ private:
 };
 
 //! The items marked in `marks` (of n), in increasing order, given that
-//! `listed` holds them in any order: for many a scan of the marks beats a
-//! sort.
+//! `listed` holds them in any order, each once: for many a scan of the
+//! marks beats a sort.
 inline std::vector<int> marked_in_order(std::vector<int> listed, const Marks& marks, std::size_t n)
 {
   if (listed.size() * 16 <= n) {
     std::sort(listed.begin(), listed.end());
     return listed;
   }
-  listed.clear();
+  // As many as listed: written in place, with no push_back per item.
+  std::size_t k = 0;
   for (std::size_t i = 0; i < n; ++i)
     if (marks.marked(i))
-      listed.push_back(int(i));
+      listed[k++] = int(i);
   return listed;
 }
 

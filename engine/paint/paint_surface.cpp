@@ -439,21 +439,24 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
   reached_.begin(open_sides_.size());
   // Breadth first: a patch waits in the queue long enough for the prefetch
   // of its neighbours to arrive (depth first pops it at once).
-  std::vector<int> queue;
+  // Each patch enters the queue once: room for all, and no push_back.
+  std::vector<int> queue(open_sides_.size());
+  std::size_t tail = 0;
   const auto visit = [&](int p) {
     if (open_sides_[std::size_t(p)] != REACH_NONE && reached_.mark(std::size_t(p))) {
-      queue.push_back(p);
+      queue[tail++] = p;
       __builtin_prefetch(&neighbours_[std::size_t(p)]);
     }
   };
   visit(start_patch);
-  for (std::size_t head = 0; head < queue.size(); ++head) {
+  for (std::size_t head = 0; head < tail; ++head) {
     const int p = queue[head];
     const std::uint8_t open = open_sides_[std::size_t(p)];
     for (int s = 0; s < 4; ++s)
       if ((open >> s & 1) && neighbours_[std::size_t(p)][s] >= 0)
         visit(neighbours_[std::size_t(p)][s]);
   }
+  queue.resize(tail);
   return marked_in_order(std::move(queue), reached_, open_sides_.size());
 }
 
