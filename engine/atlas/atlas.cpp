@@ -629,10 +629,12 @@ void Atlas::update_limit(const PatchSet& set)
 
 void Atlas::update_limit_around(const std::vector<int>& changed, const cl::Buffer* list)
 {
-  // A host list costs per patch listed, the flags' passes per patch of the
-  // atlas: past an eighth of it the flags cost less (and the host is free
-  // for the next dab meanwhile).
-  if (!limit_positions_ || !limit_current_ || changed.size() * 8 < std::size_t(topology_.patch_count)) {
+  // Host lists cost per patch listed, on one core; the flags' passes cost
+  // per item of the atlas, on every core. Sculpt steps on armadillo L2
+  // broke even at 4-5% of the patches (host lists faster at 3.5%, flags at
+  // 5.4% and more): flags from a sixteenth on (kDeviceSetShare).
+  if (!limit_positions_ || !limit_current_ ||
+      changed.size() * kDeviceSetShare < std::size_t(topology_.patch_count)) {
     update_limit(neighbourhood_set(changed));
     return;
   }

@@ -173,9 +173,11 @@ public:
   //! the edited patches' corner neighbourhood.
   void update_limit(const PatchSet& set);
   //! update_limit(neighbourhood_set(changed)); `list`, if given, holds
-  //! `changed` on the device already. Where the changed patches are many,
-  //! the set is worked out on the device as flags instead of host lists.
+  //! `changed` on the device already. From 1 / kDeviceSetShare of the
+  //! patches on, the set is worked out on the device as flags instead of
+  //! host lists.
   void update_limit_around(const std::vector<int>& changed, const cl::Buffer* list = nullptr);
+  static constexpr std::size_t kDeviceSetShare = 16;
   //! After the finest level was rewritten to what it was except on a set
   //! whose limit the caller recomputes with update_limit(): lets that update
   //! stay on the set instead of covering everything.
