@@ -200,7 +200,7 @@ std::vector<Float4> read_bounds(Atlas& atlas)
 TEST(GeometryBrush, LocalLimitUpdateEqualsAFullOne)
 {
   // The set to update comes as host lists for a small brush and as flags
-  // made on the device for a large one (Atlas::update_limit_around()): both
+  // made on the device for a large one (Atlas::neighbourhood_on_device()): both
   // must give the bits of the whole surface's limit, and bounds, under each
   // storage and each form of the whole-tile kernels.
   std::set<bool> large_seen;

@@ -36,40 +36,6 @@ void for_each_tile_row(const LevelLayout& l, F&& f)
       f(l.index(p, 0, j), std::size_t((p / l.tiles_x) * l.tile + j) * l.width + (p % l.tiles_x) * l.tile);
 }
 
-} // namespace
-
-//! A set's patches, edges and rings for the kernels that take a subset:
-//! device lists and their lengths; or null lists and the full counts, and
-//! then either flags (select.cl: the items whose flag holds `generation`)
-//! or nothing (every item).
-struct SetLists
-{
-  cl::Buffer patches, edges, rings;
-  int patch_count = 0, edge_count = 0, ring_count = 0;
-  cl::Buffer patch_flags, edge_flags, ring_flags;
-  int generation = 0;
-};
-
-namespace {
-
-SetLists set_lists(const cl::Context& context, const AtlasTopology& topology, const PatchSet* set)
-{
-  SetLists lists;
-  if (!set) {
-    lists.patch_count = topology.patch_count;
-    lists.edge_count = int(topology.edges.size());
-    lists.ring_count = int(topology.rings.size());
-    return lists;
-  }
-  lists.patches = device_ints(context, set->patches);
-  lists.edges = device_ints(context, set->edges);
-  lists.rings = device_ints(context, set->rings);
-  lists.patch_count = int(set->patches.size());
-  lists.edge_count = int(set->edges.size());
-  lists.ring_count = int(set->rings.size());
-  return lists;
-}
-
 //! `count` squares of side x side work items, stacked along the second axis.
 std::pair<cl::NDRange, cl::NDRange> range_squares(std::size_t side, int count)
 {
@@ -411,7 +377,7 @@ void Atlas::subdivide(int from_level, int to_level, const PatchSet* set, const c
                      std::to_string(to_level) + " (atlas levels 1.." + std::to_string(max_level_) + ")");
   Kernels& k = *kernels_;
   cl::CommandQueue& q = runtime_->queue();
-  const SetLists lists = set_lists(runtime_->context(), topology_, set);
+  const DeviceSet lists = device_set(set);
   const cl::Buffer &patch_list = lists.patches, &edge_list = lists.edges, &ring_list = lists.rings;
   const int patches = lists.patch_count, edges = lists.edge_count, rings = lists.ring_count;
   if (to_level == max_level_ && from_level < to_level && !last)
@@ -472,10 +438,10 @@ void Atlas::compute_limit()
 void Atlas::compute_limit_of(int level, const cl::Memory& pos, const cl::Memory& nrm, const PatchSet* set,
                              const cl::Buffer* bounds)
 {
-  limit_on(level, pos, nrm, set_lists(runtime_->context(), topology_, set), bounds);
+  limit_on(level, pos, nrm, device_set(set), bounds);
 }
 
-void Atlas::limit_on(int level, const cl::Memory& pos, const cl::Memory& nrm, const SetLists& lists,
+void Atlas::limit_on(int level, const cl::Memory& pos, const cl::Memory& nrm, const DeviceSet& lists,
                      const cl::Buffer* bounds)
 {
   const LevelLayout l = layout(level);
@@ -618,25 +584,34 @@ PatchSet Atlas::neighbourhood_set(const std::vector<int>& changed) const
   return marked_set(marked_in_order(std::move(around), patch_marks_, std::size_t(topology_.patch_count)), Reach::Any);
 }
 
-void Atlas::update_limit(const PatchSet& set)
+DeviceSet Atlas::device_set(const PatchSet* set) const
 {
-  if (!limit_positions_ || !limit_current_ || int(set.patches.size()) == topology_.patch_count) {
-    compute_limit(); // everything: no lists to build or upload
-    return;
+  DeviceSet lists;
+  if (!set) {
+    lists.patch_count = topology_.patch_count;
+    lists.edge_count = int(topology_.edges.size());
+    lists.ring_count = int(topology_.rings.size());
+    return lists;
   }
-  compute_limit_of(max_level_, limit_positions_->mem(), limit_normals_->mem(), &set, &limit_bounds_);
+  const cl::Context& context = runtime_->context();
+  lists.patches = device_ints(context, set->patches);
+  lists.edges = device_ints(context, set->edges);
+  lists.rings = device_ints(context, set->rings);
+  lists.patch_count = int(set->patches.size());
+  lists.edge_count = int(set->edges.size());
+  lists.ring_count = int(set->rings.size());
+  return lists;
 }
 
-void Atlas::update_limit_around(const std::vector<int>& changed, const cl::Buffer* list)
+DeviceSet Atlas::neighbourhood_on_device(const std::vector<int>& changed, const cl::Buffer* list)
 {
   // Host lists cost per patch listed, on one core; the flags' passes cost
   // per item of the atlas, on every core. Sculpt steps on armadillo L2
   // broke even at 4-5% of the patches (host lists faster at 3.5%, flags at
   // 5.4% and more): flags from a sixteenth on (kDeviceSetShare).
-  if (!limit_positions_ || !limit_current_ ||
-      changed.size() * kDeviceSetShare < std::size_t(topology_.patch_count)) {
-    update_limit(neighbourhood_set(changed));
-    return;
+  if (changed.size() * kDeviceSetShare < std::size_t(topology_.patch_count)) {
+    const PatchSet set = neighbourhood_set(changed);
+    return device_set(&set);
   }
   Kernels& k = *kernels_;
   cl::CommandQueue& q = runtime_->queue();
@@ -656,12 +631,29 @@ void Atlas::update_limit_around(const std::vector<int>& changed, const cl::Buffe
          k.patch_flags);
   launch(q, k.flag_borders, range1d(patches), kLocal1D, k.patch_flags, patches, k.patch_sides, k.patch_rings,
          generation, k.edge_flags, k.ring_flags);
-  SetLists flagged = set_lists(runtime_->context(), topology_, nullptr);
+  DeviceSet flagged = device_set(nullptr);
   flagged.patch_flags = k.patch_flags;
   flagged.edge_flags = k.edge_flags;
   flagged.ring_flags = k.ring_flags;
   flagged.generation = generation;
-  limit_on(max_level_, limit_positions_->mem(), limit_normals_->mem(), flagged, &limit_bounds_);
+  return flagged;
+}
+
+void Atlas::update_limit(const PatchSet& set)
+{
+  if (int(set.patches.size()) == topology_.patch_count)
+    compute_limit(); // everything: no lists to build or upload
+  else
+    update_limit(device_set(&set));
+}
+
+void Atlas::update_limit(const DeviceSet& set)
+{
+  if (!limit_positions_ || !limit_current_) {
+    compute_limit();
+    return;
+  }
+  limit_on(max_level_, limit_positions_->mem(), limit_normals_->mem(), set, &limit_bounds_);
 }
 
 const cl::Memory& Atlas::level_layer(int level)

@@ -92,7 +92,18 @@ enum class Reach
   All
 };
 
-struct SetLists; // a set as the device takes it (atlas.cpp)
+//! A set of patches with every side and corner of them, as the kernels
+//! that take a subset take it: device lists and their lengths; or null
+//! lists and the full counts, and then either flags made on the device
+//! (select.cl: the items whose flag holds `generation`; valid until the
+//! atlas makes its next flags) or nothing (every item).
+struct DeviceSet
+{
+  cl::Buffer patches, edges, rings;
+  int patch_count = 0, edge_count = 0, ring_count = 0;
+  cl::Buffer patch_flags, edge_flags, ring_flags;
+  int generation = 0;
+};
 
 class Atlas
 {
@@ -172,11 +183,13 @@ public:
   //! Every patch holding a copy of a moved texel's limit must be in the set:
   //! the edited patches' corner neighbourhood.
   void update_limit(const PatchSet& set);
-  //! update_limit(neighbourhood_set(changed)); `list`, if given, holds
-  //! `changed` on the device already. From 1 / kDeviceSetShare of the
-  //! patches on, the set is worked out on the device as flags instead of
-  //! host lists.
-  void update_limit_around(const std::vector<int>& changed, const cl::Buffer* list = nullptr);
+  void update_limit(const DeviceSet& set);
+  //! A PatchSet's lists on the device; null: every patch, edge and ring.
+  DeviceSet device_set(const PatchSet* set) const;
+  //! neighbourhood_set(changed) on the device; `list`, if given, holds
+  //! `changed` there already. From 1 / kDeviceSetShare of the patches on,
+  //! the set is worked out on the device as flags instead of host lists.
+  DeviceSet neighbourhood_on_device(const std::vector<int>& changed, const cl::Buffer* list = nullptr);
   static constexpr std::size_t kDeviceSetShare = 16;
   //! After the finest level was rewritten to what it was except on a set
   //! whose limit the caller recomputes with update_limit(): lets that update
@@ -219,7 +232,7 @@ private:
   void write_layer(Layer& layer, const LevelLayout& l, const std::vector<Float4>& texels);
   Layer make_layer(const LevelLayout& l);
   //! compute_limit_of() on a set as device lists or flags.
-  void limit_on(int level, const cl::Memory& positions, const cl::Memory& normals, const SetLists& lists,
+  void limit_on(int level, const cl::Memory& positions, const cl::Memory& normals, const DeviceSet& lists,
                 const cl::Buffer* bounds);
   //! The set of `patches` (in patch order, and the ones patch_marks_ holds).
   PatchSet marked_set(std::vector<int> patches, Reach reach) const;

@@ -313,10 +313,10 @@ void PaintSurface::refresh_geometry(const std::vector<int>& patches, const cl::B
 {
   // The limit changed on the patches' sides and corners too, which every
   // patch sharing a corner with them stores: their tiles and bounds as well
-  // (Atlas::neighbourhood_set()). With many patches the set is made on the
-  // device and `lists` times the flags' kernels only.
+  // (Atlas::neighbourhood_set(); with many patches made on the device).
+  const DeviceSet set = atlas_->neighbourhood_on_device(patches, list);
   phase_done(&StepPhases::lists);
-  atlas_->update_limit_around(patches, list);
+  atlas_->update_limit(set);
   phase_done(&StepPhases::limit);
 }
 
