@@ -641,7 +641,7 @@ DeviceSet Atlas::neighbourhood_on_device(const std::vector<int>& changed, const 
 
 void Atlas::update_limit(const PatchSet& set)
 {
-  if (int(set.patches.size()) == topology_.patch_count)
+  if (!limit_positions_ || !limit_current_ || int(set.patches.size()) == topology_.patch_count)
     compute_limit(); // everything: no lists to build or upload
   else
     update_limit(device_set(&set));
