@@ -38,35 +38,40 @@ TEXEL_INLINE void subdivide_inside(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg
  * or `sides`, which must have been computed in this step. */
 #define SUBDIVIDE_COPY(ij, k, corner, bit) ATLAS_STORE(dst, dg, p, ij, (corner) ? corners[k] : sides[k])
 #define SUBDIVIDE_INSIDE(ij) subdivide_inside(src, dst, sg, dg, p, ij)
+#define SUBDIVIDE_SKIP(q) UNFLAGGED(flags, generation, q)
 
 /* Range: whole destination tiles, (dst tile, dst tile * patches). */
 __kernel void subdivide_tiles(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, __global const int *list, int patches,
-                              __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
+                              __global const uchar *flags, int generation, __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
                               __global const float4 *restrict sides, __global const float4 *restrict corners)
 {
-  TILE_TEXEL_PART(dg, list, patches, NO_SKIP, patch_sides, patch_rings, SUBDIVIDE_COPY, SUBDIVIDE_INSIDE);
+  TILE_TEXEL_PART(dg, list, patches, SUBDIVIDE_SKIP, patch_sides, patch_rings, SUBDIVIDE_COPY, SUBDIVIDE_INSIDE);
 }
 
 /* Range: patches; the same with a work item per patch walking its tile
  * (FOR_EACH_TILE_PART). */
 __kernel void subdivide_patches(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, __global const int *list, int patches,
+                                __global const uchar *flags, int generation,
                                 __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
                                 __global const float4 *restrict sides, __global const float4 *restrict corners)
 {
-  PATCH_ITEM_PARTS(dg, list, patches, NO_SKIP, patch_sides, patch_rings, SUBDIVIDE_COPY, SUBDIVIDE_INSIDE);
+  PATCH_ITEM_PARTS(dg, list, patches, SUBDIVIDE_SKIP, patch_sides, patch_rings, SUBDIVIDE_COPY, SUBDIVIDE_INSIDE);
 }
 
 /* Range: #edges; texels on patch sides, corners excluded, into `sides`,
  * each work item walking one side so that its frames and rows are set up
  * once. */
 __kernel void subdivide_edges(ATLAS_IN src, __global float4 *restrict sides, __global const PatchEdge *edges,
-                              __global const int *list, int edge_count, int2 sg, int2 dg)
+                              __global const int *list, int edge_count, __global const uchar *flags,
+                              int generation, int2 sg, int2 dg)
 {
   const int k = get_global_id(0);
   if (k >= edge_count)
     return;
   const int n_src = sg.x - 1;
   const int edge = LISTED(list, k);
+  if (UNFLAGGED(flags, generation, edge))
+    return;
   const PatchEdge e = edges[edge];
   PREFETCH_EDGE_AHEAD(src, sg, edges, list, k, edge_count);
   const int first = edge * (dg.x - 2) - 1; /* texel t at first + t */
@@ -103,12 +108,15 @@ __kernel void subdivide_edges(ATLAS_IN src, __global float4 *restrict sides, __g
 
 /* Range: #rings; patch corners, i.e. the level-1 vertices, into `corners`. */
 __kernel void subdivide_corners(ATLAS_IN src, __global float4 *restrict corners, __global const CornerRing *rings,
-                                __global const CornerSlot *slots, __global const int *list, int ring_count, int2 sg)
+                                __global const CornerSlot *slots, __global const int *list, int ring_count,
+                                __global const uchar *flags, int generation, int2 sg)
 {
   const int k = get_global_id(0);
   if (k >= ring_count)
     return;
   const int index = LISTED(list, k);
+  if (UNFLAGGED(flags, generation, index))
+    return;
   const CornerRing ring = rings[index];
   PREFETCH_RING_AHEAD(src, sg, rings, slots, list, k, ring_count);
   const CornerSlot first = slots[ring.first], last = slots[ring.first + ring.count - 1];

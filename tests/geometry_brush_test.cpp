@@ -16,6 +16,7 @@
 #include <functional> // for std::function
 #include <map>        // for std::map
 #include <set>     // for std::multiset, std::set
+#include <string>  // for std::string
 
 namespace meshpaint {
 namespace {
@@ -218,7 +219,7 @@ TEST(GeometryBrush, LocalLimitUpdateEqualsAFullOne)
         const int patches = surface.atlas().topology().patch_count;
         ASSERT_GT(r.patches_touched, 0u) << what;
         ASSERT_LT(r.patches_touched, std::size_t(patches)) << what; // a local update, not everything
-        large_seen.insert(r.patches_touched * Atlas::kDeviceSetShare >= std::size_t(patches));
+        large_seen.insert(r.patches_touched * surface.atlas().device_set_share() >= std::size_t(patches));
         const auto local_pos = surface.atlas().read_limit_positions();
         const auto local_nrm = surface.atlas().read_limit_normals();
         const auto local_bounds = read_bounds(surface.atlas());
@@ -234,38 +235,69 @@ TEST(GeometryBrush, LocalLimitUpdateEqualsAFullOne)
   EXPECT_EQ(large_seen, (std::set<bool>{false, true})) << "both ways of making the set ran";
 }
 
+//! A finest-level sculpt and a coarse one (edit level 2), whose rebuild
+//! runs subdivision and decoding, then the limit: the finest level and the
+//! limit layers after them.
+std::vector<std::vector<Float4>> after_fine_and_coarse_sculpts(PaintSurface& surface)
+{
+  Stroke s = brush(Tool::Sculpt, {1.5f, 0.5f, 1.f}, 0.7f);
+  s.falloff = FALLOFF_SMOOTHSTEP;
+  s.amount = 0.1f;
+  surface.apply(s);
+  s.edit_level = 2;
+  s.points = {{0.5f, 0.5f, 1.f}};
+  surface.apply(s);
+  return {surface.atlas().read_positions(4), surface.atlas().read_limit_positions(),
+          surface.atlas().read_limit_normals()};
+}
+
+void expect_same_bits(const std::vector<std::vector<Float4>>& a, const std::vector<std::vector<Float4>>& b,
+                      const std::string& what)
+{
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    ASSERT_EQ(a[k].size(), b[k].size());
+    EXPECT_EQ(std::memcmp(a[k].data(), b[k].data(), a[k].size() * sizeof(Float4)), 0) << what << ", layer " << k;
+  }
+}
+
 TEST(GeometryBrush, PatchItemsAndTexelItemsGiveTheSameBits)
 {
-  // The whole-tile kernels' two forms (a work item per patch, per texel):
-  // a finest-level sculpt and a coarse one, whose rebuild runs subdivision
-  // and decoding, then the limit, under each.
-  std::vector<std::vector<Float4>> results;
+  // The whole-tile kernels' two forms (a work item per patch, per texel).
+  std::vector<std::vector<std::vector<Float4>>> results;
   for (const bool per_patch : {true, false}) {
     PaintSurface surface(test::runtime(), test::genus_two(), 4, AtlasStorage::Buffer);
     surface.atlas().set_patch_items(per_patch);
-    Stroke s = brush(Tool::Sculpt, {1.5f, 0.5f, 1.f}, 0.7f);
-    s.falloff = FALLOFF_SMOOTHSTEP;
-    s.amount = 0.1f;
-    surface.apply(s);
-    s.edit_level = 2;
-    s.points = {{0.5f, 0.5f, 1.f}};
-    surface.apply(s);
-    results.push_back(surface.atlas().read_positions(4));
-    results.push_back(surface.atlas().read_limit_positions());
-    results.push_back(surface.atlas().read_limit_normals());
+    results.push_back(after_fine_and_coarse_sculpts(surface));
   }
-  for (std::size_t k = 0; k < 3; ++k) {
-    ASSERT_EQ(results[k].size(), results[k + 3].size());
-    EXPECT_EQ(std::memcmp(results[k].data(), results[k + 3].data(), results[k].size() * sizeof(Float4)), 0)
-      << "layer " << k;
-  }
-  EXPECT_NE(std::memcmp(results[0].data(), PaintSurface(test::runtime(), test::genus_two(), 4, AtlasStorage::Buffer)
-                                              .atlas()
-                                              .read_positions(4)
-                                              .data(),
-                        results[0].size() * sizeof(Float4)),
+  expect_same_bits(results[0], results[1], "per patch against per texel");
+  EXPECT_NE(std::memcmp(results[0][0].data(), PaintSurface(test::runtime(), test::genus_two(), 4, AtlasStorage::Buffer)
+                                                 .atlas()
+                                                 .read_positions(4)
+                                                 .data(),
+                        results[0][0].size() * sizeof(Float4)),
             0)
     << "the strokes moved nothing";
+}
+
+TEST(GeometryBrush, HostListsAndDeviceFlagsGiveTheSameBits)
+{
+  // The two ways of making a neighbourhood set (Atlas::device_set_share()),
+  // under each storage: the sculpts, and their undo (which subdivides the
+  // edit level on a set).
+  for (const AtlasStorage storage : {AtlasStorage::Buffer, AtlasStorage::Image}) {
+    std::vector<std::vector<std::vector<Float4>>> results;
+    for (const bool flags : {false, true}) {
+      PaintSurface surface(test::runtime(), test::genus_two(), 4, storage);
+      surface.atlas().set_device_set_share(flags ? std::size_t(surface.atlas().topology().patch_count) : 0);
+      results.push_back(after_fine_and_coarse_sculpts(surface));
+      ASSERT_TRUE(surface.undo());
+      ASSERT_TRUE(surface.undo());
+      results.back().push_back(surface.atlas().read_positions(3));
+      results.back().push_back(surface.atlas().read_limit_normals());
+    }
+    expect_same_bits(results[0], results[1], storage == AtlasStorage::Image ? "image" : "buffer");
+  }
 }
 
 TEST(GeometryBrush, TaubinSmoothingRemovesNoiseAndKeepsTheVolume)

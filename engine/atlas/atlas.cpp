@@ -372,29 +372,34 @@ void Atlas::subdivide(int from_level, int to_level) { subdivide(from_level, to_l
 
 void Atlas::subdivide(int from_level, int to_level, const PatchSet* set, const cl::Memory* last)
 {
+  subdivide(from_level, to_level, device_set(set), last);
+}
+
+void Atlas::subdivide(int from_level, int to_level, const DeviceSet& lists, const cl::Memory* last)
+{
   if (from_level < 1 || to_level > max_level_ || from_level > to_level)
     throw InputError("cannot subdivide from level " + std::to_string(from_level) + " to " +
                      std::to_string(to_level) + " (atlas levels 1.." + std::to_string(max_level_) + ")");
   Kernels& k = *kernels_;
   cl::CommandQueue& q = runtime_->queue();
-  const DeviceSet lists = device_set(set);
   const cl::Buffer &patch_list = lists.patches, &edge_list = lists.edges, &ring_list = lists.rings;
   const int patches = lists.patch_count, edges = lists.edge_count, rings = lists.ring_count;
+  const cl_int generation = lists.generation;
   if (to_level == max_level_ && from_level < to_level && !last)
     limit_current_ = false;
   for (int l = from_level; l < to_level; ++l) {
     const LevelLayout s = layout(l), d = layout(l + 1);
     const cl::Memory &in = levels_[l - 1].mem(), &out = last && l + 1 == to_level ? *last : levels_[l].mem();
     if (edges > 0)
-      launch(q, k.subdivide_edges, range1d(edges), kLocal1D, in, k.side_work, k.edges, edge_list, edges, grid(s),
-             grid(d));
+      launch(q, k.subdivide_edges, range1d(edges), kLocal1D, in, k.side_work, k.edges, edge_list, edges,
+             lists.edge_flags, generation, grid(s), grid(d));
     if (rings > 0)
       launch(q, k.subdivide_corners, range1d(rings), kLocal1D, in, k.corner_work, k.rings, k.slots, ring_list, rings,
-             grid(s));
+             lists.ring_flags, generation, grid(s));
     if (patches > 0) {
       const TileLaunch t = tile_launch(k.subdivide_tiles, k.subdivide_patches, d, patches);
-      launch(q, t.kernel, t.global, t.local, in, out, grid(s), grid(d), patch_list, patches, k.patch_sides,
-             k.patch_rings, k.side_work, k.corner_work);
+      launch(q, t.kernel, t.global, t.local, in, out, grid(s), grid(d), patch_list, patches, lists.patch_flags,
+             generation, k.patch_sides, k.patch_rings, k.side_work, k.corner_work);
     }
   }
   // No wait: a list released here lives on until the kernels using it end,
@@ -609,7 +614,7 @@ DeviceSet Atlas::neighbourhood_on_device(const std::vector<int>& changed, const 
   // per item of the atlas, on every core. Sculpt steps on armadillo L2
   // broke even at 4-5% of the patches (host lists faster at 3.5%, flags at
   // 5.4% and more): flags from a sixteenth on (kDeviceSetShare).
-  if (changed.size() * kDeviceSetShare < std::size_t(topology_.patch_count)) {
+  if (changed.size() * device_set_share_ < std::size_t(topology_.patch_count)) {
     const PatchSet set = neighbourhood_set(changed);
     return device_set(&set);
   }

@@ -154,6 +154,8 @@ public:
   //! `last`, level to_level goes into that layer (of its layout) instead,
   //! and the atlas's own layer of that level stays as it is.
   void subdivide(int from_level, int to_level, const PatchSet* set, const cl::Memory* last = nullptr);
+  //! The same with the set as the device takes it (neighbourhood_on_device()).
+  void subdivide(int from_level, int to_level, const DeviceSet& set, const cl::Memory* last = nullptr);
   //! Gaussian reduction kernels: each level l-1 from level l, to <= l-1 < from.
   void reduce(int from_level, int to_level);
   //! Limit positions and normals of the surface at max_level.
@@ -187,10 +189,15 @@ public:
   //! A PatchSet's lists on the device; null: every patch, edge and ring.
   DeviceSet device_set(const PatchSet* set) const;
   //! neighbourhood_set(changed) on the device; `list`, if given, holds
-  //! `changed` there already. From 1 / kDeviceSetShare of the patches on,
-  //! the set is worked out on the device as flags instead of host lists.
+  //! `changed` there already. From 1 / device_set_share() of the patches
+  //! on, the set is worked out on the device as flags instead of host
+  //! lists.
   DeviceSet neighbourhood_on_device(const std::vector<int>& changed, const cl::Buffer* list = nullptr);
   static constexpr std::size_t kDeviceSetShare = 16;
+  //! The two ways give the same sets; the setter is for tests that compare
+  //! them (0: host lists always; the patch count: flags always).
+  std::size_t device_set_share() const { return device_set_share_; }
+  void set_device_set_share(std::size_t share) { device_set_share_ = share; }
   //! After the finest level was rewritten to what it was except on a set
   //! whose limit the caller recomputes with update_limit(): lets that update
   //! stay on the set instead of covering everything.
@@ -246,6 +253,7 @@ private:
   std::shared_ptr<Runtime> runtime_;
   AtlasStorage storage_;
   bool patch_items_ = false;
+  std::size_t device_set_share_ = kDeviceSetShare;
   int max_level_;
   BaseMesh base_;
   std::vector<int> base_face_order_;

@@ -149,16 +149,16 @@ std::vector<int> Multires::reach(const std::vector<int>& patches) const
   // subdivision stays inside those patches; each further step spreads by
   // a face of its level, and the frames by a finest texel: less than one
   // patch in all, so one ring. The limit stencil is the caller's
-  // neighbourhood_set().
+  // neighbourhood_on_device().
   return atlas_.topology().corner_neighbourhood(patches, 1);
 }
 
 void Multires::reconstruct(const std::vector<int>& affected)
 {
-  reconstruct(affected, atlas_.neighbourhood_set(affected));
+  reconstruct(affected, atlas_.neighbourhood_on_device(affected));
 }
 
-void Multires::reconstruct(const std::vector<int>& affected, const PatchSet& around)
+void Multires::reconstruct(const std::vector<int>& affected, const DeviceSet& around)
 {
   Device& d = *device_;
   Runtime& rt = atlas_.runtime();
@@ -173,7 +173,7 @@ void Multires::reconstruct(const std::vector<int>& affected, const PatchSet& aro
   // writes S' from there into the finest level, whose other texels keep S
   // as it is now, whatever changed it since the encoding (an undo, a stroke
   // elsewhere).
-  atlas_.subdivide(level_, finest, &around, &d.smooth);
+  atlas_.subdivide(level_, finest, around, &d.smooth);
   // Made while the subdivision runs.
   const PatchSet set = atlas_.patch_set(affected, Reach::All);
   const cl::Buffer patches = device_ints(rt.context(), set.patches), edges = device_ints(rt.context(), set.edges),

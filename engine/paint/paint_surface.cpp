@@ -271,8 +271,7 @@ void PaintSurface::restore(const Snapshot& s)
     // from them, which the next edit at that level reads around its reach.
     scatter(std::size_t(edit - s.layer_ids.begin()));
     if (s.edit_level + 1 < level_) {
-      const PatchSet set = atlas_->neighbourhood_set(s.patches);
-      atlas_->subdivide(s.edit_level, level_ - 1, &set);
+      atlas_->subdivide(s.edit_level, level_ - 1, atlas_->neighbourhood_on_device(s.patches));
     }
   }
   // Then the details, before the finest level, which they leave alone.
@@ -316,11 +315,10 @@ void PaintSurface::refresh_geometry(const std::vector<int>& patches, const cl::B
   // (Atlas::neighbourhood_set(); with many patches made on the device).
   const DeviceSet set = atlas_->neighbourhood_on_device(patches, list);
   phase_done(&StepPhases::lists);
-  atlas_->update_limit(set);
-  phase_done(&StepPhases::limit);
+  refresh_geometry(set);
 }
 
-void PaintSurface::refresh_geometry(const PatchSet& set)
+void PaintSurface::refresh_geometry(const DeviceSet& set)
 {
   atlas_->update_limit(set); // and the patches' bounds
   phase_done(&StepPhases::limit);
@@ -924,7 +922,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
       refresh_geometry(patches, &list);
       return;
     }
-    const PatchSet around = atlas_->neighbourhood_set(changed);
+    const DeviceSet around = atlas_->neighbourhood_on_device(changed);
     phase_done(&StepPhases::lists);
     multires_->reconstruct(changed, around);
     for (const int p : changed)
