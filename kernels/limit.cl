@@ -42,7 +42,8 @@ TEXEL_INLINE void unit_normals4(float3 c0, float3 c1, float3 c2, float3 c3, floa
 }
 
 /* A run of texels k = start .. end - 1 whose normals go four at a time
- * through unit_normals4(): NEXT(k, pos, c) makes texel k's position and
+ * through unit_normals4() (a lone last texel, as at level 2, through
+ * normalize() itself): NEXT(k, pos, c) makes texel k's position and
  * unnormalised normal (in order: a window may slide), STORE(k, pos, nrm)
  * writes it; the lanes past the end are neither made nor stored. */
 #define IN_FOURS(start, end, NEXT, STORE)                                            \

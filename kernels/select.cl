@@ -1,8 +1,9 @@
 /* Sets of patches with their sides and corners, worked out on the device as
  * flags (UNFLAGGED in atlas_access.cl) for sets too large for host lists
  * to pay: a flag holds the generation of the last set that took the item,
- * so no pass clears them. Several items may flag one byte at once; they
- * all store the same value. */
+ * so a new set needs no pass that clears them (the host clears them when
+ * the generations wrap, once in 255 sets). Several items may flag one
+ * byte at once; they all store the same value. */
 
 /* Range: count. Flags the corners (rings) of the listed patches. */
 __kernel void flag_corners(__global const int *list, int count, __global const int4 *restrict patch_rings,

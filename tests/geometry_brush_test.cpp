@@ -10,13 +10,14 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>   // for std::sqrt, std::sin
 #include <algorithm>  // for std::max_element
+#include <cmath>      // for std::sqrt, std::sin
 #include <cstring>    // for std::memcmp
 #include <functional> // for std::function
 #include <map>        // for std::map
-#include <set>     // for std::multiset, std::set
-#include <string>  // for std::string
+#include <set>        // for std::multiset, std::set
+#include <stdexcept>  // for std::logic_error
+#include <string>     // for std::string
 
 namespace meshpaint {
 namespace {
@@ -283,21 +284,39 @@ TEST(GeometryBrush, PatchItemsAndTexelItemsGiveTheSameBits)
 TEST(GeometryBrush, HostListsAndDeviceFlagsGiveTheSameBits)
 {
   // The two ways of making a neighbourhood set (Atlas::device_set_share()),
-  // under each storage: the sculpts, and their undo (which subdivides the
-  // edit level on a set).
-  for (const AtlasStorage storage : {AtlasStorage::Buffer, AtlasStorage::Image}) {
-    std::vector<std::vector<std::vector<Float4>>> results;
-    for (const bool flags : {false, true}) {
-      PaintSurface surface(test::runtime(), test::genus_two(), 4, storage);
-      surface.atlas().set_device_set_share(flags ? std::size_t(surface.atlas().topology().patch_count) : 0);
-      results.push_back(after_fine_and_coarse_sculpts(surface));
-      ASSERT_TRUE(surface.undo());
-      ASSERT_TRUE(surface.undo());
-      results.back().push_back(surface.atlas().read_positions(3));
-      results.back().push_back(surface.atlas().read_limit_normals());
+  // under each storage and each form of the whole-tile kernels: the
+  // sculpts, and their undo (which subdivides the edit level on a set).
+  for (const AtlasStorage storage : {AtlasStorage::Buffer, AtlasStorage::Image})
+    for (const bool per_patch : {true, false}) {
+      std::vector<std::vector<std::vector<Float4>>> results;
+      for (const bool flags : {false, true}) {
+        PaintSurface surface(test::runtime(), test::genus_two(), 4, storage);
+        surface.atlas().set_patch_items(per_patch);
+        surface.atlas().set_device_set_share(flags ? std::size_t(surface.atlas().topology().patch_count) : 0);
+        results.push_back(after_fine_and_coarse_sculpts(surface));
+        ASSERT_TRUE(surface.undo());
+        ASSERT_TRUE(surface.undo());
+        results.back().push_back(surface.atlas().read_positions(3));
+        results.back().push_back(surface.atlas().read_limit_normals());
+      }
+      expect_same_bits(results[0], results[1],
+                       std::string(storage == AtlasStorage::Image ? "image" : "buffer") +
+                         (per_patch ? ", per patch" : ", per texel"));
     }
-    expect_same_bits(results[0], results[1], storage == AtlasStorage::Image ? "image" : "buffer");
-  }
+}
+
+TEST(GeometryBrush, AStaleDeviceSetIsRefused)
+{
+  // Flags belong to the last set made: an older set's would drop what the
+  // two differ in, so taking one throws instead.
+  PaintSurface surface(test::runtime(), test::genus_two(), 4, AtlasStorage::Buffer);
+  Atlas& atlas = surface.atlas();
+  atlas.set_device_set_share(std::size_t(atlas.topology().patch_count)); // flags always
+  const DeviceSet older = atlas.neighbourhood_on_device({0, 1, 2});
+  const DeviceSet newer = atlas.neighbourhood_on_device({3});
+  EXPECT_NO_THROW(atlas.update_limit(newer));
+  EXPECT_THROW(atlas.update_limit(older), std::logic_error);
+  EXPECT_THROW(atlas.subdivide(1, 4, older), std::logic_error);
 }
 
 TEST(GeometryBrush, TaubinSmoothingRemovesNoiseAndKeepsTheVolume)

@@ -10,6 +10,7 @@
 #include <algorithm> // for std::max, std::sort, std::unique, std::binary_search
 #include <cmath>     // for std::cos, std::sin, std::sqrt
 #include <cstdlib>   // for std::getenv
+#include <stdexcept> // for std::logic_error
 
 namespace meshpaint {
 namespace {
@@ -375,16 +376,17 @@ void Atlas::subdivide(int from_level, int to_level, const PatchSet* set, const c
   subdivide(from_level, to_level, device_set(set), last);
 }
 
-void Atlas::subdivide(int from_level, int to_level, const DeviceSet& lists, const cl::Memory* last)
+void Atlas::subdivide(int from_level, int to_level, const DeviceSet& set, const cl::Memory* last)
 {
   if (from_level < 1 || to_level > max_level_ || from_level > to_level)
     throw InputError("cannot subdivide from level " + std::to_string(from_level) + " to " +
                      std::to_string(to_level) + " (atlas levels 1.." + std::to_string(max_level_) + ")");
+  check_current(set);
   Kernels& k = *kernels_;
   cl::CommandQueue& q = runtime_->queue();
-  const cl::Buffer &patch_list = lists.patches, &edge_list = lists.edges, &ring_list = lists.rings;
-  const int patches = lists.patch_count, edges = lists.edge_count, rings = lists.ring_count;
-  const cl_int generation = lists.generation;
+  const cl::Buffer &patch_list = set.patches, &edge_list = set.edges, &ring_list = set.rings;
+  const int patches = set.patch_count, edges = set.edge_count, rings = set.ring_count;
+  const cl_int generation = set.generation;
   if (to_level == max_level_ && from_level < to_level && !last)
     limit_current_ = false;
   for (int l = from_level; l < to_level; ++l) {
@@ -392,13 +394,13 @@ void Atlas::subdivide(int from_level, int to_level, const DeviceSet& lists, cons
     const cl::Memory &in = levels_[l - 1].mem(), &out = last && l + 1 == to_level ? *last : levels_[l].mem();
     if (edges > 0)
       launch(q, k.subdivide_edges, range1d(edges), kLocal1D, in, k.side_work, k.edges, edge_list, edges,
-             lists.edge_flags, generation, grid(s), grid(d));
+             set.edge_flags, generation, grid(s), grid(d));
     if (rings > 0)
       launch(q, k.subdivide_corners, range1d(rings), kLocal1D, in, k.corner_work, k.rings, k.slots, ring_list, rings,
-             lists.ring_flags, generation, grid(s));
+             set.ring_flags, generation, grid(s));
     if (patches > 0) {
       const TileLaunch t = tile_launch(k.subdivide_tiles, k.subdivide_patches, d, patches);
-      launch(q, t.kernel, t.global, t.local, in, out, grid(s), grid(d), patch_list, patches, lists.patch_flags,
+      launch(q, t.kernel, t.global, t.local, in, out, grid(s), grid(d), patch_list, patches, set.patch_flags,
              generation, k.patch_sides, k.patch_rings, k.side_work, k.corner_work);
     }
   }
@@ -446,21 +448,22 @@ void Atlas::compute_limit_of(int level, const cl::Memory& pos, const cl::Memory&
   limit_on(level, pos, nrm, device_set(set), bounds);
 }
 
-void Atlas::limit_on(int level, const cl::Memory& pos, const cl::Memory& nrm, const DeviceSet& lists,
+void Atlas::limit_on(int level, const cl::Memory& pos, const cl::Memory& nrm, const DeviceSet& set,
                      const cl::Buffer* bounds)
 {
+  check_current(set);
   const LevelLayout l = layout(level);
   Kernels& k = *kernels_;
   cl::CommandQueue& q = runtime_->queue();
-  const int patches = lists.patch_count, edges = lists.edge_count, rings = lists.ring_count;
-  const cl_int generation = lists.generation;
+  const int patches = set.patch_count, edges = set.edge_count, rings = set.ring_count;
+  const cl_int generation = set.generation;
   const cl::Memory& in = levels_[level - 1].mem();
   if (l.n > 1 && edges > 0)
-    launch(q, k.limit_edges, range1d(edges), kLocal1D, in, k.side_work, k.edges, lists.edges, edges,
-           lists.edge_flags, generation, grid(l));
+    launch(q, k.limit_edges, range1d(edges), kLocal1D, in, k.side_work, k.edges, set.edges, edges,
+           set.edge_flags, generation, grid(l));
   if (rings > 0)
     launch(q, k.limit_corners, range1d(rings), kLocal1D, in, k.corner_work, k.rings, k.slots, k.valences,
-           lists.rings, rings, lists.ring_flags, generation, grid(l));
+           set.rings, rings, set.ring_flags, generation, grid(l));
   if (patches > 0) {
     const TileLaunch t = tile_launch(k.limit_tiles, k.limit_patches, l, patches);
     // The per-patch kernel makes the bounds as it goes where it may read
@@ -468,11 +471,11 @@ void Atlas::limit_on(int level, const cl::Memory& pos, const cl::Memory& nrm, co
     const bool fused = bounds && patch_items_ && storage_ == AtlasStorage::Buffer;
     if (patch_items_)
       k.limit_patches.setArg(12, fused ? *bounds : cl::Buffer()); // its last, beyond limit_tiles' own
-    launch(q, t.kernel, t.global, t.local, in, pos, nrm, grid(l), lists.patches, patches, lists.patch_flags,
+    launch(q, t.kernel, t.global, t.local, in, pos, nrm, grid(l), set.patches, patches, set.patch_flags,
            generation, k.patch_sides, k.patch_rings, k.side_work, k.corner_work);
     if (bounds && !fused)
-      launch(q, k.patch_bounds, range1d(patches), kLocal1D, pos, grid(l), lists.patches, patches,
-             lists.patch_flags, generation, *bounds);
+      launch(q, k.patch_bounds, range1d(patches), kLocal1D, pos, grid(l), set.patches, patches,
+             set.patch_flags, generation, *bounds);
   }
 }
 
@@ -608,8 +611,17 @@ DeviceSet Atlas::device_set(const PatchSet* set) const
   return lists;
 }
 
+void Atlas::check_current(const DeviceSet& set) const
+{
+  // Flags of an older set have been overwritten where the sets differ.
+  if (set.patch_flags() && set.generation != kernels_->generation)
+    throw std::logic_error("a device-made set used after a newer one was made");
+}
+
 DeviceSet Atlas::neighbourhood_on_device(const std::vector<int>& changed, const cl::Buffer* list)
 {
+  if (changed.size() == std::size_t(topology_.patch_count))
+    return device_set(nullptr); // every patch: no set to make
   // Host lists cost per patch listed, on one core; the flags' passes cost
   // per item of the atlas, on every core. Sculpt steps on armadillo L2
   // broke even at 4-5% of the patches (host lists faster at 3.5%, flags at

@@ -188,10 +188,11 @@ public:
   void update_limit(const DeviceSet& set);
   //! A PatchSet's lists on the device; null: every patch, edge and ring.
   DeviceSet device_set(const PatchSet* set) const;
-  //! neighbourhood_set(changed) on the device; `list`, if given, holds
-  //! `changed` there already. From 1 / device_set_share() of the patches
-  //! on, the set is worked out on the device as flags instead of host
-  //! lists.
+  //! neighbourhood_set(changed) in the form the device takes; `list`, if
+  //! given, holds `changed` there already. From 1 / device_set_share() of
+  //! the patches on, the set is worked out on the device as flags instead
+  //! of host lists; that leaves the flags of an earlier set stale (taking
+  //! one then throws std::logic_error).
   DeviceSet neighbourhood_on_device(const std::vector<int>& changed, const cl::Buffer* list = nullptr);
   static constexpr std::size_t kDeviceSetShare = 16;
   //! The two ways give the same sets; the setter is for tests that compare
@@ -239,8 +240,10 @@ private:
   void write_layer(Layer& layer, const LevelLayout& l, const std::vector<Float4>& texels);
   Layer make_layer(const LevelLayout& l);
   //! compute_limit_of() on a set as device lists or flags.
-  void limit_on(int level, const cl::Memory& positions, const cl::Memory& normals, const DeviceSet& lists,
+  void limit_on(int level, const cl::Memory& positions, const cl::Memory& normals, const DeviceSet& set,
                 const cl::Buffer* bounds);
+  //! Throws where `set` has flags that a newer set overwrote.
+  void check_current(const DeviceSet& set) const;
   //! The set of `patches` (in patch order, and the ones patch_marks_ holds).
   PatchSet marked_set(std::vector<int> patches, Reach reach) const;
   //! PatchSet::outside of patch p, the set being what patch_marks_ holds

@@ -77,7 +77,7 @@ public:
   //! to the caller (Atlas::update_limit).
   void reconstruct(const std::vector<int>& affected);
   //! The same, given Atlas::neighbourhood_on_device(affected), which the
-  //! caller's limit update takes too.
+  //! caller's limit update takes too (this makes no device set of its own).
   void reconstruct(const std::vector<int>& affected, const DeviceSet& around);
 
   //! Worst growth of a patch's longest finest-level grid edge since

@@ -46,11 +46,18 @@ inline std::vector<int> marked_in_order(std::vector<int> listed, const Marks& ma
     std::sort(listed.begin(), listed.end());
     return listed;
   }
-  // As many as listed: written in place, with no push_back per item.
+  // Written in place: no push_back per item where `listed` holds each
+  // marked item once, and right whatever it holds.
   std::size_t k = 0;
   for (std::size_t i = 0; i < n; ++i)
-    if (marks.marked(i))
-      listed[k++] = int(i);
+    if (marks.marked(i)) {
+      if (k < listed.size())
+        listed[k] = int(i);
+      else
+        listed.push_back(int(i));
+      ++k;
+    }
+  listed.resize(k);
   return listed;
 }
 
