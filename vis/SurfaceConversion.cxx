@@ -6,7 +6,8 @@
 #include <algorithm> // for std::min, std::max
 #include <cmath>     // for std::floor
 #include <cstring>   // for std::memcmp, std::memcpy
-#include <stdexcept> // for std::invalid_argument
+#include <stdexcept>   // for std::invalid_argument
+#include <type_traits> // for std::remove_pointer_t
 
 #include <vtkCellArray.h>          // for vtkCellArray
 #include <vtkFloatArray.h>         // for vtkFloatArray
@@ -216,14 +217,24 @@ void write_png(const std::vector<float>& values, int width, int height, int comp
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(width, height, 1);
   image->AllocateScalars(sixteen ? VTK_UNSIGNED_SHORT : VTK_UNSIGNED_CHAR, components);
-  const double top = sixteen ? 65535.0 : 255.0;
-  for (int y = 0; y < height; ++y) // VTK's row 0 is the bottom of the picture
-    for (int x = 0; x < width; ++x)
-      for (int c = 0; c < components; ++c) {
-        const float v = (values[(std::size_t(y) * width + x) * components + c] - offset) * scale;
-        const double q = std::min(1.0, std::max(0.0, double(v))) * top + 0.5;
-        image->SetScalarComponentFromDouble(x, height - 1 - y, 0, c, std::floor(q));
+  // Straight into the scalars: a SetScalarComponentFromDouble() per value
+  // (a virtual lookup of the array and the index each time) had been most
+  // of a texture map's time.
+  const auto quantise = [&](auto* out, double top) {
+    const std::size_t row = std::size_t(width) * std::size_t(components);
+    for (int y = 0; y < height; ++y) { // VTK's row 0 is the bottom of the picture
+      const float* in = values.data() + std::size_t(y) * row;
+      auto* to = out + std::size_t(height - 1 - y) * row;
+      for (std::size_t k = 0; k < row; ++k) {
+        const double q = std::min(1.0, std::max(0.0, double((in[k] - offset) * scale))) * top + 0.5;
+        to[k] = static_cast<std::remove_pointer_t<decltype(out)>>(std::floor(q));
       }
+    }
+  };
+  if (sixteen)
+    quantise(static_cast<unsigned short*>(image->GetScalarPointer()), 65535.0);
+  else
+    quantise(static_cast<unsigned char*>(image->GetScalarPointer()), 255.0);
   write_atomically(path, [&](const std::string& tmp) {
     auto writer = vtkSmartPointer<vtkPNGWriter>::New();
     writer->SetFileName(tmp.c_str());
