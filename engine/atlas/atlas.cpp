@@ -658,19 +658,20 @@ DeviceSet Atlas::neighbourhood_on_device(const std::vector<int>& changed, const 
 
 void Atlas::update_limit(const PatchSet& set)
 {
-  if (!limit_positions_ || !limit_current_ || int(set.patches.size()) == topology_.patch_count)
-    compute_limit(); // everything: no lists to build or upload
+  // A stale limit (limit_current_ is never set without the layers) or a
+  // set of everything: the whole limit, with no lists to build or upload.
+  if (!limit_current_ || int(set.patches.size()) == topology_.patch_count)
+    compute_limit();
   else
     update_limit(device_set(&set));
 }
 
 void Atlas::update_limit(const DeviceSet& set)
 {
-  if (!limit_positions_ || !limit_current_) {
+  if (!limit_current_)
     compute_limit();
-    return;
-  }
-  limit_on(max_level_, limit_positions_->mem(), limit_normals_->mem(), set, &limit_bounds_);
+  else
+    limit_on(max_level_, limit_positions_->mem(), limit_normals_->mem(), set, &limit_bounds_);
 }
 
 const cl::Memory& Atlas::level_layer(int level)
