@@ -18,17 +18,6 @@
 namespace meshpaint {
 namespace {
 
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-float dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 cross(const Vec3& a, const Vec3& b)
-{
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Vec3 unit(const Vec3& a)
-{
-  const float l = std::sqrt(dot(a, a));
-  return {a[0] / l, a[1] / l, a[2] / l};
-}
 Vec3 xyz(const Float4& t) { return {t[0], t[1], t[2]}; }
 
 Stroke red_dab(const Vec3& at, float radius, int space)
@@ -109,8 +98,8 @@ TEST(BrushSpace, ScreenIsTheDiscSeenFromTheCamera)
   s.has_camera = true;
   surface.apply(s);
   // The same projection as the kernel: screen offset at the centre's depth.
-  const Vec3 eye = s.camera.position, dir = unit(sub(s.camera.focal_point, eye)),
-             right = unit(cross(dir, s.camera.view_up)), up = cross(right, dir);
+  const Vec3 eye = s.camera.position, dir = normalized(sub(s.camera.focal_point, eye)),
+             right = normalized(cross(dir, s.camera.view_up)), up = cross(right, dir);
   const auto screen = [&](const Vec3& x, float& z) {
     const Vec3 v = sub(x, eye);
     z = dot(v, dir);

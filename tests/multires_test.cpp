@@ -22,7 +22,7 @@ namespace {
 
 constexpr int kLevel = 5;
 
-double length(const Vec3& v) { return std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]); }
+double length_of(const Vec3& v) { return std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]); }
 
 double distance(const Float4& a, const Float4& b)
 {
@@ -379,7 +379,7 @@ TEST(Multires, LevelOfDetailCarriesTheFinestNormals)
     EXPECT_LT(coarse.surface.points.size(), full.surface.points.size());
     ASSERT_EQ(coarse.surface.normals.size(), coarse.surface.points.size());
     for (const Vec3& n : coarse.surface.normals)
-      ASSERT_NEAR(length(n), 1.0, 1e-5);
+      ASSERT_NEAR(length_of(n), 1.0, 1e-5);
     // Every coarse vertex has the normal of some finest vertex.
     ASSERT_EQ(coarse.diffuse.size(), coarse.surface.points.size());
   }

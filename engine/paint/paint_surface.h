@@ -1,5 +1,8 @@
 // A surface to paint on: the atlas at the painting level, its limit surface,
-// the paint channels, and the brush pipeline that changes them.
+// the paint channels, and the brush pipeline that changes them. The class's
+// parts live in files named for them: brush_placement.cpp, colour_brushes.cpp,
+// geometry_brushes.cpp, snapshots.cpp, subsurface_light.cpp,
+// painted_surface.cpp (reading the surface back), paint_memory.h (what fits).
 #pragma once
 
 #include "atlas/atlas.h"
@@ -217,8 +220,6 @@ private:
   void smear(const std::vector<int>& patches, BrushDab dab, std::optional<std::array<Float4, 2>>& carried);
   //! The stroke's pattern samples and brush image to the device, sizes into the dab.
   void upload_rasters(const Stroke& stroke, BrushDab& dab);
-  //! The brush image's axes in the tangent plane at a dab.
-  static void stamp_axes(const Vec3& normal, const Vec3& heading, BrushDab& dab);
   //! The dab's brush space at its centre (camera axes, the centre's texel);
   //! false where a screen-space stroke meets a silhouette and ends.
   bool aim(const Stroke& stroke, const Vec3& point, const Vec3& normal, const Vec3& heading, const CullRecord& closest,

@@ -524,6 +524,21 @@ const char* tool_name(Tool tool)
   return names[int(tool)];
 }
 
+ToolFamily tool_family(const Stroke& stroke)
+{
+  switch (stroke.tool) {
+  case Tool::Label: return ToolFamily::Label;
+  case Tool::Blur:
+  case Tool::Smear: return ToolFamily::ColourFilter;
+  case Tool::Smooth: return stroke.target_colour ? ToolFamily::ColourFilter : ToolFamily::Smooth;
+  case Tool::Sculpt:
+  case Tool::Inflate:
+  case Tool::Flatten:
+  case Tool::Grab: return ToolFamily::Move;
+  default: return ToolFamily::Paint;
+  }
+}
+
 bool Stroke::operator==(const Stroke& o) const
 {
   return tool == o.tool && points == o.points && pressure == o.pressure && radius == o.radius &&

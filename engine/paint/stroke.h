@@ -89,6 +89,19 @@ struct Stroke
   bool operator!=(const Stroke& o) const { return !(*this == o); }
 };
 
+//! What a stroke changes, which decides its undo layers, the side of a
+//! two-sided surface it works on, and the part of the pipeline that runs it.
+enum class ToolFamily
+{
+  Paint,        //!< paint, wash, dip: the paint equation on the channels
+  Label,        //!< the label channel, which belongs to the surface, not to one side
+  ColourFilter, //!< blur, smear, smooth with target_colour: filters of diffuse and specular
+  Move,         //!< sculpt, inflate, flatten, grab: control points moved by weights
+  Smooth        //!< smooth: Laplacian or Taubin passes over control points
+};
+
+ToolFamily tool_family(const Stroke& stroke);
+
 //! A stroke-script error about one key of one stroke.
 class StrokeKeyError : public InputError
 {

@@ -1,0 +1,63 @@
+// What PaintSurface keeps on the device, and the kernels it runs there:
+// shared by the files that implement PaintSurface (one per part of the brush
+// pipeline), included by nothing else.
+#pragma once
+
+#include "cl/append_buffer.h"
+#include "cl/launch.h"
+#include "cl/program.h"
+#include "paint/paint_surface.h"
+#include "paint/welded_smoothing.h"
+
+#include <memory> // for std::unique_ptr
+
+namespace meshpaint {
+
+//! Work items per group of the one-dimensional launches (a patch or a
+//! droplet each).
+constexpr std::size_t kGroup = 64;
+
+//! Kernels that filter or copy a layer, built for one storage path.
+struct PaintSurface::LayerKernels
+{
+  cl::Program program;
+  cl::Kernel copy_tiles, gather_tiles, scatter_tiles;
+  WeldedSmoothing::LayerKernels welded;
+
+  void build(Runtime& rt, AtlasStorage storage)
+  {
+    program = build_program(rt,
+                            std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "brush.cl", "geometry.cl",
+                                                     "lighting.cl"},
+                            storage_options(storage, rt.info()));
+    copy_tiles = cl::Kernel(program, "copy_tiles");
+    welded.gather = cl::Kernel(program, "welded_gather");
+    welded.scatter = cl::Kernel(program, "welded_scatter");
+    gather_tiles = cl::Kernel(program, "gather_tiles");
+    scatter_tiles = cl::Kernel(program, "scatter_tiles");
+  }
+};
+
+//! Device state of the brush pipeline. Positions live in the atlas's
+//! storage; paint channels, weights and lists are always buffers, so their
+//! kernels come from a buffer build (the same one when the atlas uses
+//! buffers).
+struct PaintSurface::Device
+{
+  LayerKernels positions, channels;
+  cl::Kernel brush_cull, brush_reach, paint_dab, dab_weights, move_points, move_dab, move_dab_patches;
+  cl::Kernel dab_pickup;
+  cl::Kernel spray_pick, spray_points;
+  cl::Buffer counters, active, dab, weights;
+  cl::Buffer open_sides; // brush_reach: a byte per patch
+  AppendBuffer culled;   // CullRecord
+  cl::Buffer unfold; // a parameter dab's PatchUnfolding per listed patch (one entry otherwise)
+  std::size_t active_capacity = 0, unfold_capacity = 1;
+  cl::Buffer diffuse, specular, material, channel_work;
+  cl::Buffer inside_diffuse, inside_specular, inside_material; // two-sided surfaces
+  cl::Buffer raster, stamp; // the stroke's pattern samples and brush image (one float when none)
+  cl::Memory position_work; // image storage: a scratch layer of the finest level for moves
+  std::unique_ptr<WeldedSmoothing> smoothing;
+};
+
+} // namespace meshpaint

@@ -1,0 +1,16 @@
+// Device memory of painting: what the paint layers add to the atlas, checked
+// before anything is allocated.
+#pragma once
+
+#include <string> // for std::string
+
+namespace meshpaint {
+
+class Atlas;
+
+//! Refuses a painting level whose paint layers would not fit beside the
+//! atlas (which has checked its own), before they are allocated.
+//! \throw ResourceError naming the largest level that fits for painting.
+void check_paint_fits(Atlas& atlas, int level, const std::string& name);
+
+} // namespace meshpaint
