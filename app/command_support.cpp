@@ -1,15 +1,53 @@
-#include "commands.h"
+#include "command_support.h"
 
 #include "core/errors.h"
 #include "project/project_surface.h"
 
 #include <iostream> // for std::cerr
+#include <new>      // for std::bad_alloc
 
 #ifndef MESHPAINT_SOURCE_DIR
 #error "MESHPAINT_SOURCE_DIR must name the source tree"
 #endif
 
 namespace meshpaint::cli {
+namespace {
+
+//! 2: the user's input or the device's limits; 3: the device; 1: a defect.
+int exit_code(const std::exception& e)
+{
+  using namespace meshpaint;
+  if (dynamic_cast<const InputError*>(&e) || dynamic_cast<const IOError*>(&e) ||
+      dynamic_cast<const ResourceError*>(&e) || dynamic_cast<const std::bad_alloc*>(&e))
+    return 2;
+  if (dynamic_cast<const DeviceError*>(&e) || dynamic_cast<const cl::Error*>(&e))
+    return 3;
+  return 1;
+}
+
+std::string message(const std::exception& e, int code)
+{
+  if (const auto* cl_error = dynamic_cast<const cl::Error*>(&e))
+    return "OpenCL error: " + meshpaint::describe(*cl_error);
+  if (dynamic_cast<const std::bad_alloc*>(&e))
+    return "out of host memory";
+  return code == 1 ? std::string("internal error: ") + e.what() : std::string(e.what());
+}
+
+
+} // namespace
+
+int run_command(const std::string& program, const std::string& command, const std::function<int()>& run)
+{
+  try {
+    return run();
+  } catch (const std::exception& e) {
+    const int code = exit_code(e);
+    std::cerr << program << " " << command << ": " << message(e, code) << "\n";
+    return code;
+  }
+}
+
 
 std::shared_ptr<Runtime> open_device(const Args& args) { return Runtime::open(args.value("--device")); }
 

@@ -1,7 +1,8 @@
-// The `meshpaint` commands and what they share.
+// The `meshpaint` commands, each in its own file, and what one command
+// lends another.
 #pragma once
 
-#include "args.h"
+#include "command_support.h"
 
 #include "atlas/atlas.h"
 #include "cl/runtime.h"
@@ -21,11 +22,8 @@
 
 namespace meshpaint::cli {
 
-using Argv = std::vector<std::string>;
-
 int info_command(const Argv& argv);
 int subdivide_command(const Argv& argv);
-int bench_command(const Argv& argv);
 int demo_command(const Argv& argv);
 int devices_command(const Argv& argv);
 int paint_command(const Argv& argv);
@@ -33,44 +31,6 @@ int stats_command(const Argv& argv);
 int transfer_command(const Argv& argv);
 int fit_command(const Argv& argv);
 int view_command(const Argv& argv);
-
-//! The device named by --device (or MESHPAINT_DEVICE, or the default).
-std::shared_ptr<Runtime> open_device(const Args& args);
-
-//! Loads a mesh and reports on stderr what import repaired.
-BaseMesh load_reported(const std::string& path);
-
-//! What the commands that take a mesh take: a mesh file, or a project.
-struct MeshOrProject
-{
-  std::string path;
-  BaseMesh loaded;                //!< the mesh file's mesh; empty for a project
-  std::optional<Project> project; //!< set when `path` named a project
-  //! The base mesh either way (a project's in atlas order).
-  const BaseMesh& mesh() const { return project ? project->mesh : loaded; }
-};
-//! Loads PATH as a project when it ends in .meshpaint, else as a mesh
-//! (reporting repairs).
-MeshOrProject open_mesh_or_project(const std::string& path);
-//! The level to work at: a project's own level (a differing --level is an
-//! error), else --level, else `fallback`.
-int input_level(const Args& args, const MeshOrProject& input, int fallback);
-//! The one level a scene of several inputs works at (input_level() of the
-//! first). \throw InputError when another input is at a different level.
-int scene_level(const Args& args, const std::vector<MeshOrProject>& inputs, int fallback);
-//! \throw InputError naming the first stroke whose edit_level is finer
-//! than `level`, before anything is painted.
-void check_edit_levels(const StrokeScript& script, int level);
-//! A painting surface at `level`: the project's state, or the fresh mesh.
-std::unique_ptr<PaintSurface> open_paint_surface(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage,
-                                                 const MeshOrProject& input, int level);
-//! --storage when given, else the device's default.
-AtlasStorage chosen_storage(const Args& args, const Runtime& runtime);
-
-//! Where the set-up script puts the scans (data/scans in the source tree).
-std::string scans_dir();
-//! The bundled stroke scripts (data/strokes in the source tree).
-std::string strokes_dir();
 
 //! Paints `script` onto the surface and, unless DIR is empty, writes
 //! DIR/surface.vtp and the textured model (model.obj, model.mtl, PNG maps),

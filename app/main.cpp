@@ -1,15 +1,17 @@
 // meshpaint: the command line. Each command lives in its own file; this one
-// dispatches and turns every error into one line (a kernel build failure adds
-// the compiler's log below it) and an exit code:
-// 2 for bad input, files, and requests that do not fit the device;
-// 3 for device failures (no OpenCL platform, kernel build, OpenCL call).
+// dispatches (run_command() turns errors into one line and an exit code).
+// `meshpaint bench ...` runs the benchmark program beside this one, which the
+// product does not carry.
 
 #include "commands.h"
 
 #include "core/errors.h"
 
-#include <iostream> // for std::cerr, std::cout
+#include <cerrno>   // for errno
+#include <cstring>  // for std::strerror
+#include <iostream> // for std::cout
 #include <map>      // for std::map
+#include <unistd.h> // for execv, readlink
 
 namespace {
 
@@ -59,25 +61,20 @@ options of demo, info, subdivide, paint, view, stats and bench: --device SEL (gp
 or part of a name), --storage buffer|image
 )";
 
-//! 2: the user's input or the device's limits; 3: the device; 1: a defect.
-int exit_code(const std::exception& e)
+//! Replaces this process by meshpaint-bench from this program's folder.
+int run_benchmarks(char** argv)
 {
-  using namespace meshpaint;
-  if (dynamic_cast<const InputError*>(&e) || dynamic_cast<const IOError*>(&e) ||
-      dynamic_cast<const ResourceError*>(&e) || dynamic_cast<const std::bad_alloc*>(&e))
-    return 2;
-  if (dynamic_cast<const DeviceError*>(&e) || dynamic_cast<const cl::Error*>(&e))
-    return 3;
-  return 1;
-}
-
-std::string message(const std::exception& e, int code)
-{
-  if (const auto* cl_error = dynamic_cast<const cl::Error*>(&e))
-    return "OpenCL error: " + meshpaint::describe(*cl_error);
-  if (dynamic_cast<const std::bad_alloc*>(&e))
-    return "out of host memory";
-  return code == 1 ? std::string("internal error: ") + e.what() : std::string(e.what());
+  using meshpaint::ResourceError;
+  std::string self(4096, '\0');
+  const ssize_t n = readlink("/proc/self/exe", self.data(), self.size() - 1);
+  if (n <= 0)
+    throw ResourceError("cannot find this program's folder to run meshpaint-bench: " + std::string(std::strerror(errno)));
+  self.resize(std::size_t(n));
+  const std::string bench = self.substr(0, self.rfind('/') + 1) + "meshpaint-bench";
+  argv[1] = const_cast<char*>("meshpaint-bench");
+  execv(bench.c_str(), argv + 1);
+  throw ResourceError("cannot run " + bench + " (" + std::strerror(errno) +
+                      "): the benchmarks are the separate target meshpaint-bench");
 }
 
 } // namespace
@@ -89,22 +86,20 @@ int main(int argc, char** argv)
   const std::string command = argc > 1 ? argv[1] : "help";
   const Argv rest(argv + std::min(argc, 2), argv + argc);
   static const std::map<std::string, int (*)(const Argv&)> commands = {
-    {"info", info_command},   {"subdivide", subdivide_command}, {"bench", bench_command},
+    {"info", info_command},   {"subdivide", subdivide_command},
     {"demo", demo_command},   {"devices", devices_command}, {"paint", paint_command},
     {"stats", stats_command}, {"transfer", transfer_command},
     {"fit", fit_command}, {"view", view_command}};
-  try {
+  return run_command("meshpaint", command, [&] {
     if (command == "help" || command == "--help" || command == "-h") {
       std::cout << kUsage;
       return 0;
     }
+    if (command == "bench")
+      return run_benchmarks(argv);
     const auto it = commands.find(command);
     if (it == commands.end())
       throw InputError("unknown command '" + command + "' (see meshpaint help)");
     return it->second(rest);
-  } catch (const std::exception& e) {
-    const int code = exit_code(e);
-    std::cerr << "meshpaint " << command << ": " << message(e, code) << "\n";
-    return code;
-  }
+  });
 }

@@ -2,7 +2,7 @@
 // time by mesh size and brush size), and full-surface smoothing against VTK
 // and OpenMesh on the same surface, all in one run.
 
-#include "commands.h"
+#include "benchmarks.h"
 #include "host_memory.h"
 #include "table.h"
 

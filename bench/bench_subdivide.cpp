@@ -1,7 +1,7 @@
 // meshpaint bench subdivide: the atlas kernels against OpenSubdiv, measured
 // in one run on the same mesh and level, with the results compared.
 
-#include "commands.h"
+#include "benchmarks.h"
 #include "host_memory.h"
 #include "table.h"
 
@@ -34,6 +34,8 @@ std::vector<double> time_repeats(int repeats, F&& run)
 }
 
 double min_of(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }
+
+} // namespace
 
 int bench_subdivide(const Args& args)
 {
@@ -133,35 +135,6 @@ int bench_subdivide(const Args& args)
      << " ms\n";
   os << "  results agree: max distance " << deviation << " of the bounding-box diagonal\n";
   return 0;
-}
-
-} // namespace
-
-int bench_paint(const Args& args);
-int bench_view(const Args& args);
-
-int bench_command(const Argv& argv)
-{
-  Args args("bench", argv, {"--json", "--phases"}, {"--level", "--repeats", "--steps", "--tool", "--mesh", "--device", "--storage"});
-  const std::string what = args.positionals().empty() ? "" : args.positionals()[0];
-  // One parser for all three; an option of another benchmark is refused.
-  const std::map<std::string, std::vector<std::string>> foreign = {
-    {"subdivide", {"--phases", "--steps", "--tool", "--mesh"}},
-    {"paint", {"--level", "--repeats"}},
-    {"view", {"--json", "--phases", "--level", "--repeats", "--tool", "--mesh"}}};
-  if (const auto found = foreign.find(what); found != foreign.end())
-    for (const std::string& option : found->second)
-      if (args.has(option) || args.flag(option))
-        throw InputError(option + " is not an option of 'meshpaint bench " + what + "'");
-  if (what == "subdivide")
-    return bench_subdivide(args);
-  if (what == "paint")
-    return bench_paint(args);
-  if (what == "view")
-    return bench_view(args);
-  throw InputError("usage: meshpaint bench subdivide MESH [--level L] [--json] [--repeats N] | "
-                   "meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases] | "
-                   "meshpaint bench view [--steps N]");
 }
 
 } // namespace meshpaint::cli

@@ -2,7 +2,7 @@
 // display update and render), with and without level of detail, the time to
 // draw a frame alone, and pick latency, offscreen at 800x600.
 
-#include "commands.h"
+#include "benchmarks.h"
 #include "table.h"
 
 #include "vtkPaintView.h"
