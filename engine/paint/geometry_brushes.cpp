@@ -167,35 +167,57 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
     geometry_done();
 }
 
-void PaintSurface::grab(const Stroke& stroke, BrushDab& dab, StrokeReport& report)
+void PaintSurface::grab_step(const std::vector<DabSample>& samples, std::size_t index, bool mine)
 {
   // The region under the first point is taken once; every later dab moves
   // it by the path's step, with the weights it had when taken.
-  std::vector<DabSample> samples = stroke_samples(stroke);
-  if (stroke.points.size() > 1 && samples.back().centre != stroke.points.back()) // the pull ends at the path's end
-    samples.push_back({stroke.points.back(), stroke.pressure.empty() ? 1.f : stroke.pressure.back()});
-  report.dabs = samples.size();
-  if (dab_mask_ && (dab_mask_->empty() || !dab_mask_->front())) // in a scene, the region is another object's
-    return;
-  dab.radius = stroke.radius * samples.front().pressure;
-  dab.strength = stroke.strength * samples.front().pressure;
-  if (!(dab.radius > 0.f))
-    return;
-  Vec3 normal;
-  phase_start();
-  const std::vector<int> patches = place(stroke, samples.front(), dab, normal);
-  phase_done(&StepPhases::place);
-  if (patches.empty()) {
-    report.left_surface = true;
+  OpenStroke& o = *open_;
+  GrabRegion& g = o.grab;
+  BrushDab& dab = o.dab;
+  if (index == 0) {
+    g.held = false;
+    if (!mine) // in a scene, the region is another object's
+      return;
+    dab.radius = o.stroke.radius * samples.front().pressure;
+    dab.strength = o.stroke.strength * samples.front().pressure;
+    if (!(dab.radius > 0.f))
+      return;
+    Vec3 normal;
+    phase_start();
+    g.patches = place(o.stroke, samples.front(), dab, normal);
+    phase_done(&StepPhases::place);
+    if (g.patches.empty()) {
+      o.report.left_surface = true;
+      o.ended = true;
+      return;
+    }
+    g.held = true;
+    g.at = samples.front().centre;
     return;
   }
-  for (std::size_t k = 1; k < samples.size(); ++k) {
-    const Vec3& a = samples[k - 1].centre;
-    const Vec3& b = samples[k].centre;
-    reshape(patches, dab, stroke, Vec3{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, k == 1);
-    ++report.dabs_applied;
-    report.patches_touched += patches.size();
-  }
+  if (g.held)
+    grab_move(samples[index].centre);
+}
+
+void PaintSurface::grab_move(const Vec3& to)
+{
+  OpenStroke& o = *open_;
+  GrabRegion& g = o.grab;
+  reshape(g.patches, o.dab, o.stroke, sub(to, g.at), g.moves == 0);
+  ++g.moves;
+  g.at = to;
+  ++o.report.dabs_applied;
+  o.report.patches_touched += g.patches.size();
+}
+
+void PaintSurface::grab_end(const Stroke& stroke)
+{
+  // The pull ends at the path's end, which the dabs' spacing may fall short of.
+  const std::vector<DabSample> samples = stroke_samples(stroke);
+  const bool last = stroke.points.size() > 1 && samples.back().centre != stroke.points.back();
+  open_->report.dabs = samples.size() + (last ? 1 : 0);
+  if (last && open_->grab.held)
+    grab_move(stroke.points.back());
 }
 
 float PaintSurface::stroke_stretch()

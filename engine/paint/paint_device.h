@@ -9,7 +9,11 @@
 #include "paint/paint_surface.h"
 #include "paint/welded_smoothing.h"
 
-#include <memory> // for std::unique_ptr
+#include "core/timer.h"
+
+#include <array>    // for std::array
+#include <memory>   // for std::unique_ptr
+#include <optional> // for std::optional
 
 namespace meshpaint {
 
@@ -58,6 +62,20 @@ struct PaintSurface::Device
   cl::Buffer raster, stamp; // the stroke's pattern samples and brush image (one float when none)
   cl::Memory position_work; // image storage: a scratch layer of the finest level for moves
   std::unique_ptr<WeldedSmoothing> smoothing;
+};
+
+//! The stroke being drawn: what its dabs share, and how far it has come.
+struct PaintSurface::OpenStroke
+{
+  Stroke stroke;
+  BrushDab dab{};
+  float mirror_at = 0.f;                           // the mirror plane's position on its axis
+  std::optional<std::array<Float4, 2>> carried[2]; // the smear brush's load per side of the mirror
+  std::size_t next = 0;                            // samples painted or passed over so far
+  bool ended = false;                              // left the surface: no later dab is painted
+  GrabRegion grab;
+  StrokeReport report;
+  Timer timer;
 };
 
 } // namespace meshpaint

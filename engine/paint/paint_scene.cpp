@@ -2,7 +2,8 @@
 
 #include "core/errors.h"
 
-#include <algorithm> // for std::fill, std::any_of
+#include <algorithm> // for std::any_of
+#include <exception> // for std::exception_ptr
 #include <limits>    // for std::numeric_limits
 
 namespace meshpaint {
@@ -35,20 +36,77 @@ const std::vector<Stroke>& PaintScene::history() const
 
 std::vector<StrokeReport> PaintScene::apply(const Stroke& stroke)
 {
-  std::vector<StrokeReport> reports;
-  if (stroke.tool == Tool::Wash || stroke.tool == Tool::Dip || objects_.size() < 2) {
-    for (Object& o : objects_)
-      reports.push_back(o.surface->apply(stroke));
-    return reports;
+  begin_stroke(stroke);
+  paint_dabs(stroke_samples(stroke));
+  return end_stroke(stroke);
+}
+
+namespace {
+
+//! Whether each object paints the whole stroke on its own: one object, or a
+//! stroke that covers everything.
+bool alone(const Stroke& stroke, std::size_t objects)
+{
+  return stroke.tool == Tool::Wash || stroke.tool == Tool::Dip || objects < 2;
+}
+
+} // namespace
+
+void PaintScene::begin_stroke(const Stroke& stroke)
+{
+  open_ = stroke;
+  masks_.assign(objects_.size(), {});
+  decided_ = 0;
+  left_ = false;
+  for (std::size_t o = 0; o < objects_.size(); ++o) {
+    try {
+      objects_[o].surface->begin_stroke(stroke);
+    } catch (...) {
+      for (std::size_t k = 0; k < o; ++k) // those begun already end, as one (empty) step each
+        objects_[k].surface->end_stroke(stroke);
+      throw;
+    }
   }
-  // Which objects each dab reaches; the stroke ends at the first dab that
+}
+
+bool PaintScene::paint_dabs(const std::vector<DabSample>& samples)
+{
+  try {
+    return paint_new_dabs(samples);
+  } catch (...) {
+    // The object that failed has closed its stroke; the others close theirs,
+    // so that every object keeps one history.
+    for (Object& o : objects_)
+      if (o.surface->stroke_open())
+        try {
+          o.surface->end_stroke(open_);
+        } catch (...) {
+        }
+    masks_.clear();
+    throw;
+  }
+}
+
+bool PaintScene::paint_new_dabs(const std::vector<DabSample>& samples)
+{
+  if (alone(open_, objects_.size())) {
+    bool on = false;
+    for (Object& o : objects_)
+      on = o.surface->paint_dabs(samples) || on;
+    return on;
+  }
+  // Which objects each new dab reaches; the stroke ends at the first dab that
   // reaches none (a grab takes its region at the first dab only).
-  const std::vector<DabSample> samples = stroke_samples(stroke);
-  const std::size_t dabs = stroke.tool == Tool::Grab ? 1 : samples.size();
-  std::vector<std::vector<char>> mask(objects_.size(), std::vector<char>(samples.size(), 0));
-  bool left = false;
-  for (std::size_t k = 0; k < dabs && !left; ++k) {
-    const float radius = stroke.radius * samples[k].pressure;
+  for (auto& m : masks_)
+    m.resize(samples.size(), 0);
+  const bool grab = open_.tool == Tool::Grab;
+  for (std::size_t k = decided_; k < samples.size() && !left_; ++k) {
+    if (grab && k > 0) { // the rest of the path belongs to the objects it took
+      for (auto& m : masks_)
+        m[k] = m[0];
+      continue;
+    }
+    const float radius = open_.radius * samples[k].pressure;
     if (!(radius > 0.f))
       continue;
     std::vector<float> distance(objects_.size());
@@ -58,17 +116,35 @@ std::vector<StrokeReport> PaintScene::apply(const Stroke& stroke)
       if (distance[o] < distance[nearest])
         nearest = o;
     }
-    left = distance[nearest] == std::numeric_limits<float>::infinity();
-    for (std::size_t o = 0; o < objects_.size() && !left; ++o)
-      mask[o][k] = stroke.space == SPACE_PARAMETER ? o == nearest : distance[o] <= radius;
+    left_ = distance[nearest] == std::numeric_limits<float>::infinity();
+    for (std::size_t o = 0; o < objects_.size() && !left_; ++o)
+      masks_[o][k] = open_.space == SPACE_PARAMETER ? o == nearest : distance[o] <= radius;
   }
-  if (stroke.tool == Tool::Grab) // the rest of the path belongs to the objects it took
-    for (auto& m : mask)
-      std::fill(m.begin() + 1, m.end(), m[0]);
-  for (std::size_t o = 0; o < objects_.size(); ++o) {
-    reports.push_back(objects_[o].surface->apply(stroke, mask[o]));
-    reports.back().left_surface = left;
+  decided_ = samples.size();
+  for (std::size_t o = 0; o < objects_.size(); ++o)
+    objects_[o].surface->paint_dabs(samples, &masks_[o]);
+  return !left_;
+}
+
+std::vector<StrokeReport> PaintScene::end_stroke(const Stroke& stroke)
+{
+  std::vector<StrokeReport> reports;
+  std::exception_ptr failed;
+  for (Object& o : objects_) {
+    if (!o.surface->stroke_open()) // closed by a failure already
+      continue;
+    try { // every object ends its stroke, so that all stay in step
+      reports.push_back(o.surface->end_stroke(stroke));
+      if (!alone(stroke, objects_.size()))
+        reports.back().left_surface = left_;
+    } catch (...) {
+      if (!failed)
+        failed = std::current_exception();
+    }
   }
+  masks_.clear();
+  if (failed)
+    std::rethrow_exception(failed);
   return reports;
 }
 

@@ -35,6 +35,15 @@ public:
   //! Strokes that cover everything (wash, dip) go to every object. Returns
   //! a report per object.
   std::vector<StrokeReport> apply(const Stroke& stroke);
+  //! The same in three steps, for a stroke painted while it is drawn (as
+  //! PaintSurface::begin_stroke(), paint_dabs(), end_stroke()). Each call of
+  //! paint_dabs() decides for its new dabs which objects they reach before
+  //! painting them, so a path applied whole gives apply()'s bits; a
+  //! geometry stroke drawn in pieces over several objects may choose
+  //! differently (the objects moved in between), which StrokeSession avoids.
+  void begin_stroke(const Stroke& stroke);
+  bool paint_dabs(const std::vector<DabSample>& samples);
+  std::vector<StrokeReport> end_stroke(const Stroke& stroke);
 
   //! Undo and redo whole strokes on every object.
   bool undo();
@@ -50,7 +59,15 @@ private:
     std::shared_ptr<PaintSurface> surface;
     std::string name;
   };
+  bool paint_new_dabs(const std::vector<DabSample>& samples);
+
   std::vector<Object> objects_;
+  // The stroke being drawn over several objects: per object, which of its
+  // dabs are the object's; the first dab that reaches none ends it.
+  Stroke open_;
+  std::vector<std::vector<char>> masks_;
+  std::size_t decided_ = 0;
+  bool left_ = false;
 };
 
 } // namespace meshpaint

@@ -11,6 +11,7 @@
 #include "paint/paint_memory.h"
 
 #include <algorithm> // for std::any_of, std::min, std::max
+#include <optional>  // for std::optional
 #include <limits>    // for std::numeric_limits
 
 namespace meshpaint {
@@ -75,38 +76,57 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
 
 PaintSurface::~PaintSurface() = default;
 
-StrokeReport PaintSurface::apply(const Stroke& stroke, const std::vector<char>& dabs)
+StrokeReport PaintSurface::apply(const Stroke& stroke) { return apply(stroke, nullptr); }
+
+StrokeReport PaintSurface::apply(const Stroke& stroke, const std::vector<char>& dabs) { return apply(stroke, &dabs); }
+
+StrokeReport PaintSurface::apply(const Stroke& stroke, const std::vector<char>* dabs)
 {
-  dab_mask_ = &dabs;
+  begin_stroke(stroke);
+  paint_dabs(stroke_samples(stroke), dabs);
+  return end_stroke(stroke);
+}
+
+void PaintSurface::close_stroke(const Stroke& stroke)
+{
+  for (const int p : stroke_before_.patches)
+    in_stroke_[std::size_t(p)] = 0;
+  if (undo_.recording())
+    undo_.record(std::move(stroke_before_));
+  stroke_before_ = Snapshot();
+  inside_ = false;
+  history_.push_back(stroke);
+  undone_.clear();
+  open_.reset();
+}
+
+template <typename F>
+void PaintSurface::in_stroke(F&& work)
+{
+  // A stroke that fails halfway is still one undo step, so that what it
+  // changed can be undone, and it enters history() as every stroke does.
   try {
-    const StrokeReport r = apply(stroke);
-    dab_mask_ = nullptr;
-    return r;
+    try {
+      work();
+    } catch (const cl::Error& e) {
+      throw DeviceError("painting failed on " + atlas_->runtime().info().name + ": " + describe(e));
+    }
   } catch (...) {
-    dab_mask_ = nullptr;
+    close_stroke(open_->stroke);
     throw;
   }
 }
 
-StrokeReport PaintSurface::apply(const Stroke& stroke)
+void PaintSurface::begin_stroke(const Stroke& stroke)
 {
-  // One undo step per stroke: the tiles its dabs touched, as they were; also
-  // when a dab fails halfway, so that what it changed can be undone.
+  // One undo step per stroke: the tiles its dabs touched, as they were.
   // Every stroke is one step, also one that changed nothing, so that the
   // steps and history() stay in step.
+  if (open_)
+    throw InputError("a stroke is being drawn already: end it before the next begins");
   if (stroke.edit_level > level_)
     throw InputError("edit_level " + std::to_string(stroke.edit_level) + " is finer than the surface's level " +
                      std::to_string(level_));
-  const auto finish_stroke = [this, &stroke] {
-    for (const int p : stroke_before_.patches)
-      in_stroke_[std::size_t(p)] = 0;
-    if (undo_.recording())
-      undo_.record(std::move(stroke_before_));
-    stroke_before_ = Snapshot();
-    inside_ = false;
-    history_.push_back(stroke);
-    undone_.clear();
-  };
   // Only the layers this tool changes go into its undo step.
   switch (tool_family(stroke)) {
   case ToolFamily::Move:
@@ -124,29 +144,19 @@ StrokeReport PaintSurface::apply(const Stroke& stroke)
   if (two_sided_ && stroke_layers_.front() != kPositions) // either side may change
     for (const int id : std::vector<int>(stroke_layers_))
       stroke_layers_.push_back(id + kInsideDiffuse - kDiffuse);
-  StrokeReport report;
   stretched_.clear();
   stretched_marks_.begin(std::size_t(atlas_->topology().patch_count));
   encode_ms_ = 0;
   phases_ = StepPhases();
-  const Timer timer;
-  try {
-    report = apply_dabs(stroke);
-    atlas_->finish(); // the stroke's time holds all of its device work
-  } catch (...) {
-    finish_stroke();
-    throw;
-  }
-  report.ms = timer.ms();
-  finish_stroke();
-  return report;
+  open_ = std::make_unique<OpenStroke>();
+  open_->stroke = stroke;
+  in_stroke([&] { prepare_dab(stroke); });
 }
 
-StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
+void PaintSurface::prepare_dab(const Stroke& stroke)
 {
   phase_start();
-  StrokeReport report;
-  BrushDab dab{};
+  BrushDab& dab = open_->dab;
   dab.side_sign = 1.f;
   dab.falloff = stroke.falloff;
   dab.op = stroke.op;
@@ -179,90 +189,114 @@ StrokeReport PaintSurface::apply_dabs(const Stroke& stroke)
   if (!stroke.stamp_file.empty() && (!stroke.stamp || stroke.stamp->empty()))
     throw InputError("the stroke's brush image has no samples (load '" + stroke.stamp_file + "' first)");
   upload_rasters(stroke, dab);
-  try {
-    if (stroke.tool == Tool::Wash || stroke.tool == Tool::Dip) {
-      std::vector<int> all(std::size_t(atlas_->topology().patch_count));
-      for (std::size_t p = 0; p < all.size(); ++p)
-        all[p] = int(p);
-      dab.radius = std::numeric_limits<float>::infinity();
-      dab.strength = stroke.strength;
-      dab.falloff = FALLOFF_CONSTANT;
-      inside_ = two_sided_ && stroke.side == 2; // a wash covers the outside unless told
-      paint(all, dab);
-      report.dabs = report.dabs_applied = 1;
-      report.patches_touched = all.size();
-      return report;
-    }
-    if (stroke.tool == Tool::Grab) {
-      grab(stroke, dab, report);
-      report.stretch = stroke_stretch();
-      report.encode_ms = encode_ms_;
-      report.phases = phases_;
-      return report;
-    }
-    // The mirror plane passes through the centre of the base mesh's bounds.
-    const BaseMesh& base = atlas_->base_mesh();
-    float mirror_at = 0.f;
-    if (stroke.mirror_axis >= 0) {
-      float lo = base.points.front()[stroke.mirror_axis], hi = lo;
-      for (const Vec3& p : base.points) {
-        lo = std::min(lo, p[stroke.mirror_axis]);
-        hi = std::max(hi, p[stroke.mirror_axis]);
-      }
-      mirror_at = 0.5f * (lo + hi);
-    }
-    std::optional<std::array<Float4, 2>> carried[2]; // the smear brush's load per side of the mirror
-    const std::vector<DabSample> samples = stroke_samples(stroke);
-    for (std::size_t index = 0; index < samples.size(); ++index) {
-      const DabSample& sample = samples[index];
-      if (dab_mask_ && (index >= dab_mask_->size() || !(*dab_mask_)[index])) // another object's dab
-        continue;
-      // The dab, and with a mirror its reflection (heading reflected too).
-      std::vector<DabSample> dabs{sample};
-      if (stroke.mirror_axis >= 0) {
-        DabSample m = sample;
-        m.centre[stroke.mirror_axis] = 2.f * mirror_at - m.centre[stroke.mirror_axis];
-        m.heading[stroke.mirror_axis] = -m.heading[stroke.mirror_axis];
-        dabs.push_back(m);
-      }
-      dab.radius = stroke.radius * sample.pressure;
-      dab.strength = stroke.strength * sample.pressure;
-      bool on_surface = false;
-      for (std::size_t side = 0; side < dabs.size(); ++side) {
-        ++report.dabs;
-        if (!(dab.radius > 0.f))
-          continue;
-        Vec3 normal;
-        phase_start();
-        const std::vector<int> patches = place(stroke, dabs[side], dab, normal);
-        phase_done(&StepPhases::place);
-        if (patches.empty())
-          continue;
-        on_surface = true;
-        if (stroke.tool == Tool::Smear)
-          smear(patches, dab, carried[side]);
-        else if (stroke.spray_drops > 0)
-          spray(patches, dab, stroke, report.dabs);
-        else if (stroke.tool == Tool::Paint || stroke.tool == Tool::Label)
-          paint(patches, dab);
-        else
-          reshape(patches, dab, stroke, normal);
-        ++report.dabs_applied;
-        report.patches_touched += patches.size();
-      }
-      // Zero pressure skips a dab, no surface ends the stroke (in a scene,
-      // the scene decides that).
-      if (!on_surface && dab.radius > 0.f && !dab_mask_) {
-        report.left_surface = true;
-        break;
-      }
-    }
-  } catch (const cl::Error& e) {
-    throw DeviceError("painting failed on " + atlas_->runtime().info().name + ": " + describe(e));
+  if (stroke.tool == Tool::Wash || stroke.tool == Tool::Dip) {
+    std::vector<int> all(std::size_t(atlas_->topology().patch_count));
+    for (std::size_t p = 0; p < all.size(); ++p)
+      all[p] = int(p);
+    dab.radius = std::numeric_limits<float>::infinity();
+    dab.strength = stroke.strength;
+    dab.falloff = FALLOFF_CONSTANT;
+    inside_ = two_sided_ && stroke.side == 2; // a wash covers the outside unless told
+    paint(all, dab);
+    open_->report.dabs = open_->report.dabs_applied = 1;
+    open_->report.patches_touched = all.size();
+    return;
   }
-  report.stretch = stroke_stretch();
-  report.encode_ms = encode_ms_;
-  report.phases = phases_;
+  // The mirror plane passes through the centre of the base mesh's bounds.
+  const BaseMesh& base = atlas_->base_mesh();
+  if (stroke.mirror_axis >= 0) {
+    float lo = base.points.front()[stroke.mirror_axis], hi = lo;
+    for (const Vec3& p : base.points) {
+      lo = std::min(lo, p[stroke.mirror_axis]);
+      hi = std::max(hi, p[stroke.mirror_axis]);
+    }
+    open_->mirror_at = 0.5f * (lo + hi);
+  }
+}
+
+bool PaintSurface::paint_dabs(const std::vector<DabSample>& samples, const std::vector<char>* dabs)
+{
+  if (!open_)
+    throw InputError("no stroke is being drawn: begin one first");
+  OpenStroke& o = *open_;
+  if (o.stroke.tool == Tool::Wash || o.stroke.tool == Tool::Dip)
+    return false;
+  in_stroke([&] {
+    for (; o.next < samples.size() && !o.ended; ++o.next) {
+      const std::size_t index = o.next;
+      const bool mine = !dabs || (index < dabs->size() && (*dabs)[index]); // else another object's dab
+      if (o.stroke.tool == Tool::Grab)
+        grab_step(samples, index, mine);
+      else if (mine)
+        paint_sample(samples[index], !dabs);
+    }
+  });
+  return !o.ended;
+}
+
+void PaintSurface::paint_sample(const DabSample& sample, bool may_end)
+{
+  OpenStroke& o = *open_;
+  const Stroke& stroke = o.stroke;
+  BrushDab& dab = o.dab;
+  // The dab, and with a mirror its reflection (heading reflected too).
+  std::vector<DabSample> dabs{sample};
+  if (stroke.mirror_axis >= 0) {
+    DabSample m = sample;
+    m.centre[stroke.mirror_axis] = 2.f * o.mirror_at - m.centre[stroke.mirror_axis];
+    m.heading[stroke.mirror_axis] = -m.heading[stroke.mirror_axis];
+    dabs.push_back(m);
+  }
+  dab.radius = stroke.radius * sample.pressure;
+  dab.strength = stroke.strength * sample.pressure;
+  bool on_surface = false;
+  for (std::size_t side = 0; side < dabs.size(); ++side) {
+    ++o.report.dabs;
+    if (!(dab.radius > 0.f))
+      continue;
+    Vec3 normal;
+    phase_start();
+    const std::vector<int> patches = place(stroke, dabs[side], dab, normal);
+    phase_done(&StepPhases::place);
+    if (patches.empty())
+      continue;
+    on_surface = true;
+    if (stroke.tool == Tool::Smear)
+      smear(patches, dab, o.carried[side]);
+    else if (stroke.spray_drops > 0)
+      spray(patches, dab, stroke, o.report.dabs);
+    else if (stroke.tool == Tool::Paint || stroke.tool == Tool::Label)
+      paint(patches, dab);
+    else
+      reshape(patches, dab, stroke, normal);
+    ++o.report.dabs_applied;
+    o.report.patches_touched += patches.size();
+  }
+  // Zero pressure skips a dab, no surface ends the stroke (in a scene, the
+  // scene decides that).
+  if (!on_surface && dab.radius > 0.f && may_end) {
+    o.report.left_surface = true;
+    o.ended = true;
+  }
+}
+
+StrokeReport PaintSurface::end_stroke(const Stroke& stroke)
+{
+  if (!open_)
+    throw InputError("no stroke is being drawn: begin one first");
+  open_->stroke = stroke; // the whole path: what history() and replays hold
+  StrokeReport report;
+  in_stroke([&] {
+    if (stroke.tool == Tool::Grab)
+      grab_end(stroke);
+    report = open_->report;
+    report.stretch = stroke_stretch();
+    report.encode_ms = encode_ms_;
+    report.phases = phases_;
+    atlas_->finish(); // the stroke's time holds all of its device work
+  });
+  report.ms = open_->timer.ms();
+  close_stroke(stroke);
   return report;
 }
 

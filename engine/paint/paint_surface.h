@@ -125,6 +125,23 @@ public:
   //! whose entry in `dabs` is non-zero only: a scene hands each object its
   //! dabs. The stroke does not end on its own where it leaves this surface.
   StrokeReport apply(const Stroke& stroke, const std::vector<char>& dabs);
+
+  //! A stroke painted while it is drawn, in three steps that apply() takes
+  //! at once: painting a path in pieces gives the bits of applying it whole.
+  //! begin_stroke() takes the stroke's settings (its path may be partial).
+  //! \throw InputError when a stroke is open already, or edit_level is finer
+  //! than level().
+  void begin_stroke(const Stroke& stroke);
+  //! Paints the samples from the first not painted yet on: `samples` are
+  //! stroke_samples() of the path so far, each final (a path of one point
+  //! has none yet: its first dab's heading waits for the second point).
+  //! `dabs` as in apply(). False once the stroke has left the surface.
+  bool paint_dabs(const std::vector<DabSample>& samples, const std::vector<char>* dabs = nullptr);
+  //! Ends the open stroke, `stroke` being it with its whole path (all of
+  //! whose samples were painted): one undo step, one entry of history().
+  StrokeReport end_stroke(const Stroke& stroke);
+  bool stroke_open() const { return open_ != nullptr; }
+
   //! Distance from `point` to the closest surface point within `radius`;
   //! infinity when there is none.
   float distance_to(const Vec3& point, float radius);
@@ -204,8 +221,33 @@ private:
   //! `reweigh` false keeps the weights of the previous call (grab).
   void reshape(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke, const Vec3& normal,
                bool reweigh = true);
-  //! The grab tool: the region under the stroke's first point pulled along it.
-  void grab(const Stroke& stroke, BrushDab& dab, StrokeReport& report);
+  struct OpenStroke;
+  //! The grab tool's region: taken under the first dab, then pulled along
+  //! the path.
+  struct GrabRegion
+  {
+    bool held = false;
+    std::vector<int> patches;
+    Vec3 at{0.f, 0.f, 0.f}; // where the last pull ended
+    std::size_t moves = 0;
+  };
+  StrokeReport apply(const Stroke& stroke, const std::vector<char>* dabs);
+  //! The open stroke's dab settings from the stroke (a wash or dip is
+  //! painted here, having no path).
+  void prepare_dab(const Stroke& stroke);
+  //! One sample's dab, and its mirror image; `may_end`: a miss ends the stroke.
+  void paint_sample(const DabSample& sample, bool may_end);
+  //! The grab tool at sample `index`: the region taken at the first, pulled
+  //! by the later ones; grab_end() pulls it to the path's end.
+  void grab_step(const std::vector<DabSample>& samples, std::size_t index, bool mine);
+  void grab_move(const Vec3& to);
+  void grab_end(const Stroke& stroke);
+  //! Runs part of the open stroke; where it throws, the stroke is closed
+  //! (one undo step, in history()) and the error passed on, OpenCL's as a
+  //! DeviceError.
+  template <typename F>
+  void in_stroke(F&& work);
+  void close_stroke(const Stroke& stroke);
   //! Weights of the dab on the patches' texels at `level`, into the weight
   //! buffer of that level.
   void weigh(const std::vector<int>& patches, const cl::Buffer& list, const BrushDab& dab, int level);
@@ -214,7 +256,6 @@ private:
   void refresh_geometry(const std::vector<int>& patches, const cl::Buffer* list = nullptr);
   //! The same given Atlas::neighbourhood_on_device() of the moved patches.
   void refresh_geometry(const DeviceSet& around);
-  StrokeReport apply_dabs(const Stroke& stroke);
   //! One dab of the smear brush: lays down `carried`, then picks up the
   //! weighted mean colour under the dab into it.
   void smear(const std::vector<int>& patches, BrushDab dab, std::optional<std::array<Float4, 2>>& carried);
@@ -290,7 +331,7 @@ private:
   std::vector<std::array<int, 4>> neighbours_; // per patch side: the patch across, -1 on a border
   Marks reached_;                        // per patch: reached by this dab's flood
   std::vector<std::uint8_t> open_sides_; // per patch: bit s set if side s comes within the dab's reach, or REACH_NONE
-  const std::vector<char>* dab_mask_ = nullptr; // apply(stroke, dabs): the dabs for this surface
+  std::unique_ptr<OpenStroke> open_; // the stroke being drawn
   bool two_sided_ = false;
   bool inside_ = false; // the running dab paints the inside
   std::uint64_t change_count_ = 1, all_changed_at_ = 1;
