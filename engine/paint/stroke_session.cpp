@@ -1,0 +1,133 @@
+#include "paint/stroke_session.h"
+
+#include "core/errors.h"
+
+namespace meshpaint {
+
+bool StrokeSession::previews(const Stroke& stroke) const
+{
+  const ToolFamily family = tool_family(stroke);
+  return scene_.size() > 1 && (family == ToolFamily::Move || family == ToolFamily::Smooth);
+}
+
+void StrokeSession::begin(const Stroke& stroke)
+{
+  if (drawing_)
+    throw InputError("a stroke is being drawn already: end it before the next begins");
+  if (scene_.empty())
+    throw InputError("no surface to paint: load a mesh first");
+  if (stroke.points.empty())
+    throw InputError("a stroke drawn by hand starts at a point");
+  if (!stroke.pressure.empty() && stroke.pressure.size() != stroke.points.size())
+    throw InputError("a stroke's pressure needs one value per point");
+  drawing_ = stroke;
+  ended_ = false;
+  previews_ = 0;
+  previewing_ = previews(stroke);
+  if (previewing_) {
+    if (stroke.points.size() > 1) {
+      scene_.apply(stroke);
+      ++previews_;
+    }
+    return;
+  }
+  try {
+    scene_.begin_stroke(stroke);
+  } catch (...) {
+    drawing_.reset();
+    throw;
+  }
+  paint_new_dabs();
+}
+
+void StrokeSession::paint_new_dabs()
+{
+  // A path of one point has no final dab yet: its heading needs the second.
+  if (drawing_->points.size() < 2)
+    return;
+  try {
+    ended_ = !scene_.paint_dabs(stroke_samples(*drawing_));
+  } catch (...) {
+    drawing_.reset(); // the scene has closed the stroke
+    throw;
+  }
+}
+
+bool StrokeSession::extend(const Vec3& point, float pressure)
+{
+  if (!drawing_)
+    throw InputError("no stroke is being drawn: begin one first");
+  if (ended_)
+    return false;
+  Stroke& s = *drawing_;
+  s.points.push_back(point);
+  if (!s.pressure.empty())
+    s.pressure.push_back(pressure);
+  if (previewing_) {
+    Stroke piece = s;
+    piece.points.assign(s.points.end() - 2, s.points.end());
+    if (!s.pressure.empty())
+      piece.pressure.assign(s.pressure.end() - 2, s.pressure.end());
+    scene_.apply(piece);
+    ++previews_;
+    return true;
+  }
+  paint_new_dabs();
+  return !ended_;
+}
+
+std::vector<StrokeReport> StrokeSession::end()
+{
+  if (!drawing_)
+    throw InputError("no stroke is being drawn: begin one first");
+  const Stroke stroke = std::move(*drawing_);
+  drawing_.reset();
+  if (previewing_) {
+    int undone = 0;
+    while (undone < previews_ && scene_.undo())
+      ++undone;
+    if (undone < previews_) {
+      // The undo budget forgot a preview already (one step larger than the
+      // whole budget): the pieces stay strokes of their own, as recorded.
+      for (; undone > 0; --undone)
+        scene_.redo();
+      throw ResourceError("the undo budget is too small for this stroke: kept as " + std::to_string(previews_) +
+                          " strokes");
+    }
+    return scene_.apply(stroke);
+  }
+  // The last dabs: those of the path's last piece, and a one-point path's.
+  scene_.paint_dabs(stroke_samples(stroke));
+  return scene_.end_stroke(stroke);
+}
+
+std::vector<StrokeReport> StrokeSession::apply(const Stroke& stroke)
+{
+  if (scene_.empty())
+    throw InputError("no surface to paint: load a mesh first");
+  return scene_.apply(stroke);
+}
+
+bool StrokeSession::undo()
+{
+  if (drawing_)
+    throw InputError("a stroke is being drawn: end it first");
+  return scene_.undo();
+}
+
+bool StrokeSession::redo()
+{
+  if (drawing_)
+    throw InputError("a stroke is being drawn: end it first");
+  return scene_.redo();
+}
+
+StrokeScript StrokeSession::recording(int level) const
+{
+  StrokeScript script;
+  script.level = level;
+  script.strokes = scene_.history();
+  return script;
+}
+
+} // namespace meshpaint

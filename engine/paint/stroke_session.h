@@ -1,0 +1,65 @@
+// A painting session on a scene: strokes drawn by hand (begin, extend, end)
+// or applied whole, undo and redo, and the recording, a stroke script that
+// `meshpaint paint` replays to the same bits. The window, Python and the
+// command line paint through it; it knows nothing of how points are picked.
+#pragma once
+
+#include "paint/paint_scene.h"
+#include "paint/stroke.h"
+
+#include <optional> // for std::optional
+#include <vector>   // for std::vector
+
+namespace meshpaint {
+
+class StrokeSession
+{
+public:
+  explicit StrokeSession(PaintScene& scene) : scene_(scene) {}
+  StrokeSession(const StrokeSession&) = delete;
+  StrokeSession& operator=(const StrokeSession&) = delete;
+
+  PaintScene& scene() { return scene_; }
+
+  //! Starts a stroke drawn by hand: `stroke` holds its settings and its path
+  //! so far (at least one point). Its dabs are painted as the path grows;
+  //! the first waits for the second point, which gives it its heading.
+  //! \throw InputError when a stroke is being drawn, the scene is empty, or
+  //! the stroke has no point.
+  void begin(const Stroke& stroke);
+  //! Adds a point to the path (with its pressure where the stroke has
+  //! pressure) and paints the dabs it completes. False once the stroke has
+  //! left the surface: it takes no more points.
+  bool extend(const Vec3& point, float pressure = 1.f);
+  //! Ends the stroke being drawn: its last dabs are painted, and the stroke
+  //! becomes one undo step and one stroke of the recording, painted once.
+  std::vector<StrokeReport> end();
+  bool drawing() const { return drawing_.has_value(); }
+  //! The stroke being drawn (its path so far). \pre drawing()
+  const Stroke& current() const { return *drawing_; }
+
+  //! Applies a whole stroke (a script's), recorded as drawn ones are.
+  std::vector<StrokeReport> apply(const Stroke& stroke);
+  //! Whole strokes off and back on; false when there is nothing to undo
+  //! (redo). Not while a stroke is being drawn.
+  bool undo();
+  bool redo();
+  //! The strokes applied and not undone, as a script at `level`.
+  StrokeScript recording(int level) const;
+
+private:
+  //! Several objects under a geometry brush: which objects a dab reaches
+  //! depends on where the earlier dabs moved them, so the pieces drawn are
+  //! previews, taken back when the stroke ends and the whole path applied
+  //! (what a replay does).
+  bool previews(const Stroke& stroke) const;
+  void paint_new_dabs();
+
+  PaintScene& scene_;
+  std::optional<Stroke> drawing_;
+  bool ended_ = false;
+  bool previewing_ = false;
+  int previews_ = 0; // pieces applied as previews, to take back at the end
+};
+
+} // namespace meshpaint
