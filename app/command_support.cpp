@@ -95,9 +95,9 @@ int scene_level(const Args& args, const std::vector<MeshOrProject>& inputs, int 
 void check_edit_levels(const StrokeScript& script, int level)
 {
   for (std::size_t k = 0; k < script.strokes.size(); ++k)
-    if (script.strokes[k].edit_level > level)
+    if (script.strokes[k].edit_level() > level)
       throw InputError("stroke " + std::to_string(k) + ": \"edit_level\" " +
-                       std::to_string(script.strokes[k].edit_level) + " is finer than the painting level " +
+                       std::to_string(script.strokes[k].edit_level()) + " is finer than the painting level " +
                        std::to_string(level));
 }
 

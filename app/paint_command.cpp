@@ -51,7 +51,7 @@ void paint_job(PaintScene& scene, const StrokeScript& script, int model_level, c
     std::string note = r.left_surface ? "left the surface" : "";
     if (r.stretch >= kUndersampledStretch) {
       note += std::string(note.empty() ? "" : "; ") + "stretched " + format_fixed(r.stretch, 1) + "x";
-      std::cerr << "warning: stroke " << k << ": edit level " << stroke.edit_level
+      std::cerr << "warning: stroke " << k << ": edit level " << stroke.edit_level()
                 << " undersamples the surface here (a patch stretched " << format_fixed(r.stretch, 1)
                 << " times); edit at a finer level\n";
     }

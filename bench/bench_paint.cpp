@@ -60,7 +60,7 @@ std::array<double, 3> step_times(PaintSurface& surface, Stroke s, const std::vec
 {
   std::array<double, 3> ms{};
   for (int c = 0; c < 3; ++c) {
-    s.radius = radius_for(texels, s.points.front(), kCoverage[c]);
+    s.brush.radius = radius_for(texels, s.points.front(), kCoverage[c]);
     surface.apply(s); // warm-up (and, at a coarse edit level, the details' encoding)
     std::vector<double> t;
     for (int k = 0; k < steps; ++k)
@@ -82,13 +82,13 @@ std::array<std::array<double, 3>, 3> coarse_step_times(PaintSurface& surface, St
   std::array<std::array<double, 3>, 3> out{};
   const Vec3 at = s.points.front();
   for (int c = 0; c < 3; ++c) {
-    s.radius = radius_for(texels, at, kCoverage[c]);
-    s.spacing = 0.01f;
+    s.brush.radius = radius_for(texels, at, kCoverage[c]);
+    s.brush.spacing = 0.01f;
     Stroke nine = s; // 8 more dabs 0.01 radius apart
-    nine.points.push_back({at[0] + 0.08f * s.radius, at[1], at[2]});
+    nine.points.push_back({at[0] + 0.08f * s.brush.radius, at[1], at[2]});
     Stroke fine = s; // moves nothing, but is a finest-level edit
-    fine.edit_level = 0;
-    fine.amount = 0.f;
+    fine.move().edit_level = 0;
+    fine.move().amount = 0.f;
     surface.apply(s); // warm-up
     std::vector<double> one, more, encoding;
     for (int k = 0; k < steps; ++k) {
@@ -114,7 +114,7 @@ constexpr double StepPhases::*kPhaseFields[] = {&StepPhases::place,     &StepPha
 //! for the device after each phase; the last entry is the whole step's.
 std::vector<double> phase_times(PaintSurface& surface, Stroke s, const std::vector<Float4>& texels, int steps)
 {
-  s.radius = radius_for(texels, s.points.front(), kCoverage[2]);
+  s.brush.radius = radius_for(texels, s.points.front(), kCoverage[2]);
   surface.time_phases(true);
   surface.apply(s); // warm-up
   std::vector<std::vector<double>> t(std::size(kPhaseFields) + 1);
@@ -173,17 +173,16 @@ SmoothingResult bench_smoothing(PaintSurface& surface, int iterations, int repea
   r.vertices = welded.points.size();
   const double diagonal = surface.atlas().base_mesh().diagonal();
 
-  Stroke s;
-  s.tool = Tool::Smooth;
+  Stroke s = make_stroke(Tool::Smooth);
   s.points = {surface.atlas().base_mesh().points.front()};
-  s.radius = float(4 * diagonal); // the whole surface
-  s.falloff = FALLOFF_CONSTANT;
-  s.taubin = false;
+  s.brush.radius = float(4 * diagonal); // the whole surface
+  s.brush.falloff = FALLOFF_CONSTANT;
+  s.smooth().taubin = false;
   const int more = further_iterations(r.vertices);
   r.meshpaint_ms = per_iteration(
     iterations, more, repeats,
     [&](int n) {
-      s.iterations = n;
+      s.smooth().iterations = n;
       return surface.apply(s).ms;
     },
     &r.meshpaint_stroke_ms);
@@ -273,13 +272,16 @@ int bench_paint(const Args& args)
     const Vec3 at = surface.atlas().base_mesh().points[surface.atlas().base_mesh().vertex_count() / 2];
     const std::size_t faces = std::size_t(surface.atlas().topology().patch_count) * surface.atlas().layout(row.level).n *
                               surface.atlas().layout(row.level).n;
-    Stroke s;
-    s.tool = tool == "paint" ? Tool::Paint : Tool::Sculpt;
+    Stroke s = make_stroke(tool == "paint" ? Tool::Paint : Tool::Sculpt);
     s.points = {at};
-    s.falloff = FALLOFF_SMOOTHSTEP;
-    s.amount = float(1e-4 * mesh.diagonal());
-    s.value[CHANNEL_DIFFUSE] = {0.9f, 0.2f, 0.1f, 1.f};
-    s.alpha[CHANNEL_DIFFUSE] = 0.5f;
+    s.brush.falloff = FALLOFF_SMOOTHSTEP;
+    const float amount = float(1e-4 * mesh.diagonal());
+    if (s.tool == Tool::Sculpt) {
+      s.move().amount = amount;
+    } else {
+      s.paint().value[CHANNEL_DIFFUSE] = {0.9f, 0.2f, 0.1f, 1.f};
+      s.paint().alpha[CHANNEL_DIFFUSE] = 0.5f;
+    }
     const std::array<double, 3> ms = step_times(surface, s, texels, steps);
     const std::string name = row.mesh.substr(0, row.mesh.find('.')) + " L" + std::to_string(row.level);
     if (phases)
@@ -295,9 +297,11 @@ int bench_paint(const Args& args)
                  std::to_string(row.paper_ms[2]) + "]}";
     // Multiresolution: a sculpt step at the coarsest edit level, with the
     // finest level rebuilt and its details carried along.
-    Stroke m = s;
-    m.tool = Tool::Sculpt;
-    m.edit_level = 1;
+    Stroke m = make_stroke(Tool::Sculpt);
+    m.points = s.points;
+    m.brush = s.brush;
+    m.move().amount = amount;
+    m.move().edit_level = 1;
     const auto mr = coarse_step_times(surface, m, texels, steps);
     if (phases)
       add_phases(name, "coarse sculpt 50%", phase_times(surface, m, texels, steps));

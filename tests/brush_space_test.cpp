@@ -24,11 +24,11 @@ Stroke red_dab(const Vec3& at, float radius, int space)
 {
   Stroke s;
   s.points = {at};
-  s.radius = radius;
-  s.falloff = FALLOFF_CONSTANT;
-  s.space = space;
-  s.value[CHANNEL_DIFFUSE] = {1.f, 0.f, 0.f, 1.f};
-  s.alpha[CHANNEL_DIFFUSE] = 1.f;
+  s.brush.radius = radius;
+  s.brush.falloff = FALLOFF_CONSTANT;
+  s.brush.space = space;
+  s.paint().value[CHANNEL_DIFFUSE] = {1.f, 0.f, 0.f, 1.f};
+  s.paint().alpha[CHANNEL_DIFFUSE] = 1.f;
   return s;
 }
 
@@ -94,12 +94,12 @@ TEST(BrushSpace, ScreenIsTheDiscSeenFromTheCamera)
   const Vec3 centre{4.f, 4.f, 0.f};
   const float r = 0.8f;
   Stroke s = red_dab(centre, r, SPACE_SCREEN);
-  s.camera = oblique_camera();
-  s.has_camera = true;
+  s.brush.camera = oblique_camera();
+  s.brush.has_camera = true;
   surface.apply(s);
   // The same projection as the kernel: screen offset at the centre's depth.
-  const Vec3 eye = s.camera.position, dir = normalized(sub(s.camera.focal_point, eye)),
-             right = normalized(cross(dir, s.camera.view_up)), up = cross(right, dir);
+  const Vec3 eye = s.brush.camera.position, dir = normalized(sub(s.brush.camera.focal_point, eye)),
+             right = normalized(cross(dir, s.brush.camera.view_up)), up = cross(right, dir);
   const auto screen = [&](const Vec3& x, float& z) {
     const Vec3 v = sub(x, eye);
     z = dot(v, dir);
@@ -309,11 +309,12 @@ TEST(BrushSpace, ParameterSculptAtACoarseLevelKeepsCopiesIdentical)
   // points: every patch under it moves, and the finest level's copies agree.
   PaintSurface surface(test::runtime(), test::flat_grid(8), 4, AtlasStorage::Buffer);
   const std::vector<Float4> before = surface.atlas().read_positions(4);
-  Stroke s = red_dab({4.f, 4.f, 0.f}, 0.3f, SPACE_PARAMETER);
-  s.tool = Tool::Sculpt;
-  s.alpha[CHANNEL_DIFFUSE] = 0.f;
-  s.amount = 0.2f;
-  s.edit_level = 2;
+  const Stroke dab = red_dab({4.f, 4.f, 0.f}, 0.3f, SPACE_PARAMETER);
+  Stroke s = make_stroke(Tool::Sculpt);
+  s.points = dab.points;
+  s.brush = dab.brush;
+  s.move().amount = 0.2f;
+  s.set_edit_level(2);
   surface.apply(s);
   const std::vector<Float4> after = surface.atlas().read_positions(4);
   const LevelLayout l = surface.atlas().layout(4);
@@ -333,9 +334,9 @@ TEST(BrushSpace, BackFacesAreSkippedUnlessAsked)
   for (const bool backfaces : {false, true}) {
     PaintSurface surface(test::runtime(), test::noisy_sphere(4, 0.f), 3, AtlasStorage::Buffer);
     Stroke s = red_dab({0.f, 0.f, 1.f}, 1.2f, SPACE_SCREEN);
-    s.camera = above;
-    s.has_camera = true;
-    s.paint_backfaces = backfaces;
+    s.brush.camera = above;
+    s.brush.has_camera = true;
+    s.brush.paint_backfaces = backfaces;
     surface.apply(s);
     const std::vector<Float4> pos = surface.atlas().read_limit_positions();
     const std::vector<Float4> diffuse = surface.read_channels().diffuse;
@@ -355,8 +356,8 @@ TEST(BrushSpace, ScreenStrokesEndAtTheSilhouette)
 {
   PaintSurface surface(test::runtime(), test::noisy_sphere(4, 0.f), 3, AtlasStorage::Buffer);
   Stroke s = red_dab({0.f, 0.f, 1.f}, 0.1f, SPACE_SCREEN);
-  s.camera.position = {0.f, 0.f, 10.f};
-  s.has_camera = true;
+  s.brush.camera.position = {0.f, 0.f, 10.f};
+  s.brush.has_camera = true;
   for (int k = 1; k <= 12; ++k) { // over the side of the sphere and on to its back
     const double a = k * 15.0 * M_PI / 180.0;
     s.points.push_back({float(std::sin(a)), 0.f, float(std::cos(a))});
@@ -370,8 +371,8 @@ TEST(BrushSpace, ScreenStrokesEndAtTheSilhouette)
       ASSERT_GT(pos[t][2], -0.01f);
   // In object space the same path goes on round the back.
   PaintSurface object(test::runtime(), test::noisy_sphere(4, 0.f), 3, AtlasStorage::Buffer);
-  s.space = SPACE_OBJECT;
-  s.has_camera = false;
+  s.brush.space = SPACE_OBJECT;
+  s.brush.has_camera = false;
   EXPECT_FALSE(object.apply(s).left_surface);
 }
 
@@ -402,20 +403,20 @@ TEST(BrushSpace, SprayDensityFallsWithTheCosineOfTheView)
   PaintSurface surface(test::runtime(), roof(), 4, AtlasStorage::Buffer);
   Stroke s;
   s.points = {{4.f, 4.f, 0.f}};
-  s.radius = 1.5f;
-  s.falloff = FALLOFF_CONSTANT;
-  s.space = SPACE_SCREEN;
-  s.has_camera = true;
-  s.camera.position = {4.f, 4.f, 200.f};
-  s.camera.focal_point = {4.f, 4.f, 0.f};
-  s.camera.view_angle = 2.f;
-  s.op = PAINT_OP_ADD;
-  s.value[CHANNEL_DISPLACEMENT] = {1e-3f, 1e-3f, 1e-3f, 1.f};
-  s.alpha[CHANNEL_DISPLACEMENT] = 1.f;
-  s.spray_drops = 400;
-  s.spray_size = 0.08f;
+  s.brush.radius = 1.5f;
+  s.brush.falloff = FALLOFF_CONSTANT;
+  s.brush.space = SPACE_SCREEN;
+  s.brush.has_camera = true;
+  s.brush.camera.position = {4.f, 4.f, 200.f};
+  s.brush.camera.focal_point = {4.f, 4.f, 0.f};
+  s.brush.camera.view_angle = 2.f;
+  s.paint().op = PAINT_OP_ADD;
+  s.paint().value[CHANNEL_DISPLACEMENT] = {1e-3f, 1e-3f, 1e-3f, 1.f};
+  s.paint().alpha[CHANNEL_DISPLACEMENT] = 1.f;
+  s.paint().spray_drops = 400;
+  s.paint().spray_size = 0.08f;
   for (unsigned seed = 0; seed < 5; ++seed) {
-    s.spray_seed = seed;
+    s.paint().spray_seed = seed;
     surface.apply(s);
   }
   const std::vector<Float4> pos = surface.atlas().read_limit_positions();
@@ -427,7 +428,7 @@ TEST(BrushSpace, SprayDensityFallsWithTheCosineOfTheView)
   for (std::size_t t = 0; t < pos.size(); ++t) {
     const int part = pos[t][1] > 4.f + 1e-4f ? 1 : 0;
     sum[part] += material[t][1];
-    if (std::hypot(pos[t][0] - 4.0, pos[t][1] - 4.0) <= s.radius)
+    if (std::hypot(pos[t][0] - 4.0, pos[t][1] - 4.0) <= s.brush.radius)
       ++under[part];
   }
   ASSERT_GT(sum[0], 0.0);
@@ -437,7 +438,7 @@ TEST(BrushSpace, SprayDensityFallsWithTheCosineOfTheView)
   // The same seed gives the same droplets.
   PaintSurface again(test::runtime(), roof(), 4, AtlasStorage::Buffer);
   for (unsigned seed = 0; seed < 5; ++seed) {
-    s.spray_seed = seed;
+    s.paint().spray_seed = seed;
     again.apply(s);
   }
   const std::vector<Float4> repeat = again.read_channels().material;

@@ -62,11 +62,10 @@ double roughness_of(const WeldedSurface& s)
 
 Stroke brush(Tool tool, const Vec3& at, float radius)
 {
-  Stroke s;
-  s.tool = tool;
+  Stroke s = make_stroke(tool);
   s.points = {at};
-  s.radius = radius;
-  s.falloff = FALLOFF_CONSTANT;
+  s.brush.radius = radius;
+  s.brush.falloff = FALLOFF_CONSTANT;
   return s;
 }
 
@@ -122,7 +121,7 @@ TEST(GeometryBrush, SculptMovesTheCentreByAmountAlongTheNormal)
 {
   PaintSurface surface(test::runtime(), test::flat_grid(6), 4, AtlasStorage::Buffer);
   Stroke s = brush(Tool::Sculpt, {3.f, 3.f, 0.f}, 1.5f);
-  s.amount = 0.2f;
+  s.move().amount = 0.2f;
   surface.apply(s);
   const WeldedSurface out = surface.painted_surface().surface;
   bool found = false;
@@ -147,7 +146,7 @@ std::vector<float> heights_after_masked_sculpt(Protect protect)
   PaintSurface surface(test::runtime(), test::flat_grid(6), 3, AtlasStorage::Buffer);
   protect(surface);
   Stroke s = brush(Tool::Sculpt, {3.f, 3.f, 0.f}, 2.5f);
-  s.amount = 0.2f;
+  s.move().amount = 0.2f;
   surface.apply(s);
   const WeldedSurface out = surface.painted_surface().surface;
   std::vector<float> z;
@@ -159,9 +158,9 @@ std::vector<float> heights_after_masked_sculpt(Protect protect)
 TEST(GeometryBrush, AMaskKeepsGeometryInPlace)
 {
   Stroke mask = brush(Tool::Paint, {2.f, 3.f, 0.f}, 1.f);
-  mask.falloff = FALLOFF_CONSTANT;
-  mask.value[CHANNEL_MASK] = {1.f, 1.f, 1.f, 1.f};
-  mask.alpha[CHANNEL_MASK] = 1.f;
+  mask.brush.falloff = FALLOFF_CONSTANT;
+  mask.paint().value[CHANNEL_MASK] = {1.f, 1.f, 1.f, 1.f};
+  mask.paint().alpha[CHANNEL_MASK] = 1.f;
   // Painted, painted and brought back by undo and redo, and loaded with the
   // channels: every way a mask arrives protects the control points under it
   // (and so their limit, which the welded surface shows).
@@ -214,8 +213,8 @@ TEST(GeometryBrush, LocalLimitUpdateEqualsAFullOne)
         PaintSurface surface(test::runtime(), test::genus_two(), 4, storage);
         surface.atlas().set_patch_items(per_patch);
         Stroke s = brush(Tool::Inflate, {1.5f, 0.5f, 1.f}, radius);
-        s.falloff = FALLOFF_SMOOTHSTEP;
-        s.amount = 0.1f;
+        s.brush.falloff = FALLOFF_SMOOTHSTEP;
+        s.move().amount = 0.1f;
         const StrokeReport r = surface.apply(s);
         const int patches = surface.atlas().topology().patch_count;
         ASSERT_GT(r.patches_touched, 0u) << what;
@@ -242,10 +241,10 @@ TEST(GeometryBrush, LocalLimitUpdateEqualsAFullOne)
 std::vector<std::vector<Float4>> after_fine_and_coarse_sculpts(PaintSurface& surface)
 {
   Stroke s = brush(Tool::Sculpt, {1.5f, 0.5f, 1.f}, 0.7f);
-  s.falloff = FALLOFF_SMOOTHSTEP;
-  s.amount = 0.1f;
+  s.brush.falloff = FALLOFF_SMOOTHSTEP;
+  s.move().amount = 0.1f;
   surface.apply(s);
-  s.edit_level = 2;
+  s.set_edit_level(2);
   s.points = {{0.5f, 0.5f, 1.f}};
   surface.apply(s);
   return {surface.atlas().read_positions(4), surface.atlas().read_limit_positions(),
@@ -338,8 +337,8 @@ TEST(GeometryBrush, TaubinSmoothingRemovesNoiseAndKeepsTheVolume)
     surface.geometry_changed();
     const WeldedSurface before = surface.painted_surface().surface;
     Stroke s = brush(Tool::Smooth, {0.f, 0.f, 1.f}, 10.f); // covers the whole sphere
-    s.iterations = 20;
-    s.taubin = taubin;
+    s.smooth().iterations = 20;
+    s.smooth().taubin = taubin;
     surface.apply(s);
     const WeldedSurface after = surface.painted_surface().surface;
     EXPECT_LT(roughness_of(after), 0.5 * roughness_of(before)) << (taubin ? "taubin" : "laplacian");
@@ -365,7 +364,7 @@ TEST(GeometryBrush, FlattenPullsTowardsThePlane)
   };
   const double before = spread(surface.painted_surface().surface);
   Stroke s = brush(Tool::Flatten, {1.5f, 1.5f, 0.4f}, 1.2f);
-  s.amount = 1.f;
+  s.move().amount = 1.f;
   for (int k = 0; k < 4; ++k)
     surface.apply(s);
   EXPECT_LT(spread(surface.painted_surface().surface), 0.5 * before);
@@ -375,14 +374,14 @@ TEST(GeometryBrush, BlurSmoothsColoursOnly)
 {
   PaintSurface surface(test::runtime(), test::flat_grid(6), 4, AtlasStorage::Buffer);
   Stroke dot = brush(Tool::Paint, {3.f, 3.f, 0.f}, 0.6f);
-  dot.value[CHANNEL_DIFFUSE] = {1.f, 0.f, 0.f, 1.f};
-  dot.alpha[CHANNEL_DIFFUSE] = 1.f;
+  dot.paint().value[CHANNEL_DIFFUSE] = {1.f, 0.f, 0.f, 1.f};
+  dot.paint().alpha[CHANNEL_DIFFUSE] = 1.f;
   surface.apply(dot);
   const auto positions = surface.atlas().read_positions(4);
   Stroke blur = brush(Tool::Blur, {3.f, 3.f, 0.f}, 2.f);
-  blur.target_colour = true;
-  blur.taubin = false;
-  blur.iterations = 5;
+  blur.smooth().target_colour = true;
+  blur.smooth().taubin = false;
+  blur.smooth().iterations = 5;
   surface.apply(blur);
   const PaintChannels ch = surface.read_channels();
   std::size_t partial = 0;
@@ -399,11 +398,11 @@ TEST(GeometryBrush, UndoRestoresGeometryBitForBit)
   const auto control = surface.atlas().read_positions(4);
   const auto limit = surface.atlas().read_limit_positions();
   Stroke s = brush(Tool::Smooth, {1.f, 0.f, 0.6f}, 0.8f);
-  s.falloff = FALLOFF_GAUSSIAN;
-  s.iterations = 3;
+  s.brush.falloff = FALLOFF_GAUSSIAN;
+  s.smooth().iterations = 3;
   surface.apply(s);
   Stroke t = brush(Tool::Sculpt, {0.f, 1.f, 0.6f}, 0.8f);
-  t.amount = -0.1f;
+  t.move().amount = -0.1f;
   surface.apply(t);
   ASSERT_NE(std::memcmp(surface.atlas().read_positions(4).data(), control.data(), control.size() * sizeof(Float4)), 0);
   while (surface.undo()) {
@@ -427,11 +426,11 @@ TEST_P(GeometryStorage, SmoothingIsConsistent)
       continue;
     PaintSurface surface(test::runtime(), mesh, 3, storage);
     Stroke s = brush(Tool::Smooth, mesh.points.front(), 0.6f * float(mesh.diagonal()));
-    s.falloff = FALLOFF_SMOOTHSTEP;
-    s.iterations = 2;
+    s.brush.falloff = FALLOFF_SMOOTHSTEP;
+    s.smooth().iterations = 2;
     surface.apply(s);
     Stroke t = brush(Tool::Inflate, mesh.points.back(), 0.4f * float(mesh.diagonal()));
-    t.amount = 0.05f;
+    t.move().amount = 0.05f;
     surface.apply(t);
     results.push_back(surface.atlas().read_positions(3));
     EXPECT_EQ(test::differing_copies(surface.atlas().topology(), surface.atlas().layout(3), results.back()), 0u);

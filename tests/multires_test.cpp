@@ -165,13 +165,12 @@ TEST(Multires, RebuildingTheReachEqualsRebuildingEverything)
 
 Stroke coarse_inflate(const Vec3& centre, float radius, float amount, int edit_level)
 {
-  Stroke s;
-  s.tool = Tool::Inflate;
+  Stroke s = make_stroke(Tool::Inflate);
   s.points = {centre};
-  s.radius = radius;
-  s.falloff = FALLOFF_SMOOTHSTEP;
-  s.amount = amount;
-  s.edit_level = edit_level;
+  s.brush.radius = radius;
+  s.brush.falloff = FALLOFF_SMOOTHSTEP;
+  s.move().amount = amount;
+  s.set_edit_level(edit_level);
   return s;
 }
 
@@ -224,11 +223,10 @@ TEST(Multires, ACoarseEditKeepsTheBumpsAndMakesTheEdit)
 
   const Vec3 centre{0.f, 0.f, 1.f};
   const float radius = 1.2f, lift = 0.4f;
-  Stroke grab;
-  grab.tool = Tool::Grab;
+  Stroke grab = make_stroke(Tool::Grab);
   grab.points = {centre, {centre[0], centre[1], centre[2] + lift}};
-  grab.radius = radius;
-  grab.edit_level = 2;
+  grab.brush.radius = radius;
+  grab.set_edit_level(2);
   const StrokeReport report = surface.apply(grab);
   EXPECT_GE(report.dabs_applied, 1u);
   const std::vector<Float4> after = atlas.read_limit_positions();
@@ -303,7 +301,7 @@ TEST(Multires, CoarseEditsKeepTheEditLevelsCopiesEqual)
       EXPECT_EQ(test::differing_copies(surface.atlas().topology(), surface.atlas().layout(level),
                                        surface.atlas().read_positions(level)),
                 0u)
-        << tool_name(s.tool) << " at edit level " << s.edit_level << ": level " << level;
+        << tool_name(s.tool) << " at edit level " << s.edit_level() << ": level " << level;
   }
 }
 
@@ -327,12 +325,11 @@ TEST(Multires, GrabPullsTheRegionAlongThePath)
   for (const int edit_level : {-1, 2}) {
     PaintSurface surface(test::runtime(), test::flat_grid(8), 4, AtlasStorage::Buffer);
     const std::vector<Float4> before = surface.atlas().read_limit_positions();
-    Stroke grab;
-    grab.tool = Tool::Grab;
+    Stroke grab = make_stroke(Tool::Grab);
     grab.points = {{4.f, 4.f, 0.f}, {4.f, 4.f, 0.5f}, {4.f, 4.f, 1.f}};
-    grab.radius = 2.f;
-    grab.falloff = FALLOFF_CONSTANT;
-    grab.edit_level = edit_level;
+    grab.brush.radius = 2.f;
+    grab.brush.falloff = FALLOFF_CONSTANT;
+    grab.set_edit_level(edit_level);
     const StrokeReport report = surface.apply(grab);
     EXPECT_GT(report.dabs_applied, 1u);
     const std::vector<Float4> after = surface.atlas().read_limit_positions();
@@ -349,11 +346,10 @@ TEST(Multires, GrabPullsTheRegionAlongThePath)
 TEST(Multires, StretchTellsWhenTheEditLevelIsTooCoarse)
 {
   PaintSurface surface(test::runtime(), test::flat_grid(8), 4, AtlasStorage::Buffer);
-  Stroke pull;
-  pull.tool = Tool::Grab;
+  Stroke pull = make_stroke(Tool::Grab);
   pull.points = {{4.f, 4.f, 0.f}, {4.f, 4.f, 0.05f}};
-  pull.radius = 1.5f;
-  pull.edit_level = 1;
+  pull.brush.radius = 1.5f;
+  pull.set_edit_level(1);
   EXPECT_LT(surface.apply(pull).stretch, 1.2f);
   pull.points = {{4.f, 4.f, 0.05f}, {4.f, 4.f, 6.f}};
   EXPECT_GT(surface.apply(pull).stretch, 2.f);

@@ -35,11 +35,11 @@ Stroke red_line(int space)
 {
   Stroke s;
   s.points = {{2.f, 2.f, 0.f}, {6.f, 2.f, 0.f}};
-  s.radius = 0.5f;
-  s.falloff = FALLOFF_CONSTANT;
-  s.space = space;
-  s.value[CHANNEL_DIFFUSE] = {1.f, 0.f, 0.f, 1.f};
-  s.alpha[CHANNEL_DIFFUSE] = 1.f;
+  s.brush.radius = 0.5f;
+  s.brush.falloff = FALLOFF_CONSTANT;
+  s.brush.space = space;
+  s.paint().value[CHANNEL_DIFFUSE] = {1.f, 0.f, 0.f, 1.f};
+  s.paint().alpha[CHANNEL_DIFFUSE] = 1.f;
   return s;
 }
 
@@ -63,7 +63,7 @@ TEST(PaintScene, AParameterSpaceDabPaintsOneObject)
   PaintScene scene = two_plates();
   Stroke s = red_line(SPACE_PARAMETER);
   s.points = {{4.2f, 2.05f, 0.f}}; // nearer the right plate, within reach of both
-  s.radius = 0.3f;
+  s.brush.radius = 0.3f;
   scene.apply(s);
   EXPECT_EQ(painted(scene.surface(0)), 0u);
   EXPECT_GT(painted(scene.surface(1)), 0u);

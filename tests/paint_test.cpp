@@ -57,15 +57,15 @@ Stroke dab_at(const Vec3& point, float radius, int falloff = FALLOFF_CONSTANT)
 {
   Stroke s;
   s.points = {point};
-  s.radius = radius;
-  s.falloff = falloff;
+  s.brush.radius = radius;
+  s.brush.falloff = falloff;
   return s;
 }
 
 Stroke paint_diffuse(Stroke s, Float4 colour)
 {
-  s.value[CHANNEL_DIFFUSE] = colour;
-  s.alpha[CHANNEL_DIFFUSE] = 1.f;
+  s.paint().value[CHANNEL_DIFFUSE] = colour;
+  s.paint().alpha[CHANNEL_DIFFUSE] = 1.f;
   return s;
 }
 
@@ -144,8 +144,8 @@ TEST(Paint, FalloffsShapeTheWeight)
   for (int falloff : {FALLOFF_LINEAR, FALLOFF_SMOOTHSTEP, FALLOFF_GAUSSIAN}) {
     PaintSurface surface(test::runtime(), flat_square(), 4, AtlasStorage::Buffer);
     Stroke s = dab_at({3.f, 3.f, 0.f}, 2.f, falloff);
-    s.value[CHANNEL_ROUGHNESS] = {1.f, 1.f, 1.f, 1.f};
-    s.alpha[CHANNEL_ROUGHNESS] = 1.f;
+    s.paint().value[CHANNEL_ROUGHNESS] = {1.f, 1.f, 1.f, 1.f};
+    s.paint().alpha[CHANNEL_ROUGHNESS] = 1.f;
     surface.apply(s);
     const auto pos = surface.atlas().read_limit_positions();
     const auto ch = surface.read_channels();
@@ -173,9 +173,9 @@ TEST(Paint, OpsOfThePaintEquation)
                        Case{PAINT_OP_ADD, 0.25f, 1.f, 0.75f}, Case{PAINT_OP_SUBTRACT, 0.25f, 1.f, 0.25f}}) {
     PaintSurface surface(test::runtime(), flat_square(), 3, AtlasStorage::Buffer);
     Stroke s = dab_at({3.f, 3.f, 0.f}, 0.5f);
-    s.op = c.op;
-    s.value[CHANNEL_ROUGHNESS] = {c.paint, c.paint, c.paint, c.coverage};
-    s.alpha[CHANNEL_ROUGHNESS] = 1.f;
+    s.paint().op = c.op;
+    s.paint().value[CHANNEL_ROUGHNESS] = {c.paint, c.paint, c.paint, c.coverage};
+    s.paint().alpha[CHANNEL_ROUGHNESS] = 1.f;
     surface.apply(s);
     const auto pos = surface.atlas().read_limit_positions();
     const auto ch = surface.read_channels();
@@ -189,8 +189,8 @@ TEST(Paint, AlphaAndStrengthScaleTheBlend)
 {
   PaintSurface surface(test::runtime(), flat_square(), 3, AtlasStorage::Buffer);
   Stroke s = paint_diffuse(dab_at({3.f, 3.f, 0.f}, 0.5f), {0.f, 0.f, 0.f, 1.f});
-  s.alpha[CHANNEL_DIFFUSE] = 0.5f;
-  s.strength = 0.5f;
+  s.paint().alpha[CHANNEL_DIFFUSE] = 0.5f;
+  s.brush.strength = 0.5f;
   surface.apply(s);
   const auto pos = surface.atlas().read_limit_positions();
   const auto ch = surface.read_channels();
@@ -203,13 +203,13 @@ TEST(Paint, MaskProtectsAndLabelsAreSet)
 {
   PaintSurface surface(test::runtime(), flat_square(), 4, AtlasStorage::Buffer);
   Stroke mask = dab_at({2.f, 3.f, 0.f}, 1.f);
-  mask.value[CHANNEL_MASK] = {1.f, 1.f, 1.f, 1.f};
-  mask.alpha[CHANNEL_MASK] = 1.f;
+  mask.paint().value[CHANNEL_MASK] = {1.f, 1.f, 1.f, 1.f};
+  mask.paint().alpha[CHANNEL_MASK] = 1.f;
   surface.apply(mask);
   Stroke label = dab_at({3.f, 3.f, 0.f}, 1.5f);
   label.tool = Tool::Label;
-  label.value[CHANNEL_LABEL] = {7.f, 7.f, 7.f, 1.f};
-  label.alpha[CHANNEL_LABEL] = 1.f;
+  label.paint().value[CHANNEL_LABEL] = {7.f, 7.f, 7.f, 1.f};
+  label.paint().alpha[CHANNEL_LABEL] = 1.f;
   surface.apply(label);
   const auto pos = surface.atlas().read_limit_positions();
   const auto ch = surface.read_channels();
@@ -227,10 +227,9 @@ TEST(Paint, MaskProtectsAndLabelsAreSet)
 TEST(Paint, WashCoversEverything)
 {
   PaintSurface surface(test::runtime(), test::genus_two(), 3, AtlasStorage::Buffer);
-  Stroke s;
-  s.tool = Tool::Wash;
-  s.value[CHANNEL_SPECULAR] = {0.25f, 0.5f, 0.75f, 1.f};
-  s.alpha[CHANNEL_SPECULAR] = 1.f;
+  Stroke s = make_stroke(Tool::Wash);
+  s.paint().value[CHANNEL_SPECULAR] = {0.25f, 0.5f, 0.75f, 1.f};
+  s.paint().alpha[CHANNEL_SPECULAR] = 1.f;
   surface.apply(s);
   for (const Float4& v : surface.read_channels().specular)
     ASSERT_TRUE(v[0] == 0.25f && v[1] == 0.5f && v[2] == 0.75f);
@@ -261,7 +260,7 @@ TEST(Paint, MirrorPaintsBothSides)
 {
   PaintSurface surface(test::runtime(), flat_square(), 3, AtlasStorage::Buffer);
   Stroke s = paint_diffuse(dab_at({1.f, 3.f, 0.f}, 0.4f), {0.f, 1.f, 0.f, 1.f});
-  s.mirror_axis = 0; // the plane x = 3
+  s.brush.mirror_axis = 0; // the plane x = 3
   const StrokeReport r = surface.apply(s);
   EXPECT_EQ(r.dabs_applied, 2u);
   const PaintedSurface out = surface.painted_surface();
@@ -278,7 +277,7 @@ TEST(StrokeScript, SamplesFollowSpacingAndPressure)
 {
   Stroke s = dab_at({0.f, 0.f, 0.f}, 1.f);
   s.points = {{0.f, 0.f, 0.f}, {2.f, 0.f, 0.f}};
-  s.spacing = 0.5f;
+  s.brush.spacing = 0.5f;
   const auto samples = stroke_samples(s);
   ASSERT_EQ(samples.size(), 5u);
   for (std::size_t k = 0; k < samples.size(); ++k)
@@ -351,13 +350,13 @@ TEST(Undo, UndoingEverythingGivesBackTheChannelsBitForBit)
   for (int k = 0; k < 8; ++k) {
     Stroke s;
     s.points = {{5 * next(), 3 * next(), next()}, {5 * next(), 3 * next(), next()}};
-    s.radius = 0.3f + next();
-    s.falloff = k % 4;
-    s.op = k % 5;
-    s.value[k % CHANNEL_COUNT] = {next(), next(), next(), 1.f};
-    s.alpha[k % CHANNEL_COUNT] = 0.5f + 0.5f * next();
+    s.brush.radius = 0.3f + next();
+    s.brush.falloff = k % 4;
+    s.paint().op = k % 5;
+    s.paint().value[k % CHANNEL_COUNT] = {next(), next(), next(), 1.f};
+    s.paint().alpha[k % CHANNEL_COUNT] = 0.5f + 0.5f * next();
     if (k % CHANNEL_COUNT == CHANNEL_LABEL)
-      s.tool = Tool::Label, s.value[CHANNEL_LABEL] = {3.f, 3.f, 3.f, 1.f};
+      s.tool = Tool::Label, s.paint().value[CHANNEL_LABEL] = {3.f, 3.f, 3.f, 1.f};
     surface.apply(s);
     after.push_back(surface.read_channels());
   }
@@ -380,8 +379,8 @@ TEST(Undo, BudgetForgetsTheOldestStrokesAndSaysSo)
 {
   PaintSurface surface(test::runtime(), test::flat_grid(6), 4, AtlasStorage::Buffer);
   Stroke s = dab_at({3.f, 3.f, 0.f}, 1.f);
-  s.value[CHANNEL_DIFFUSE] = {1.f, 0.f, 0.f, 1.f};
-  s.alpha[CHANNEL_DIFFUSE] = 1.f;
+  s.paint().value[CHANNEL_DIFFUSE] = {1.f, 0.f, 0.f, 1.f};
+  s.paint().alpha[CHANNEL_DIFFUSE] = 1.f;
   surface.apply(s);
   const std::size_t one = surface.undo_log().bytes();
   surface.undo_log().set_budget(2 * one + one / 2);
@@ -418,8 +417,8 @@ TEST(PaintModes, RemoverPaintsTheUnderlyingMaterialBack)
 {
   PaintSurface surface(test::runtime(), test::flat_grid(6), 3, AtlasStorage::Buffer);
   Stroke red = paint_diffuse(dab_at({3.f, 3.f, 0.f}, 1.f), {1.f, 0.f, 0.f, 1.f});
-  red.value[CHANNEL_ROUGHNESS] = {0.9f, 0.9f, 0.9f, 1.f};
-  red.alpha[CHANNEL_ROUGHNESS] = 1.f;
+  red.paint().value[CHANNEL_ROUGHNESS] = {0.9f, 0.9f, 0.9f, 1.f};
+  red.paint().alpha[CHANNEL_ROUGHNESS] = 1.f;
   surface.apply(red);
   const Stroke remover = parse_stroke_script(
     R"({"strokes": [{"points": [[3, 3, 0]], "radius": 1.5, "falloff": "constant", "mode": "remover"}]})").strokes[0];
@@ -436,8 +435,8 @@ TEST(PaintModes, PolishAndSandpaperChangeShineNotColour)
 {
   PaintSurface surface(test::runtime(), test::flat_grid(6), 3, AtlasStorage::Buffer);
   Stroke tint = dab_at({3.f, 3.f, 0.f}, 1.f);
-  tint.value[CHANNEL_SPECULAR] = {0.2f, 0.1f, 0.05f, 1.f};
-  tint.alpha[CHANNEL_SPECULAR] = 1.f;
+  tint.paint().value[CHANNEL_SPECULAR] = {0.2f, 0.1f, 0.05f, 1.f};
+  tint.paint().alpha[CHANNEL_SPECULAR] = 1.f;
   surface.apply(tint);
   surface.apply(parse_stroke_script(R"({"strokes": [{"points": [[3, 3, 0]], "radius": 1, "falloff": "constant",
                                        "mode": "polish", "coefficient": 0.8}]})").strokes[0]);
@@ -537,7 +536,7 @@ TEST(PatternPaint, ImagesInPatchParametersAndVolumesInSpace)
     image->width = 2;
     image->height = 1;
     image->samples = {0.f, 1.f}; // left half clear, right half full
-    s.pattern_raster = image;
+    s.paint().pattern.raster = image;
     surface.apply(s);
     const auto ch = surface.read_channels();
     const LevelLayout l = surface.atlas().layout(3);
@@ -554,7 +553,7 @@ TEST(PatternPaint, ImagesInPatchParametersAndVolumesInSpace)
     auto volume = std::make_shared<Raster>();
     volume->width = volume->height = volume->depth = 2;
     volume->samples = {0, 0, 0, 0, 1, 1, 1, 1}; // z = 0 layer empty, z = 1 layer full
-    s.pattern_raster = volume;
+    s.paint().pattern.raster = volume;
     surface.apply(s);
     const auto pos = surface.atlas().read_limit_positions();
     const auto ch = surface.read_channels();
@@ -580,13 +579,13 @@ TEST(Paint, BrushImageShapesTheDab)
   PaintSurface surface(test::runtime(), test::flat_grid(6), 4, AtlasStorage::Buffer);
   Stroke s = paint_diffuse(dab_at({3.f, 3.f, 0.f}, 1.5f), {0.f, 0.f, 1.f, 1.f});
   s.points = {{3.f, 3.f, 0.f}, {3.5f, 3.f, 0.f}}; // heading +x: the stamp's u axis
-  s.spacing = 10.f;                                // one dab only
+  s.brush.spacing = 10.f;                                // one dab only
   auto stamp = std::make_shared<Raster>();
   stamp->width = 2;
   stamp->height = 1;
   stamp->samples = {0.f, 1.f}; // nothing behind the centre, everything ahead
-  s.stamp = stamp;
-  s.stamp_file = "half.png";
+  s.brush.stamp = stamp;
+  s.brush.stamp_file = "half.png";
   surface.apply(s);
   const auto pos = surface.atlas().read_limit_positions();
   const auto ch = surface.read_channels();
@@ -653,7 +652,7 @@ TEST(StrokeScript, BlurAndSmearOps)
     {"points": [[0,0,0]], "radius": 1, "op": "blur", "iterations": 2},
     {"points": [[0,0,0], [1,0,0]], "radius": 1, "op": "smear"}]})");
   EXPECT_EQ(script.strokes[0].tool, Tool::Blur);
-  EXPECT_TRUE(script.strokes[0].target_colour);
+  EXPECT_TRUE(script.strokes[0].smooth().target_colour);
   EXPECT_EQ(script.strokes[1].tool, Tool::Smear);
   EXPECT_THROW(parse_stroke_script(R"({"strokes": [{"points": [[0,0,0]], "radius": 1, "op": "blur",
                                       "channels": {"diffuse": [1,0,0]}}]})"),

@@ -71,17 +71,16 @@ protected:
     auto s = std::make_unique<PaintSurface>(test::runtime(), test::mixed_polygons(), 3, AtlasStorage::Buffer);
     Stroke paint;
     paint.points = {{0.f, 0.f, 1.f}, {0.5f, 0.2f, 1.f}};
-    paint.radius = 0.6f;
-    paint.value[CHANNEL_DIFFUSE] = {1.f, 0.2f, 0.1f, 1.f};
-    paint.alpha[CHANNEL_DIFFUSE] = 1.f;
-    paint.value[CHANNEL_LABEL] = {3.f, 0.f, 0.f, 1.f};
-    paint.alpha[CHANNEL_LABEL] = 1.f;
+    paint.brush.radius = 0.6f;
+    paint.paint().value[CHANNEL_DIFFUSE] = {1.f, 0.2f, 0.1f, 1.f};
+    paint.paint().alpha[CHANNEL_DIFFUSE] = 1.f;
+    paint.paint().value[CHANNEL_LABEL] = {3.f, 0.f, 0.f, 1.f};
+    paint.paint().alpha[CHANNEL_LABEL] = 1.f;
     s->apply(paint);
-    Stroke sculpt;
-    sculpt.tool = Tool::Sculpt;
+    Stroke sculpt = make_stroke(Tool::Sculpt);
     sculpt.points = {{0.f, 0.f, 1.f}};
-    sculpt.radius = 0.5f;
-    sculpt.amount = 0.05f;
+    sculpt.brush.radius = 0.5f;
+    sculpt.move().amount = 0.05f;
     s->apply(sculpt);
     return s;
   }

@@ -84,8 +84,8 @@ TEST(StrokeScript, NumbersSurviveExactly)
       "radius": 1, "amount": 1}]})");
   Stroke& s = script.strokes[0];
   s.points = {{0.1f, 1.f / 3.f, -7.0000005f}, {1e-30f, 1234.5678f, 0.f}};
-  s.radius = 0.123456789f;
-  s.amount = -2.5e-8f;
+  s.brush.radius = 0.123456789f;
+  s.move().amount = -2.5e-8f;
   expect_round_trip(script);
 }
 
@@ -96,7 +96,7 @@ TEST(StrokeScript, ABrushKeepsOnlyTheKeysItsToolReads)
         "channels": {"diffuse": [1, 0, 0]}, "edit_level": 2})");
   const StrokeScript script = parse_stroke_script("{\"strokes\": [" + brush + "]}");
   EXPECT_EQ(script.strokes[0].tool, Tool::Grab);
-  EXPECT_EQ(script.strokes[0].edit_level, 2);
+  EXPECT_EQ(script.strokes[0].edit_level(), 2);
   // A bad value is not a key to drop: it is still reported.
   const std::string bad = drop_meaningless_keys(R"({"tool": "sculpt", "points": [[0, 0, 0]], "radius": -1, "amount": 1})");
   EXPECT_THROW(parse_stroke_script("{\"strokes\": [" + bad + "]}"), InputError);
@@ -154,7 +154,7 @@ TEST(StrokeScript, ReplayingTheHistoryGivesTheSameSurface)
   };
   PaintSurface live(test::runtime(), test::noisy_sphere(3, 0.01f), 3, AtlasStorage::Buffer);
   for (const Stroke& s : script.strokes)
-    if (s.pattern != PATTERN_IMAGE && s.pattern != PATTERN_VOLUME)
+    if (!s.pattern() || (s.pattern()->kind != PATTERN_IMAGE && s.pattern()->kind != PATTERN_VOLUME))
       live.apply(s);
   const auto replayed = run(parse_stroke_script(stroke_script_json({3, live.history()})).strokes);
   const std::vector<Float4> positions = live.atlas().read_positions(3), diffuse = live.read_channels().diffuse;

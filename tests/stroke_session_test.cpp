@@ -35,24 +35,23 @@ std::vector<Vec3> hand_path()
 
 Stroke with_tool(Tool tool)
 {
-  Stroke s;
-  s.tool = tool;
+  Stroke s = make_stroke(tool);
   s.points = hand_path();
-  s.radius = 0.15f;
-  s.strength = 0.8f;
+  s.brush.radius = 0.15f;
+  s.brush.strength = 0.8f;
   if (tool == Tool::Paint || tool == Tool::Label) {
     const int c = tool == Tool::Paint ? CHANNEL_DIFFUSE : CHANNEL_LABEL;
-    s.value[c] = tool == Tool::Paint ? Float4{1.f, 0.2f, 0.f, 1.f} : Float4{3.f, 3.f, 3.f, 1.f};
-    s.alpha[c] = 1.f;
+    s.paint().value[c] = tool == Tool::Paint ? Float4{1.f, 0.2f, 0.f, 1.f} : Float4{3.f, 3.f, 3.f, 1.f};
+    s.paint().alpha[c] = 1.f;
   }
   if (tool == Tool::Sculpt || tool == Tool::Inflate)
-    s.amount = 0.01f;
+    s.move().amount = 0.01f;
   if (tool == Tool::Flatten)
-    s.amount = 0.5f;
+    s.move().amount = 0.5f;
   if (tool == Tool::Blur || tool == Tool::Smooth) {
-    s.iterations = 2;
-    s.target_colour = tool == Tool::Blur;
-    s.taubin = tool == Tool::Smooth;
+    s.smooth().iterations = 2;
+    s.smooth().target_colour = tool == Tool::Blur;
+    s.smooth().taubin = tool == Tool::Smooth;
   }
   return s;
 }
@@ -95,13 +94,13 @@ TEST(StrokeSession, DrawnPointByPointPaintsTheBitsOfTheWholeStroke)
     SCOPED_TRACE(tool_name(tool));
     Stroke stroke = with_tool(tool);
     if (tool == Tool::Paint) { // with a mirror, pressure and a stamp-less tangent brush
-      stroke.mirror_axis = 0;
-      stroke.space = SPACE_TANGENT;
+      stroke.brush.mirror_axis = 0;
+      stroke.brush.space = SPACE_TANGENT;
       stroke.pressure.assign(stroke.points.size(), 1.f);
       stroke.pressure[5] = 0.8f;
     }
     if (tool == Tool::Sculpt)
-      stroke.edit_level = 2; // multiresolution: the coarser level moves, the finer follow
+      stroke.set_edit_level(2); // multiresolution: the coarser level moves, the finer follow
     PaintScene drawn_scene, whole_scene;
     drawn_scene.add(sphere(), "a");
     whole_scene.add(sphere(), "a");
@@ -161,7 +160,7 @@ TEST(StrokeSession, TwoObjectsUnderAGeometryBrushMatchTheWholeStroke)
   scene_of_two(whole_scene);
   Stroke stroke = with_tool(Tool::Sculpt);
   stroke.points = {{0.9f, 0.f, 0.3f}, {0.95f, 0.f, 0.2f}, {1.0f, 0.f, 0.1f}};
-  stroke.radius = 0.3f;
+  stroke.brush.radius = 0.3f;
   StrokeSession drawn(drawn_scene), whole(whole_scene);
   draw(drawn, stroke);
   whole.apply(stroke);

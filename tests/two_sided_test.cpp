@@ -20,10 +20,10 @@ Stroke colour_dab(const Vec3& at, Float4 colour)
 {
   Stroke s;
   s.points = {at};
-  s.radius = 1.f;
-  s.falloff = FALLOFF_CONSTANT;
-  s.value[CHANNEL_DIFFUSE] = colour;
-  s.alpha[CHANNEL_DIFFUSE] = 1.f;
+  s.brush.radius = 1.f;
+  s.brush.falloff = FALLOFF_CONSTANT;
+  s.paint().value[CHANNEL_DIFFUSE] = colour;
+  s.paint().alpha[CHANNEL_DIFFUSE] = 1.f;
   return s;
 }
 
@@ -34,8 +34,8 @@ TEST(TwoSided, EachSideIsPaintedFromItsOwnSide)
   // The plane's normal is +z: a brush above paints the outside, below the inside.
   surface.apply(colour_dab({2.f, 2.f, 0.2f}, {1.f, 0.f, 0.f, 1.f}));
   Stroke below = colour_dab({2.f, 2.f, -0.2f}, {0.f, 0.f, 1.f, 1.f});
-  below.value[CHANNEL_LABEL] = {5.f, 5.f, 5.f, 1.f}; // labels belong to the surface, not a side
-  below.alpha[CHANNEL_LABEL] = 1.f;
+  below.paint().value[CHANNEL_LABEL] = {5.f, 5.f, 5.f, 1.f}; // labels belong to the surface, not a side
+  below.paint().alpha[CHANNEL_LABEL] = 1.f;
   surface.apply(below);
   const PaintChannels c = surface.read_channels();
   ASSERT_EQ(c.inside_diffuse.size(), c.diffuse.size());
@@ -65,7 +65,7 @@ TEST(TwoSided, ExportedAsTwoMaterials)
   PaintSurface surface(test::runtime(), test::flat_grid(4), 3, AtlasStorage::Buffer);
   surface.set_two_sided(true);
   Stroke inside = colour_dab({2.f, 2.f, 0.f}, {0.f, 1.f, 0.f, 1.f});
-  inside.side = 2;
+  inside.brush.side = 2;
   surface.apply(inside);
   ExportModel model;
   TextureMaps maps;

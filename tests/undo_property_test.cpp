@@ -387,9 +387,9 @@ TEST(LongSession, TenThousandStrokesStayWithinTheUndoBudget)
   PaintSurface surface(test::runtime(), test::flat_grid(4), 2, AtlasStorage::Buffer);
   Stroke s;
   s.points = {{1.f, 1.f, 0.f}};
-  s.radius = 0.6f;
-  s.value[CHANNEL_DIFFUSE] = {1.f, 0.f, 0.f, 1.f};
-  s.alpha[CHANNEL_DIFFUSE] = 1.f;
+  s.brush.radius = 0.6f;
+  s.paint().value[CHANNEL_DIFFUSE] = {1.f, 0.f, 0.f, 1.f};
+  s.paint().alpha[CHANNEL_DIFFUSE] = 1.f;
   surface.apply(s);
   const std::size_t one = surface.undo_log().bytes();
   ASSERT_GT(one, 0u);
@@ -401,7 +401,7 @@ TEST(LongSession, TenThousandStrokesStayWithinTheUndoBudget)
     if (k == 1000)
       rss_warm = resident_bytes();
     s.points = {{float(k % 4), float((k / 4) % 4), 0.f}};
-    s.value[CHANNEL_DIFFUSE] = {float(k % 7) / 7.f, 0.5f, 0.f, 1.f};
+    s.paint().value[CHANNEL_DIFFUSE] = {float(k % 7) / 7.f, 0.5f, 0.f, 1.f};
     surface.apply(s);
     most = std::max(most, surface.undo_log().bytes());
     forgotten_notes += surface.undo_log().take_messages().size();

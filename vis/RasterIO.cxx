@@ -63,19 +63,20 @@ void load_stroke_rasters(StrokeScript& script)
     Stroke& s = script.strokes[k];
     const std::string where = "stroke " + std::to_string(k) + ": ";
     try {
-      if (!s.pattern_file.empty()) {
-        auto r = std::make_shared<Raster>(load_raster(s.pattern_file));
-        if (s.pattern == PATTERN_VOLUME && r->depth < 2)
-          throw InputError("'" + s.pattern_file + "' is a 2D image; a volume pattern needs a 3D .vti file");
-        if (s.pattern == PATTERN_IMAGE && r->depth > 1)
-          throw InputError("'" + s.pattern_file + "' is a volume; use \"type\": \"volume\"");
-        s.pattern_raster = r;
+      if (s.pattern() && !s.pattern()->file.empty()) {
+        Pattern& pattern = s.paint().pattern;
+        auto r = std::make_shared<Raster>(load_raster(pattern.file));
+        if (pattern.kind == PATTERN_VOLUME && r->depth < 2)
+          throw InputError("'" + pattern.file + "' is a 2D image; a volume pattern needs a 3D .vti file");
+        if (pattern.kind == PATTERN_IMAGE && r->depth > 1)
+          throw InputError("'" + pattern.file + "' is a volume; use \"type\": \"volume\"");
+        pattern.raster = r;
       }
-      if (!s.stamp_file.empty()) {
-        auto r = std::make_shared<Raster>(load_raster(s.stamp_file));
+      if (!s.brush.stamp_file.empty()) {
+        auto r = std::make_shared<Raster>(load_raster(s.brush.stamp_file));
         if (r->depth > 1)
-          throw InputError("'" + s.stamp_file + "' is a volume, not a brush image");
-        s.stamp = r;
+          throw InputError("'" + s.brush.stamp_file + "' is a volume, not a brush image");
+        s.brush.stamp = r;
       }
     } catch (const std::exception& e) {
       throw InputError(where + e.what());

@@ -102,7 +102,7 @@ std::vector<int> PaintSurface::place(const Stroke& stroke, const DabSample& samp
 {
   // A tangent or screen footprint runs further than the radius in space on
   // surface turned from the brush: the search for it goes that far, at most.
-  const float reach = dab.radius * (stroke.space == SPACE_SCREEN ? 4.f : stroke.space == SPACE_OBJECT ? 1.f : 2.f);
+  const float reach = dab.radius * (stroke.brush.space == SPACE_SCREEN ? 4.f : stroke.brush.space == SPACE_OBJECT ? 1.f : 2.f);
   Vec3 centre;
   CullRecord closest{};
   std::vector<int> patches = brush_patches(sample.centre, dab.radius, &centre, &normal, reach, &closest);
@@ -113,7 +113,7 @@ std::vector<int> PaintSurface::place(const Stroke& stroke, const DabSample& samp
   dab.unfolded = 0;
   if (!aim(stroke, sample.centre, normal, sample.heading, closest, dab))
     return {};
-  if (stroke.space == SPACE_PARAMETER)
+  if (stroke.brush.space == SPACE_PARAMETER)
     return unfold_dab(closest.patch, dab);
   return patches;
 }
@@ -143,22 +143,22 @@ bool PaintSurface::aim(const Stroke& stroke, const Vec3& point, const Vec3& norm
   const bool colours = family == ToolFamily::Paint || family == ToolFamily::ColourFilter;
   inside_ = false;
   if (two_sided_ && colours) {
-    const Vec3 from = stroke.space == SPACE_SCREEN && stroke.has_camera ? stroke.camera.position : point;
+    const Vec3 from = stroke.brush.space == SPACE_SCREEN && stroke.brush.has_camera ? stroke.brush.camera.position : point;
     const float seen = dot(sub(from, Vec3{dab.centre[0], dab.centre[1], dab.centre[2]}), normal);
-    inside_ = stroke.side == 2 || (stroke.side == 0 && seen < 0.f);
+    inside_ = stroke.brush.side == 2 || (stroke.brush.side == 0 && seen < 0.f);
   }
   dab.side_sign = inside_ ? -1.f : 1.f;
-  dab.space = stroke.space;
-  dab.paint_backfaces = stroke.paint_backfaces ? 1 : 0;
+  dab.space = stroke.brush.space;
+  dab.paint_backfaces = stroke.brush.paint_backfaces ? 1 : 0;
   for (int k = 0; k < 3; ++k)
     dab.centre_normal[k] = normal[k];
   stamp_axes(normal, heading, dab);
-  if (stroke.has_camera) {
-    camera_frame(stroke.camera, dab);
-    if (stroke.space == SPACE_SCREEN && at_silhouette(dab, normal))
+  if (stroke.brush.has_camera) {
+    camera_frame(stroke.brush.camera, dab);
+    if (stroke.brush.space == SPACE_SCREEN && at_silhouette(dab, normal))
       return false;
   }
-  if (stroke.space == SPACE_PARAMETER) {
+  if (stroke.brush.space == SPACE_PARAMETER) {
     const LevelLayout l = atlas_->layout(level_);
     cl_float4 bound;
     atlas_->runtime().queue().enqueueReadBuffer(atlas_->limit_bounds(), CL_TRUE, sizeof(cl_float4) * closest.patch,

@@ -54,9 +54,9 @@ void PaintSurface::spray(const std::vector<int>& patches, const BrushDab& dab, c
   Device& d = *device_;
   Runtime& rt = atlas_->runtime();
   const LevelLayout l = atlas_->layout(level_);
-  const int k = stroke.spray_drops;
+  const int k = stroke.paint().spray_drops;
   std::vector<cl_float2> drops;
-  for (const auto& o : spray_offsets(stroke.spray_seed, index, k, dab.radius))
+  for (const auto& o : spray_offsets(stroke.paint().spray_seed, index, k, dab.radius))
     drops.push_back({{dab.screen_centre[0] + o[0] / dab.centre_depth, dab.screen_centre[1] + o[1] / dab.centre_depth}});
   const cl::Buffer drop_buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(cl_float2) * drops.size(),
                                drops.data());
@@ -79,10 +79,10 @@ void PaintSurface::spray(const std::vector<int>& patches, const BrushDab& dab, c
   q.enqueueReadBuffer(points, CL_TRUE, 0, sizeof(cl_float4) * landed.size(), landed.data());
   // Each droplet is a small object-space dab where it landed.
   Stroke droplet = stroke;
-  droplet.space = SPACE_OBJECT;
-  droplet.has_camera = false;
+  droplet.brush.space = SPACE_OBJECT;
+  droplet.brush.has_camera = false;
   BrushDab drop = dab;
-  drop.radius = stroke.spray_size;
+  drop.radius = stroke.paint().spray_size;
   for (const Float4& at : landed) {
     if (at[3] == 0.f)
       continue;
@@ -140,7 +140,8 @@ void PaintSurface::smear(const std::vector<int>& patches, BrushDab dab, std::opt
 
 void PaintSurface::upload_rasters(const Stroke& stroke, BrushDab& dab)
 {
-  for (const Raster* r : {stroke.pattern_raster.get(), stroke.stamp.get()})
+  const Raster* pattern = stroke.pattern() ? stroke.pattern()->raster.get() : nullptr;
+  for (const Raster* r : {pattern, stroke.brush.stamp.get()})
     if (r && (r->width < 1 || r->height < 1 || r->depth < 1 || r->channels < 1 || r->channels > 4 ||
               r->samples.size() != std::size_t(r->width) * r->height * r->depth * r->channels))
       throw InputError("a pattern or brush image of " + std::to_string(r->width) + "x" + std::to_string(r->height) +
@@ -153,7 +154,7 @@ void PaintSurface::upload_rasters(const Stroke& stroke, BrushDab& dab)
     return cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
                       sizeof(float) * std::max<std::size_t>(1, v.size()), const_cast<float*>(v.empty() ? &none : v.data()));
   };
-  const Raster* r = stroke.pattern_raster.get();
+  const Raster* r = pattern;
   d.raster = upload(r ? r->samples : std::vector<float>());
   dab.raster_size[0] = r ? r->width : 0;
   dab.raster_size[1] = r ? r->height : 0;
@@ -161,7 +162,7 @@ void PaintSurface::upload_rasters(const Stroke& stroke, BrushDab& dab)
   dab.raster_size[3] = r ? r->channels : 0;
   // The stamp as grey: its first channel, or the mean of rgb.
   std::vector<float> grey;
-  if (const Raster* s = stroke.stamp.get()) {
+  if (const Raster* s = stroke.brush.stamp.get()) {
     const int c = s->channels;
     for (std::size_t k = 0; k + std::size_t(c) <= s->samples.size(); k += std::size_t(c))
       grey.push_back(c >= 3 ? (s->samples[k] + s->samples[k + 1] + s->samples[k + 2]) / 3.f : s->samples[k]);

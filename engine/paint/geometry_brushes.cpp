@@ -49,7 +49,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   // At a coarser edit level the brush moves that level's control points and
   // the finest level is rebuilt with its details (Multires); the finest
   // patches that may change are then more than the brush's.
-  const int level = stroke.edit_level > 0 ? stroke.edit_level : level_;
+  const int level = stroke.edit_level() > 0 ? stroke.edit_level() : level_;
   const bool coarse = level < level_;
   std::vector<int> changed;
   if (coarse) {
@@ -77,7 +77,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
       phase_done(&StepPhases::weights);
     }
     changed = multires_->reach(patches);
-  } else if (!stroke.target_colour && multires_) {
+  } else if (tool_family(stroke) != ToolFamily::ColourFilter && multires_) {
     multires_->detach();
   }
   remember(coarse ? changed : patches);
@@ -117,7 +117,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
     // A grab moves by the path's step (`normal`) times the weight.
     const int mode = stroke.tool == Tool::Inflate ? MOVE_INFLATE : stroke.tool == Tool::Flatten ? MOVE_FLATTEN
                                                                                                  : MOVE_SCULPT;
-    const float amount = stroke.tool == Tool::Grab ? 1.f : stroke.amount;
+    const float amount = stroke.tool == Tool::Grab ? 1.f : stroke.move().amount;
     const cl::Memory& pos = atlas_->level_layer(level);
     const bool in_place = atlas_->storage() == AtlasStorage::Buffer; // see geometry.cl
     const cl::Memory& moved = in_place ? pos : d.position_work;
@@ -148,20 +148,20 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   const bool everything = count == l.patches;
   const PatchSet set = everything ? PatchSet() : atlas_->patch_set(patches, Reach::All);
   std::vector<std::pair<LayerKernels*, const cl::Memory*>> layers;
-  if (stroke.target_colour)
+  if (stroke.smooth().target_colour)
     layers = {{&d.channels, &diffuse_buffer()}, {&d.channels, &specular_buffer()}};
   else
     layers = {{&d.positions, &atlas_->level_layer(level)}};
   std::vector<float> steps;
-  for (int i = 0; i < stroke.iterations; ++i) {
-    steps.push_back(stroke.lambda);
-    if (stroke.taubin && !stroke.target_colour)
-      steps.push_back(stroke.mu);
+  for (int i = 0; i < stroke.smooth().iterations; ++i) {
+    steps.push_back(stroke.smooth().lambda);
+    if (stroke.smooth().taubin && !stroke.smooth().target_colour)
+      steps.push_back(stroke.smooth().mu);
   }
   for (const auto& [k, layer] : layers)
     d.smoothing->run(k->welded, *layer, l, everything ? nullptr : &set, weights, steps);
   phase_done(&StepPhases::transform);
-  if (stroke.target_colour)
+  if (stroke.smooth().target_colour)
     q.finish();
   else
     geometry_done();
@@ -178,8 +178,8 @@ void PaintSurface::grab_step(const std::vector<DabSample>& samples, std::size_t 
     g.held = false;
     if (!mine) // in a scene, the region is another object's
       return;
-    dab.radius = o.stroke.radius * samples.front().pressure;
-    dab.strength = o.stroke.strength * samples.front().pressure;
+    dab.radius = o.stroke.brush.radius * samples.front().pressure;
+    dab.strength = o.stroke.brush.strength * samples.front().pressure;
     if (!(dab.radius > 0.f))
       return;
     Vec3 normal;

@@ -106,7 +106,7 @@ bool PaintScene::paint_new_dabs(const std::vector<DabSample>& samples)
         m[k] = m[0];
       continue;
     }
-    const float radius = open_.radius * samples[k].pressure;
+    const float radius = open_.brush.radius * samples[k].pressure;
     if (!(radius > 0.f))
       continue;
     std::vector<float> distance(objects_.size());
@@ -118,7 +118,7 @@ bool PaintScene::paint_new_dabs(const std::vector<DabSample>& samples)
     }
     left_ = distance[nearest] == std::numeric_limits<float>::infinity();
     for (std::size_t o = 0; o < objects_.size() && !left_; ++o)
-      masks_[o][k] = open_.space == SPACE_PARAMETER ? o == nearest : distance[o] <= radius;
+      masks_[o][k] = open_.brush.space == SPACE_PARAMETER ? o == nearest : distance[o] <= radius;
   }
   decided_ = samples.size();
   for (std::size_t o = 0; o < objects_.size(); ++o)

@@ -124,8 +124,9 @@ void PaintSurface::begin_stroke(const Stroke& stroke)
   // steps and history() stay in step.
   if (open_)
     throw InputError("a stroke is being drawn already: end it before the next begins");
-  if (stroke.edit_level > level_)
-    throw InputError("edit_level " + std::to_string(stroke.edit_level) + " is finer than the surface's level " +
+  check_settings(stroke);
+  if (stroke.edit_level() > level_)
+    throw InputError("edit_level " + std::to_string(stroke.edit_level()) + " is finer than the surface's level " +
                      std::to_string(level_));
   // Only the layers this tool changes go into its undo step.
   switch (tool_family(stroke)) {
@@ -136,10 +137,10 @@ void PaintSurface::begin_stroke(const Stroke& stroke)
   case ToolFamily::Label: stroke_layers_ = {kDiffuse, kSpecular, kMaterial}; break;
   }
   // At a coarser edit level, its control points change too.
-  const bool coarse = stroke.edit_level > 0 && stroke.edit_level < level_ && stroke_layers_.front() == kPositions;
+  const bool coarse = stroke.edit_level() > 0 && stroke.edit_level() < level_ && stroke_layers_.front() == kPositions;
   if (coarse)
     stroke_layers_.push_back(kEditPositions);
-  stroke_before_.edit_level = coarse ? stroke.edit_level : 0;
+  stroke_before_.edit_level = coarse ? stroke.edit_level() : 0;
   stroke_before_.multires = multires_ ? multires_->state() : Multires::State{};
   if (two_sided_ && stroke_layers_.front() != kPositions) // either side may change
     for (const int id : std::vector<int>(stroke_layers_))
@@ -156,16 +157,20 @@ void PaintSurface::begin_stroke(const Stroke& stroke)
 void PaintSurface::prepare_dab(const Stroke& stroke)
 {
   phase_start();
+  // Tools without paint of their own take the paint equation's defaults.
+  static const PaintSettings no_paint;
+  const auto* paints = std::get_if<PaintSettings>(&stroke.settings);
+  const PaintSettings& p = paints ? *paints : no_paint;
   BrushDab& dab = open_->dab;
   dab.side_sign = 1.f;
-  dab.falloff = stroke.falloff;
-  dab.op = stroke.op;
+  dab.falloff = stroke.brush.falloff;
+  dab.op = p.op;
   for (int c = 0; c < CHANNEL_COUNT; ++c) {
     for (int k = 0; k < 4; ++k)
-      dab.value[c][k] = stroke.value[c][k];
-    dab.alpha[c] = stroke.alpha[c];
+      dab.value[c][k] = p.value[c][k];
+    dab.alpha[c] = p.alpha[c];
   }
-  if (stroke.remover) { // the underlying material, copied back
+  if (p.remover) { // the underlying material, copied back
     const BaseMaterial& m = base_material_;
     for (int k = 0; k < 4; ++k) {
       dab.value[CHANNEL_DIFFUSE][k] = m.diffuse[k];
@@ -175,28 +180,28 @@ void PaintSurface::prepare_dab(const Stroke& stroke)
     }
     dab.op = PAINT_OP_COPY;
   }
-  dab.specular_coefficient = stroke.specular_coefficient;
-  dab.pattern = stroke.pattern;
-  dab.pattern_coord = stroke.pattern_coord;
-  dab.matte = stroke.matte;
-  dab.octaves = stroke.octaves;
+  dab.specular_coefficient = p.specular_coefficient;
+  dab.pattern = p.pattern.kind;
+  dab.pattern_coord = p.pattern.coord;
+  dab.matte = p.pattern.matte;
+  dab.octaves = p.pattern.octaves;
   for (int k = 0; k < 12; ++k)
-    dab.pattern_transform[k] = stroke.pattern_transform[std::size_t(k)];
-  if ((stroke.pattern == PATTERN_IMAGE || stroke.pattern == PATTERN_VOLUME) &&
-      (!stroke.pattern_raster || stroke.pattern_raster->empty()))
-    throw InputError("the stroke's " + std::string(stroke.pattern == PATTERN_IMAGE ? "image" : "volume") +
-                     " pattern has no samples (load '" + stroke.pattern_file + "' first)");
-  if (!stroke.stamp_file.empty() && (!stroke.stamp || stroke.stamp->empty()))
-    throw InputError("the stroke's brush image has no samples (load '" + stroke.stamp_file + "' first)");
+    dab.pattern_transform[k] = p.pattern.transform[std::size_t(k)];
+  if ((p.pattern.kind == PATTERN_IMAGE || p.pattern.kind == PATTERN_VOLUME) &&
+      (!p.pattern.raster || p.pattern.raster->empty()))
+    throw InputError("the stroke's " + std::string(p.pattern.kind == PATTERN_IMAGE ? "image" : "volume") +
+                     " pattern has no samples (load '" + p.pattern.file + "' first)");
+  if (!stroke.brush.stamp_file.empty() && (!stroke.brush.stamp || stroke.brush.stamp->empty()))
+    throw InputError("the stroke's brush image has no samples (load '" + stroke.brush.stamp_file + "' first)");
   upload_rasters(stroke, dab);
   if (stroke.tool == Tool::Wash || stroke.tool == Tool::Dip) {
     std::vector<int> all(std::size_t(atlas_->topology().patch_count));
     for (std::size_t p = 0; p < all.size(); ++p)
       all[p] = int(p);
     dab.radius = std::numeric_limits<float>::infinity();
-    dab.strength = stroke.strength;
+    dab.strength = stroke.brush.strength;
     dab.falloff = FALLOFF_CONSTANT;
-    inside_ = two_sided_ && stroke.side == 2; // a wash covers the outside unless told
+    inside_ = two_sided_ && stroke.brush.side == 2; // a wash covers the outside unless told
     paint(all, dab);
     open_->report.dabs = open_->report.dabs_applied = 1;
     open_->report.patches_touched = all.size();
@@ -204,11 +209,11 @@ void PaintSurface::prepare_dab(const Stroke& stroke)
   }
   // The mirror plane passes through the centre of the base mesh's bounds.
   const BaseMesh& base = atlas_->base_mesh();
-  if (stroke.mirror_axis >= 0) {
-    float lo = base.points.front()[stroke.mirror_axis], hi = lo;
+  if (stroke.brush.mirror_axis >= 0) {
+    float lo = base.points.front()[stroke.brush.mirror_axis], hi = lo;
     for (const Vec3& p : base.points) {
-      lo = std::min(lo, p[stroke.mirror_axis]);
-      hi = std::max(hi, p[stroke.mirror_axis]);
+      lo = std::min(lo, p[stroke.brush.mirror_axis]);
+      hi = std::max(hi, p[stroke.brush.mirror_axis]);
     }
     open_->mirror_at = 0.5f * (lo + hi);
   }
@@ -241,14 +246,14 @@ void PaintSurface::paint_sample(const DabSample& sample, bool may_end)
   BrushDab& dab = o.dab;
   // The dab, and with a mirror its reflection (heading reflected too).
   std::vector<DabSample> dabs{sample};
-  if (stroke.mirror_axis >= 0) {
+  if (stroke.brush.mirror_axis >= 0) {
     DabSample m = sample;
-    m.centre[stroke.mirror_axis] = 2.f * o.mirror_at - m.centre[stroke.mirror_axis];
-    m.heading[stroke.mirror_axis] = -m.heading[stroke.mirror_axis];
+    m.centre[stroke.brush.mirror_axis] = 2.f * o.mirror_at - m.centre[stroke.brush.mirror_axis];
+    m.heading[stroke.brush.mirror_axis] = -m.heading[stroke.brush.mirror_axis];
     dabs.push_back(m);
   }
-  dab.radius = stroke.radius * sample.pressure;
-  dab.strength = stroke.strength * sample.pressure;
+  dab.radius = stroke.brush.radius * sample.pressure;
+  dab.strength = stroke.brush.strength * sample.pressure;
   bool on_surface = false;
   for (std::size_t side = 0; side < dabs.size(); ++side) {
     ++o.report.dabs;
@@ -263,7 +268,7 @@ void PaintSurface::paint_sample(const DabSample& sample, bool may_end)
     on_surface = true;
     if (stroke.tool == Tool::Smear)
       smear(patches, dab, o.carried[side]);
-    else if (stroke.spray_drops > 0)
+    else if (const auto* p = std::get_if<PaintSettings>(&stroke.settings); p && p->spray_drops > 0)
       spray(patches, dab, stroke, o.report.dabs);
     else if (stroke.tool == Tool::Paint || stroke.tool == Tool::Label)
       paint(patches, dab);

@@ -129,8 +129,8 @@ void read_channels(const StrokeReader& r, Stroke& s)
         r.fail("channels", "\"" + name + "\" must be a number" + (bounded ? " from 0 to 1" : ""));
       value = {v.get<float>(), v.get<float>(), v.get<float>(), 1.f};
     }
-    s.value[c] = value;
-    s.alpha[c] = 1.f;
+    s.paint().value[c] = value;
+    s.paint().alpha[c] = 1.f;
   }
   if (r.has("alphas")) {
     const json& al = r.at("alphas");
@@ -142,7 +142,7 @@ void read_channels(const StrokeReader& r, Stroke& s)
         r.fail("alphas", "names \"" + name + "\", which \"channels\" does not paint");
       if (!v.is_number() || v.get<double>() < 0 || v.get<double>() > 1)
         r.fail("alphas", "\"" + name + "\" must be a number from 0 to 1");
-      s.alpha[it->second] = v.get<float>();
+      s.paint().alpha[it->second] = v.get<float>();
     }
   }
 }
@@ -173,18 +173,18 @@ void read_pattern(const StrokeReader& r, Stroke& s)
   };
   if (!p.contains("type"))
     r.fail("pattern", "needs a \"type\" (noise, turbulence, marble, bath, image, volume)");
-  s.pattern = 1 + int(std::find(types.begin(), types.end(), word("type", types, "")) - types.begin());
-  const bool sampled = s.pattern == PATTERN_IMAGE || s.pattern == PATTERN_VOLUME;
+  s.paint().pattern.kind = 1 + int(std::find(types.begin(), types.end(), word("type", types, "")) - types.begin());
+  const bool sampled = s.paint().pattern.kind == PATTERN_IMAGE || s.paint().pattern.kind == PATTERN_VOLUME;
   if (sampled != p.contains("file"))
     r.fail("pattern", sampled ? "of type image or volume needs a \"file\"" : "\"file\" belongs to image and volume patterns");
   if (sampled) {
     if (!p["file"].is_string() || p["file"].get<std::string>().empty())
       r.fail("pattern", "\"file\" must be a file name");
-    s.pattern_file = p["file"].get<std::string>();
+    s.paint().pattern.file = p["file"].get<std::string>();
   }
   const std::string coord = word("coord", {"position", "uv", "screen"}, "position");
-  s.pattern_coord = coord == "uv" ? PATTERN_COORD_UV : coord == "screen" ? PATTERN_COORD_SCREEN : PATTERN_COORD_POSITION;
-  s.matte = word("matte", {"self", "opaque"}, "self") == "opaque" ? MATTE_OPAQUE : MATTE_SELF;
+  s.paint().pattern.coord = coord == "uv" ? PATTERN_COORD_UV : coord == "screen" ? PATTERN_COORD_SCREEN : PATTERN_COORD_POSITION;
+  s.paint().pattern.matte = word("matte", {"self", "opaque"}, "self") == "opaque" ? MATTE_OPAQUE : MATTE_SELF;
   double scale = 1.0;
   if (p.contains("scale")) {
     if (!p["scale"].is_number() || !(p["scale"].get<double>() > 0) || !std::isfinite(p["scale"].get<double>()))
@@ -194,7 +194,7 @@ void read_pattern(const StrokeReader& r, Stroke& s)
   if (p.contains("octaves")) {
     if (!p["octaves"].is_number_integer() || p["octaves"].get<int>() < 1 || p["octaves"].get<int>() > 12)
       r.fail("pattern", "\"octaves\" must be an integer from 1 to 12");
-    s.octaves = p["octaves"].get<int>();
+    s.paint().pattern.octaves = p["octaves"].get<int>();
   }
   if (p.contains("transform")) {
     const json& t = p["transform"];
@@ -206,11 +206,11 @@ void read_pattern(const StrokeReader& r, Stroke& s)
       for (int col = 0; col < 4; ++col) {
         if (!t[row][col].is_number() || !std::isfinite(t[row][col].get<double>()))
           r.fail("pattern", "\"transform\" must hold finite numbers");
-        s.pattern_transform[std::size_t(row * 4 + col)] = t[row][col].get<float>();
+        s.paint().pattern.transform[std::size_t(row * 4 + col)] = t[row][col].get<float>();
       }
     }
   }
-  for (float& m : s.pattern_transform) // the scale applies after the transform
+  for (float& m : s.paint().pattern.transform) // the scale applies after the transform
     m = float(m * scale);
 }
 
@@ -263,32 +263,33 @@ void read_space(const StrokeReader& r, Stroke& s, const std::string& tool, bool 
   const std::string space = r.word("space", "object", {"object", "tangent", "screen", "parameter"});
   if (everywhere && r.has("space"))
     r.fail("space", "has no meaning for a " + tool + ", which covers everything at once");
-  s.space = space == "tangent" ? SPACE_TANGENT : space == "screen" ? SPACE_SCREEN
+  s.brush.space = space == "tangent" ? SPACE_TANGENT : space == "screen" ? SPACE_SCREEN
             : space == "parameter" ? SPACE_PARAMETER : SPACE_OBJECT;
-  const bool screen = s.space == SPACE_SCREEN || s.pattern_coord == PATTERN_COORD_SCREEN;
+  const bool screen =
+    s.brush.space == SPACE_SCREEN || (s.pattern() && s.pattern()->coord == PATTERN_COORD_SCREEN);
   if (screen && !r.has("camera"))
     r.fail("camera", "is required for a screen-space brush or pattern: the view it is drawn in");
   if (r.has("camera")) {
     if (!screen)
       r.fail("camera", "has no meaning unless \"space\" is \"screen\" or the pattern's \"coord\" is \"screen\"");
-    s.camera = read_camera(r);
-    s.has_camera = true;
+    s.brush.camera = read_camera(r);
+    s.brush.has_camera = true;
   }
   if (r.has("backfaces")) {
-    if (s.space != SPACE_SCREEN && s.space != SPACE_TANGENT)
+    if (s.brush.space != SPACE_SCREEN && s.brush.space != SPACE_TANGENT)
       r.fail("backfaces", "has no meaning unless \"space\" is \"screen\" or \"tangent\"");
-    s.paint_backfaces = r.word("backfaces", "skip", {"skip", "paint"}) == "paint";
+    s.brush.paint_backfaces = r.word("backfaces", "skip", {"skip", "paint"}) == "paint";
   }
   if (r.has("side")) {
-    const bool colours = s.tool == Tool::Paint || s.tool == Tool::Wash || s.tool == Tool::Dip ||
-                         s.tool == Tool::Smear || s.tool == Tool::Blur || (s.tool == Tool::Smooth && s.target_colour);
+    const ToolFamily family = tool_family(s);
+    const bool colours = family == ToolFamily::Paint || family == ToolFamily::ColourFilter;
     if (!colours)
       r.fail("side", "has no meaning for a " + tool + " stroke: only colours and roughness have two sides");
     const std::string side = r.word("side", "auto", {"auto", "outside", "inside"});
-    s.side = side == "outside" ? 1 : side == "inside" ? 2 : 0;
+    s.brush.side = side == "outside" ? 1 : side == "inside" ? 2 : 0;
   }
   if (r.has("spray")) {
-    if (s.space != SPACE_SCREEN || (s.tool != Tool::Paint && s.tool != Tool::Label))
+    if (s.brush.space != SPACE_SCREEN || (s.tool != Tool::Paint && s.tool != Tool::Label))
       r.fail("spray", "has no meaning unless a paint or label stroke is in screen space");
     const json& sp = r.at("spray");
     if (!sp.is_object())
@@ -305,9 +306,9 @@ void read_space(const StrokeReader& r, Stroke& s, const std::string& tool, bool 
     if (sp.contains("seed") && (!sp["seed"].is_number_integer() || sp["seed"].get<long long>() < 0 ||
                                 sp["seed"].get<long long>() > 4294967295LL))
       r.fail("spray", "\"seed\" must be an integer from 0 to 4294967295");
-    s.spray_drops = sp["drops"].get<int>();
-    s.spray_size = sp["size"].get<float>();
-    s.spray_seed = sp.contains("seed") ? sp["seed"].get<unsigned>() : 0u;
+    s.paint().spray_drops = sp["drops"].get<int>();
+    s.paint().spray_size = sp["size"].get<float>();
+    s.paint().spray_seed = sp.contains("seed") ? sp["seed"].get<unsigned>() : 0u;
   }
 }
 
@@ -329,13 +330,13 @@ Stroke read_stroke(const json& j, std::size_t index)
   static const std::vector<std::string> tools = {"paint",  "label",   "wash",    "dip",   "smooth", "blur",
                                                  "sculpt", "inflate", "flatten", "smear", "grab"};
   std::string tool = r.word("tool", "paint", tools);
-  s.tool = Tool(std::find(tools.begin(), tools.end(), tool) - tools.begin());
+  s = make_stroke(Tool(std::find(tools.begin(), tools.end(), tool) - tools.begin()));
   // The paint equation's filtering ops are brushes of their own: "op":
   // "blur" filters the colours under the brush, "op": "smear" drags them.
   if (s.tool == Tool::Paint && r.has("op") && r.at("op").is_string() &&
       (r.at("op").get<std::string>() == "blur" || r.at("op").get<std::string>() == "smear")) {
     tool = r.at("op").get<std::string>();
-    s.tool = tool == "blur" ? Tool::Blur : Tool::Smear;
+    s = make_stroke(tool == "blur" ? Tool::Blur : Tool::Smear);
     if (r.has("channels"))
       r.fail("channels", "has no meaning for op " + tool + ", which moves the colours already there");
   }
@@ -356,49 +357,50 @@ Stroke read_stroke(const json& j, std::size_t index)
       r.fail(key, std::string("has no meaning for a ") + tool + " stroke");
   if (s.tool != Tool::Smooth && r.has("target"))
     r.fail("target", "has no meaning for a " + tool + " stroke");
+  if (moves) {
+    const bool flatten = s.tool == Tool::Flatten;
+    s.move().amount = float(flatten ? r.number("amount", 0.5, 0.0, 1.0) : r.number("amount", 0.0, -1e30, 1e30));
+    if (!flatten && !r.has("amount"))
+      r.fail("amount", "is required: how far a dab moves the surface, in world units");
+  }
+  if (smooths) {
+    s.smooth().iterations = int(r.number("iterations", 1, 1, 1000));
+    if (r.has("iterations") && !r.at("iterations").is_number_integer())
+      r.fail("iterations", "must be an integer from 1 to 1000");
+    s.smooth().target_colour = s.tool == Tool::Blur || r.word("target", "position", {"position", "color"}) == "color";
+    s.smooth().taubin = r.word("method", s.smooth().target_colour ? "laplacian" : "taubin", {"laplacian", "taubin"}) == "taubin";
+    if (s.smooth().taubin && s.smooth().target_colour)
+      r.fail("method", "taubin is for positions; colours are smoothed with laplacian");
+    s.smooth().lambda = float(r.number("lambda", 0.5, 0.0, 1.0));
+    s.smooth().mu = float(r.number("mu", -0.53, -1.0, 0.0));
+    if (!s.smooth().target_colour && r.has("mu") && !s.smooth().taubin)
+      r.fail("mu", "belongs to Taubin smoothing (\"method\": \"taubin\")");
+    if (s.smooth().taubin && !(-s.smooth().mu > s.smooth().lambda))
+      r.fail("mu", "must be more negative than -lambda for Taubin smoothing (e.g. lambda 0.5, mu -0.53)");
+  }
   if (r.has("edit_level")) {
-    const bool shapes = moves || s.tool == Tool::Grab || (s.tool == Tool::Smooth && !s.target_colour);
+    const bool shapes = tool_family(s) == ToolFamily::Move || tool_family(s) == ToolFamily::Smooth;
     if (!shapes)
       r.fail("edit_level", "has no meaning for a " + tool + " stroke, which does not move the surface");
     if (!r.at("edit_level").is_number_integer() || r.at("edit_level").get<long long>() < 1 ||
         r.at("edit_level").get<long long>() > 12)
       r.fail("edit_level", "must be an integer from 1 to 12");
-    s.edit_level = r.at("edit_level").get<int>();
+    s.set_edit_level(r.at("edit_level").get<int>());
   }
-  if (moves) {
-    const bool flatten = s.tool == Tool::Flatten;
-    s.amount = float(flatten ? r.number("amount", 0.5, 0.0, 1.0) : r.number("amount", 0.0, -1e30, 1e30));
-    if (!flatten && !r.has("amount"))
-      r.fail("amount", "is required: how far a dab moves the surface, in world units");
-  }
-  if (smooths) {
-    s.iterations = int(r.number("iterations", 1, 1, 1000));
-    if (r.has("iterations") && !r.at("iterations").is_number_integer())
-      r.fail("iterations", "must be an integer from 1 to 1000");
-    s.target_colour = s.tool == Tool::Blur || r.word("target", "position", {"position", "color"}) == "color";
-    s.taubin = r.word("method", s.target_colour ? "laplacian" : "taubin", {"laplacian", "taubin"}) == "taubin";
-    if (s.taubin && s.target_colour)
-      r.fail("method", "taubin is for positions; colours are smoothed with laplacian");
-    s.lambda = float(r.number("lambda", 0.5, 0.0, 1.0));
-    s.mu = float(r.number("mu", -0.53, -1.0, 0.0));
-    if (!s.target_colour && r.has("mu") && !s.taubin)
-      r.fail("mu", "belongs to Taubin smoothing (\"method\": \"taubin\")");
-    if (s.taubin && !(-s.mu > s.lambda))
-      r.fail("mu", "must be more negative than -lambda for Taubin smoothing (e.g. lambda 0.5, mu -0.53)");
-  }
-  s.strength = float(r.number("strength", 1.0, 0.0, 1.0));
+  s.brush.strength = float(r.number("strength", 1.0, 0.0, 1.0));
   const std::string falloff = r.word("falloff", "smoothstep", {"constant", "linear", "smoothstep", "gaussian"});
-  s.falloff = falloff == "constant" ? FALLOFF_CONSTANT : falloff == "linear" ? FALLOFF_LINEAR
+  s.brush.falloff = falloff == "constant" ? FALLOFF_CONSTANT : falloff == "linear" ? FALLOFF_LINEAR
               : falloff == "gaussian" ? FALLOFF_GAUSSIAN : FALLOFF_SMOOTHSTEP;
   const std::string op =
     paints ? r.word("op", "copy", {"copy", "over", "max", "add", "subtract", "blur", "smear"}) : "copy";
-  s.op = op == "over" ? PAINT_OP_OVER : op == "max" ? PAINT_OP_MAX : op == "add" ? PAINT_OP_ADD
+  if (paints)
+    s.paint().op = op == "over" ? PAINT_OP_OVER : op == "max" ? PAINT_OP_MAX : op == "add" ? PAINT_OP_ADD
          : op == "subtract" ? PAINT_OP_SUBTRACT : PAINT_OP_COPY;
-  s.spacing = float(r.number("spacing", 0.25, 0.01, 100.0));
+  s.brush.spacing = float(r.number("spacing", 0.25, 0.01, 100.0));
   if (r.has("mirror") && s.tool == Tool::Grab)
     r.fail("mirror", "has no meaning for a grab stroke, which pulls one region");
   if (r.has("mirror"))
-    s.mirror_axis = r.word("mirror", "x", {"x", "y", "z"})[0] - 'x';
+    s.brush.mirror_axis = r.word("mirror", "x", {"x", "y", "z"})[0] - 'x';
   read_channels(r, s);
 
   if (everywhere) {
@@ -413,7 +415,7 @@ Stroke read_stroke(const json& j, std::size_t index)
       r.fail("points", "is empty: a stroke needs at least one point");
     if (!r.has("radius"))
       r.fail("radius", "is required (world units)");
-    s.radius = float(r.number("radius", 0.0, 1e-30, 1e30));
+    s.brush.radius = float(r.number("radius", 0.0, 1e-30, 1e30));
     if (r.has("pressure")) {
       const json& p = r.at("pressure");
       if (!p.is_array() || p.size() != s.points.size())
@@ -435,7 +437,7 @@ Stroke read_stroke(const json& j, std::size_t index)
         d2 += double(s.points[k][a] - s.points[k - 1][a]) * double(s.points[k][a] - s.points[k - 1][a]);
       length += std::sqrt(d2);
     }
-    const double step = double(s.spacing) * double(s.radius) * (s.pressure.empty() ? 1.0 : 0.05);
+    const double step = double(s.brush.spacing) * double(s.brush.radius) * (s.pressure.empty() ? 1.0 : 0.05);
     if (length / step > double(kMaxDabsPerStroke))
       r.fail("spacing", "x radius is too small for the path: more than " + std::to_string(kMaxDabsPerStroke) +
                           " dabs in one stroke");
@@ -459,14 +461,14 @@ Stroke read_stroke(const json& j, std::size_t index)
       r.fail("stamp", "has no meaning for a " + tool + " stroke");
     if (!r.at("stamp").is_string() || r.at("stamp").get<std::string>().empty())
       r.fail("stamp", "must be the file name of a brush image");
-    s.stamp_file = r.at("stamp").get<std::string>();
+    s.brush.stamp_file = r.at("stamp").get<std::string>();
   }
   if (r.has("pattern") && !paints)
     r.fail("pattern", "has no meaning for a " + tool + " stroke");
   if (r.has("pattern"))
     read_pattern(r, s);
   read_space(r, s, tool, everywhere);
-  if (s.tool == Tool::Dip && s.pattern == PATTERN_NONE)
+  if (s.tool == Tool::Dip && s.paint().pattern.kind == PATTERN_NONE)
     r.fail("pattern", "is required for a dip: the 3D matte to dip through, e.g. {\"type\": \"bath\"}");
   if (r.has("mode") && (!paints || s.tool == Tool::Label))
     r.fail("mode", "has no meaning for a " + tool + " stroke");
@@ -481,9 +483,9 @@ Stroke read_stroke(const json& j, std::size_t index)
   } else if (mode == "remover") {
     if (r.has("channels"))
       r.fail("channels", "has no meaning for the remover, which paints the underlying material back");
-    s.remover = true;
+    s.paint().remover = true;
     for (const int c : {CHANNEL_DIFFUSE, CHANNEL_SPECULAR, CHANNEL_ROUGHNESS, CHANNEL_DISPLACEMENT})
-      s.alpha[c] = 1.f;
+      s.paint().alpha[c] = 1.f;
   } else if (mode == "dye") {
     if (!r.has("channels"))
       r.fail("channels", "of dye paint must give diffuse or specular");
@@ -496,16 +498,16 @@ Stroke read_stroke(const json& j, std::size_t index)
         if (item.key() != "roughness")
           r.fail("channels", "of " + mode + " paint may only be roughness, not \"" + item.key() + "\"");
     const bool polish = mode == "polish";
-    if (s.alpha[CHANNEL_ROUGHNESS] == 0.f) {
+    if (s.paint().alpha[CHANNEL_ROUGHNESS] == 0.f) {
       const float rough = polish ? 0.1f : 0.9f;
-      s.value[CHANNEL_ROUGHNESS] = {rough, rough, rough, 1.f};
-      s.alpha[CHANNEL_ROUGHNESS] = 1.f;
+      s.paint().value[CHANNEL_ROUGHNESS] = {rough, rough, rough, 1.f};
+      s.paint().alpha[CHANNEL_ROUGHNESS] = 1.f;
     }
-    s.specular_coefficient = float(r.number("coefficient", polish ? 0.9 : 0.05, 0.0, 1.0));
-    s.value[CHANNEL_SPECULAR] = {0.f, 0.f, 0.f, 1.f};
-    s.alpha[CHANNEL_SPECULAR] = 1.f;
+    s.paint().specular_coefficient = float(r.number("coefficient", polish ? 0.9 : 0.05, 0.0, 1.0));
+    s.paint().value[CHANNEL_SPECULAR] = {0.f, 0.f, 0.f, 1.f};
+    s.paint().alpha[CHANNEL_SPECULAR] = 1.f;
   }
-  const bool has_paint = r.has("channels") || s.remover || s.specular_coefficient >= 0.f;
+  const bool has_paint = paints && (r.has("channels") || s.paint().remover || s.paint().specular_coefficient >= 0.f);
   if (s.tool == Tool::Label) {
     if (!r.has("channels") || r.at("channels").size() != 1 || !r.at("channels").contains("label"))
       r.fail("channels", "of a label stroke must be exactly {\"label\": id}");
@@ -530,7 +532,10 @@ ToolFamily tool_family(const Stroke& stroke)
   case Tool::Label: return ToolFamily::Label;
   case Tool::Blur:
   case Tool::Smear: return ToolFamily::ColourFilter;
-  case Tool::Smooth: return stroke.target_colour ? ToolFamily::ColourFilter : ToolFamily::Smooth;
+  case Tool::Smooth: {
+    const auto* smooth = std::get_if<SmoothSettings>(&stroke.settings);
+    return smooth && smooth->target_colour ? ToolFamily::ColourFilter : ToolFamily::Smooth;
+  }
   case Tool::Sculpt:
   case Tool::Inflate:
   case Tool::Flatten:
@@ -539,18 +544,93 @@ ToolFamily tool_family(const Stroke& stroke)
   }
 }
 
+// What a script says of each part; loaded rasters are not compared.
+bool operator==(const Brush& a, const Brush& b)
+{
+  return a.radius == b.radius && a.strength == b.strength && a.falloff == b.falloff && a.spacing == b.spacing &&
+         a.mirror_axis == b.mirror_axis && a.space == b.space && a.paint_backfaces == b.paint_backfaces &&
+         a.has_camera == b.has_camera && (!a.has_camera || a.camera == b.camera) && a.side == b.side &&
+         a.stamp_file == b.stamp_file;
+}
+
+bool operator==(const Pattern& a, const Pattern& b)
+{
+  return a.kind == b.kind && a.coord == b.coord && a.matte == b.matte && a.octaves == b.octaves &&
+         a.transform == b.transform && a.file == b.file;
+}
+
+bool operator==(const PaintSettings& a, const PaintSettings& b)
+{
+  return a.op == b.op && a.value == b.value && a.alpha == b.alpha && a.remover == b.remover &&
+         a.specular_coefficient == b.specular_coefficient && a.pattern == b.pattern && a.spray_drops == b.spray_drops &&
+         a.spray_size == b.spray_size && a.spray_seed == b.spray_seed;
+}
+
+bool operator==(const SmoothSettings& a, const SmoothSettings& b)
+{
+  return a.iterations == b.iterations && a.target_colour == b.target_colour && a.taubin == b.taubin &&
+         a.lambda == b.lambda && a.mu == b.mu && a.edit_level == b.edit_level;
+}
+
+bool operator==(const MoveSettings& a, const MoveSettings& b)
+{
+  return a.amount == b.amount && a.edit_level == b.edit_level;
+}
+
+bool operator==(const SmearSettings&, const SmearSettings&) { return true; }
+
 bool Stroke::operator==(const Stroke& o) const
 {
-  return tool == o.tool && points == o.points && pressure == o.pressure && radius == o.radius &&
-         strength == o.strength && falloff == o.falloff && spacing == o.spacing && op == o.op && value == o.value &&
-         alpha == o.alpha && mirror_axis == o.mirror_axis && amount == o.amount && iterations == o.iterations &&
-         target_colour == o.target_colour && taubin == o.taubin && lambda == o.lambda && mu == o.mu &&
-         remover == o.remover && specular_coefficient == o.specular_coefficient && pattern == o.pattern &&
-         pattern_coord == o.pattern_coord && matte == o.matte && octaves == o.octaves &&
-         pattern_transform == o.pattern_transform && pattern_file == o.pattern_file && stamp_file == o.stamp_file &&
-         edit_level == o.edit_level && space == o.space && paint_backfaces == o.paint_backfaces &&
-         has_camera == o.has_camera && (!has_camera || camera == o.camera) && spray_drops == o.spray_drops &&
-         spray_size == o.spray_size && spray_seed == o.spray_seed && side == o.side;
+  return tool == o.tool && points == o.points && pressure == o.pressure && brush == o.brush && settings == o.settings;
+}
+
+Stroke make_stroke(Tool tool)
+{
+  Stroke s;
+  s.tool = tool;
+  switch (tool) {
+  case Tool::Smooth:
+  case Tool::Blur:
+    s.settings = SmoothSettings();
+    s.smooth().target_colour = tool == Tool::Blur;
+    break;
+  case Tool::Sculpt:
+  case Tool::Inflate:
+  case Tool::Flatten:
+  case Tool::Grab: s.settings = MoveSettings(); break;
+  case Tool::Smear: s.settings = SmearSettings(); break;
+  default: s.settings = PaintSettings(); break;
+  }
+  return s;
+}
+
+void Stroke::set_edit_level(int level)
+{
+  if (auto* m = std::get_if<SmoothSettings>(&settings))
+    m->edit_level = level;
+  else
+    move().edit_level = level;
+}
+
+void check_settings(const Stroke& stroke)
+{
+  if (stroke.settings.index() != make_stroke(stroke.tool).settings.index())
+    throw InputError(std::string("a ") + tool_name(stroke.tool) + " stroke carries another tool's settings");
+}
+
+int Stroke::edit_level() const
+{
+  if (const auto* m = std::get_if<MoveSettings>(&settings))
+    return m->edit_level;
+  if (const auto* m = std::get_if<SmoothSettings>(&settings))
+    return m->target_colour ? -1 : m->edit_level;
+  return -1;
+}
+
+const Pattern* Stroke::pattern() const
+{
+  const auto* p = std::get_if<PaintSettings>(&settings);
+  return p ? &p->pattern : nullptr;
 }
 
 StrokeScript parse_stroke_script(const std::string& text)
@@ -621,8 +701,8 @@ StrokeScript load_stroke_script(const std::string& path)
   }
   const std::filesystem::path dir = std::filesystem::path(path).parent_path();
   for (Stroke& s : script.strokes)
-    for (std::string* file : {&s.pattern_file, &s.stamp_file})
-      if (!file->empty() && std::filesystem::path(*file).is_relative())
+    for (std::string* file : {s.pattern() ? &s.paint().pattern.file : nullptr, &s.brush.stamp_file})
+      if (file && !file->empty() && std::filesystem::path(*file).is_relative())
         *file = (dir / *file).string();
   return script;
 }
@@ -631,7 +711,7 @@ std::vector<DabSample> stroke_samples(const Stroke& s)
 {
   const auto pressure_at = [&](std::size_t k) { return s.pressure.empty() ? 1.f : s.pressure[k]; };
   // Spacing follows the pressure-scaled radius; never below a tiny step.
-  const auto step = [&](float pressure) { return s.spacing * s.radius * std::max(pressure, 0.05f); };
+  const auto step = [&](float pressure) { return s.brush.spacing * s.brush.radius * std::max(pressure, 0.05f); };
   if (s.points.empty()) // wash and dip have no path
     return {};
   if (!(step(0.05f) > 0.f))

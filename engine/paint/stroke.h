@@ -9,6 +9,7 @@
 #include <array>  // for std::array
 #include <memory> // for std::shared_ptr
 #include <string> // for std::string
+#include <variant> // for std::variant
 #include <vector> // for std::vector
 
 namespace meshpaint {
@@ -45,49 +46,116 @@ struct Camera
   }
 };
 
-struct Stroke
+//! Where and how the brush meets the surface: what every tool's dabs share.
+struct Brush
 {
-  Tool tool = Tool::Paint;
-  std::vector<Vec3> points;             //!< the path, world coordinates
-  std::vector<float> pressure;          //!< per point, scales radius and strength; empty: 1
   float radius = 0.f;                   //!< world units
   float strength = 1.f;                 //!< 0..1
   int falloff = FALLOFF_SMOOTHSTEP;     //!< FALLOFF_*
   float spacing = 0.25f;                //!< dab spacing as a fraction of the radius
-  int op = PAINT_OP_COPY;               //!< PAINT_OP_*
-  std::array<Float4, CHANNEL_COUNT> value{};  //!< per channel: rgb or x, and coverage in w
-  std::array<float, CHANNEL_COUNT> alpha{};   //!< 0: channel untouched
   int mirror_axis = -1;                 //!< 0, 1, 2 for x, y, z; -1 none
-  float amount = 0.f;                   //!< sculpt, inflate: world units per dab; flatten: 0..1
-  int iterations = 1;                   //!< smooth, blur: passes per dab
-  bool target_colour = false;           //!< smooth: colours instead of positions
-  bool taubin = true;                   //!< smooth positions: lambda/mu pairs (no shrinking)
-  float lambda = 0.5f, mu = -0.53f;     //!< smoothing steps
-  bool remover = false;                 //!< paint the underlying material back
-  float specular_coefficient = -1.f;    //!< >= 0: polish / sandpaper the specular coefficient
-  int pattern = PATTERN_NONE;           //!< PATTERN_*
-  int pattern_coord = PATTERN_COORD_POSITION;
-  int matte = MATTE_SELF;
-  int octaves = 4;
-  std::array<float, 12> pattern_transform{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}; //!< 3x4, rows
-  std::string pattern_file;                    //!< image or volume pattern, as the script names it
-  std::shared_ptr<const Raster> pattern_raster; //!< its samples (loaded by the caller)
-  std::string stamp_file;                      //!< brush image laid in the tangent plane
-  std::shared_ptr<const Raster> stamp;         //!< its samples (loaded by the caller)
-  int edit_level = -1;                  //!< geometry tools: the level edited, finer levels follow; -1: the finest
   int space = SPACE_OBJECT;             //!< SPACE_*: where the brush measures distance
   bool paint_backfaces = false;         //!< tangent, screen: also faces turned away from the brush
   bool has_camera = false;              //!< screen space, screen patterns: `camera` is given
   Camera camera;
   int side = 0;                         //!< two-sided surfaces: 0 the side the brush sees, 1 outside, 2 inside
-  int spray_drops = 0;                  //!< screen space: droplets per dab (0: no spray)
-  float spray_size = 0.f;               //!< their radius on the surface, world units
+  std::string stamp_file;               //!< brush image laid in the tangent plane
+  std::shared_ptr<const Raster> stamp;  //!< its samples (loaded by the caller)
+};
+
+//! A solid texture or sampled pattern painted through (pattern paint).
+struct Pattern
+{
+  int kind = PATTERN_NONE; //!< PATTERN_*
+  int coord = PATTERN_COORD_POSITION;
+  int matte = MATTE_SELF;
+  int octaves = 4;
+  std::array<float, 12> transform{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}; //!< 3x4, rows
+  std::string file;                     //!< image or volume pattern, as the script names it
+  std::shared_ptr<const Raster> raster; //!< its samples (loaded by the caller)
+};
+
+//! Paint, label, wash and dip: the paint equation on the channels.
+struct PaintSettings
+{
+  int op = PAINT_OP_COPY;                    //!< PAINT_OP_*
+  std::array<Float4, CHANNEL_COUNT> value{}; //!< per channel: rgb or x, and coverage in w
+  std::array<float, CHANNEL_COUNT> alpha{};  //!< 0: channel untouched
+  bool remover = false;                      //!< paint the underlying material back
+  float specular_coefficient = -1.f;         //!< >= 0: polish / sandpaper the specular coefficient
+  Pattern pattern;
+  int spray_drops = 0;                       //!< screen space: droplets per dab (0: no spray)
+  float spray_size = 0.f;                    //!< their radius on the surface, world units
   unsigned spray_seed = 0;
+};
+
+//! Smooth and blur: Laplacian or Taubin passes.
+struct SmoothSettings
+{
+  int iterations = 1;               //!< passes per dab
+  bool target_colour = false;       //!< colours instead of positions (blur: always)
+  bool taubin = true;               //!< positions: lambda/mu pairs (no shrinking)
+  float lambda = 0.5f, mu = -0.53f; //!< smoothing steps
+  int edit_level = -1;              //!< positions: the level edited, finer levels follow; -1: the finest
+};
+
+//! Sculpt, inflate, flatten and grab: control points moved by the weights.
+struct MoveSettings
+{
+  float amount = 0.f;  //!< sculpt, inflate: world units per dab; flatten: 0..1; grab: unused
+  int edit_level = -1; //!< the level edited, finer levels follow; -1: the finest
+};
+
+//! Smear: the colours dragged along the path; nothing of its own.
+struct SmearSettings
+{
+};
+
+//! Equal as a stroke script writes them (loaded rasters are not compared).
+bool operator==(const Brush& a, const Brush& b);
+bool operator==(const Pattern& a, const Pattern& b);
+bool operator==(const PaintSettings& a, const PaintSettings& b);
+bool operator==(const SmoothSettings& a, const SmoothSettings& b);
+bool operator==(const MoveSettings& a, const MoveSettings& b);
+bool operator==(const SmearSettings& a, const SmearSettings& b);
+
+//! The settings that belong to the stroke's tool (tool_settings_for() says which).
+using ToolSettings = std::variant<PaintSettings, SmoothSettings, MoveSettings, SmearSettings>;
+
+//! What a stroke script's stroke says: the tool, the path, the brush, and
+//! the settings of that tool only.
+struct Stroke
+{
+  Tool tool = Tool::Paint;
+  std::vector<Vec3> points;    //!< the path, world coordinates
+  std::vector<float> pressure; //!< per point, scales radius and strength; empty: 1
+  Brush brush;
+  ToolSettings settings;
+
+  //! The tool's settings. \pre `settings` holds that kind (make_stroke()
+  //! makes the tool's kind); std::bad_variant_access otherwise.
+  PaintSettings& paint() { return std::get<PaintSettings>(settings); }
+  const PaintSettings& paint() const { return std::get<PaintSettings>(settings); }
+  SmoothSettings& smooth() { return std::get<SmoothSettings>(settings); }
+  const SmoothSettings& smooth() const { return std::get<SmoothSettings>(settings); }
+  MoveSettings& move() { return std::get<MoveSettings>(settings); }
+  const MoveSettings& move() const { return std::get<MoveSettings>(settings); }
+  //! Sets a geometry tool's edit level. \pre a geometry tool
+  void set_edit_level(int level);
+  //! Geometry tools: the level edited (-1: the finest); -1 for the others.
+  int edit_level() const;
+  //! A colour tool's pattern, or none.
+  const Pattern* pattern() const;
 
   //! Same stroke as written in a script (loaded rasters are not compared).
   bool operator==(const Stroke& o) const;
   bool operator!=(const Stroke& o) const { return !(*this == o); }
 };
+
+//! A stroke of `tool` with that tool's default settings.
+Stroke make_stroke(Tool tool);
+//! \throw InputError unless the stroke's settings are of its tool's kind.
+void check_settings(const Stroke& stroke);
 
 //! What a stroke changes, which decides its undo layers, the side of a
 //! two-sided surface it works on, and the part of the pipeline that runs it.
