@@ -7,7 +7,8 @@
 #include "CallGuard.h" // for meshpaint::guarded
 #include "RasterIO.h"  // for meshpaint::load_stroke_rasters
 
-#include "core/errors.h" // for meshpaint::InputError
+#include "core/errors.h"  // for meshpaint::InputError
+#include "paint/stroke.h" // for meshpaint::parse_stroke_script, stroke_script_json
 
 #include <vtkCamera.h> // for vtkCamera
 
