@@ -18,8 +18,6 @@
 #include "paint/paint_scene.h"
 
 #include <vtkAppendPolyData.h> // for vtkAppendPolyData
-#include <vtkFloatArray.h>     // for vtkFloatArray
-#include <vtkPointData.h>      // for vtkPointData
 
 #include <algorithm> // for std::max
 #include <iostream>  // for std::cout, std::cerr
@@ -116,7 +114,7 @@ int paint_command(const Argv& argv)
     inputs.push_back(open_mesh_or_project(path));
   const MeshOrProject& input = inputs.front();
   const int level = scene_level(args, inputs, script.level > 0 ? script.level : 3);
-  const int model_level = args.integer("--model-level", std::max(1, level - 2), 1, level);
+  const int model_level = args.integer("--model-level", default_model_level(level), 1, level);
   const int lod = args.integer("--lod", level, 1, level);
   check_edit_levels(script, level);
   const PictureOptions picture = picture_options(args);
@@ -143,16 +141,8 @@ int paint_command(const Argv& argv)
     auto all = vtkSmartPointer<vtkAppendPolyData>::New();
     for (std::size_t o = 0; o < scene.size(); ++o) {
       vtkSmartPointer<vtkPolyData> poly = to_polydata(scene.surface(o).painted_surface());
-      if (subsurface > 0) { // the light from the camera, diffused over the atlas
-        const auto d = headlight_direction(picture.camera);
-        const std::vector<float> light =
-          scene.surface(o).scattered_light({float(d[0]), float(d[1]), float(d[2])}, subsurface);
-        auto array = vtkSmartPointer<vtkFloatArray>::New();
-        array->SetName("scattered_light");
-        array->SetNumberOfValues(vtkIdType(light.size()));
-        std::copy(light.begin(), light.end(), array->GetPointer(0));
-        poly->GetPointData()->AddArray(array);
-      }
+      if (subsurface > 0) // the light from the camera, diffused over the atlas
+        add_scattered_light(poly, scene.surface(o), headlight_direction(picture.camera), subsurface);
       all->AddInputData(poly);
     }
     all->Update();
@@ -165,10 +155,9 @@ int paint_command(const Argv& argv)
   Project project = input.project ? *input.project : Project();
   if (args.has("--labels"))
     project.labels = new_labels;
-  project.history = continued_history(project.history, surface->history(), level);
-  capture_surface(*surface, project);
-  save_project(project, save);
-  std::cout << "saved      " << save << " (level " << level << ", " << project.labels.size() << " labels)\n";
+  const std::size_t labels = project.labels.size();
+  save_painted_project(*surface, std::move(project), save);
+  std::cout << "saved      " << save << " (level " << level << ", " << labels << " labels)\n";
   return 0;
 }
 

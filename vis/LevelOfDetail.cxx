@@ -5,6 +5,8 @@
 #include <vtkPointData.h>      // for vtkPointData
 #include <vtkPolyData.h>       // for vtkPolyData
 
+#include <algorithm> // for std::max
+
 namespace meshpaint {
 
 vtkSmartPointer<vtkPolyData> coarser_quads(vtkPolyData* full, int n, int stride)
@@ -41,6 +43,27 @@ vtkSmartPointer<vtkPolyData> coarser_quads(vtkPolyData* full, int n, int stride)
   auto cells = vtkSmartPointer<vtkCellArray>::New();
   cells->SetData(offsets, connectivity);
   coarse->SetPolys(cells);
+  return coarse;
+}
+
+void FrameTiming::add_frame(double ms, int width, int height, double quads)
+{
+  if (width != timed_size_[0] || height != timed_size_[1]) {
+    ms_per_quad_ = 0;
+    timed_size_ = {width, height};
+  }
+  const double per_quad = ms / std::max(1.0, quads);
+  if (ms_per_quad_ == 0 || per_quad < ms_per_quad_)
+    ms_per_quad_ = per_quad;
+}
+
+int FrameTiming::automatic_level(int level, double frame_rate, double quads) const
+{
+  const double budget_ms = 500.0 / frame_rate;
+  int coarse = std::max(1, level - 1);
+  quads /= 4.0;
+  for (; coarse > 1 && quads * ms_per_quad_ > budget_ms; --coarse)
+    quads /= 4.0;
   return coarse;
 }
 

@@ -2,14 +2,16 @@
 
 #include "core/atomic_file.h" // for meshpaint::write_atomically
 #include "core/errors.h"      // for meshpaint::IOError
+#include "paint/paint_surface.h" // for meshpaint::PaintSurface
 
 #include <vtkActor.h>                   // for vtkActor
 #include <vtkUnsignedCharArray.h>       // for vtkUnsignedCharArray
 
-#include <algorithm> // for std::min
+#include <algorithm> // for std::min, std::copy
 #include <cmath>     // for std::sin, std::cos
 #include <vtkCamera.h>                  // for vtkCamera
 #include <vtkDataObject.h>              // for vtkDataObject::FIELD_ASSOCIATION_POINTS
+#include <vtkFloatArray.h>              // for vtkFloatArray
 #include <vtkNew.h>                     // for vtkNew
 #include <vtkOpenGLPolyDataMapper.h>    // for vtkOpenGLPolyDataMapper
 #include <vtkPNGWriter.h>               // for vtkPNGWriter
@@ -141,6 +143,18 @@ void show_scattered_light(vtkActor* actor, vtkPolyData* surface)
   actor->SetMapper(mapper);
   actor->GetShaderProperty()->ClearAllShaderReplacements(); // show_materials()'s, for arrays this mapper lacks
   actor->GetProperty()->LightingOff(); // the light is in the colours
+}
+
+void add_scattered_light(vtkPolyData* surface, PaintSurface& painted, const std::array<double, 3>& towards_light,
+                         int passes)
+{
+  const std::vector<float> light = painted.scattered_light(
+    {float(towards_light[0]), float(towards_light[1]), float(towards_light[2])}, passes);
+  vtkNew<vtkFloatArray> array;
+  array->SetName("scattered_light");
+  array->SetNumberOfValues(vtkIdType(light.size()));
+  std::copy(light.begin(), light.end(), array->GetPointer(0));
+  surface->GetPointData()->AddArray(array);
 }
 
 std::array<double, 3> headlight_direction(const CameraView& view)

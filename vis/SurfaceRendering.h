@@ -15,6 +15,8 @@ class vtkRenderWindow;
 
 namespace meshpaint {
 
+class PaintSurface;
+
 //! A view direction relative to VTK's default camera (looking down -z at the
 //! bounds): azimuth and elevation in degrees, then zoom (> 1: closer).
 struct CameraView
@@ -34,6 +36,13 @@ MESHPAINTVIS_EXPORT void show_materials(vtkActor* actor, vtkPolyData* surface);
 //! arrays (ambient plus the light diffused in atlas space, tone-mapped),
 //! VTK's own lighting off. show_materials() where there is no light array.
 MESHPAINTVIS_EXPORT void show_scattered_light(vtkActor* actor, vtkPolyData* surface);
+
+//! Adds to `surface` (to_polydata() of `painted`) the point array
+//! "scattered_light": the light arriving from direction `towards_light`
+//! diffused over the atlas in `passes` passes (PaintSurface::scattered_light).
+//! An array of that name already there is replaced.
+MESHPAINTVIS_EXPORT void add_scattered_light(vtkPolyData* surface, PaintSurface& painted,
+                                             const std::array<double, 3>& towards_light, int passes);
 
 //! The direction towards the camera (VTK's headlight) of `view`, in the
 //! frame of the default camera, which looks down -z with +y up.

@@ -2,12 +2,13 @@
  * @class vtkPaintInteractorStyle
  * @brief Mouse and keys of the painting window.
  *
- * Left-drag on the surface paints with vtkPaintView's brush; left-drag off
- * the surface, or with Alt, turns the camera as vtkInteractorStyleTrackballCamera
- * does, whose other controls (middle: pan, right and wheel: zoom, Shift +
- * left: pan, Ctrl + left: spin) stay as they are. Keys go to
- * vtkPaintView::HandleKey(); VTK's own key bindings (wireframe, stereo, ...)
- * are off.
+ * Left-drag on the surface paints; left-drag off the surface, or with Alt,
+ * turns the camera as vtkInteractorStyleTrackballCamera does, whose other
+ * controls (middle: pan, right and wheel: zoom, Shift + left: pan, Ctrl +
+ * left: spin) stay as they are. Events become calls on a
+ * meshpaint::PaintControls (vtkPaintView gives the style its own): strokes,
+ * the cursor, keys, and the start and end of camera interaction. VTK's own
+ * key bindings (wireframe, stereo, ...) are off.
  */
 #ifndef vtkPaintInteractorStyle_h
 #define vtkPaintInteractorStyle_h
@@ -16,7 +17,9 @@
 
 #include <vtkInteractorStyleTrackballCamera.h> // for vtkInteractorStyleTrackballCamera
 
-class vtkPaintView;
+namespace meshpaint {
+class PaintControls;
+}
 
 class MESHPAINTVIS_EXPORT vtkPaintInteractorStyle : public vtkInteractorStyleTrackballCamera
 {
@@ -25,9 +28,11 @@ public:
   vtkTypeMacro(vtkPaintInteractorStyle, vtkInteractorStyleTrackballCamera);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// The view to paint in (not reference-counted: the view owns the style).
-  void SetView(vtkPaintView* view) { this->View = view; }
-  vtkPaintView* GetView() { return this->View; }
+#ifndef __VTK_WRAP__
+  /// What events turn into (not owned: it outlives the style); null: the
+  /// trackball camera alone.
+  void SetControls(meshpaint::PaintControls* controls) { this->Controls = controls; }
+#endif
 
   void OnLeftButtonDown() override;
   void OnLeftButtonUp() override;
@@ -36,14 +41,17 @@ public:
   void OnChar() override;
 
 protected:
-  vtkPaintInteractorStyle() = default;
+  vtkPaintInteractorStyle();
   ~vtkPaintInteractorStyle() override = default;
 
-  vtkPaintView* View = nullptr;
+  meshpaint::PaintControls* Controls = nullptr;
 
 private:
   vtkPaintInteractorStyle(const vtkPaintInteractorStyle&) = delete;
   void operator=(const vtkPaintInteractorStyle&) = delete;
+
+  //! Start and end of a camera interaction.
+  void OnInteraction(vtkObject*, unsigned long event, void*);
 };
 
 #endif

@@ -1,15 +1,14 @@
 #include "vtkPaintSurface.h"
 
-#include "PaintingExport.h"    // for meshpaint::export_painting
+#include "PaintingExport.h"    // for meshpaint::export_painting, default_model_level
 #include "CallGuard.h"         // for meshpaint::guarded
 #include "RasterIO.h"          // for meshpaint::load_stroke_rasters
 #include "SharedArrays.h"      // for meshpaint::share_arrays, refresh_shared_arrays
 #include "SurfaceConversion.h" // for meshpaint::to_base_mesh, to_polydata
-#include "vtkPaintView.h"      // for vtkPaintView
 
 #include "core/errors.h"               // for meshpaint::InputError
 #include "paint/paint_surface.h"       // for meshpaint::PaintSurface
-#include "project/project_surface.h"   // for meshpaint::open_project_surface, capture_surface
+#include "project/project_surface.h"   // for meshpaint::open_project_surface, save_painted_project
 #include "project/vertex_channels.h"   // for meshpaint::vertex_channel, set_vertex_channel
 
 #include <nlohmann/json.hpp> // for nlohmann::json
@@ -27,7 +26,7 @@
 #include <vtkPolyData.h>          // for vtkPolyData
 #include <vtkSmartPointer.h>      // for vtkSmartPointer
 
-#include <algorithm> // for std::max
+#include <algorithm> // for std::min
 #include <map>       // for std::map
 #include <vector>    // for std::vector
 
@@ -37,8 +36,7 @@ struct vtkPaintSurface::Internals
 {
   nlohmann::json brush = {{"tool", "paint"}}; // the setters' stroke, without points
   std::string brush_text;
-  std::shared_ptr<meshpaint::PaintSurface> surface; // shared with the painting window
-  vtkSmartPointer<vtkPaintView> view;
+  std::shared_ptr<meshpaint::PaintSurface> surface; // shared with painting windows shown on it
   vtkMTimeType built_from = 0; // input's modification time the surface was built from
   int built_level = 0;
   std::vector<meshpaint::Stroke> queued;
@@ -210,10 +208,7 @@ int vtkPaintSurface::SaveProject(const char* path)
     return 0;
   return meshpaint::guarded(this->LastError, [&] {
     Internals& in = *this->Impl;
-    meshpaint::Project p = in.project ? *in.project : meshpaint::Project();
-    p.history = meshpaint::continued_history(p.history, in.surface->history(), in.surface->level());
-    meshpaint::capture_surface(*in.surface, p);
-    meshpaint::save_project(p, path ? path : "");
+    meshpaint::save_painted_project(*in.surface, in.project ? *in.project : meshpaint::Project(), path ? path : "");
   });
 }
 
@@ -259,7 +254,8 @@ int vtkPaintSurface::ExportModel(const char* dir)
     return 0;
   return meshpaint::guarded(this->LastError, [&] {
     const int level = this->Impl->surface->level();
-    const int model_level = this->ModelLevel > 0 ? std::min(this->ModelLevel, level) : std::max(1, level - 2);
+    const int model_level =
+      this->ModelLevel > 0 ? std::min(this->ModelLevel, level) : meshpaint::default_model_level(level);
     meshpaint::export_painting(*this->Impl->surface, model_level, dir ? dir : "");
   });
 }
@@ -376,30 +372,14 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
   return ok;
 }
 
-vtkPaintView* vtkPaintSurface::GetView()
+std::shared_ptr<meshpaint::PaintSurface> vtkPaintSurface::GetPaintSurface()
 {
-  Internals& in = *this->Impl;
-  this->Update();
-  if (!in.surface)
-    return nullptr;
-  if (!in.view || !in.view->Shows(in.surface)) {
-    in.view = vtkSmartPointer<vtkPaintView>::New();
-    in.view->SetDevice(this->Device.c_str());
-    in.view->SetSurface(in.surface);
-    if (in.project) // saves from the window continue the loaded project
-      in.view->SetProject(*in.project);
-  }
-  return in.view;
+  return this->Impl->surface;
 }
 
-int vtkPaintSurface::View()
+const meshpaint::Project* vtkPaintSurface::GetProject() const
 {
-  vtkPaintView* view = this->GetView();
-  if (!view)
-    return 0;
-  view->Start();
-  this->ViewPainted();
-  return 1;
+  return this->Impl->project ? &*this->Impl->project : nullptr;
 }
 
 void vtkPaintSurface::ViewPainted()

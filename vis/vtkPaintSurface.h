@@ -19,12 +19,16 @@
 
 #include <vtkPolyDataAlgorithm.h> // for vtkPolyDataAlgorithm
 
-#include <memory> // for std::unique_ptr
+#include <memory> // for std::shared_ptr, std::unique_ptr
 #include <string> // for std::string
 
 class vtkDataArray;
-class vtkPaintView;
 class vtkPoints;
+
+namespace meshpaint {
+class PaintSurface;
+struct Project;
+}
 
 class MESHPAINTVIS_EXPORT vtkPaintSurface : public vtkPolyDataAlgorithm
 {
@@ -139,19 +143,26 @@ public:
   /// type). Setting is not a stroke: no undo step, no history entry.
   vtkDataArray* GetChannel(const char* name);
   int SetChannel(const char* name, vtkDataArray* values);
-  /// The painting window on this surface (docs/window.md): GetView()
-  /// updates, then returns the window (made once, kept by this filter; not
-  /// opened) whose strokes go onto this filter's surface, with undo, redo
-  /// and recording shared. View() opens it and returns when it is closed.
-  /// After painting through GetView(), call ViewPainted() so the output
-  /// and StrokeCount follow. 0 / nullptr when the update fails.
-  vtkPaintView* GetView();
-  int View();
-  void ViewPainted();
   //@}
+
+  /// A painting window on this surface (docs/window.md) is a vtkPaintView
+  /// given this filter with vtkPaintView::SetPaintSurface(): its strokes go
+  /// onto this filter's surface, with undo, redo and recording shared. The
+  /// filter keeps no window. After painting there, call ViewPainted() so the
+  /// output and StrokeCount follow.
+  void ViewPainted();
 
   /// Strokes applied so far (queued ones not included).
   vtkGetMacro(StrokeCount, int);
+
+#ifndef __VTK_WRAP__
+  /// The engine surface painted (null before the first good update), for
+  /// windows and other C++ code that paint on it too.
+  std::shared_ptr<meshpaint::PaintSurface> GetPaintSurface();
+  /// The loaded project, without its layers (null when none): what saves
+  /// of this surface carry on.
+  const meshpaint::Project* GetProject() const;
+#endif
 
   /// Why the last call or update failed; empty after a good one.
   const char* GetLastError() const { return this->LastError.c_str(); }

@@ -6,7 +6,14 @@
  * atlas), a render window showing each object with its materials and its
  * own level of detail, a vtkSurfacePicker for brush centres, a brush cursor,
  * the on-screen settings and a help overlay. vtkPaintInteractorStyle turns mouse
- * and keys into BeginStroke()/ContinueStroke()/EndStroke() and HandleKey().
+ * and keys into BeginStroke()/ContinueStroke()/EndStroke() and HandleKey()
+ * through a narrow interface (PaintControls.h); the view knows nothing of it.
+ *
+ * Its parts live in files named for them: vtkPaintViewScene.cxx (the
+ * objects painted), vtkPaintViewStrokes.cxx (strokes, undo, recording),
+ * SceneDrawing (what each object's actor draws, level of detail), BrushCursor
+ * (picking and the brush ring), WindowKeys (key bindings and help),
+ * ViewText (status line and help overlay), SceneFiles (Save and Export).
  *
  * A drag is one stroke. While it is drawn, each new piece of the path is
  * painted at once so the user sees it; when the button is released those
@@ -32,6 +39,7 @@
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
+class vtkPaintSurface;
 class vtkPolyData;
 class vtkRenderWindow;
 class vtkRenderWindowInteractor;
@@ -156,7 +164,7 @@ public:
   /// The same from an engine mesh (the command line loads and reports it).
   int SetBaseMesh(const meshpaint::BaseMesh& mesh);
   int AddBaseMesh(const meshpaint::BaseMesh& mesh);
-  /// Paints on a surface someone else holds too (vtkPaintSurface::GetView());
+  /// Paints on a surface someone else holds too (SetPaintSurface());
   /// Level becomes the surface's. Replaces what the view painted before.
   void SetSurface(std::shared_ptr<meshpaint::PaintSurface> surface, const std::string& name = "surface");
   /// One more such surface for the scene.
@@ -171,6 +179,13 @@ public:
   /// Applies a parsed script whose pattern and stamp files are loaded.
   int ApplyScript(const meshpaint::StrokeScript& script);
 #endif
+
+  /// Paints on the surface of a vtkPaintSurface filter (updated first): its
+  /// strokes, undo and history are the filter's, and Save() continues the
+  /// project the filter loaded. Neither keeps the other: the engine surface
+  /// is shared. Call the filter's ViewPainted() after painting here.
+  /// Replaces what the view painted before; 0 when the update fails.
+  int SetPaintSurface(vtkPaintSurface* filter);
 
   /// Applies a stroke script's strokes (recorded like any other stroke).
   int ApplyStrokes(const char* json);
@@ -261,7 +276,6 @@ private:
   vtkPaintView(const vtkPaintView&) = delete;
   void operator=(const vtkPaintView&) = delete;
 
-  struct Drawing;
   //! Load, input or mesh as one more object (`add`) or the only one.
   int LoadObject(const char* path, bool add);
   int InputObject(vtkPolyData* polygons, bool add);
@@ -270,8 +284,8 @@ private:
   void AddObject(std::shared_ptr<meshpaint::PaintSurface> surface, const std::string& name);
   //! Empties the scene and the window.
   void RemoveObjects();
-  //! Puts an object's actor into the window and the picker.
-  void ShowObject(Drawing& drawing);
+  //! Puts object `object`'s actor into the window and the picker.
+  void ShowObject(std::size_t object);
 
   int Step(bool back); // Undo (back) or Redo
   //! Result of a look-up at a pixel: on a surface facing the viewer?
@@ -287,10 +301,8 @@ private:
   //! Object `object`'s painted surface at `level` (Level or CoarseLevel()),
   //! rebuilt if stale.
   vtkPolyData* Surface(std::size_t object, int level);
-  //! Hands the actor the level that fits the moment.
+  //! Hands the actors the level that fits the moment.
   void Show();
-  //! Start and end of a camera interaction: coarse while it lasts.
-  void OnCameraInteraction(vtkObject*, unsigned long event, void*);
   void UpdateText();
 
   struct Internals;

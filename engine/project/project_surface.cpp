@@ -58,4 +58,11 @@ void capture_surface(PaintSurface& surface, Project& p)
   p.channels = surface.read_channels();
 }
 
+void save_painted_project(PaintSurface& surface, Project base, const std::string& path)
+{
+  base.history = continued_history(base.history, surface.history(), surface.level());
+  capture_surface(surface, base);
+  save_project(base, path);
+}
+
 } // namespace meshpaint

@@ -5,6 +5,7 @@
 #include "project/project.h"
 
 #include <memory> // for std::shared_ptr, std::unique_ptr
+#include <string> // for std::string
 
 namespace meshpaint {
 
@@ -33,5 +34,14 @@ std::string continued_history(const std::string& previous, const std::vector<Str
 //! Fills the project's mesh, level, positions and channels from the
 //! surface; labels, history, reference and scan stay as they are.
 void capture_surface(PaintSurface& surface, Project& project);
+
+//! Writes a painted surface as a project, atomically: `base` (what a loaded
+//! project carries on: labels, reference, scan and stroke history; an empty
+//! Project for a fresh surface) with the surface's strokes appended to its
+//! history and the surface's mesh, level and layers captured. The one way
+//! the command line, vtkPaintSurface and vtkPaintView save projects.
+//! \throw InputError when `base.history` is not a valid stroke script;
+//! IOError when the file cannot be written.
+void save_painted_project(PaintSurface& surface, Project base, const std::string& path);
 
 } // namespace meshpaint

@@ -263,8 +263,15 @@ def test_window_of_a_paint_surface_shares_its_strokes(tmp_path):
     surface.SetLevel(4)
     surface.Update()
     before = vtk_to_numpy(surface.GetOutput().GetPointData().GetArray("diffuse")).copy()
-    view = surface.GetView()
-    assert view is surface.GetView() and view.GetLevel() == 4
+    view = meshpaint.vtkPaintView()  # the window belongs to whoever makes it
+    view.SetPaintSurface(surface)
+    assert view.GetLevel() == 4
+    # GetView() is the same in one call, a new window each time: the filter keeps none
+    other = surface.GetView()
+    assert other is not view and other.GetLevel() == 4
+    del other
+    with pytest.raises(meshpaint.Error, match="nothing to paint on"):
+        meshpaint.vtkPaintView().SetPaintSurface(meshpaint.vtkPaintSurface())
     view.SetSize(*SIZE)
     view.OffScreenOn()
     assert view.Initialize(), view.GetLastError()

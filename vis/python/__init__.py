@@ -60,9 +60,21 @@ class vtkPaintSurface(_wrapped.vtkPaintSurface):
     def SetChannel(self, name, values):
         """Writes one channel at every output vertex from a VTK array of that shape."""
         self._check(super().SetChannel(name, values))
+
+    def GetView(self):
+        """A new painting window (vtkPaintView, not opened) on this surface, owned by the caller.
+
+        The same as vtkPaintView().SetPaintSurface(self): the filter keeps no
+        window. Call ViewPainted() after painting there.
+        """
+        view = vtkPaintView()
+        view.SetPaintSurface(self)
+        return view
+
     def View(self):
         """Opens the painting window on this surface; returns when it is closed."""
-        self._check(super().View())
+        self.GetView().Start()
+        self.ViewPainted()
 
     def Update(self, *args):
         """Paints the queued strokes; raises Error if this update fails."""
@@ -100,6 +112,10 @@ class vtkPaintView(_wrapped.vtkPaintView):
     def ApplyStrokes(self, json_text):
         """Applies a stroke script's strokes; raises Error for a bad script."""
         return self._check(super().ApplyStrokes(json_text))
+
+    def SetPaintSurface(self, surface):
+        """Paints on a vtkPaintSurface's surface (updated first); raises Error when it has none."""
+        return self._check(super().SetPaintSurface(surface))
 
     def Initialize(self):
         """Creates the window (not started); raises Error without a surface."""

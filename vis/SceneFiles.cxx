@@ -1,0 +1,46 @@
+#include "SceneFiles.h"
+
+#include "PaintingExport.h"    // for meshpaint::export_model, make_directory
+#include "SurfaceConversion.h" // for meshpaint::write_vtp
+
+#include "core/atomic_file.h"        // for meshpaint::write_atomically
+#include "core/errors.h"             // for meshpaint::IOError
+#include "paint/paint_scene.h"       // for meshpaint::PaintScene
+#include "project/project_surface.h" // for meshpaint::save_painted_project
+
+#include <fstream> // for std::ofstream
+
+namespace meshpaint {
+
+std::string save_session(PaintScene& scene, const std::string& recording,
+                         const std::function<vtkPolyData*(std::size_t)>& drawn, const Project* project,
+                         const std::string& dir)
+{
+  // One recording for the scene; each object's surface in its own folder.
+  make_directory(dir);
+  write_atomically(dir + "/strokes.json", [&](const std::string& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    out << recording;
+    if (!out.flush())
+      throw IOError("cannot write '" + dir + "/strokes.json'");
+  });
+  for (std::size_t o = 0; o < scene.size(); ++o) {
+    const std::string folder = scene.folder(dir, o);
+    make_directory(folder);
+    write_vtp(drawn(o), folder + "/surface.vtp");
+  }
+  if (project)
+    save_painted_project(scene.surface(0), *project, scene.folder(dir, 0) + "/surface.meshpaint");
+  const std::string surfaces =
+    scene.size() == 1 ? "surface.vtp" : std::to_string(scene.size()) + " objects' surface.vtp";
+  return "saved " + dir + "/strokes.json, " + surfaces + (project ? " and surface.meshpaint" : "");
+}
+
+std::string export_scene(PaintScene& scene, int model_level, const std::string& dir)
+{
+  for (std::size_t o = 0; o < scene.size(); ++o)
+    export_model(scene.surface(o), model_level, scene.folder(dir, o));
+  return "exported " + scene.folder(dir, 0) + "/model.obj" + (scene.size() > 1 ? " and the other objects'" : "");
+}
+
+} // namespace meshpaint

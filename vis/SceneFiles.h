@@ -1,0 +1,33 @@
+// What the painting window writes (Ctrl+S, Ctrl+E): the session saved and
+// the scene's models exported, each object into its own folder.
+#ifndef SceneFiles_h
+#define SceneFiles_h
+
+#include <functional> // for std::function
+#include <string>     // for std::string
+
+class vtkPolyData;
+
+namespace meshpaint {
+
+class PaintScene;
+struct Project;
+
+//! Saves a session into `dir`, each file atomically: DIR/strokes.json (the
+//! recording), each object's drawn surface (`drawn(k)`, with its channel
+//! arrays) as surface.vtp in PaintScene::folder(dir, k), and with `project`
+//! (where the first object came from) that folder's surface.meshpaint, the
+//! project continued (save_painted_project()). Returns the status message.
+//! \throw IOError when a folder or file cannot be written.
+std::string save_session(PaintScene& scene, const std::string& recording,
+                         const std::function<vtkPolyData*(std::size_t)>& drawn, const Project* project,
+                         const std::string& dir);
+
+//! Writes each object's model at `model_level` (export_model()) into
+//! PaintScene::folder(dir, k). Returns the status message.
+//! \throw IOError when a folder or file cannot be written.
+std::string export_scene(PaintScene& scene, int model_level, const std::string& dir);
+
+} // namespace meshpaint
+
+#endif

@@ -1,0 +1,78 @@
+// The state vtkPaintView's files share: the scene, how it is drawn, the
+// window's parts and the running stroke. Private to vtkPaintView*.cxx.
+#ifndef vtkPaintViewInternals_h
+#define vtkPaintViewInternals_h
+
+#include "vtkPaintView.h"
+
+#include "BrushCursor.h"             // for meshpaint::BrushCursor
+#include "BrushSettings.h"           // for meshpaint::BrushSettings
+#include "LevelOfDetail.h"           // for meshpaint::FrameTiming
+#include "PaintControls.h"           // for meshpaint::PaintControls
+#include "SceneDrawing.h"            // for meshpaint::ObjectDrawing
+#include "ViewText.h"                // for meshpaint::ViewText
+#include "vtkPaintInteractorStyle.h" // for vtkPaintInteractorStyle
+
+#include "core/vec.h"          // for meshpaint::Vec3
+#include "paint/paint_scene.h" // for meshpaint::PaintScene
+#include "project/project.h"   // for meshpaint::Project
+
+#include <vtkNew.h>                    // for vtkNew
+#include <vtkRenderWindow.h>           // for vtkRenderWindow
+#include <vtkRenderWindowInteractor.h> // for vtkRenderWindowInteractor
+#include <vtkRenderer.h>               // for vtkRenderer
+
+#include <memory> // for std::unique_ptr
+#include <string> // for std::string
+#include <vector> // for std::vector
+
+//! What the interactor style's events ask of the view, as calls on its
+//! public methods.
+class vtkPaintViewControls : public meshpaint::PaintControls
+{
+public:
+  explicit vtkPaintViewControls(vtkPaintView* view) : view_(view) {}
+  bool begin_stroke(int x, int y) override { return view_->BeginStroke(x, y) != 0; }
+  void continue_stroke(int x, int y) override { view_->ContinueStroke(x, y); }
+  void end_stroke() override { view_->EndStroke(); }
+  bool painting() const override { return view_->IsPainting(); }
+  void hover(int x, int y) override { view_->MoveCursor(x, y); }
+  void key(const std::string& keysym, bool control, bool shift) override
+  {
+    view_->HandleKey(keysym.c_str(), control, shift);
+  }
+  void camera_moving(bool moving) override { view_->SetMoving(moving); }
+
+private:
+  vtkPaintView* view_;
+};
+
+struct vtkPaintView::Internals
+{
+  explicit Internals(vtkPaintView* view) : controls(view) {}
+
+  vtkPaintViewControls controls; // first: it outlives the style that calls it
+  meshpaint::PaintScene scene;
+  std::vector<std::unique_ptr<meshpaint::ObjectDrawing>> drawings; // one per object, in the scene's order
+  std::unique_ptr<meshpaint::Project> project; // where the first object came from, if from a project
+  std::unique_ptr<meshpaint::BrushSettings> brush;
+  bool lit = false;    // drawn with the subsurface light
+  bool moving = false; // the camera turns or a stroke is drawn
+  int shown_level = 0;
+  meshpaint::FrameTiming timing; // of frames at rest, for the automatic level of detail
+  vtkNew<vtkRenderer> renderer;
+  vtkNew<vtkRenderWindow> window;
+  vtkNew<vtkRenderWindowInteractor> interactor;
+  vtkNew<vtkPaintInteractorStyle> style;
+  meshpaint::BrushCursor cursor;
+  meshpaint::ViewText text;
+  bool initialized = false;
+  // The running stroke: its path, and the pieces painted for the eye.
+  bool painting = false;
+  bool ended = false; // reached a silhouette or left the surface
+  std::vector<meshpaint::Vec3> path;
+  int pieces = 0;
+  std::string recording;
+};
+
+#endif
