@@ -16,6 +16,7 @@
 #include "project/project_surface.h"
 
 #include "paint/paint_scene.h"
+#include "paint/stroke_session.h"
 
 #include <vtkAppendPolyData.h> // for vtkAppendPolyData
 
@@ -33,12 +34,13 @@ void paint_job(PaintScene& scene, const StrokeScript& script, int model_level, c
     names += (o ? ", " : "") + scene.name(o);
   }
   Table table({"stroke", "tool", "dabs", "on surface", "patches", "ms", "note"});
+  StrokeSession session(scene);
   Timer progress;
   for (std::size_t k = 0; k < script.strokes.size(); ++k) {
     const Stroke& stroke = script.strokes[k];
     // A scene's stroke: its dabs over every object, its time the sum.
     StrokeReport r;
-    for (const StrokeReport& o : scene.apply(stroke)) {
+    for (const StrokeReport& o : session.apply(stroke)) {
       r.dabs = std::max(r.dabs, o.dabs);
       r.dabs_applied += o.dabs_applied;
       r.patches_touched += o.patches_touched;

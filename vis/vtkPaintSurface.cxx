@@ -8,6 +8,7 @@
 
 #include "core/errors.h"               // for meshpaint::InputError
 #include "paint/paint_surface.h"       // for meshpaint::PaintSurface
+#include "paint/stroke_session.h"      // for meshpaint::StrokeSession
 #include "project/project_surface.h"   // for meshpaint::open_project_surface, save_painted_project
 #include "project/vertex_channels.h"   // for meshpaint::vertex_channel, set_vertex_channel
 
@@ -37,6 +38,15 @@ struct vtkPaintSurface::Internals
   nlohmann::json brush = {{"tool", "paint"}}; // the setters' stroke, without points
   std::string brush_text;
   std::shared_ptr<meshpaint::PaintSurface> surface; // shared with painting windows shown on it
+  // The strokes go through a session, as the window's and the command line's do.
+  meshpaint::PaintScene scene;
+  meshpaint::StrokeSession session{scene};
+  void set_surface(std::shared_ptr<meshpaint::PaintSurface> s)
+  {
+    surface = std::move(s);
+    scene.clear();
+    scene.add(surface, "input");
+  }
   vtkMTimeType built_from = 0; // input's modification time the surface was built from
   int built_level = 0;
   std::vector<meshpaint::Stroke> queued;
@@ -165,7 +175,7 @@ int vtkPaintSurface::Step(bool back)
   }
   bool done = false;
   const int ok = meshpaint::guarded(this->LastError, [&] {
-    done = back ? this->Impl->surface->undo() : this->Impl->surface->redo();
+    done = back ? this->Impl->session.undo() : this->Impl->session.redo();
   });
   if (ok && !done)
     this->LastError = back ? "nothing to undo" : "nothing to redo";
@@ -232,7 +242,7 @@ int vtkPaintSurface::LoadProject(const char* path)
     auto surface = meshpaint::open_project_surface(runtime, p, meshpaint::default_storage(runtime->info()));
     Internals& in = *this->Impl;
     this->RemoveAllInputConnections(0);
-    in.surface = std::move(surface);
+    in.set_surface(std::move(surface));
     in.queued.clear();
     in.built_from = 0;
     in.built_level = p.level;
@@ -324,8 +334,8 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
         throw meshpaint::InputError("a loaded project keeps its level " + std::to_string(in.built_level) +
                                     "; set an input to paint at another");
       auto runtime = meshpaint::Runtime::open(this->Device);
-      in.surface = std::make_shared<meshpaint::PaintSurface>(runtime, meshpaint::to_base_mesh(input, "input"),
-                                                             this->Level, meshpaint::default_storage(runtime->info()));
+      in.set_surface(std::make_shared<meshpaint::PaintSurface>(
+        runtime, meshpaint::to_base_mesh(input, "input"), this->Level, meshpaint::default_storage(runtime->info())));
       in.built_from = input->GetMTime();
       in.built_level = this->Level;
       in.project.reset();
@@ -334,7 +344,7 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
     for (const meshpaint::Stroke& s : in.queued) {
       const std::size_t depth = in.surface->undo_log().undo_depth();
       try {
-        in.surface->apply(s);
+        in.session.apply(s);
       } catch (...) {
         // A stroke that failed halfway is still one undo step.
         if (in.surface->undo_log().undo_depth() > depth)

@@ -15,13 +15,11 @@
  * (picking and the brush ring), WindowKeys (key bindings and help),
  * ViewText (status line and help overlay), SceneFiles (Save and Export).
  *
- * A drag is one stroke. While it is drawn, each new piece of the path is
- * painted at once so the user sees it; when the button is released those
- * pieces are undone and the whole path is applied as one stroke, exactly as
- * a stroke script would apply it. Every session is recorded that way:
+ * A drag is one stroke, painted once as its path grows (the engine's
+ * StrokeSession): what the user sees while drawing is the stroke a stroke
+ * script applies. Every session is recorded that way:
  * GetRecording() is a stroke script that `meshpaint paint` replays to the
- * same bits (given the same meshes in the same order).
- *
+ * same bits (given the same meshes in the same order). *
  * Strokes go to the scene as `meshpaint paint` applies them to several
  * meshes: object, tangent and screen brushes paint every object within
  * reach, so a stroke may cross objects in contact; a parameter-space dab
@@ -292,8 +290,6 @@ private:
   bool PickFacing(int x, int y, double point[3], double normal[3]);
   //! Puts the cursor at the surface under (x, y), or hides it; true when shown.
   bool PlaceCursor(int x, int y);
-  //! Paints a piece of the running stroke at once, for the eye.
-  void PaintPiece(bool first);
   //! Rebuilds what is drawn from the engine; `geometry`: positions changed.
   void Refresh(bool geometry);
   //! The level drawn while moving.

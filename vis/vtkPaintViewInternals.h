@@ -14,7 +14,8 @@
 #include "vtkPaintInteractorStyle.h" // for vtkPaintInteractorStyle
 
 #include "core/vec.h"          // for meshpaint::Vec3
-#include "paint/paint_scene.h" // for meshpaint::PaintScene
+#include "paint/paint_scene.h"    // for meshpaint::PaintScene
+#include "paint/stroke_session.h" // for meshpaint::StrokeSession
 #include "project/project.h"   // for meshpaint::Project
 
 #include <vtkNew.h>                    // for vtkNew
@@ -53,6 +54,7 @@ struct vtkPaintView::Internals
 
   vtkPaintViewControls controls; // first: it outlives the style that calls it
   meshpaint::PaintScene scene;
+  meshpaint::StrokeSession session{scene}; // every stroke, drawn or scripted, goes through it
   std::vector<std::unique_ptr<meshpaint::ObjectDrawing>> drawings; // one per object, in the scene's order
   std::unique_ptr<meshpaint::Project> project; // where the first object came from, if from a project
   std::unique_ptr<meshpaint::BrushSettings> brush;
@@ -67,11 +69,9 @@ struct vtkPaintView::Internals
   meshpaint::BrushCursor cursor;
   meshpaint::ViewText text;
   bool initialized = false;
-  // The running stroke: its path, and the pieces painted for the eye.
+  // The stroke being drawn (its path is the session's).
   bool painting = false;
   bool ended = false; // reached a silhouette or left the surface
-  std::vector<meshpaint::Vec3> path;
-  int pieces = 0;
   std::string recording;
 };
 

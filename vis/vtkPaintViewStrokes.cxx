@@ -1,6 +1,6 @@
-// vtkPaintView's strokes: scripts applied, the stroke drawn with the mouse
-// (painted piece by piece for the eye, applied whole at release), undo and
-// redo, and the recording.
+// vtkPaintView's strokes, all through the scene's StrokeSession: scripts
+// applied, the stroke drawn with the mouse (painted once, as its path grows),
+// undo and redo, and the recording.
 #include "vtkPaintView.h"
 #include "vtkPaintViewInternals.h"
 
@@ -12,7 +12,6 @@
 
 #include <vtkCamera.h> // for vtkCamera
 
-#include <cmath> // for std::sqrt
 
 int vtkPaintView::ApplyStrokes(const char* json)
 {
@@ -32,7 +31,7 @@ int vtkPaintView::ApplyScript(const meshpaint::StrokeScript& script)
     if (in.scene.empty())
       throw meshpaint::InputError("no surface to paint: load a mesh first");
     for (const meshpaint::Stroke& s : script.strokes)
-      in.scene.apply(s);
+      in.session.apply(s);
   });
   const std::string error = this->LastError; // showing what was painted must not hide why it stopped
   this->Refresh(true);
@@ -49,11 +48,6 @@ int vtkPaintView::BeginStroke(int x, int y)
     return 0;
   for (std::size_t o = 0; o < in.scene.size(); ++o)
     in.scene.surface(o).undo_log().set_budget(std::size_t(this->UndoBudget * 1048576.0));
-  in.painting = true;
-  in.ended = false;
-  in.path = {meshpaint::Vec3{float(p[0]), float(p[1]), float(p[2])}};
-  in.pieces = 0;
-  in.moving = true;
   { // screen-space strokes carry the view they are drawn in
     vtkCamera* c = in.renderer->GetActiveCamera();
     meshpaint::Camera camera;
@@ -65,7 +59,16 @@ int vtkPaintView::BeginStroke(int x, int y)
     camera.view_angle = float(c->GetViewAngle());
     in.brush->set_camera(camera);
   }
-  this->PaintPiece(true);
+  const meshpaint::Vec3 at{float(p[0]), float(p[1]), float(p[2])};
+  if (!meshpaint::guarded(this->LastError, [&] { in.session.begin(in.brush->stroke({at})); })) {
+    this->Message = this->LastError;
+    this->UpdateText();
+    return 0;
+  }
+  in.painting = true;
+  in.ended = false;
+  in.moving = true;
+  this->Refresh(false);
   return 1;
 }
 
@@ -80,26 +83,17 @@ int vtkPaintView::ContinueStroke(int x, int y)
     return 0;
   }
   const meshpaint::Vec3 q{float(p[0]), float(p[1]), float(p[2])};
-  const meshpaint::Vec3& last = in.path.back();
-  const double d = std::sqrt(double((q[0] - last[0]) * (q[0] - last[0]) + (q[1] - last[1]) * (q[1] - last[1]) +
-                                    (q[2] - last[2]) * (q[2] - last[2])));
+  const meshpaint::Vec3& last = in.session.current().points.back();
   // Points closer than half a dab spacing add nothing but cost.
-  if (d < 0.5 * in.brush->spacing() * in.brush->radius())
+  if (meshpaint::length(meshpaint::sub(q, last)) < 0.5 * in.brush->spacing() * in.brush->radius())
     return 1;
-  in.path.push_back(q);
+  bool on = true;
+  if (!meshpaint::guarded(this->LastError, [&] { on = in.session.extend(q); }))
+    on = false; // the session has closed the stroke; EndStroke() says why
+  in.ended = !on;
   this->PlaceCursor(x, y);
-  this->PaintPiece(false); // renders
+  this->Refresh(false); // renders
   return 1;
-}
-
-void vtkPaintView::PaintPiece(bool first)
-{
-  Internals& in = *this->Impl;
-  const std::vector<meshpaint::Vec3> piece =
-    first ? in.path : std::vector<meshpaint::Vec3>(in.path.end() - 2, in.path.end());
-  if (meshpaint::guarded(this->LastError, [&] { in.scene.apply(in.brush->stroke(piece)); }))
-    ++in.pieces;
-  this->Refresh(false);
 }
 
 int vtkPaintView::EndStroke()
@@ -109,26 +103,10 @@ int vtkPaintView::EndStroke()
     return 0;
   in.painting = false;
   in.moving = false;
-  // The pieces were for the eye: the stroke is the whole path, applied once.
-  // Undo gives back the surface and its multiresolution details bit for
-  // bit, so this is what a replay of the recording does.
-  std::string note;
-  const int ok = meshpaint::guarded(this->LastError, [&] {
-    int undone = 0;
-    while (undone < in.pieces && in.scene.undo())
-      ++undone;
-    if (undone == in.pieces) {
-      in.scene.apply(in.brush->stroke(in.path));
-    } else {
-      // The undo budget forgot a piece already (one step larger than the
-      // whole budget): the pieces stay strokes of their own, as recorded.
-      for (; undone > 0; --undone)
-        in.scene.redo();
-      note = "undo budget too small for this stroke: kept as " + std::to_string(in.pieces) + " strokes";
-    }
-    in.pieces = 0;
-  });
-  this->Message = ok ? note : this->LastError;
+  // A failure while drawing has closed the stroke already (as one undo
+  // step), and LastError says why.
+  const int ok = in.session.drawing() && meshpaint::guarded(this->LastError, [&] { in.session.end(); });
+  this->Message = ok ? "" : this->LastError;
   this->Refresh(true);
   return ok;
 }
@@ -140,7 +118,7 @@ int vtkPaintView::Step(bool back)
   Internals& in = *this->Impl;
   bool done = false;
   const int ok = !in.scene.empty() && meshpaint::guarded(this->LastError, [&] {
-    done = back ? in.scene.undo() : in.scene.redo();
+    done = back ? in.session.undo() : in.session.redo();
   });
   this->Message = !ok ? this->LastError : done ? (back ? "undone" : "redone") : (back ? "nothing to undo" : "nothing to redo");
   this->Refresh(true);
@@ -154,9 +132,6 @@ int vtkPaintView::Redo() { return this->Step(false); }
 const char* vtkPaintView::GetRecording()
 {
   Internals& in = *this->Impl;
-  meshpaint::StrokeScript script;
-  script.level = this->Level;
-  script.strokes = in.scene.history();
-  in.recording = meshpaint::stroke_script_json(script);
+  in.recording = meshpaint::stroke_script_json(in.session.recording(this->Level));
   return in.recording.c_str();
 }
