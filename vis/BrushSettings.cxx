@@ -2,8 +2,6 @@
 
 #include "core/format.h" // for meshpaint::format_fixed
 
-#include <nlohmann/json.hpp> // for nlohmann::json
-
 #include <algorithm> // for std::clamp
 #include <array>     // for std::array
 #include <cmath>     // for std::round
@@ -88,59 +86,56 @@ bool BrushSettings::handle_key(const std::string& key, bool shift)
   return true;
 }
 
-std::string BrushSettings::stroke_json(const std::vector<Vec3>& points) const
+Stroke BrushSettings::stroke(const std::vector<Vec3>& points) const
 {
-  using nlohmann::json;
   const std::string tool = kTools[std::size_t(tool_)];
-  json s = {{"tool", tool}, {"radius", radius_}, {"strength", strength_}, {"falloff", kFalloffs[std::size_t(falloff_)]}};
-  json path = json::array();
-  for (const Vec3& p : points)
-    path.push_back({p[0], p[1], p[2]});
-  s["points"] = path;
-  if (mirror_ >= 0)
-    s["mirror"] = std::string(1, char('x' + mirror_));
-  const double level = swatch_ / 9.0;
+  Stroke s = make_stroke(tool_named(tool));
+  s.points = points;
+  s.brush.radius = float(radius_);
+  s.brush.strength = float(strength_);
+  s.brush.falloff = falloff_;
+  if (tool != "grab") // a grab pulls one region
+    s.brush.mirror_axis = mirror_;
+  const auto paint = [&s](int channel, double r, double g, double b) {
+    s.paint().value[std::size_t(channel)] = {float(r), float(g), float(b), 1.f};
+    s.paint().alpha[std::size_t(channel)] = 1.f;
+  };
   if (is_paint(tool)) {
     const auto& rgb = kPalette[std::size_t(swatch_)];
     const std::string channel = kChannels[std::size_t(channel_)];
-    json channels;
-    if (channel == "diffuse" || channel == "specular")
-      channels[channel] = {rgb[0], rgb[1], rgb[2]};
+    const double level = swatch_ / 9.0, height = (swatch_ - 5) * 0.004 * size_; // 5: the unpainted height
+    if (channel == "diffuse")
+      paint(CHANNEL_DIFFUSE, rgb[0], rgb[1], rgb[2]);
+    else if (channel == "specular")
+      paint(CHANNEL_SPECULAR, rgb[0], rgb[1], rgb[2]);
+    else if (channel == "roughness")
+      paint(CHANNEL_ROUGHNESS, level, level, level);
     else if (channel == "displacement")
-      channels[channel] = (swatch_ - 5) * 0.004 * size_; // 5: the unpainted height
-    else if (channel == "material") // a coat: colour, a matching specular, and the swatch's roughness
-      channels = {{"diffuse", {rgb[0], rgb[1], rgb[2]}}, {"specular", {0.5, 0.5, 0.5}}, {"roughness", 0.3}};
-    else
-      channels[channel] = level;
-    s["channels"] = channels;
-    s["op"] = kOps[std::size_t(op_)];
+      paint(CHANNEL_DISPLACEMENT, height, height, height);
+    else if (channel == "mask")
+      paint(CHANNEL_MASK, level, level, level);
+    else { // a coat: colour, a matching specular, and the swatch's roughness
+      paint(CHANNEL_DIFFUSE, rgb[0], rgb[1], rgb[2]);
+      paint(CHANNEL_SPECULAR, 0.5, 0.5, 0.5);
+      paint(CHANNEL_ROUGHNESS, 0.3, 0.3, 0.3);
+    }
+    s.paint().op = op_;
   } else if (tool == "label") {
-    s["channels"] = {{"label", swatch_}};
-    s["op"] = "copy";
+    paint(CHANNEL_LABEL, swatch_, swatch_, swatch_);
   } else if (tool == "sculpt" || tool == "inflate") {
-    s["amount"] = (inwards_ ? -0.1 : 0.1) * radius_;
+    s.move().amount = float((inwards_ ? -0.1 : 0.1) * radius_);
   } else if (tool == "flatten") {
-    s["amount"] = 0.5;
+    s.move().amount = 0.5f;
   }
-  if (tool == "grab")
-    s.erase("mirror");
   if (coarse_edit())
-    s["edit_level"] = edit_level_;
-  if (space_ != 0) {
-    s["space"] = kSpaces[std::size_t(space_)];
-    if (kSpaces[std::size_t(space_)] == std::string("screen") && has_camera_) // the view it is drawn in
-      s["camera"] = {{"position", {camera_.position[0], camera_.position[1], camera_.position[2]}},
-                     {"focal_point", {camera_.focal_point[0], camera_.focal_point[1], camera_.focal_point[2]}},
-                     {"view_up", {camera_.view_up[0], camera_.view_up[1], camera_.view_up[2]}},
-                     {"view_angle", camera_.view_angle}};
+    s.set_edit_level(edit_level_);
+  s.brush.space = space_;
+  if (space_ == SPACE_SCREEN && has_camera_) { // the view it is drawn in
+    s.brush.camera = camera_;
+    s.brush.has_camera = true;
   }
-  return s.dump();
-}
-
-Stroke BrushSettings::stroke(const std::vector<Vec3>& points) const
-{
-  StrokeScript script = parse_stroke_script("{\"strokes\": [" + stroke_json(points) + "]}");
-  return std::move(script.strokes.front());
+  check_stroke(s);
+  return s;
 }
 
 std::string BrushSettings::describe() const

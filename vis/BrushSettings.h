@@ -1,5 +1,5 @@
 // The interactive window's brush: what the keys change, shown on screen,
-// turned into stroke-script strokes.
+// turned into strokes.
 #ifndef BrushSettings_h
 #define BrushSettings_h
 
@@ -24,9 +24,8 @@ public:
   //! true when the key is one of the brush's (see key_help()).
   bool handle_key(const std::string& key, bool shift);
 
-  //! The stroke-script stroke (JSON) along `points`.
-  std::string stroke_json(const std::vector<Vec3>& points) const;
-  //! The same, parsed and checked as a script would be.
+  //! The stroke along `points` with these settings, checked as a script's
+  //! stroke is (check_stroke()).
   //! \throw InputError if the settings make no valid stroke (they always should).
   Stroke stroke(const std::vector<Vec3>& points) const;
 

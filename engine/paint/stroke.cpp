@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp> // for nlohmann::json
 
 #include <algorithm> // for std::find, std::max
+#include <array>     // for std::array
 #include <cmath>   // for std::isfinite, std::sqrt
 #include <filesystem> // for std::filesystem::path
 #include <fstream> // for std::ifstream
@@ -16,6 +17,10 @@ namespace meshpaint {
 namespace {
 
 using nlohmann::json;
+
+//! Tool names in the order of enum Tool.
+const std::array<const char*, 11> kToolNames = {"paint",  "label",   "wash",  "dip",  "smooth", "blur",
+                                                "sculpt", "inflate", "flatten", "smear", "grab"};
 
 //! Reads one stroke, with errors that name it and the key.
 class StrokeReader
@@ -327,10 +332,9 @@ Stroke read_stroke(const json& j, std::size_t index)
                          "channels, alphas, pressure, mirror, amount, iterations, target, method, lambda, mu, "
                          "mode, coefficient, pattern, stroke, stamp, edit_level, space, camera, backfaces, spray, side)");
   Stroke s;
-  static const std::vector<std::string> tools = {"paint",  "label",   "wash",    "dip",   "smooth", "blur",
-                                                 "sculpt", "inflate", "flatten", "smear", "grab"};
+  static const std::vector<std::string> tools(kToolNames.begin(), kToolNames.end());
   std::string tool = r.word("tool", "paint", tools);
-  s = make_stroke(Tool(std::find(tools.begin(), tools.end(), tool) - tools.begin()));
+  s = make_stroke(tool_named(tool));
   // The paint equation's filtering ops are brushes of their own: "op":
   // "blur" filters the colours under the brush, "op": "smear" drags them.
   if (s.tool == Tool::Paint && r.has("op") && r.at("op").is_string() &&
@@ -519,11 +523,21 @@ Stroke read_stroke(const json& j, std::size_t index)
 
 } // namespace
 
-const char* tool_name(Tool tool)
+const char* tool_name(Tool tool) { return kToolNames[std::size_t(tool)]; }
+
+Tool tool_named(const std::string& name)
 {
-  static const char* const names[] = {"paint",  "label",   "wash",    "dip",   "smooth", "blur",
-                                     "sculpt", "inflate", "flatten", "smear", "grab"};
-  return names[int(tool)];
+  for (std::size_t k = 0; k < kToolNames.size(); ++k)
+    if (name == kToolNames[k])
+      return Tool(k);
+  throw InputError("'" + name + "' is not a tool");
+}
+
+void check_stroke(const Stroke& stroke)
+{
+  const Stroke back = read_stroke(json::parse(stroke_json(stroke)), 0);
+  if (back != stroke)
+    throw InputError("stroke 0: does not read back as itself from its script form " + stroke_json(stroke));
 }
 
 ToolFamily tool_family(const Stroke& stroke)
@@ -592,7 +606,8 @@ Stroke make_stroke(Tool tool)
   case Tool::Smooth:
   case Tool::Blur:
     s.settings = SmoothSettings();
-    s.smooth().target_colour = tool == Tool::Blur;
+    s.smooth().target_colour = tool == Tool::Blur; // colours take Laplacian passes
+    s.smooth().taubin = tool != Tool::Blur;
     break;
   case Tool::Sculpt:
   case Tool::Inflate:

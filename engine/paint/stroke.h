@@ -31,6 +31,8 @@ enum class Tool
 
 //! Name of a tool as the stroke script writes it.
 const char* tool_name(Tool tool);
+//! The tool of that name. \throw InputError for a name that is none.
+Tool tool_named(const std::string& name);
 
 //! A view, as VTK's camera gives it: what screen-space brushes and patterns
 //! project with.
@@ -199,6 +201,12 @@ struct StrokeScript
   int level = -1; //!< -1: not given
   std::vector<Stroke> strokes;
 };
+
+//! Checks a stroke made in code (a window's brush, a setter API) exactly as
+//! parse_stroke_script() checks a script's, and that its script form reads
+//! back as the same stroke, so that a recording of it replays exactly.
+//! \throw InputError naming the key, as parse_stroke_script() does.
+void check_stroke(const Stroke& stroke);
 
 //! Parses and checks a stroke script (docs/strokes.md). Nothing is returned
 //! unless every stroke is valid.
