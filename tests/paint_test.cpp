@@ -235,6 +235,29 @@ TEST(Paint, WashCoversEverything)
     ASSERT_TRUE(v[0] == 0.25f && v[1] == 0.5f && v[2] == 0.75f);
 }
 
+TEST(Paint, AWashThroughAScreenPatternUsesItsCamera)
+{
+  // The pattern's coordinates are where each texel lands on the screen, so
+  // the wash needs the view as a brush does.
+  PaintSurface surface(test::runtime(), flat_square(), 3, AtlasStorage::Buffer);
+  Stroke s = make_stroke(Tool::Wash);
+  s.paint().value[CHANNEL_DIFFUSE] = {1.f, 0.f, 0.f, 1.f};
+  s.paint().alpha[CHANNEL_DIFFUSE] = 1.f;
+  s.paint().pattern.kind = PATTERN_MARBLE;
+  s.paint().pattern.coord = PATTERN_COORD_SCREEN;
+  s.paint().pattern.transform = {8, 0, 0, 0, 0, 8, 0, 0, 0, 0, 8, 0};
+  s.brush.has_camera = true;
+  s.brush.camera.position = {3.f, 3.f, 10.f};
+  s.brush.camera.focal_point = {3.f, 3.f, 0.f};
+  surface.apply(s);
+  float lo = 1.f, hi = 0.f;
+  for (const Float4& v : surface.read_channels().diffuse) {
+    lo = std::min(lo, v[1]);
+    hi = std::max(hi, v[1]);
+  }
+  EXPECT_GT(hi - lo, 0.2f); // the marble's veins, not one colour
+}
+
 TEST(Paint, StrokeEndsWhereItLeavesTheSurface)
 {
   PaintSurface surface(test::runtime(), flat_square(), 3, AtlasStorage::Buffer);

@@ -8,6 +8,7 @@
 
 #include "core/errors.h"
 #include "core/timer.h"
+#include "paint/brush_space.h"
 #include "paint/paint_memory.h"
 
 #include <algorithm> // for std::any_of, std::min, std::max
@@ -201,6 +202,8 @@ void PaintSurface::prepare_dab(const Stroke& stroke)
     dab.radius = std::numeric_limits<float>::infinity();
     dab.strength = stroke.brush.strength;
     dab.falloff = FALLOFF_CONSTANT;
+    if (stroke.brush.has_camera) // a screen pattern's view
+      camera_frame(stroke.brush.camera, dab);
     inside_ = two_sided_ && stroke.brush.side == 2; // a wash covers the outside unless told
     paint(all, dab);
     open_->report.dabs = open_->report.dabs_applied = 1;
