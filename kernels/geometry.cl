@@ -5,8 +5,7 @@
  * tiles the host copies back; with buffers the same one, each texel read
  * and written by its own work item. Smoothing runs on the welded mesh, so each stored copy of a
  * side or corner texel gets one value. Weights are per texel, patch-major,
- * computed from the limit surface. Built after brush.cl, whose falloff and
- * stamp helpers it shares. */
+ * computed from the limit surface, in the brush spaces of brush_space.cl. */
 
 #define WEIGHT_INDEX(g, p, ij) PATCH_MAJOR_INDEX(g, p, ij)
 

@@ -1,7 +1,7 @@
 #include "atlas/atlas.h"
 
 #include "cl/launch.h"
-#include "cl/program.h"
+#include "cl/kernel_programs.h"
 #include "core/errors.h"
 #include "core/format.h"
 #include "mesh/far_refiner.h"
@@ -273,9 +273,7 @@ Atlas::Atlas(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int max_lev
 
     kernels_ = std::make_unique<Kernels>();
     Kernels& k = *kernels_;
-    k.program = build_program(*runtime_,
-                              {"atlas_types.h", "atlas_access.cl", "subdivide.cl", "limit.cl", "select.cl", "reduce.cl"},
-                              storage_options(storage_, runtime_->info()));
+    k.program = kernel_program(*runtime_, KernelProgram::Atlas, storage_options(storage_, runtime_->info()));
     k.subdivide_tiles = cl::Kernel(k.program, "subdivide_tiles");
     k.subdivide_patches = cl::Kernel(k.program, "subdivide_patches");
     k.subdivide_edges = cl::Kernel(k.program, "subdivide_edges");

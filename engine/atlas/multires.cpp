@@ -1,7 +1,7 @@
 #include "atlas/multires.h"
 
 #include "cl/launch.h"
-#include "cl/program.h"
+#include "cl/kernel_programs.h"
 #include "core/errors.h"
 
 #include <algorithm> // for std::max
@@ -32,8 +32,7 @@ Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Devic
   const LevelLayout f = atlas_.layout(atlas_.max_level());
   Device& d = *device_;
   try {
-    d.program = build_program(rt, std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "detail.cl"},
-                              storage_options(atlas_.storage(), rt.info()));
+    d.program = kernel_program(rt, KernelProgram::Detail, storage_options(atlas_.storage(), rt.info()));
     d.encode_details = cl::Kernel(d.program, "encode_details");
     d.encode_patches = cl::Kernel(d.program, "encode_patches");
     d.decode_tiles = cl::Kernel(d.program, "decode_tiles");
