@@ -180,8 +180,8 @@ inline int tile_texel(int2 g, __global const int *list, int count, int *p, int2 
  * range (tile, tile * count)), which GPUs want, and a work item per patch
  * walking its tile row by row (*_patches, range count). CPUs run a group's
  * items one after another: there the item per patch reads the patch's
- * tables once and spends nothing on working out its patch and texel
- * (15-40% fewer perf samples). The body of a *_patches kernel: runs the
+ * tables once and spends nothing on working out its patch and texel.
+ * The body of a *_patches kernel: runs the
  * statement given last for each texel ij of patch p (list[k] for item k, or
  * k when list is null), row by row; k is `patch_item`. */
 #define FOR_EACH_PATCH_TEXEL(g, list, count, ...)         \

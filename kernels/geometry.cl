@@ -5,8 +5,7 @@
  * tiles the host copies back; with buffers the same one, each texel read
  * and written by its own work item. Smoothing runs on the welded mesh, so each stored copy of a
  * side or corner texel gets one value. Weights are per texel, patch-major,
- * computed from the limit surface. Built after brush.cl, whose falloff and
- * stamp helpers it shares. */
+ * computed from the limit surface, in the brush spaces of brush_space.cl. */
 
 #define WEIGHT_INDEX(g, p, ij) PATCH_MAJOR_INDEX(g, p, ij)
 
@@ -23,8 +22,7 @@
 /* Weight of texel ij of p, the a-th listed patch:
  * falloff x strength x (1 - mask), 0 outside the radius. The mask lives at
  * the finest level (grid gm): texel ij of grid g is texel ij * stride there;
- * `masked` 0 says no mask is set anywhere, and its reads are skipped (a
- * quarter of the kernel's time).
+ * `masked` 0 says no mask is set anywhere, and its reads are skipped.
  * unfold: as for paint_dab, one per listed patch; its maps hold at any level.
  * outside (or null): per listed patch, the sides and corners it shares with
  * unlisted patches (bits as texel_border); their texels weigh 0, since their

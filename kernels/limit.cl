@@ -117,9 +117,8 @@ inline void limit_crease_cross(float4 m0, float4 m1, float4 m2, float4 i0, float
  * update; neither: everything.
  * The side and corner kernels put their results in compact arrays (a pos,
  * nrm pair per item), which limit_tiles then copies into whole tiles: every
- * tile's cache lines are written once, by one kernel. Writing each copy
- * from the side and corner kernels had each line fetched and written back
- * by three kernels, and that traffic was most of the limit's time. */
+ * tile's cache lines are written once, by one kernel, instead of being
+ * fetched and written back by each of three. */
 
 /* Pair k of a compact array: position, normal. */
 #define PAIR_STORE(a, k, pv, nv) \

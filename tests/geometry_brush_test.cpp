@@ -201,7 +201,7 @@ std::vector<Float4> read_bounds(Atlas& atlas)
 TEST(GeometryBrush, LocalLimitUpdateEqualsAFullOne)
 {
   // The set to update comes as host lists for a small brush and as flags
-  // made on the device for a large one (Atlas::neighbourhood_on_device()): both
+  // made on the device for a large one (Atlas::neighbourhood()): both
   // must give the bits of the whole surface's limit, and bounds, under each
   // storage and each form of the whole-tile kernels.
   std::set<bool> large_seen;
@@ -311,8 +311,8 @@ TEST(GeometryBrush, AStaleDeviceSetIsRefused)
   PaintSurface surface(test::runtime(), test::genus_two(), 4, AtlasStorage::Buffer);
   Atlas& atlas = surface.atlas();
   atlas.set_device_set_share(std::size_t(atlas.topology().patch_count)); // flags always
-  const DeviceSet older = atlas.neighbourhood_on_device({0, 1, 2});
-  const DeviceSet newer = atlas.neighbourhood_on_device({3});
+  const PatchSet older = atlas.neighbourhood({0, 1, 2});
+  const PatchSet newer = atlas.neighbourhood({3});
   EXPECT_NO_THROW(atlas.update_limit(newer));
   EXPECT_THROW(atlas.update_limit(older), std::logic_error);
   EXPECT_THROW(atlas.subdivide(1, 4, older), std::logic_error);

@@ -1,5 +1,6 @@
 // The OpenCL runtime: device choice and kernel builds.
 
+#include "cl/kernel_programs.h"
 #include "cl/program.h"
 #include "core/errors.h"
 #include "support/runtime.h"
@@ -42,6 +43,29 @@ TEST(Runtime, EmbeddedKernelsBuild)
                                 std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "subdivide.cl"},
                                 "-cl-std=CL1.2"));
   EXPECT_THROW(build_program(*test::runtime(), std::vector<std::string>{"missing.cl"}, ""), DeviceError);
+}
+
+// Each kernel file builds from itself and the files it declares it needs, in
+// every storage variant: none compiles only because of what precedes it.
+TEST(Runtime, EveryKernelFileBuildsFromItsNeeds)
+{
+  std::vector<std::string> variants = {"-cl-std=CL1.2", "-cl-std=CL1.2 -D ATLAS_PREFETCH"};
+  if (test::runtime()->info().images)
+    variants.push_back("-cl-std=CL1.2 -D ATLAS_IMAGE");
+  for (const std::string& options : variants)
+    for (const std::string& file : kernel_files())
+      EXPECT_NO_THROW(build_program(*test::runtime(), kernel_file_with_needs(file), options)) << file << ", " << options;
+  EXPECT_EQ(kernel_file_with_needs("geometry.cl"),
+            (std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "brush_space.cl", "geometry.cl"}));
+  EXPECT_THROW(kernel_file_with_needs("missing.cl"), DeviceError);
+}
+
+TEST(Runtime, ProgramsAreBuiltOncePerOptions)
+{
+  Runtime& rt = *test::runtime();
+  const cl::Program& a = kernel_program(rt, KernelProgram::Detail, "-cl-std=CL1.2");
+  EXPECT_EQ(kernel_program(rt, KernelProgram::Detail, "-cl-std=CL1.2")(), a());
+  EXPECT_NE(kernel_program(rt, KernelProgram::Detail, "-cl-std=CL1.2 -D ATLAS_PREFETCH")(), a());
 }
 
 TEST(Runtime, DeviceSelectors)

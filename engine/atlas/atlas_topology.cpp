@@ -1,7 +1,7 @@
 #include "atlas/atlas_topology.h"
 
 #include "core/errors.h"
-#include "core/marks.h"
+#include "mesh/far_refiner.h"
 
 #include <string> // for std::to_string
 
@@ -96,12 +96,20 @@ AtlasTopology build_atlas_topology(const OpenSubdiv::Far::TopologyLevel& level1)
 
 std::vector<int> AtlasTopology::corner_neighbourhood(const std::vector<int>& patches, int layers) const
 {
-  Marks in, ring_done; // each corner ring once, not once per patch at it
+  Marks in, ring_done;
+  return corner_neighbourhood(patches, layers, in, ring_done);
+}
+
+std::vector<int> AtlasTopology::corner_neighbourhood(const std::vector<int>& patches, int layers, Marks& in,
+                                                     Marks& ring_done) const
+{
   in.begin(std::size_t(patch_count));
-  ring_done.begin(rings.size());
-  std::vector<int> out = patches;
-  for (const int p : out)
-    in.mark(std::size_t(p));
+  ring_done.begin(rings.size()); // each corner ring once, not once per patch at it
+  std::vector<int> out;
+  out.reserve(2 * patches.size());
+  for (const int p : patches)
+    if (in.mark(std::size_t(p)))
+      out.push_back(p);
   std::size_t from = 0;
   for (int r = 0; r < layers; ++r) {
     const std::size_t to = out.size();
@@ -120,6 +128,13 @@ std::vector<int> AtlasTopology::corner_neighbourhood(const std::vector<int>& pat
     from = to;
   }
   return marked_in_order(std::move(out), in, std::size_t(patch_count));
+}
+
+AtlasTopology atlas_topology_of(const BaseMesh& mesh)
+{
+  auto refiner = make_refiner(mesh);
+  refine_uniform(*refiner, 1, true);
+  return build_atlas_topology(refiner->GetLevel(1));
 }
 
 } // namespace meshpaint

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "atlas_types.h" // for PatchEdge, CornerRing, CornerSlot
+#include "core/marks.h"
 
 #include <opensubdiv/far/topologyLevel.h> // for Far::TopologyLevel
 
@@ -11,6 +12,9 @@
 
 namespace meshpaint {
 
+struct BaseMesh;
+
+//! The patch tables of the first Catmull-Clark step.
 struct AtlasTopology
 {
   int patch_count = 0;
@@ -29,13 +33,22 @@ struct AtlasTopology
   //! Vertices of the welded level-l surface (each stored copy counted once).
   std::size_t unique_vertices(int level) const;
   //! `patches` and `layers` rings of patches around them (each sharing a
-  //! corner with the ring inside it), in patch order.
+  //! corner with the ring inside it), in patch order, each once.
   std::vector<int> corner_neighbourhood(const std::vector<int>& patches, int layers) const;
+  //! The same with the caller's scratch, which a caller doing this often
+  //! keeps: afterwards `in` holds the result's patches (and `ring_done` the
+  //! rings visited).
+  std::vector<int> corner_neighbourhood(const std::vector<int>& patches, int layers, Marks& in,
+                                        Marks& ring_done) const;
 };
 
 //! Builds the tables from OpenSubdiv's level-1 topology.
 //! \throw InputError when an edge has more than two faces, the two faces of
 //! an edge disagree on orientation, or a vertex's faces form several fans.
 AtlasTopology build_atlas_topology(const OpenSubdiv::Far::TopologyLevel& level1);
+//! The patch tables of a mesh without a device: one Catmull-Clark step
+//! through OpenSubdiv.
+//! \throw InputError as build_atlas_topology().
+AtlasTopology atlas_topology_of(const BaseMesh& mesh);
 
 } // namespace meshpaint

@@ -1,7 +1,7 @@
 #include "atlas/multires.h"
 
 #include "cl/launch.h"
-#include "cl/program.h"
+#include "cl/kernel_programs.h"
 #include "core/errors.h"
 
 #include <algorithm> // for std::max
@@ -32,8 +32,7 @@ Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Devic
   const LevelLayout f = atlas_.layout(atlas_.max_level());
   Device& d = *device_;
   try {
-    d.program = build_program(rt, std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "detail.cl"},
-                              storage_options(atlas_.storage(), rt.info()));
+    d.program = kernel_program(rt, KernelProgram::Detail, storage_options(atlas_.storage(), rt.info()));
     d.encode_details = cl::Kernel(d.program, "encode_details");
     d.encode_patches = cl::Kernel(d.program, "encode_patches");
     d.decode_tiles = cl::Kernel(d.program, "decode_tiles");
@@ -127,7 +126,7 @@ void Multires::encode(int level)
     // U goes into a layer of its own: the finest level keeps S, and so
     // does its limit.
     atlas_.reduce(finest, level);
-    atlas_.subdivide(level, finest, nullptr, &d.smooth);
+    atlas_.subdivide(level, finest, PatchSet(), &d.smooth);
     const Atlas::TileLaunch t = atlas_.tile_launch(d.encode_details, d.encode_patches, f, f.patches);
     launch(q, t.kernel, t.global, t.local, fine, d.smooth, grid(f), f.patches, d.details);
     launch(q, d.patch_extent, cl::NDRange(round_up(f.patches, kGroup)), cl::NDRange(kGroup), fine, grid(f),
@@ -149,16 +148,16 @@ std::vector<int> Multires::reach(const std::vector<int>& patches) const
   // subdivision stays inside those patches; each further step spreads by
   // a face of its level, and the frames by a finest texel: less than one
   // patch in all, so one ring. The limit stencil is the caller's
-  // neighbourhood_on_device().
+  // neighbourhood().
   return atlas_.topology().corner_neighbourhood(patches, 1);
 }
 
 void Multires::reconstruct(const std::vector<int>& affected)
 {
-  reconstruct(affected, atlas_.neighbourhood_on_device(affected));
+  reconstruct(affected, atlas_.neighbourhood(affected));
 }
 
-void Multires::reconstruct(const std::vector<int>& affected, const DeviceSet& around)
+void Multires::reconstruct(const std::vector<int>& affected, const PatchSet& around)
 {
   Device& d = *device_;
   Runtime& rt = atlas_.runtime();
@@ -178,21 +177,22 @@ void Multires::reconstruct(const std::vector<int>& affected, const DeviceSet& ar
   const PatchSet set = atlas_.patch_set(affected, Reach::All);
   const cl::Buffer patches = device_ints(rt.context(), set.patches), edges = device_ints(rt.context(), set.edges),
                    rings = device_ints(rt.context(), set.rings);
-  const Atlas::BorderWork work = atlas_.border_work();
+  const AtlasTables& tables = atlas_.tables();
+  const AtlasEvaluator& work = atlas_.evaluator();
   if (f.n > 1 && !set.edges.empty())
     launch(q, d.decode_edges, cl::NDRange(round_up(set.edges.size(), kGroup)), cl::NDRange(kGroup), d.smooth,
-           grid(f), atlas_.edge_table(), edges, int(set.edges.size()), d.details, work.sides);
+           grid(f), tables.edges(), edges, int(set.edges.size()), d.details, work.side_work());
   if (!set.rings.empty())
     launch(q, d.decode_corners, cl::NDRange(round_up(set.rings.size(), kGroup)), cl::NDRange(kGroup), d.smooth,
-           grid(f), atlas_.ring_table(), atlas_.slot_table(), rings, int(set.rings.size()), d.details, work.corners);
+           grid(f), tables.rings(), tables.slots(), rings, int(set.rings.size()), d.details, work.corner_work());
   if (!set.patches.empty()) {
     // The sides and corners shared with patches outside keep S.
     const cl::Buffer kept(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, set.outside.size(),
                           const_cast<std::uint8_t*>(set.outside.data()));
     const int count = int(set.patches.size());
     const Atlas::TileLaunch t = atlas_.tile_launch(d.decode_tiles, d.decode_patches, f, count);
-    launch(q, t.kernel, t.global, t.local, d.smooth, grid(f), patches, count, d.details, fine, work.patch_sides,
-           work.patch_rings, work.sides, work.corners, kept);
+    launch(q, t.kernel, t.global, t.local, d.smooth, grid(f), patches, count, d.details, fine, tables.patch_sides(),
+           tables.patch_rings(), work.side_work(), work.corner_work(), kept);
   }
 }
 
@@ -218,7 +218,7 @@ float Multires::stretch(const std::vector<int>& patches)
 void Multires::compute_base_limit(const std::vector<int>& patches)
 {
   const PatchSet set = atlas_.patch_set(patches, Reach::Any); // every texel of the tiles
-  atlas_.compute_limit_of(level_, device_->positions, device_->normals, &set);
+  atlas_.compute_limit_of(level_, device_->positions, device_->normals, set);
 }
 
 } // namespace meshpaint

@@ -76,9 +76,9 @@ public:
   //! keep their values bit for bit; the limit layers on `affected` are left
   //! to the caller (Atlas::update_limit).
   void reconstruct(const std::vector<int>& affected);
-  //! The same, given Atlas::neighbourhood_on_device(affected), which the
-  //! caller's limit update takes too (this makes no device set of its own).
-  void reconstruct(const std::vector<int>& affected, const DeviceSet& around);
+  //! The same, given Atlas::neighbourhood(affected), which the caller's
+  //! limit update takes too (this makes no set of its own).
+  void reconstruct(const std::vector<int>& affected, const PatchSet& around);
 
   //! Worst growth of a patch's longest finest-level grid edge since
   //! encode(), over `patches`: how far the edit level undersamples.

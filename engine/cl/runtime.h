@@ -4,8 +4,10 @@
 
 #include "cl/opencl.h"
 
+#include <map>    // for std::map
 #include <memory> // for std::shared_ptr
 #include <string> // for std::string
+#include <utility> // for std::pair
 #include <vector> // for std::vector
 
 namespace meshpaint {
@@ -52,6 +54,9 @@ public:
   const cl::Device& device() const { return device_; }
   cl::CommandQueue& queue() { return queue_; }
   const DeviceInfo& info() const { return info_; }
+  //! Programs built for this device, by program and build options: the
+  //! store of kernel_program() (cl/kernel_programs.h).
+  std::map<std::pair<int, std::string>, cl::Program>& program_cache() { return programs_; }
 
 private:
   Runtime(const cl::Device& device, const DeviceInfo& info);
@@ -60,6 +65,7 @@ private:
   cl::Context context_;
   cl::CommandQueue queue_;
   DeviceInfo info_;
+  std::map<std::pair<int, std::string>, cl::Program> programs_;
 };
 
 } // namespace meshpaint

@@ -103,7 +103,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
       refresh_geometry(patches, &list);
       return;
     }
-    const DeviceSet around = atlas_->neighbourhood_on_device(changed);
+    const PatchSet around = atlas_->neighbourhood(changed);
     phase_done(&StepPhases::lists);
     multires_->reconstruct(changed, around);
     for (const int p : changed)
@@ -159,7 +159,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
       steps.push_back(stroke.smooth().mu);
   }
   for (const auto& [k, layer] : layers)
-    d.smoothing->run(k->welded, *layer, l, everything ? nullptr : &set, weights, steps);
+    d.smoothing->run(k->welded, *layer, l, set, weights, steps);
   phase_done(&StepPhases::transform);
   if (stroke.smooth().target_colour)
     q.finish();
@@ -234,13 +234,13 @@ void PaintSurface::refresh_geometry(const std::vector<int>& patches, const cl::B
 {
   // The limit changed on the patches' sides and corners too, which every
   // patch sharing a corner with them stores: their tiles and bounds as well
-  // (Atlas::neighbourhood_set(); with many patches made on the device).
-  const DeviceSet set = atlas_->neighbourhood_on_device(patches, list);
+  // (Atlas::neighbourhood(); with many patches made on the device).
+  const PatchSet set = atlas_->neighbourhood(patches, list);
   phase_done(&StepPhases::lists);
   refresh_geometry(set);
 }
 
-void PaintSurface::refresh_geometry(const DeviceSet& set)
+void PaintSurface::refresh_geometry(const PatchSet& set)
 {
   atlas_->update_limit(set); // and the patches' bounds
   phase_done(&StepPhases::limit);

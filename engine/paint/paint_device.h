@@ -5,7 +5,7 @@
 
 #include "cl/append_buffer.h"
 #include "cl/launch.h"
-#include "cl/program.h"
+#include "cl/kernel_programs.h"
 #include "paint/paint_surface.h"
 #include "paint/welded_smoothing.h"
 
@@ -30,10 +30,7 @@ struct PaintSurface::LayerKernels
 
   void build(Runtime& rt, AtlasStorage storage)
   {
-    program = build_program(rt,
-                            std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "brush.cl", "geometry.cl",
-                                                     "lighting.cl"},
-                            storage_options(storage, rt.info()));
+    program = kernel_program(rt, KernelProgram::Brush, storage_options(storage, rt.info()));
     copy_tiles = cl::Kernel(program, "copy_tiles");
     welded.gather = cl::Kernel(program, "welded_gather");
     welded.scatter = cl::Kernel(program, "welded_scatter");

@@ -254,8 +254,8 @@ private:
   //! After positions changed on `patches`: limit surface and bounds there.
   //! `list`, if given, holds the patches on the device.
   void refresh_geometry(const std::vector<int>& patches, const cl::Buffer* list = nullptr);
-  //! The same given Atlas::neighbourhood_on_device() of the moved patches.
-  void refresh_geometry(const DeviceSet& around);
+  //! The same given Atlas::neighbourhood() of the moved patches.
+  void refresh_geometry(const PatchSet& around);
   //! One dab of the smear brush: lays down `carried`, then picks up the
   //! weighted mean colour under the dab into it.
   void smear(const std::vector<int>& patches, BrushDab dab, std::optional<std::array<Float4, 2>>& carried);

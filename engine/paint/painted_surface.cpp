@@ -6,7 +6,7 @@
 
 #include "atlas/weld.h"
 #include "cl/launch.h"
-#include "cl/program.h"
+#include "cl/kernel_programs.h"
 #include "cl/opencl.h"
 #include "core/errors.h"
 
@@ -197,8 +197,7 @@ std::shared_ptr<DisplayArrays> PaintSurface::display_arrays()
     Runtime& rt = atlas_->runtime();
     auto d = std::make_shared<Display>();
     try {
-      d->program = build_program(rt, std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "display.cl"},
-                                 storage_options(atlas_->storage(), rt.info()));
+      d->program = kernel_program(rt, KernelProgram::Display, storage_options(atlas_->storage(), rt.info()));
       d->vertices = cl::Kernel(d->program, "display_vertices");
       d->inside = cl::Kernel(d->program, "display_inside");
       d->vertex_of = device_ints(rt.context(), texel_vertices());

@@ -75,7 +75,7 @@ void PaintSurface::restore(const Snapshot& s)
     // from them, which the next edit at that level reads around its reach.
     scatter(std::size_t(edit - s.layer_ids.begin()));
     if (s.edit_level + 1 < level_) {
-      atlas_->subdivide(s.edit_level, level_ - 1, atlas_->neighbourhood_on_device(s.patches));
+      atlas_->subdivide(s.edit_level, level_ - 1, atlas_->neighbourhood(s.patches));
     }
   }
   // Then the details, before the finest level, which they leave alone.

@@ -86,9 +86,10 @@ const cl::Buffer& WeldedSmoothing::passes(const LayerKernels& k, const cl::Memor
   return *from;
 }
 
-void WeldedSmoothing::run(const LayerKernels& k, const cl::Memory& layer, const LevelLayout& l, const PatchSet* set,
+void WeldedSmoothing::run(const LayerKernels& k, const cl::Memory& layer, const LevelLayout& l, const PatchSet& all_or_lists,
                           const cl::Buffer& weights, const std::vector<float>& steps)
 {
+  const PatchSet* set = all_or_lists.form == PatchSet::Form::Lists ? &all_or_lists : nullptr; // null: every patch
   if (set && set->patches.empty())
     return;
   const cl::Buffer list = set ? device_ints(runtime_.context(), set->patches) : cl::Buffer();

@@ -29,9 +29,10 @@ public:
   WeldedSmoothing(Runtime& runtime, const AtlasTopology& topology, const cl::Program& program);
 
   //! One pass per step (x + step * w * (mean - x)) over `layer` at level
-  //! `l`, on the patches of `set` (taken with Reach::All; null: every patch);
+  //! `l`, on the patches of `set` (host lists taken with Reach::All, or every
+  //! patch);
   //! `weights` per texel of that level, patch-major.
-  void run(const LayerKernels& kernels, const cl::Memory& layer, const LevelLayout& l, const PatchSet* set,
+  void run(const LayerKernels& kernels, const cl::Memory& layer, const LevelLayout& l, const PatchSet& set,
            const cl::Buffer& weights, const std::vector<float>& steps);
   //! The same on every patch, with nothing written back: the result per
   //! welded vertex (weld_map() order) is read to the host.

@@ -1,0 +1,209 @@
+#include "atlas/atlas_evaluator.h"
+
+#include "atlas/tile_ranges.h"
+#include "cl/kernel_programs.h"
+#include "cl/launch.h"
+
+#include <algorithm> // for std::max
+#include <stdexcept> // for std::logic_error
+
+namespace meshpaint {
+namespace {
+
+// Work-group size of the table-driven kernels: runs of edges or rings.
+constexpr std::size_t kGroup1D = 64;
+const cl::NDRange kLocalEdges(1, kGroup1D), kLocal1D(kGroup1D);
+
+cl::NDRange range_edges(int positions, int edges)
+{
+  return cl::NDRange(positions, round_up(edges, kGroup1D));
+}
+cl::NDRange range1d(int items) { return cl::NDRange(round_up(items, kGroup1D)); }
+
+} // namespace
+
+//! A PatchSet as the kernels take it: lists and their lengths; or null
+//! lists and the full counts, with flags (Form::Flags) or without (every
+//! item).
+struct AtlasEvaluator::Arguments
+{
+  cl::Buffer patches, edges, rings;
+  int patch_count = 0, edge_count = 0, ring_count = 0;
+  cl::Buffer patch_flags, edge_flags, ring_flags;
+  cl_int generation = 0;
+};
+
+AtlasEvaluator::AtlasEvaluator(Runtime& runtime, const AtlasTables& tables, AtlasStorage storage,
+                               const LevelLayout& finest)
+  : runtime_(runtime), tables_(tables), storage_(storage), patch_items_(!runtime.info().gpu)
+{
+  const cl::Program& program = kernel_program(runtime_, KernelProgram::Atlas, storage_options(storage, runtime_.info()));
+  subdivide_tiles_ = cl::Kernel(program, "subdivide_tiles");
+  subdivide_patches_ = cl::Kernel(program, "subdivide_patches");
+  subdivide_edges_ = cl::Kernel(program, "subdivide_edges");
+  subdivide_corners_ = cl::Kernel(program, "subdivide_corners");
+  limit_tiles_ = cl::Kernel(program, "limit_tiles");
+  limit_patches_ = cl::Kernel(program, "limit_patches");
+  limit_edges_ = cl::Kernel(program, "limit_edges");
+  limit_corners_ = cl::Kernel(program, "limit_corners");
+  patch_bounds_ = cl::Kernel(program, "patch_bounds");
+  flag_corners_ = cl::Kernel(program, "flag_corners");
+  flag_ring_patches_ = cl::Kernel(program, "flag_ring_patches");
+  flag_borders_ = cl::Kernel(program, "flag_borders");
+  reduce_interior_ = cl::Kernel(program, "reduce_interior");
+  reduce_edges_ = cl::Kernel(program, "reduce_edges");
+  reduce_corners_ = cl::Kernel(program, "reduce_corners");
+
+  const AtlasTopology& topo = tables_.topology();
+  const cl::Context& context = runtime_.context();
+  side_work_ = cl::Buffer(context, CL_MEM_READ_WRITE,
+                          std::max<std::size_t>(1, topo.edges.size() * std::size_t(finest.n - 1)) * 2 *
+                              sizeof(cl_float4));
+  corner_work_ = cl::Buffer(context, CL_MEM_READ_WRITE, topo.rings.size() * 2 * sizeof(cl_float4));
+  const auto flags = [&](std::size_t n) {
+    const std::size_t bytes = round_up(std::max<std::size_t>(1, n), sizeof(cl_uint)); // whole fill patterns
+    cl::Buffer b(context, CL_MEM_READ_WRITE, bytes);
+    runtime_.queue().enqueueFillBuffer(b, cl_uint(0), 0, bytes);
+    return b;
+  };
+  patch_flags_ = flags(std::size_t(topo.patch_count));
+  edge_flags_ = flags(topo.edges.size());
+  ring_flags_ = flags(topo.rings.size());
+}
+
+TileLaunch AtlasEvaluator::tile_launch(cl::Kernel& per_texel, cl::Kernel& per_patch, const LevelLayout& l,
+                                       int count) const
+{
+  if (patch_items_)
+    return {per_patch, range1d(count), kLocal1D};
+  const auto tiles = range_tiles(l, count);
+  return {per_texel, tiles.first, tiles.second};
+}
+
+AtlasEvaluator::Arguments AtlasEvaluator::arguments(const PatchSet& set) const
+{
+  Arguments a;
+  const AtlasTopology& topo = tables_.topology();
+  if (set.form == PatchSet::Form::Lists) {
+    const cl::Context& context = runtime_.context();
+    a.patches = set.patch_list() ? set.patch_list : device_ints(context, set.patches);
+    a.edges = set.edge_list() ? set.edge_list : device_ints(context, set.edges);
+    a.rings = set.ring_list() ? set.ring_list : device_ints(context, set.rings);
+    a.patch_count = int(set.patches.size());
+    a.edge_count = int(set.edges.size());
+    a.ring_count = int(set.rings.size());
+    return a;
+  }
+  a.patch_count = topo.patch_count;
+  a.edge_count = int(topo.edges.size());
+  a.ring_count = int(topo.rings.size());
+  if (set.form == PatchSet::Form::Flags) {
+    // Flags of an older set have been overwritten where the sets differ.
+    if (set.generation != generation_)
+      throw std::logic_error("a device-made set used after a newer one was made");
+    a.patch_flags = set.patch_flags;
+    a.edge_flags = set.edge_flags;
+    a.ring_flags = set.ring_flags;
+    a.generation = set.generation;
+  }
+  return a;
+}
+
+void AtlasEvaluator::subdivide(int from_level, const std::vector<cl::Memory>& layers, const PatchSet& set)
+{
+  const Arguments a = arguments(set);
+  cl::CommandQueue& q = runtime_.queue();
+  const int patch_count = tables_.topology().patch_count;
+  for (std::size_t k = 0; k + 1 < layers.size(); ++k) {
+    const int l = from_level + int(k);
+    const LevelLayout s = level_layout(patch_count, l), d = level_layout(patch_count, l + 1);
+    const cl::Memory &in = layers[k], &out = layers[k + 1];
+    if (a.edge_count > 0)
+      launch(q, subdivide_edges_, range1d(a.edge_count), kLocal1D, in, side_work_, tables_.edges(), a.edges,
+             a.edge_count, a.edge_flags, a.generation, grid(s), grid(d));
+    if (a.ring_count > 0)
+      launch(q, subdivide_corners_, range1d(a.ring_count), kLocal1D, in, corner_work_, tables_.rings(),
+             tables_.slots(), a.rings, a.ring_count, a.ring_flags, a.generation, grid(s));
+    if (a.patch_count > 0) {
+      const TileLaunch t = tile_launch(subdivide_tiles_, subdivide_patches_, d, a.patch_count);
+      launch(q, t.kernel, t.global, t.local, in, out, grid(s), grid(d), a.patches, a.patch_count, a.patch_flags,
+             a.generation, tables_.patch_sides(), tables_.patch_rings(), side_work_, corner_work_);
+    }
+  }
+  // No wait: a list released here lives on until the kernels using it end,
+  // and the host goes on with its next sets while they run.
+}
+
+void AtlasEvaluator::reduce(int level, const cl::Memory& in, const cl::Memory& out)
+{
+  const AtlasTopology& topo = tables_.topology();
+  cl::CommandQueue& q = runtime_.queue();
+  const int edges = int(topo.edges.size()), rings = int(topo.rings.size()), patches = topo.patch_count;
+  const LevelLayout s = level_layout(patches, level), d = level_layout(patches, level - 1);
+  if (d.n > 1) {
+    const auto inside = range_interiors(d, d.patches);
+    launch(q, reduce_interior_, inside.first, inside.second, in, out, grid(s), grid(d), patches);
+    launch(q, reduce_edges_, range_edges(d.n - 1, edges), kLocalEdges, in, out, tables_.edges(), edges, grid(s),
+           grid(d));
+  }
+  launch(q, reduce_corners_, range1d(rings), kLocal1D, in, out, tables_.rings(), tables_.slots(), rings, grid(s),
+         grid(d));
+}
+
+void AtlasEvaluator::limit(int level, const cl::Memory& in, const cl::Memory& pos, const cl::Memory& nrm,
+                           const PatchSet& set, const cl::Buffer* bounds)
+{
+  const Arguments a = arguments(set);
+  const LevelLayout l = level_layout(tables_.topology().patch_count, level);
+  cl::CommandQueue& q = runtime_.queue();
+  if (l.n > 1 && a.edge_count > 0)
+    launch(q, limit_edges_, range1d(a.edge_count), kLocal1D, in, side_work_, tables_.edges(), a.edges,
+           a.edge_count, a.edge_flags, a.generation, grid(l));
+  if (a.ring_count > 0)
+    launch(q, limit_corners_, range1d(a.ring_count), kLocal1D, in, corner_work_, tables_.rings(), tables_.slots(),
+           tables_.valences(), a.rings, a.ring_count, a.ring_flags, a.generation, grid(l));
+  if (a.patch_count > 0) {
+    const TileLaunch t = tile_launch(limit_tiles_, limit_patches_, l, a.patch_count);
+    // The per-patch kernel makes the bounds as it goes where it may read
+    // back what it wrote (buffers); otherwise a kernel of their own.
+    const bool fused = bounds && patch_items_ && storage_ == AtlasStorage::Buffer;
+    if (patch_items_)
+      limit_patches_.setArg(12, fused ? *bounds : cl::Buffer()); // its last, beyond limit_tiles' own
+    launch(q, t.kernel, t.global, t.local, in, pos, nrm, grid(l), a.patches, a.patch_count, a.patch_flags,
+           a.generation, tables_.patch_sides(), tables_.patch_rings(), side_work_, corner_work_);
+    if (bounds && !fused)
+      launch(q, patch_bounds_, range1d(a.patch_count), kLocal1D, pos, grid(l), a.patches, a.patch_count,
+             a.patch_flags, a.generation, *bounds);
+  }
+}
+
+PatchSet AtlasEvaluator::flag_neighbourhood(const std::vector<int>& changed, const cl::Buffer* list)
+{
+  const AtlasTopology& topo = tables_.topology();
+  cl::CommandQueue& q = runtime_.queue();
+  if (++generation_ == 0) { // a flag may still hold any other generation
+    for (const cl::Buffer* b : {&patch_flags_, &edge_flags_, &ring_flags_})
+      q.enqueueFillBuffer(*b, cl_uint(0), 0, b->getInfo<CL_MEM_SIZE>());
+    generation_ = 1;
+  }
+  const cl_int generation = generation_, count = cl_int(changed.size()), patches = topo.patch_count,
+               rings = cl_int(topo.rings.size());
+  const cl::Buffer uploaded = list ? cl::Buffer() : device_ints(runtime_.context(), changed);
+  // The changed patches' corners, the patches there, and their sides and
+  // corners: a subset of the last, so the ring flags serve both.
+  launch(q, flag_corners_, range1d(count), kLocal1D, list ? *list : uploaded, count, tables_.patch_rings(),
+         generation, ring_flags_);
+  launch(q, flag_ring_patches_, range1d(rings), kLocal1D, ring_flags_, rings, tables_.rings(), tables_.slots(),
+         generation, patch_flags_);
+  launch(q, flag_borders_, range1d(patches), kLocal1D, patch_flags_, patches, tables_.patch_sides(),
+         tables_.patch_rings(), generation, edge_flags_, ring_flags_);
+  PatchSet flagged;
+  flagged.form = PatchSet::Form::Flags;
+  flagged.patch_flags = patch_flags_;
+  flagged.edge_flags = edge_flags_;
+  flagged.ring_flags = ring_flags_;
+  flagged.generation = generation;
+  return flagged;
+}
+
+} // namespace meshpaint

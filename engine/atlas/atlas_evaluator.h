@@ -1,0 +1,86 @@
+// The kernels that refine, reduce and evaluate the atlas (subdivide.cl,
+// limit.cl, reduce.cl) and make device patch sets (select.cl), run over
+// AtlasTables on layers of any level: the atlas's evaluator, as OpenSubdiv's
+// evaluators stream Far's tables.
+#pragma once
+
+#include "atlas/atlas_storage.h"
+#include "atlas/atlas_tables.h"
+#include "atlas/patch_set.h"
+#include "cl/runtime.h"
+
+#include <cstdint> // for std::uint8_t
+#include <vector>  // for std::vector
+
+namespace meshpaint {
+
+//! A whole-tile kernel over some patches of a level, in the form the
+//! evaluator picks (AtlasEvaluator::tile_launch()).
+struct TileLaunch
+{
+  cl::Kernel& kernel;
+  cl::NDRange global, local;
+};
+
+class AtlasEvaluator
+{
+public:
+  //! Builds the kernels for `storage` and room for the side and corner
+  //! kernels' results up to the level of `finest`.
+  //! \throw DeviceError when the kernels do not build; cl::Error.
+  AtlasEvaluator(Runtime& runtime, const AtlasTables& tables, AtlasStorage storage, const LevelLayout& finest);
+
+  //! Whether whole-tile kernels run a work item per patch (CPU devices; see
+  //! atlas_access.cl) or per texel; both give the same bits, and the setter
+  //! is there to compare them.
+  bool patch_items() const { return patch_items_; }
+  void set_patch_items(bool on) { patch_items_ = on; }
+  //! A whole-tile kernel over `count` patches of a level: the per-patch
+  //! kernel over count items, or the per-texel one over range_tiles(). The
+  //! arguments are the same for both.
+  TileLaunch tile_launch(cl::Kernel& per_texel, cl::Kernel& per_patch, const LevelLayout& layout, int count) const;
+
+  //! Catmull-Clark steps on `set`: layers[k + 1] (level from + k + 1) from
+  //! layers[k], the whole tiles of the set's patches, which needs every
+  //! side and corner of them among its edges and rings (Reach::Any).
+  void subdivide(int from_level, const std::vector<cl::Memory>& layers, const PatchSet& set);
+  //! One Gaussian reduction step: level l - 1 (`out`) from level l (`in`).
+  void reduce(int level, const cl::Memory& in, const cl::Memory& out);
+  //! Limit positions and normals of `level`'s control points `in` on the
+  //! whole tiles of the set's patches (Reach::Any); with `bounds`, also
+  //! each computed patch's bounding sphere (centre xyz, radius w; float4
+  //! per patch).
+  void limit(int level, const cl::Memory& in, const cl::Memory& positions, const cl::Memory& normals,
+             const PatchSet& set, const cl::Buffer* bounds);
+  //! The corner neighbourhood of `changed` (PatchSetMaker::neighbourhood())
+  //! made on the device as flags; `list`, if given, holds `changed` there
+  //! already. Leaves the flags of an earlier set stale.
+  PatchSet flag_neighbourhood(const std::vector<int>& changed, const cl::Buffer* list);
+
+  //! The side and corner kernels' results at the finest level (two float4
+  //! per edge texel and per ring), for whole-tile kernels of other families.
+  const cl::Buffer& side_work() const { return side_work_; }
+  const cl::Buffer& corner_work() const { return corner_work_; }
+
+private:
+  struct Arguments;
+  //! The set as kernel arguments: lists uploaded where they are not yet.
+  //! \throw std::logic_error for flags that a newer set overwrote.
+  Arguments arguments(const PatchSet& set) const;
+
+  Runtime& runtime_;
+  const AtlasTables& tables_;
+  AtlasStorage storage_;
+  bool patch_items_;
+  cl::Kernel subdivide_tiles_, subdivide_patches_, subdivide_edges_, subdivide_corners_;
+  cl::Kernel limit_tiles_, limit_patches_, limit_edges_, limit_corners_, patch_bounds_;
+  cl::Kernel reduce_interior_, reduce_edges_, reduce_corners_;
+  cl::Kernel flag_corners_, flag_ring_patches_, flag_borders_;
+  cl::Buffer side_work_, corner_work_;
+  // Device sets: a byte per patch, edge and ring, and the generation of the
+  // last set.
+  cl::Buffer patch_flags_, edge_flags_, ring_flags_;
+  std::uint8_t generation_ = 0;
+};
+
+} // namespace meshpaint

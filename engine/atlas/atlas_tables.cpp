@@ -1,0 +1,81 @@
+#include "atlas/atlas_tables.h"
+
+#include "core/vec.h"
+
+#include <algorithm> // for std::max, std::stable_sort
+#include <array>     // for std::array
+#include <cmath>     // for std::cos, std::sin, std::sqrt
+
+namespace meshpaint {
+namespace {
+
+//! The corner limit masks' constants for every valence m the rings have, in
+//! double precision: two float4 per m, for an interior vertex
+//! (cos 2pi/m, sin 2pi/m, lambda, 1 / (4 lambda - 1)) and for a boundary one
+//! (cos pi/m, sin pi/m, 1 / (m (3 + cos pi/m)), (cos pi/m + 1) / sin pi/m).
+std::vector<Float4> limit_constants(const AtlasTopology& topo)
+{
+  int most = 1;
+  for (const CornerRing& r : topo.rings)
+    most = std::max(most, int(r.count));
+  std::vector<Float4> out(2 * std::size_t(most + 1), Float4{0.f, 0.f, 0.f, 0.f});
+  for (int m = 1; m <= most; ++m) {
+    const double theta = 2.0 * M_PI / m, c = std::cos(theta), ch = std::cos(0.5 * theta);
+    const double lambda = 0.3125 + 0.0625 * (c + ch * std::sqrt(2.0 * (9.0 + c)));
+    out[2 * std::size_t(m)] = {float(c), float(std::sin(theta)), float(lambda), float(1.0 / (4.0 * lambda - 1.0))};
+    const double half = M_PI / m, bc = std::cos(half), bs = std::sin(half);
+    out[2 * std::size_t(m) + 1] = {float(bc), float(bs), float(1.0 / (m * (3.0 + bc))),
+                                   float(bs != 0.0 ? (bc + 1.0) / bs : 0.0)};
+  }
+  return out;
+}
+
+//! AtlasTables::patch_sides() and patch_rings() on the host.
+std::pair<std::vector<std::array<int, 4>>, std::vector<std::array<int, 4>>>
+border_tables(const AtlasTopology& topo, const std::vector<int>& device_ring)
+{
+  std::vector<std::array<int, 4>> sides(std::size_t(topo.patch_count)), rings(sides.size());
+  for (std::size_t p = 0; p < sides.size(); ++p)
+    for (int c = 0; c < 4; ++c) {
+      const int e = topo.patch_sides[p][std::size_t(c)];
+      const PatchEdge& edge = topo.edges[std::size_t(e)];
+      sides[p][std::size_t(c)] = 2 * e + (edge.patch[0] == int(p) && edge.side[0] == c ? 0 : 1);
+      rings[p][std::size_t(c)] = device_ring[std::size_t(topo.patch_corners[p][std::size_t(c)])];
+    }
+  return {sides, rings};
+}
+
+} // namespace
+
+AtlasTables::AtlasTables(Runtime& runtime, AtlasTopology topology) : topology_(std::move(topology))
+{
+  const auto upload = [&](const auto& v) {
+    return cl::Buffer(runtime.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                      std::max<std::size_t>(1, v.size() * sizeof(v[0])),
+                      const_cast<void*>(static_cast<const void*>(v.data())));
+  };
+  // The corner kernels visit rings in the order of their first patch, so
+  // they sweep the atlas instead of jumping. Edges stay in OpenSubdiv's
+  // order, which measured better than sorting them by patch.
+  std::vector<int> order(topology_.rings.size());
+  for (std::size_t v = 0; v < order.size(); ++v)
+    order[v] = int(v);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return topology_.slots[topology_.rings[a].first].patch < topology_.slots[topology_.rings[b].first].patch;
+  });
+  std::vector<CornerRing> rings;
+  device_ring_.assign(order.size(), -1);
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    rings.push_back(topology_.rings[order[k]]);
+    device_ring_[order[k]] = int(k);
+  }
+  edges_ = upload(topology_.edges);
+  rings_ = upload(rings);
+  valences_ = upload(limit_constants(topology_));
+  slots_ = upload(topology_.slots);
+  const auto [patch_sides, patch_rings] = border_tables(topology_, device_ring_);
+  patch_sides_ = upload(patch_sides);
+  patch_rings_ = upload(patch_rings);
+}
+
+} // namespace meshpaint
