@@ -26,7 +26,12 @@ void StrokeSession::begin(const Stroke& stroke)
   previewing_ = previews(stroke);
   if (previewing_) {
     if (stroke.points.size() > 1) {
-      scene_.apply(stroke);
+      try {
+        scene_.apply(stroke);
+      } catch (...) {
+        drawing_.reset(); // the scene closed the preview as a stroke of its own
+        throw;
+      }
       ++previews_;
     }
     return;
