@@ -27,12 +27,11 @@ void StrokeSession::begin(const Stroke& stroke)
   if (previewing_) {
     if (stroke.points.size() > 1) {
       try {
-        scene_.apply(stroke);
+        preview(stroke);
       } catch (...) {
-        drawing_.reset(); // the scene closed the preview as a stroke of its own
+        drawing_.reset(); // what the preview painted stays a stroke of its own
         throw;
       }
-      ++previews_;
     }
     return;
   }
@@ -43,6 +42,20 @@ void StrokeSession::begin(const Stroke& stroke)
     throw;
   }
   paint_new_dabs();
+}
+
+void StrokeSession::preview(const Stroke& piece)
+{
+  // A piece that fails halfway is still a step of the scene's history (as
+  // every stroke is), which end() takes back with the others.
+  const std::size_t before = scene_.history().size();
+  try {
+    scene_.apply(piece);
+  } catch (...) {
+    previews_ += int(scene_.history().size() - before);
+    throw;
+  }
+  ++previews_;
 }
 
 void StrokeSession::paint_new_dabs()
@@ -73,8 +86,7 @@ bool StrokeSession::extend(const Vec3& point, float pressure)
     piece.points.assign(s.points.end() - 2, s.points.end());
     if (!s.pressure.empty())
       piece.pressure.assign(s.pressure.end() - 2, s.pressure.end());
-    scene_.apply(piece);
-    ++previews_;
+    preview(piece);
     return true;
   }
   paint_new_dabs();

@@ -53,6 +53,8 @@ private:
   //! previews, taken back when the stroke ends and the whole path applied
   //! (what a replay does).
   bool previews(const Stroke& stroke) const;
+  //! Applies a piece as a preview, counting it for end() to take back.
+  void preview(const Stroke& piece);
   void paint_new_dabs();
 
   PaintScene& scene_;
