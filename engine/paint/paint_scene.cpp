@@ -47,7 +47,7 @@ namespace {
 //! stroke that covers everything.
 bool alone(const Stroke& stroke, std::size_t objects)
 {
-  return stroke.tool == Tool::Wash || stroke.tool == Tool::Dip || objects < 2;
+  return covers_everything(stroke.tool) || objects < 2;
 }
 
 } // namespace

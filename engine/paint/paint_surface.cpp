@@ -195,7 +195,7 @@ void PaintSurface::prepare_dab(const Stroke& stroke)
   if (!stroke.brush.stamp_file.empty() && (!stroke.brush.stamp || stroke.brush.stamp->empty()))
     throw InputError("the stroke's brush image has no samples (load '" + stroke.brush.stamp_file + "' first)");
   upload_rasters(stroke, dab);
-  if (stroke.tool == Tool::Wash || stroke.tool == Tool::Dip) {
+  if (covers_everything(stroke.tool)) {
     std::vector<int> all(std::size_t(atlas_->topology().patch_count));
     for (std::size_t p = 0; p < all.size(); ++p)
       all[p] = int(p);
@@ -227,7 +227,7 @@ bool PaintSurface::paint_dabs(const std::vector<DabSample>& samples, const std::
   if (!open_)
     throw InputError("no stroke is being drawn: begin one first");
   OpenStroke& o = *open_;
-  if (o.stroke.tool == Tool::Wash || o.stroke.tool == Tool::Dip)
+  if (covers_everything(o.stroke.tool))
     return false;
   in_stroke([&] {
     for (; o.next < samples.size() && !o.ended; ++o.next) {

@@ -345,7 +345,7 @@ Stroke read_stroke(const json& j, std::size_t index)
       r.fail("channels", "has no meaning for op " + tool + ", which moves the colours already there");
   }
   const bool paints = s.tool == Tool::Paint || s.tool == Tool::Label || s.tool == Tool::Wash || s.tool == Tool::Dip;
-  const bool everywhere = s.tool == Tool::Wash || s.tool == Tool::Dip;
+  const bool everywhere = covers_everything(s.tool);
   const bool moves = s.tool == Tool::Sculpt || s.tool == Tool::Inflate || s.tool == Tool::Flatten;
   const bool smooths = s.tool == Tool::Smooth || s.tool == Tool::Blur;
   for (const char* key : {"channels", "alphas"})

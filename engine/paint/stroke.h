@@ -31,6 +31,8 @@ enum class Tool
 
 //! Name of a tool as the stroke script writes it.
 const char* tool_name(Tool tool);
+//! Wash and dip: the paint equation everywhere at once, with no path or brush.
+inline bool covers_everything(Tool tool) { return tool == Tool::Wash || tool == Tool::Dip; }
 //! The tool of that name. \throw InputError for a name that is none.
 Tool tool_named(const std::string& name);
 

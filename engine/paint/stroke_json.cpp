@@ -102,7 +102,7 @@ json stroke_object(const Stroke& s)
 {
   static const char* const falloffs[] = {"constant", "linear", "smoothstep", "gaussian"};
   json j = {{"tool", tool_name(s.tool)}, {"strength", s.brush.strength}};
-  const bool everywhere = s.tool == Tool::Wash || s.tool == Tool::Dip;
+  const bool everywhere = covers_everything(s.tool);
   if (!everywhere) {
     j["points"] = point_list(s.points);
     j["radius"] = s.brush.radius;
