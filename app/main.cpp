@@ -7,6 +7,7 @@
 
 #include "core/errors.h"
 
+#include <algorithm> // for std::any_of
 #include <cerrno>   // for errno
 #include <cstring>  // for std::strerror
 #include <iostream> // for std::cout
@@ -53,13 +54,44 @@ commands:
   bench view [--steps N]              the window's frame times while painting, with and
                                       without level of detail, and pick latency (needs X)
   devices                             the OpenCL devices (for --device / MESHPAINT_DEVICE)
-  help                                this text
+  help [COMMAND]                      this text, or one command's (also COMMAND --help, -h)
+  --version                           the version of meshpaint
 
 MESH: a mesh file (.obj .off .ply .stl) or a project (.meshpaint) for info, subdivide,
 paint, view and stats
 options of demo, info, subdivide, paint, view, stats and bench: --device SEL (gpu, cpu, P:D
 or part of a name), --storage buffer|image
 )";
+
+//! The first line of each command's entry in kUsage starts with two spaces
+//! and the command; its description lines are indented further.
+std::string command_usage(const std::string& command)
+{
+  const std::string text = kUsage;
+  const std::string footer = text.substr(text.find("\nMESH: ") + 1);
+  std::string found;
+  bool inside = false;
+  std::size_t at = text.find("commands:\n") + 10;
+  while (at < text.size()) {
+    const std::size_t end = text.find('\n', at);
+    const std::string line = text.substr(at, end - at);
+    at = end + 1;
+    const bool entry = line.size() > 2 && line.compare(0, 2, "  ") == 0 && line[2] != ' ';
+    if (entry)
+      inside = line.compare(2, command.size() + 1, command + " ") == 0;
+    if (inside && !line.empty())
+      found += (entry ? "usage: meshpaint " + line.substr(2) : line) + "\n";
+  }
+  if (found.empty())
+    throw meshpaint::InputError("unknown command '" + command + "' (see meshpaint help)");
+  return found + "\n" + footer + "more: docs/cli.md\n";
+}
+
+//! Whether ARGS ask for help (`--help` or `-h` anywhere among them).
+bool asks_for_help(const std::vector<std::string>& args)
+{
+  return std::any_of(args.begin(), args.end(), [](const std::string& a) { return a == "--help" || a == "-h"; });
+}
 
 //! Replaces this process by meshpaint-bench from this program's folder.
 int run_benchmarks(char** argv)
@@ -91,6 +123,14 @@ int main(int argc, char** argv)
     {"stats", stats_command}, {"transfer", transfer_command},
     {"fit", fit_command}, {"view", view_command}};
   return run_command("meshpaint", command, [&] {
+    if (command == "--version") {
+      std::cout << "meshpaint " << MESHPAINT_VERSION << "\n";
+      return 0;
+    }
+    if (command == "help" && !rest.empty()) {
+      std::cout << command_usage(rest.front());
+      return 0;
+    }
     if (command == "help" || command == "--help" || command == "-h") {
       std::cout << kUsage;
       return 0;
@@ -100,6 +140,10 @@ int main(int argc, char** argv)
     const auto it = commands.find(command);
     if (it == commands.end())
       throw InputError("unknown command '" + command + "' (see meshpaint help)");
+    if (asks_for_help(rest)) {
+      std::cout << command_usage(command);
+      return 0;
+    }
     return it->second(rest);
   });
 }

@@ -6,13 +6,37 @@
 
 #include "core/errors.h"
 
-#include <map> // for std::map
+#include <iostream> // for std::cout
+#include <map>      // for std::map
 
 namespace meshpaint::cli {
 namespace {
 
+const char* const kUsage = R"(usage: meshpaint bench subdivide MESH [--level L] [--json] [--repeats N]
+       meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases]
+       meshpaint bench view [--steps N]
+       (the same as meshpaint-bench ...)
+
+  subdivide   kernels against OpenSubdiv's CpuEvaluator (level 3)
+  paint       brush step times as the paper's Table 1, and smoothing against VTK and OpenMesh
+  view        the window's frame times while painting, with and without level of detail,
+              and pick latency (needs X)
+
+options: --device SEL (gpu, cpu, P:D or part of a name), --storage buffer|image, --quiet
+more: docs/cli.md
+)";
+
 int bench(const Argv& argv)
 {
+  for (const std::string& a : argv)
+    if (a == "--help" || a == "-h") {
+      std::cout << kUsage;
+      return 0;
+    }
+  if (argv.size() == 1 && argv[0] == "--version") {
+    std::cout << "meshpaint-bench " << MESHPAINT_VERSION << "\n";
+    return 0;
+  }
   Args args("bench", argv, {"--json", "--phases"}, {"--level", "--repeats", "--steps", "--tool", "--mesh", "--device", "--storage"});
   const std::string what = args.positionals().empty() ? "" : args.positionals()[0];
   // One parser for all three; an option of another benchmark is refused.
@@ -32,7 +56,7 @@ int bench(const Argv& argv)
     return bench_view(args);
   throw InputError("usage: meshpaint bench subdivide MESH [--level L] [--json] [--repeats N] | "
                    "meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases] | "
-                   "meshpaint bench view [--steps N]");
+                   "meshpaint bench view [--steps N] (see meshpaint bench --help)");
 }
 
 } // namespace
