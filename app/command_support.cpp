@@ -4,7 +4,8 @@
 #include "project/project_surface.h"
 
 #include <iostream> // for std::cerr
-#include <new>      // for std::bad_alloc
+#include <new>          // for std::bad_alloc
+#include <system_error> // for std::system_error, std::errc
 
 #ifndef MESHPAINT_SOURCE_DIR
 #error "MESHPAINT_SOURCE_DIR must name the source tree"
@@ -13,14 +14,26 @@
 namespace meshpaint::cli {
 namespace {
 
-//! 2: the user's input or the device's limits; 3: the device; 1: a defect.
+//! Whether `e` says the host ran out of memory or threads (std::thread and
+//! std::async report a failed pthread_create as a system_error).
+bool out_of_host_resources(const std::exception& e)
+{
+  if (dynamic_cast<const std::bad_alloc*>(&e))
+    return true;
+  const auto* system = dynamic_cast<const std::system_error*>(&e);
+  return system && (system->code() == std::errc::resource_unavailable_try_again ||
+                    system->code() == std::errc::not_enough_memory);
+}
+
+//! 2: the user's input or the device's limits; 3: the device or the host's
+//! memory; 1: a defect.
 int exit_code(const std::exception& e)
 {
   using namespace meshpaint;
   if (dynamic_cast<const InputError*>(&e) || dynamic_cast<const IOError*>(&e) ||
-      dynamic_cast<const ResourceError*>(&e) || dynamic_cast<const std::bad_alloc*>(&e))
+      dynamic_cast<const ResourceError*>(&e))
     return 2;
-  if (dynamic_cast<const DeviceError*>(&e) || dynamic_cast<const cl::Error*>(&e))
+  if (dynamic_cast<const DeviceError*>(&e) || dynamic_cast<const cl::Error*>(&e) || out_of_host_resources(e))
     return 3;
   return 1;
 }
@@ -31,6 +44,8 @@ std::string message(const std::exception& e, int code)
     return "OpenCL error: " + meshpaint::describe(*cl_error);
   if (dynamic_cast<const std::bad_alloc*>(&e))
     return "out of host memory";
+  if (out_of_host_resources(e))
+    return std::string("out of host memory or threads: ") + e.what();
   return code == 1 ? std::string("internal error: ") + e.what() : std::string(e.what());
 }
 

@@ -4,6 +4,7 @@
 // product does not carry.
 
 #include "commands.h"
+#include "library_messages.h"
 
 #include "core/errors.h"
 
@@ -122,6 +123,7 @@ int main(int argc, char** argv)
     {"demo", demo_command},   {"devices", devices_command}, {"paint", paint_command},
     {"stats", stats_command}, {"transfer", transfer_command},
     {"fit", fit_command}, {"view", view_command}};
+  capture_library_messages();
   return run_command("meshpaint", command, [&] {
     if (command == "--version") {
       std::cout << "meshpaint " << MESHPAINT_VERSION << "\n";

@@ -3,6 +3,7 @@
 // prints a table (or JSON) with its peers measured in the same run.
 
 #include "benchmarks.h"
+#include "library_messages.h"
 
 #include "core/errors.h"
 
@@ -66,6 +67,7 @@ int main(int argc, char** argv)
 {
   using namespace meshpaint::cli;
   const Argv args(argv + std::min(argc, 1), argv + argc);
+  capture_library_messages();
   // Messages name the command as users type it.
   return run_command("meshpaint", "bench", [&] { return bench(args); });
 }

@@ -1,6 +1,7 @@
 // Projects: saving and loading bit for bit, and refusing damaged files.
 
 #include "core/errors.h"
+#include "core/format.h"
 #include "project/project.h"
 #include "project/project_surface.h"
 #include "support/runtime.h"
@@ -229,6 +230,21 @@ TEST_F(ProjectTest, AFailedSaveKeepsThePreviousFile)
   EXPECT_EQ(files, 1u) << "no temporary left behind";
 }
 
+TEST_F(ProjectTest, ALabelNameThatIsNotUtf8IsRefused)
+{
+  auto surface = painted();
+  Project p = sample(*surface);
+  p.labels[1].name = "bo\xffne";
+  const fs::path path = dir_ / "bad-name.meshpaint";
+  save_project(p, path.string());
+  try {
+    load_project(path.string());
+    FAIL() << "loaded a label name that is not UTF-8";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not valid UTF-8: \"bo\\xffne\""), std::string::npos) << e.what();
+  }
+}
+
 TEST(Labels, ParsedAndChecked)
 {
   const auto labels = parse_labels(R"([{"id": 1, "name": "femur", "colour": [1, 0.5, 0]},
@@ -257,6 +273,26 @@ TEST(Labels, ParsedAndChecked)
   EXPECT_EQ(error(R"([{"id": 1, "name": "a", "color": [1, 0, 0]}])"),
             "label 0: unknown key \"color\" (id, name, colour)");
   EXPECT_NE(error("[{"), "");
+  // A huge unknown key is quoted only in part.
+  const std::string huge(100000, 'k');
+  const std::string said = error(R"([{"id": 1, ")" + huge + R"(": 0}])");
+  EXPECT_LT(said.size(), 200u) << said.substr(0, 300);
+  EXPECT_NE(said.find("... (100000 bytes)"), std::string::npos) << said.substr(0, 300);
+}
+
+TEST(Text, Utf8AndExcerpts)
+{
+  EXPECT_TRUE(is_utf8(""));
+  EXPECT_TRUE(is_utf8("f\xc3\xa9mur \xe2\x82\xac \xf0\x9f\xa6\xb4"));
+  EXPECT_FALSE(is_utf8("\xff"));
+  EXPECT_FALSE(is_utf8("\xc3"));             // cut short
+  EXPECT_FALSE(is_utf8("\xc0\xaf"));         // overlong '/'
+  EXPECT_FALSE(is_utf8("\xed\xa0\x80"));     // a surrogate
+  EXPECT_FALSE(is_utf8("\xf4\x90\x80\x80")); // beyond U+10FFFF
+  EXPECT_EQ(excerpt("a\nb"), "a\\x0ab");
+  EXPECT_EQ(excerpt("b\xffz\xc3\xa9"), "b\\xffz\\xc3\\xa9"); // not UTF-8: every byte beyond ASCII escaped
+  EXPECT_EQ(excerpt("abcdef", 3), "abc... (6 bytes)");
+  EXPECT_EQ(excerpt("ab\xc3\xa9", 3), "ab... (4 bytes)"); // not inside the two-byte e-acute
 }
 
 } // namespace

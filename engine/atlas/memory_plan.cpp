@@ -50,10 +50,11 @@ std::string fit_problem(const AtlasTopology& topo, int level, const DeviceInfo& 
   if (std::max(l.texels(), l.image_texels()) >= (std::size_t(1) << 31))
     return std::to_string(l.texels()) + " texels, more than 2^31 (32-bit texel indices)";
   if (plan.largest_allocation > device.max_allocation)
-    return format_bytes(plan.largest_allocation) + " in one layer, more than the device's largest "
-           "allocation (" + format_bytes(device.max_allocation) + ")";
+    return format_bytes(plan.largest_allocation) + " in one layer, more than " +
+           (device.address_space_limited ? device.memory_name() : "the device's largest allocation") + " (" +
+           format_bytes(device.max_allocation) + ")";
   if (plan.total > device.global_memory)
-    return format_bytes(plan.total) + " in all, more than the device's memory (" +
+    return format_bytes(plan.total) + " in all, more than " + device.memory_name() + " (" +
            format_bytes(device.global_memory) + ")";
   return "";
 }

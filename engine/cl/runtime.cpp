@@ -4,17 +4,18 @@
 #include "core/errors.h"
 
 #include <algorithm> // for std::search, std::min
-#include <cctype>    // for std::tolower
+#include <cctype>    // for std::tolower, std::isdigit
 #include <cerrno>    // for errno, ERANGE
-#include <cstdio>    // for std::snprintf
+#include <cstdio>    // for std::snprintf, std::fopen, std::fscanf
 #include <cstdlib>   // for std::getenv, std::strtoull
+#include <string>    // for std::string, std::to_string
+
+#include <sys/resource.h> // for getrlimit, RLIMIT_AS
+#include <unistd.h>       // for sysconf
 
 namespace meshpaint {
 namespace {
 
-const char* const kNoPlatform =
-  "no OpenCL platform found: install PoCL for the CPU (apt-get install pocl-opencl-icd) "
-  "or a GPU vendor's OpenCL driver";
 
 struct Found
 {
@@ -37,6 +38,10 @@ std::uint64_t memory_cap()
   const char* text = std::getenv("MESHPAINT_DEVICE_MEMORY");
   if (!text || !*text)
     return 0;
+  // strtoull would take a sign ("-1" as the largest number) or blanks.
+  if (!std::isdigit(static_cast<unsigned char>(text[0])))
+    throw InputError(std::string("MESHPAINT_DEVICE_MEMORY must be a size such as 512M or 2G, not '") + text +
+                     "'");
   char* end = nullptr;
   errno = 0;
   const unsigned long long n = std::strtoull(text, &end, 10);
@@ -51,6 +56,37 @@ std::uint64_t memory_cap()
   return std::uint64_t(n) << shift;
 }
 
+//! Bytes of address space this process may still map under its limit
+//! (ulimit -v), halved for the host's own copies; 0 when there is no limit.
+//! A device in host memory is treated as having no more, so plans that do
+//! not fit are refused before the driver fails to allocate.
+std::uint64_t address_space_left()
+{
+  rlimit limit{};
+  if (getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY)
+    return 0;
+  unsigned long long pages = 0;
+  if (std::FILE* statm = std::fopen("/proc/self/statm", "r")) {
+    if (std::fscanf(statm, "%llu", &pages) != 1)
+      pages = 0;
+    std::fclose(statm);
+  }
+  const std::uint64_t used = std::uint64_t(pages) * std::uint64_t(sysconf(_SC_PAGESIZE));
+  const std::uint64_t left = limit.rlim_cur > used ? std::uint64_t(limit.rlim_cur) - used : 0;
+  return std::max<std::uint64_t>(left / 2, 1);
+}
+
+//! A driver that cannot start under a low address-space limit looks like
+//! no driver at all: say which it more likely is.
+std::string missing(const std::string& what)
+{
+  rlimit limit{};
+  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+    return "out of host memory: " + what + " under the address-space limit of " +
+           std::to_string(std::uint64_t(limit.rlim_cur) >> 20) + " MiB (ulimit -v)";
+  return what + ": install PoCL for the CPU (apt-get install pocl-opencl-icd) or a GPU vendor's OpenCL driver";
+}
+
 std::vector<Found> enumerate()
 {
   apply_runtime_quirks();
@@ -58,10 +94,10 @@ std::vector<Found> enumerate()
   try {
     cl::Platform::get(&platforms);
   } catch (const cl::Error&) {
-    throw DeviceError(kNoPlatform);
+    throw DeviceError(missing("no OpenCL platform found"));
   }
   if (platforms.empty())
-    throw DeviceError(kNoPlatform);
+    throw DeviceError(missing("no OpenCL platform found"));
 
   std::vector<Found> found;
   for (std::size_t p = 0; p < platforms.size(); ++p) {
@@ -90,6 +126,11 @@ std::vector<Found> enumerate()
         info.global_memory = std::min(info.global_memory, cap);
         info.max_allocation = std::min(info.max_allocation, cap);
       }
+      if (const std::uint64_t left = info.host_memory ? address_space_left() : 0) {
+        info.global_memory = std::min(info.global_memory, left);
+        info.max_allocation = std::min(info.max_allocation, left);
+        info.address_space_limited = true;
+      }
       if (info.images) {
         info.image_max_width = dev.getInfo<CL_DEVICE_IMAGE2D_MAX_WIDTH>();
         info.image_max_height = dev.getInfo<CL_DEVICE_IMAGE2D_MAX_HEIGHT>();
@@ -98,8 +139,7 @@ std::vector<Found> enumerate()
     }
   }
   if (found.empty())
-    throw DeviceError("no OpenCL device found on any platform: install PoCL for the CPU "
-                      "(apt-get install pocl-opencl-icd) or a GPU vendor's OpenCL driver");
+    throw DeviceError(missing("no OpenCL device found on any platform"));
   return found;
 }
 
@@ -131,6 +171,11 @@ const Found& choose(const std::vector<Found>& found, const std::string& selector
 }
 
 } // namespace
+
+std::string DeviceInfo::memory_name() const
+{
+  return address_space_limited ? "the memory left under the address-space limit (ulimit -v)" : "the device's memory";
+}
 
 std::string DeviceInfo::summary() const
 {

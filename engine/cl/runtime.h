@@ -25,8 +25,13 @@ struct DeviceInfo
   bool host_memory = false;          //!< its memory is the host's (a CPU device, an integrated GPU)
   std::uint64_t global_memory = 0;   //!< bytes (at most MESHPAINT_DEVICE_MEMORY when set)
   std::uint64_t max_allocation = 0;  //!< bytes in one buffer or image (likewise)
+  bool address_space_limited = false; //!< host memory capped by the address-space limit (ulimit -v)
   std::size_t image_max_width = 0;   //!< texels
   std::size_t image_max_height = 0;  //!< texels
+
+  //! What global_memory stands for in messages: "the device's memory", or
+  //! the memory left under the address-space limit.
+  std::string memory_name() const;
 
   //! "pthread-skylake (Portable Computing Language, CPU, 23.4 GiB)"
   std::string summary() const;

@@ -1,6 +1,7 @@
 #include "core/format.h"
 
 #include <cctype>     // for std::tolower
+#include <cstdint>    // for std::uint32_t
 #include <cstdio>     // for std::snprintf
 #include <filesystem> // for std::filesystem::path
 
@@ -51,6 +52,54 @@ std::string json_string(const std::string& s)
     }
   }
   return out + "\"";
+}
+
+bool is_utf8(const std::string& s)
+{
+  std::size_t k = 0;
+  while (k < s.size()) {
+    const auto c = static_cast<unsigned char>(s[k]);
+    const int more = c < 0x80 ? 0 : (c & 0xE0) == 0xC0 ? 1 : (c & 0xF0) == 0xE0 ? 2 : (c & 0xF8) == 0xF0 ? 3 : -1;
+    if (more < 0 || s.size() - k <= std::size_t(more))
+      return false;
+    std::uint32_t code = more == 0 ? c : c & (0x3F >> more);
+    for (int m = 1; m <= more; ++m) {
+      const auto b = static_cast<unsigned char>(s[k + std::size_t(m)]);
+      if ((b & 0xC0) != 0x80)
+        return false;
+      code = (code << 6) | (b & 0x3F);
+    }
+    static const std::uint32_t smallest[] = {0, 0x80, 0x800, 0x10000};
+    if (code < smallest[more] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF))
+      return false;
+    k += std::size_t(more) + 1;
+  }
+  return true;
+}
+
+std::string excerpt(const std::string& s, std::size_t limit)
+{
+  const bool utf8 = is_utf8(s); // else every byte beyond ASCII is shown as \xNN
+  std::size_t cut = s.size();
+  if (cut > limit) {
+    cut = limit;
+    while (utf8 && cut > 0 && (static_cast<unsigned char>(s[cut]) & 0xC0) == 0x80)
+      --cut; // not inside a UTF-8 sequence
+  }
+  std::string out;
+  for (std::size_t k = 0; k < cut; ++k) {
+    const auto c = static_cast<unsigned char>(s[k]);
+    if (c < 0x20 || c == 0x7f || (c >= 0x80 && !utf8)) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", c);
+      out += buf;
+    } else {
+      out += char(c);
+    }
+  }
+  if (cut < s.size())
+    out += "... (" + std::to_string(s.size()) + " bytes)";
+  return out;
 }
 
 } // namespace meshpaint

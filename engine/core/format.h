@@ -18,4 +18,14 @@ std::string lower_extension(const std::string& path);
 //! `s` as a JSON string literal, quotes included.
 std::string json_string(const std::string& s);
 
+//! Whether `s` is well-formed UTF-8 (no overlong forms, surrogates or
+//! code points beyond U+10FFFF).
+bool is_utf8(const std::string& s);
+
+//! `s` for quoting in a one-line message: control bytes (and, when `s` is
+//! not UTF-8, every byte beyond ASCII) as \xNN, and
+//! cut after about `limit` bytes (on a UTF-8 boundary) with
+//! "... (N bytes)" when longer, so a huge name cannot flood the terminal.
+std::string excerpt(const std::string& s, std::size_t limit = 60);
+
 } // namespace meshpaint

@@ -28,7 +28,7 @@ std::string paint_fit_problem(const AtlasTopology& topology, int level, const De
   const std::size_t total = plan.total + paint_bytes(plan.finest, storage) +
                             WeldedSmoothing::bytes(plan.finest.texels(), topology.unique_vertices(level));
   if (total > device.global_memory)
-    return format_bytes(total) + " with its paint layers, more than the device's memory (" +
+    return format_bytes(total) + " with its paint layers, more than " + device.memory_name() + " (" +
            format_bytes(device.global_memory) + ")";
   return "";
 }

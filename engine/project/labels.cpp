@@ -1,6 +1,7 @@
 #include "project/labels.h"
 
 #include "core/errors.h"
+#include "core/format.h"
 
 #include <nlohmann/json.hpp> // for nlohmann::json
 
@@ -32,7 +33,7 @@ std::vector<LabelClass> parse_labels(const std::string& json_text)
       throw InputError(where + "must be an object with \"id\", \"name\" and \"colour\"");
     for (const auto& item : e.items())
       if (item.key() != "id" && item.key() != "name" && item.key() != "colour")
-        throw InputError(where + "unknown key \"" + item.key() + "\" (id, name, colour)");
+        throw InputError(where + "unknown key \"" + excerpt(item.key()) + "\" (id, name, colour)");
     LabelClass c;
     if (!e.contains("id") || !e["id"].is_number_integer() || e["id"].get<long long>() < 0 ||
         e["id"].get<long long>() > kMaxLabelId)
@@ -53,7 +54,7 @@ std::vector<LabelClass> parse_labels(const std::string& json_text)
     if (!ids.insert(c.id).second)
       throw InputError(where + "id " + std::to_string(c.id) + " is used twice");
     if (!names.insert(c.name).second)
-      throw InputError(where + "name \"" + c.name + "\" is used twice");
+      throw InputError(where + "name \"" + excerpt(c.name) + "\" is used twice");
     labels.push_back(c);
   }
   return labels;

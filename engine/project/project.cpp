@@ -2,6 +2,7 @@
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "core/format.h"
 #include "project/byte_stream.h"
 
 #include <zlib.h> // for deflate, inflate, crc32
@@ -287,6 +288,8 @@ void read_payload(ByteReader& r, Project& p)
   for (LabelClass& c : p.labels) {
     c.id = r.i32();
     c.name = r.string();
+    if (!is_utf8(c.name))
+      r.fail("a label name is not valid UTF-8: \"" + excerpt(c.name) + "\"");
     for (float& x : c.colour)
       x = r.f32();
   }
