@@ -6,6 +6,7 @@
 #include "SharedArrays.h"      // for meshpaint::share_arrays, refresh_shared_arrays
 #include "SurfaceConversion.h" // for meshpaint::to_base_mesh, to_polydata
 
+#include "atlas/patch_layout.h"        // for meshpaint::kMaxLevel
 #include "core/errors.h"               // for meshpaint::InputError
 #include "paint/paint_surface.h"       // for meshpaint::PaintSurface
 #include "paint/stroke_session.h"      // for meshpaint::StrokeSession
@@ -157,14 +158,53 @@ int vtkPaintSurface::ApplyStrokes(const char* json)
   const int ok = meshpaint::guarded(this->LastError, [&] {
     meshpaint::StrokeScript script = meshpaint::parse_stroke_script(json ? json : "");
     meshpaint::load_stroke_rasters(script);
-    if (script.level > 0 && !this->Impl->surface && this->Impl->queued.empty())
-      this->SetLevel(script.level);
+    if (script.level > 0) {
+      // A level already chosen is never overridden by a script.
+      const bool chosen = this->LevelSet || this->Impl->surface || !this->Impl->queued.empty();
+      if (chosen && script.level != this->Level)
+        throw meshpaint::InputError("the script's \"level\" " + std::to_string(script.level) +
+                                    " conflicts with the painting level " + std::to_string(this->Level) +
+                                    (this->LevelSet ? " (SetLevel or the loaded project)" : " (of the strokes before)"));
+      if (!chosen && this->Level != script.level) {
+        this->Level = script.level;
+        this->Modified();
+      }
+    }
     for (auto& s : script.strokes)
       this->Impl->queued.push_back(std::move(s));
   });
   if (ok)
     this->Modified();
   return ok;
+}
+
+void vtkPaintSurface::SetLevel(int level)
+{
+  if (level < 1 || level > meshpaint::kMaxLevel) {
+    this->LastError = "the painting level must be from 1 to " + std::to_string(meshpaint::kMaxLevel) + ", not " +
+                      std::to_string(level);
+    vtkErrorMacro(<< this->LastError);
+    return;
+  }
+  this->LevelSet = true;
+  if (level != this->Level) {
+    this->Level = level;
+    this->Modified();
+  }
+}
+
+void vtkPaintSurface::SetModelLevel(int level)
+{
+  if (level < 0 || level > meshpaint::kMaxLevel) {
+    this->LastError = "the model level must be from 0 (automatic) to " + std::to_string(meshpaint::kMaxLevel) +
+                      ", not " + std::to_string(level);
+    vtkErrorMacro(<< this->LastError);
+    return;
+  }
+  if (level != this->ModelLevel) {
+    this->ModelLevel = level;
+    this->Modified();
+  }
 }
 
 int vtkPaintSurface::Step(bool back)
@@ -247,6 +287,7 @@ int vtkPaintSurface::LoadProject(const char* path)
     in.built_from = 0;
     in.built_level = p.level;
     this->Level = p.level;
+    this->LevelSet = true;
     this->StrokeCount = 0;
     // Only what the next save carries over; the layers live in the surface.
     p.positions = {};

@@ -38,8 +38,11 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   //@{
-  /// Painting level, 1 to 12 (default 3). Changing it starts over.
-  vtkSetClampMacro(Level, int, 1, 12);
+  /// Painting level, 1 to 12 (default 3). Changing it starts over. A level
+  /// outside that range is refused, not clamped: the level stays and
+  /// GetLastError() says why (Python raises meshpaint.Error). Once set, a
+  /// stroke script's "level" must agree with it.
+  void SetLevel(int level);
   vtkGetMacro(Level, int);
   //@}
 
@@ -130,7 +133,8 @@ public:
   /// model.mtl at ModelLevel (0: the painting level - 2, at least 1) and the
   /// PNG texture maps. Queued strokes are painted first. 0 on failure.
   int ExportModel(const char* dir);
-  vtkSetClampMacro(ModelLevel, int, 0, 12);
+  /// 0 to 12; another value is refused as SetLevel() refuses one.
+  void SetModelLevel(int level);
   vtkGetMacro(ModelLevel, int);
   //@}
 
@@ -179,6 +183,7 @@ protected:
 
   int Level = 3;
   int ModelLevel = 0;
+  bool LevelSet = false; // by SetLevel() or a loaded project, not taken from a script
   std::string Device;
   std::string LastError;
   int StrokeCount = 0;

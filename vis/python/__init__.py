@@ -5,14 +5,85 @@ exceptions from C++, so vtkPaintSurface here is the wrapped class with its
 failing calls turned into meshpaint.Error, carrying the same message as the
 command line; everything else is the VTK class itself.
 """
-import vtkmodules.vtkCommonExecutionModel  # noqa: F401  (the base classes' module)
+from vtkmodules.vtkCommonCore import vtkVersion as _vtkVersion
 
-from . import meshpaintVis as _wrapped
-from .meshpaintVis import vtkCatmullClarkAtlasFilter, vtkPaintInteractorStyle, vtkSurfacePicker  # noqa: F401
+_BUILT_FOR_VTK = "@VTK_VERSION@"
+if _vtkVersion.GetVTKVersion() != _BUILT_FOR_VTK:
+    # Loading this module beside another VTK's libraries would crash the process.
+    raise ImportError("meshpaint is built for VTK %s, but this Python imports VTK %s: a second VTK is installed "
+                      "(pip's vtk, e.g. pulled by pyvista); remove it, see docs/python.md"
+                      % (_BUILT_FOR_VTK, _vtkVersion.GetVTKVersion()))
+
+import vtkmodules.vtkCommonExecutionModel  # noqa: E402,F401  (the base classes' module)
+
+from . import meshpaintVis as _wrapped  # noqa: E402
+from .meshpaintVis import vtkPaintInteractorStyle  # noqa: E402,F401
 
 
 class Error(RuntimeError):
     """A failed meshpaint call: bad input, a file problem, or the device."""
+
+
+def _ignore(caller, event):
+    pass
+
+
+def _quiet(obj):
+    """Keeps obj's own error messages (and its executive's) off the console: they
+    are raised as Error instead. Only obj is affected, never VTK's global state."""
+    if not getattr(obj, "_meshpaint_quiet", False):
+        obj.AddObserver("ErrorEvent", _ignore)
+        if hasattr(obj, "GetExecutive"):
+            obj.GetExecutive().AddObserver("ErrorEvent", _ignore)
+        obj._meshpaint_quiet = True
+
+
+def _refusing_out_of_range(cls):
+    """Makes every setter of a ranged property (VTK's clamping setters, which have
+    GetXMinValue/GetXMaxValue) raise Error for a value outside the range instead
+    of clamping it without a word."""
+    for name in dir(cls):
+        if not (name.startswith("Get") and name.endswith("MinValue")):
+            continue
+        prop = name[3:-len("MinValue")]
+        base = getattr(cls, "Set" + prop, None)
+        if base is None:
+            continue
+
+        def checked(self, value, _base=base, _prop=prop):
+            low = getattr(self, "Get%sMinValue" % _prop)()
+            high = getattr(self, "Get%sMaxValue" % _prop)()
+            if not low <= value <= high:
+                raise Error("%s must be from %s to %s, not %s" % (_prop, low, high, value))
+            _base(self, value)
+
+        checked.__doc__ = base.__doc__
+        setattr(cls, "Set" + prop, checked)
+    return cls
+
+
+@_refusing_out_of_range
+class vtkCatmullClarkAtlasFilter(_wrapped.vtkCatmullClarkAtlasFilter):
+    __doc__ = _wrapped.vtkCatmullClarkAtlasFilter.__doc__
+
+
+@_refusing_out_of_range
+class vtkSurfacePicker(_wrapped.vtkSurfacePicker):
+    __doc__ = _wrapped.vtkSurfacePicker.__doc__
+
+
+def to_pyvista(data):
+    """The output of a meshpaint filter (updated first) or any vtkPolyData as a
+    pyvista.PolyData sharing its arrays: pyvista.wrap() of it. Needs PyVista
+    installed over Debian's VTK, never with a VTK of its own (docs/python.md)."""
+    try:
+        import pyvista
+    except ImportError as e:
+        raise Error("to_pyvista needs PyVista installed without a second VTK: see docs/python.md") from e
+    if hasattr(data, "GetOutputDataObject"):
+        data.Update()
+        data = data.GetOutputDataObject(0)
+    return pyvista.wrap(data)
 
 
 class vtkPaintSurface(_wrapped.vtkPaintSurface):
@@ -21,6 +92,20 @@ class vtkPaintSurface(_wrapped.vtkPaintSurface):
     def _check(self, ok):
         if not ok:
             raise Error(self.GetLastError())
+
+    def _set_checked(self, setter, getter, level):
+        _quiet(self)
+        setter(self, level)
+        if getter() != level:
+            raise Error(self.GetLastError())
+
+    def SetLevel(self, level):
+        """Painting level, 1 to 12; raises Error for any other (nothing is clamped)."""
+        self._set_checked(_wrapped.vtkPaintSurface.SetLevel, self.GetLevel, level)
+
+    def SetModelLevel(self, level):
+        """Level of ExportModel's model, 0 (automatic) to 12; raises Error for any other."""
+        self._set_checked(_wrapped.vtkPaintSurface.SetModelLevel, self.GetModelLevel, level)
 
     def ApplyStrokes(self, json_text):
         """Checks a stroke script and queues its strokes for the next Update()."""
@@ -78,13 +163,14 @@ class vtkPaintSurface(_wrapped.vtkPaintSurface):
 
     def Update(self, *args):
         """Paints the queued strokes; raises Error if this update fails."""
-        self.GlobalWarningDisplayOff()
+        _quiet(self)
         failed = self.GetFailedUpdates()
         super().Update(*args)
         if self.GetFailedUpdates() != failed:
             raise Error(self.GetLastError())
 
 
+@_refusing_out_of_range
 class vtkPaintView(_wrapped.vtkPaintView):
     __doc__ = _wrapped.vtkPaintView.__doc__
 
