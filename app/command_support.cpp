@@ -3,7 +3,8 @@
 #include "core/errors.h"
 #include "project/project_surface.h"
 
-#include <iostream> // for std::cerr
+#include <filesystem>   // for std::filesystem
+#include <iostream>     // for std::cerr
 #include <new>          // for std::bad_alloc
 #include <system_error> // for std::system_error, std::errc
 
@@ -122,6 +123,16 @@ std::unique_ptr<PaintSurface> open_paint_surface(const std::shared_ptr<Runtime>&
   if (input.project)
     return open_project_surface(runtime, *input.project, storage);
   return std::make_unique<PaintSurface>(runtime, input.loaded, level, storage);
+}
+
+void check_output_folder(const std::string& path)
+{
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw IOError("cannot write '" + path + "': no directory '" + dir.string() + "'");
 }
 
 AtlasStorage chosen_storage(const Args& args, const Runtime& runtime)

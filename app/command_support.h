@@ -52,6 +52,11 @@ void check_edit_levels(const StrokeScript& script, int level);
 //! A painting surface at `level`: the project's state, or the fresh mesh.
 std::unique_ptr<PaintSurface> open_paint_surface(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage,
                                                  const MeshOrProject& input, int level);
+//! Checked before long work, so that it does not fail only at the end (as
+//! write_atomically() would).
+//! \throw IOError when the folder that is to hold `path` does not exist.
+void check_output_folder(const std::string& path);
+
 //! --storage when given, else the device's default.
 AtlasStorage chosen_storage(const Args& args, const Runtime& runtime);
 

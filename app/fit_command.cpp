@@ -2,6 +2,7 @@
 // whose finest limit surface lies on the scan, and the fit error.
 
 #include "commands.h"
+#include "progress_bar.h"
 #include "table.h"
 
 #include "VtkSurfaceQuery.h"
@@ -54,16 +55,14 @@ int fit_command(const Argv& argv)
     throw InputError("-o PROJECT.meshpaint is required");
   if (!is_project_path(out))
     throw InputError("-o needs a file name ending in .meshpaint, not '" + out + "'");
+  check_output_folder(out);
   if (args.flag("--direct") && args.has("--base-faces"))
     throw InputError("--base-faces and --direct exclude each other");
   const int base_faces = args.integer("--base-faces", 0, 4, 10000000);
   const int level = args.integer("--level", 3, 1, kMaxLevel);
   const int passes = args.integer("--passes", 2, 1, 100);
-  const bool quiet = args.flag("--quiet");
-  const auto say = [&](const std::string& line) {
-    if (!quiet)
-      std::cerr << "meshpaint fit: " << line << "\n";
-  };
+  ProgressBar bar("meshpaint fit", args.flag("--quiet"));
+  const auto say = [&](const std::string& line) { bar.note(line); };
 
   Timer total, t;
   const std::string path = args.positionals()[0];
@@ -95,7 +94,7 @@ int fit_command(const Argv& argv)
   t.restart();
   FitOptions options;
   options.passes = passes;
-  options.progress = say;
+  options.progress = &bar;
   const FitReport fit = fit_atlas(surface.atlas(), scan, vtk_surface_queries(), options);
   surface.geometry_changed();
   const double fit_ms = t.ms();

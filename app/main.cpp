@@ -27,7 +27,7 @@ commands:
   subdivide MESH --level L [--limit] [--quiet] -o OUT.{obj,ply,vtp}
                                       the level-L surface (welded quads); --limit: limit
                                       positions and point array Normals
-  bench subdivide MESH [--level L] [--json] [--repeats N]
+  bench subdivide MESH [--level L] [--json] [--repeats N] [--quiet]
                                       kernels against OpenSubdiv's CpuEvaluator (level 3)
   paint MESH --strokes S.json [--level L] [--model-level M] [--lod L] [--two-sided] [--quiet] [-o OUTDIR]
         [--save P.meshpaint] [--labels labels.json]
@@ -49,7 +49,7 @@ commands:
                                       the scan with the project's channels as point
                                       arrays (label, diffuse, ...); --geometry: moved
                                       as the surface was sculpted or smoothed
-  bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases]
+  bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases] [--quiet]
                                       brush step times as the paper's Table 1, and
                                       smoothing against VTK and OpenMesh
   bench view [--steps N]              the window's frame times while painting, with and

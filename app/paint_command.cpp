@@ -3,6 +3,7 @@
 
 #include "commands.h"
 #include "picture_options.h"
+#include "progress_bar.h"
 #include "table.h"
 
 #include "PaintingExport.h"
@@ -22,6 +23,7 @@
 
 #include <algorithm> // for std::max
 #include <iostream>  // for std::cout, std::cerr
+#include <optional>  // for std::optional
 
 namespace meshpaint::cli {
 
@@ -35,7 +37,10 @@ void paint_job(PaintScene& scene, const StrokeScript& script, int model_level, c
   }
   Table table({"stroke", "tool", "dabs", "on surface", "patches", "ms", "note"});
   StrokeSession session(scene);
-  Timer progress;
+  ProgressBar bar("meshpaint paint", quiet);
+  std::optional<ProgressTask> painting;
+  if (!script.strokes.empty())
+    painting.emplace(&bar, "painting " + std::to_string(script.strokes.size()) + " strokes", script.strokes.size());
   for (std::size_t k = 0; k < script.strokes.size(); ++k) {
     const Stroke& stroke = script.strokes[k];
     // A scene's stroke: its dabs over every object, its time the sum.
@@ -51,27 +56,27 @@ void paint_job(PaintScene& scene, const StrokeScript& script, int model_level, c
     std::string note = r.left_surface ? "left the surface" : "";
     if (r.stretch >= kUndersampledStretch) {
       note += std::string(note.empty() ? "" : "; ") + "stretched " + format_fixed(r.stretch, 1) + "x";
-      std::cerr << "warning: stroke " << k << ": edit level " << stroke.edit_level()
-                << " undersamples the surface here (a patch stretched " << format_fixed(r.stretch, 1)
-                << " times); edit at a finer level\n";
+      bar.print("warning: stroke " + std::to_string(k) + ": edit level " + std::to_string(stroke.edit_level()) +
+                " undersamples the surface here (a patch stretched " + format_fixed(r.stretch, 1) +
+                " times); edit at a finer level");
     }
     table.add({std::to_string(k), tool_name(stroke.tool), std::to_string(r.dabs), std::to_string(r.dabs_applied),
                grouped(r.patches_touched), format_fixed(r.ms, 2), note});
-    if (!quiet && progress.ms() > 1000.0) {
-      std::cerr << "meshpaint paint: stroke " << k + 1 << " of " << script.strokes.size() << "\n";
-      progress.restart();
-    }
+    painting->step(k + 1);
   }
+  painting.reset();
   std::cout << "painted    " << names << " at level " << scene.surface(0).level() << ", " << script.strokes.size()
             << " strokes\n";
   if (!script.strokes.empty())
     table.print(std::cout);
   if (dir.empty())
     return;
+  ProgressTask writing(&bar, "writing " + dir, scene.size());
   for (std::size_t o = 0; o < scene.size(); ++o) {
     PaintSurface& surface = scene.surface(o);
     const std::string out = scene.folder(dir, o);
     const PaintingExportReport written = export_painting(surface, model_level, out);
+    writing.step(o + 1);
     std::cout << "wrote      " << written.surface_path << ", " << out << "/model.obj (level " << model_level << ", "
               << written.model_quads << " quads) with model.mtl and " << written.map_width << "x"
               << written.map_height << " texture maps\n";

@@ -1,4 +1,5 @@
 #include "commands.h"
+#include "progress_bar.h"
 
 #include "SurfaceConversion.h"
 
@@ -12,6 +13,7 @@
 #include <algorithm>  // for std::max
 #include <filesystem> // for std::filesystem::path
 #include <iostream>   // for std::cerr
+#include <optional>   // for std::optional
 
 namespace meshpaint::cli {
 
@@ -42,6 +44,7 @@ int subdivide_command(const Argv& argv)
   if (out.empty())
     throw InputError("-o OUT.{obj,ply,vtp} is required");
   check_surface_format(out);
+  check_output_folder(out);
 
   Timer t;
   const MeshOrProject input = open_mesh_or_project(args.positionals()[0]);
@@ -53,9 +56,14 @@ int subdivide_command(const Argv& argv)
                      std::to_string(own) + " project");
   const double load_ms = t.ms();
   auto runtime = open_device(args);
+  ProgressBar bar("meshpaint subdivide", args.flag("--quiet"));
+  // Four phases of very different lengths: enough to see which one runs.
+  std::optional<ProgressTask> task;
+  task.emplace(&bar, "level " + std::to_string(level) + " into " + out, 4);
   t.restart();
   Atlas atlas(runtime, input.mesh(), std::max(level, own), chosen_storage(args, *runtime));
   const double setup_ms = t.ms();
+  task->step(1);
   t.restart();
   atlas.subdivide(1, own);
   if (input.project)
@@ -66,11 +74,15 @@ int subdivide_command(const Argv& argv)
     atlas.reduce(own, level);
   atlas.finish();
   const double kernel_ms = t.ms();
+  task->step(2);
   t.restart();
   const WeldedSurface surface = level_surface(atlas, level, args.flag("--limit"));
   const double read_ms = t.ms();
+  task->step(3);
   t.restart();
   write_any(surface, out);
+  task->step(4);
+  task.reset();
   if (!args.flag("--quiet"))
     std::cerr << "meshpaint subdivide: " << out << ": level " << level << ", " << surface.points.size()
               << " vertices, " << surface.quads.size() << " quads; load " << format_fixed(load_ms, 1)

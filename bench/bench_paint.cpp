@@ -4,6 +4,7 @@
 
 #include "benchmarks.h"
 #include "host_memory.h"
+#include "progress_bar.h"
 #include "table.h"
 
 #include "SurfaceConversion.h"
@@ -21,6 +22,7 @@
 
 #include <algorithm> // for std::nth_element
 #include <array>     // for std::array
+#include <optional>  // for std::optional
 #include <cmath>     // for std::sqrt
 #include <iostream>  // for std::cout
 #include <iterator>  // for std::size
@@ -262,9 +264,16 @@ int bench_paint(const Args& args)
     json_phases += std::string(json_phases.empty() ? "" : ",") + "{\"mesh\":" + json_string(name) +
                    ",\"step\":" + json_string(step) + "," + fields + "}";
   };
+  ProgressBar bar("meshpaint bench", args.flag("--quiet"));
+  std::size_t rows = 0, row_done = 0;
+  for (const Row& row : kRows)
+    rows += only.empty() || row.mesh == only + ".off";
+  std::optional<ProgressTask> task;
+  task.emplace(&bar, "paint on " + std::to_string(rows) + " meshes", rows);
   for (const Row& row : kRows) {
     if (!only.empty() && row.mesh != only + ".off")
       continue;
+    task->step(row_done++);
     const BaseMesh mesh = load_mesh(scans_dir() + "/" + row.mesh);
     PaintSurface surface(runtime, mesh, row.level, storage);
     surface.undo_log().set_recording(false); // the paper's step has no undo
@@ -328,6 +337,8 @@ int bench_paint(const Args& args)
                      ",\"meshpaint_stroke_ms\":" + std::to_string(r.meshpaint_stroke_ms) + "}";
     }
   }
+  task->step(rows);
+  task.reset();
   const HostMemory host = probe_host_memory();
   if (json) {
     std::cout << "{\"tool\":" << json_string(tool) << ",\"steps\":" << steps << ",\"device\":"

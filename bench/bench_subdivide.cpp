@@ -3,6 +3,7 @@
 
 #include "benchmarks.h"
 #include "host_memory.h"
+#include "progress_bar.h"
 #include "table.h"
 
 #include "atlas/atlas.h"
@@ -16,6 +17,7 @@
 #include <cmath>    // for std::sqrt
 #include <iostream> // for std::cout
 #include <map>      // for std::map
+#include <optional> // for std::optional
 
 namespace meshpaint::cli {
 namespace {
@@ -49,6 +51,9 @@ int bench_subdivide(const Args& args)
   const AtlasStorage storage =
     args.has("--storage") ? parse_storage(args.value("--storage")) : default_storage(runtime->info());
 
+  ProgressBar bar("meshpaint bench", args.flag("--quiet"));
+  std::optional<ProgressTask> task;
+  task.emplace(&bar, "subdivide to level " + std::to_string(level) + ", " + std::to_string(repeats) + " runs each", 3);
   Timer t;
   Atlas atlas(runtime, mesh, level, storage);
   const double atlas_ms = t.ms();
@@ -60,13 +65,17 @@ int bench_subdivide(const Args& args)
   // OpenSubdiv gets the same spatially ordered mesh the atlas works on.
   const BaseMesh& base = atlas.base_mesh();
   StencilPeer peer(base, level);
+  task->step(1);
   const std::vector<double> osd = time_repeats(repeats, [&] { peer.evaluate(); });
+  task->step(2);
 
   // Far::PrimvarRefiner, level by level: OpenSubdiv's other CPU path.
   auto refiner = make_refiner(base);
   refine_uniform(*refiner, level, false);
   const std::vector<double> primvar =
     time_repeats(std::max(1, repeats / 3), [&] { interpolate_levels(*refiner, base.points); });
+  task->step(3);
+  task.reset();
 
   // Both must have computed the same surface, or the timings mean nothing.
   const WeldedSurface ours = level_surface(atlas, level, false);

@@ -13,8 +13,8 @@
 namespace meshpaint::cli {
 namespace {
 
-const char* const kUsage = R"(usage: meshpaint bench subdivide MESH [--level L] [--json] [--repeats N]
-       meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases]
+const char* const kUsage = R"(usage: meshpaint bench subdivide MESH [--level L] [--json] [--repeats N] [--quiet]
+       meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases] [--quiet]
        meshpaint bench view [--steps N]
        (the same as meshpaint-bench ...)
 
@@ -23,7 +23,8 @@ const char* const kUsage = R"(usage: meshpaint bench subdivide MESH [--level L] 
   view        the window's frame times while painting, with and without level of detail,
               and pick latency (needs X)
 
-options: --device SEL (gpu, cpu, P:D or part of a name), --storage buffer|image, --quiet
+options: --device SEL (gpu, cpu, P:D or part of a name), --storage buffer|image;
+subdivide and paint: --quiet (no progress on stderr)
 more: docs/cli.md
 )";
 
@@ -38,13 +39,13 @@ int bench(const Argv& argv)
     std::cout << "meshpaint-bench " << MESHPAINT_VERSION << "\n";
     return 0;
   }
-  Args args("bench", argv, {"--json", "--phases"}, {"--level", "--repeats", "--steps", "--tool", "--mesh", "--device", "--storage"});
+  Args args("bench", argv, {"--json", "--phases", "--quiet"}, {"--level", "--repeats", "--steps", "--tool", "--mesh", "--device", "--storage"});
   const std::string what = args.positionals().empty() ? "" : args.positionals()[0];
   // One parser for all three; an option of another benchmark is refused.
   const std::map<std::string, std::vector<std::string>> foreign = {
     {"subdivide", {"--phases", "--steps", "--tool", "--mesh"}},
     {"paint", {"--level", "--repeats"}},
-    {"view", {"--json", "--phases", "--level", "--repeats", "--tool", "--mesh"}}};
+    {"view", {"--json", "--phases", "--level", "--repeats", "--tool", "--mesh", "--quiet"}}};
   if (const auto found = foreign.find(what); found != foreign.end())
     for (const std::string& option : found->second)
       if (args.has(option) || args.flag(option))
@@ -55,8 +56,8 @@ int bench(const Argv& argv)
     return bench_paint(args);
   if (what == "view")
     return bench_view(args);
-  throw InputError("usage: meshpaint bench subdivide MESH [--level L] [--json] [--repeats N] | "
-                   "meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases] | "
+  throw InputError("usage: meshpaint bench subdivide MESH [--level L] [--json] [--repeats N] [--quiet] | "
+                   "meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases] [--quiet] | "
                    "meshpaint bench view [--steps N] (see meshpaint bench --help)");
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm> // for std::max, std::max_element
 #include <cmath>     // for std::sqrt
+#include <optional>  // for std::optional
 
 namespace meshpaint {
 namespace {
@@ -63,10 +64,7 @@ std::vector<std::array<int, 3>> triangles_of(const BaseMesh& mesh)
 FitReport fit_atlas(Atlas& atlas, const BaseMesh& scan, const SurfaceQueryFactory& make_query,
                     const FitOptions& options)
 {
-  const auto say = [&](const std::string& line) {
-    if (options.progress)
-      options.progress(line);
-  };
+  const auto say = [&](const std::string& line) { note(options.progress, line); };
   const int level = atlas.max_level();
   const LevelLayout l = atlas.layout(level);
   const std::vector<int> map = weld_map(atlas.topology(), l);
@@ -92,7 +90,12 @@ FitReport fit_atlas(Atlas& atlas, const BaseMesh& scan, const SurfaceQueryFactor
     const std::vector<Float4> limit = atlas.read_limit_positions();
     const std::vector<Float4> normals = atlas.read_limit_normals();
     report.ray_misses = 0;
+    std::optional<ProgressTask> task;
+    task.emplace(options.progress, "pass " + std::to_string(pass + 1) + " of " + std::to_string(options.passes),
+                 welded);
     for (std::size_t w = 0; w < welded; ++w) {
+      if (w % 1024 == 0)
+        task->step(w);
       const Vec3 p = xyz(limit[first[w]]), n = xyz(normals[first[w]]);
       const Vec3 closest = scan_query->closest_point(p);
       const Vec3 to = sub(closest, p);
@@ -106,6 +109,8 @@ FitReport fit_atlas(Atlas& atlas, const BaseMesh& scan, const SurfaceQueryFactor
       }
       delta[w] = sub(target, p);
     }
+    task->step(welded);
+    task.reset();
     for (std::size_t t = 0; t < map.size(); ++t)
       for (int a = 0; a < 3; ++a)
         control[t][a] += delta[std::size_t(map[t])][a];

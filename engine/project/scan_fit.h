@@ -3,6 +3,7 @@
 #pragma once
 
 #include "atlas/atlas.h"
+#include "core/progress.h"
 #include "mesh/base_mesh.h"
 
 #include <array>      // for std::array
@@ -50,8 +51,9 @@ struct FitReport
 struct FitOptions
 {
   int passes = 2; //!< limit evaluations and corrections
-  //! Receives one line per step (progress), may be empty.
-  std::function<void(const std::string&)> progress;
+  //! Receives each pass as a task (steps: points moved) and notes between
+  //! them; may be null.
+  Progress* progress = nullptr;
 };
 
 //! The scan's faces fanned into triangles.

@@ -152,3 +152,78 @@ def test_low_memory_is_one_line_never_an_abort(kib, tmp_path):
     assert r.returncode in (2, 3), r.stderr[:3000]
     line = one_line(r)
     assert "memory" in line, line
+
+
+def stroke_count():
+    with open(STROKES) as f:
+        return len(json.load(f)["strokes"])
+
+
+def test_progress_is_plain_lines_when_stderr_is_not_a_terminal(tmp_path):
+    out = tmp_path / "painted"
+    r = run("paint", CUBE, "--strokes", STROKES, "-o", str(out))
+    assert r.returncode == 0, r.stderr
+    lines = r.stderr.splitlines()
+    assert all(line.startswith("meshpaint paint: ") for line in lines), r.stderr
+    assert "\r" not in r.stderr and "\x1b" not in r.stderr
+    assert any(re.fullmatch(r"meshpaint paint: painting %d strokes: 100%% \([0-9.]+ s\)" % stroke_count(), line)
+               for line in lines), r.stderr
+    assert any(re.fullmatch(r"meshpaint paint: writing %s: 100%% \([0-9.]+ s\)" % re.escape(str(out)), line)
+               for line in lines), r.stderr
+
+    r = run("fit", CUBE, "--level", "2", "--passes", "2", "-o", str(tmp_path / "p.meshpaint"))
+    assert r.returncode == 0, r.stderr
+    for k in (1, 2):
+        shown = [line for line in r.stderr.splitlines() if re.match(r"meshpaint fit: pass %d of 2: \d+%%" % k, line)]
+        # Lines on the way (at most one a second) say the time left; the last one the time taken.
+        assert re.fullmatch(r"meshpaint fit: pass %d of 2: 100%% \([0-9.]+ s\)" % k, shown[-1]), r.stderr
+        for line in shown[:-1]:
+            assert re.fullmatch(r"meshpaint fit: pass \d of 2: \d+% \(\d+:\d\d left\)", line), line
+
+
+@pytest.mark.parametrize("command", [
+    ["paint", CUBE, "--strokes", STROKES, "-o", "{tmp}/painted"],
+    ["fit", CUBE, "--level", "2", "-o", "{tmp}/p.meshpaint"],
+    ["subdivide", CUBE, "--level", "3", "-o", "{tmp}/s.vtp"],
+])
+def test_quiet_prints_no_progress(command, tmp_path):
+    args = [a.format(tmp=tmp_path) for a in command]
+    r = run(*args)
+    assert r.returncode == 0 and "100%" in r.stderr, r.stderr
+    r = run(*args, "--quiet")
+    assert r.returncode == 0, r.stderr
+    assert r.stderr == ""
+
+
+def test_progress_is_a_bar_on_a_terminal(tmp_path):
+    pty = pytest.importorskip("pty")
+    master, slave = pty.openpty()
+    try:
+        p = subprocess.Popen([BIN, "subdivide", CUBE, "--level", "3", "-o", str(tmp_path / "s.vtp")],
+                             stdout=subprocess.PIPE, stderr=slave, env=dict(os.environ, TERM="xterm"))
+        os.close(slave)
+        p.communicate(timeout=600)
+        shown = b""
+        while True:
+            try:
+                chunk = os.read(master, 65536)
+            except OSError:  # EIO: the terminal's other end is closed and drained
+                break
+            if not chunk:
+                break
+            shown += chunk
+    finally:
+        os.close(master)
+    assert p.returncode == 0
+    text = shown.decode()
+    # Redrawn in place: a bar with the percentage and the time left, then the line finished.
+    assert re.search(r"\rmeshpaint subdivide: level 3 into .*s\.vtp \[[#.]{30}\] \d+% (--:--|\d+:\d\d) left\x1b\[K",
+                     text), repr(text)
+    assert re.search(r"\rmeshpaint subdivide: level 3 into .*s\.vtp: 100% \([0-9.]+ s\)\x1b\[K", text), repr(text)
+
+
+def test_docs_show_the_usage_text_as_printed():
+    with open(os.path.join(SOURCE, "docs", "cli.md")) as f:
+        doc = f.read()
+    block = re.search(r"\n```\n(usage: meshpaint COMMAND \[ARGS\]\n.*?)```", doc, re.S).group(1)
+    assert run("help").stdout == block
