@@ -3,12 +3,9 @@
 #include "PaintingExport.h"    // for meshpaint::export_model, make_directory
 #include "SurfaceConversion.h" // for meshpaint::write_vtp
 
-#include "core/atomic_file.h"        // for meshpaint::write_atomically
-#include "core/errors.h"             // for meshpaint::IOError
+#include "core/atomic_file.h"        // for meshpaint::write_bytes_atomically
 #include "paint/paint_scene.h"       // for meshpaint::PaintScene
 #include "project/project_surface.h" // for meshpaint::save_painted_project
-
-#include <fstream> // for std::ofstream
 
 namespace meshpaint {
 
@@ -18,12 +15,7 @@ std::string save_session(PaintScene& scene, const std::string& recording,
 {
   // One recording for the scene; each object's surface in its own folder.
   make_directory(dir);
-  write_atomically(dir + "/strokes.json", [&](const std::string& tmp) {
-    std::ofstream out(tmp, std::ios::binary);
-    out << recording;
-    if (!out.flush())
-      throw IOError("cannot write '" + dir + "/strokes.json'");
-  });
+  write_bytes_atomically(dir + "/strokes.json", {recording});
   for (std::size_t o = 0; o < scene.size(); ++o) {
     const std::string folder = scene.folder(dir, o);
     make_directory(folder);
