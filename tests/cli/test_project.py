@@ -157,7 +157,7 @@ def test_damaged_projects_give_one_line_and_exit_2(plane, tmp_path, change, mess
 @pytest.mark.parametrize("args, message", [
     (["--level", "4", "--save", "{tmp}/y.meshpaint"], r"is a level-3 project; --level 4 cannot change that"),
     (["--save", "{tmp}/x.vtp"], r"--save needs a file name ending in .meshpaint, not '.*x.vtp'"),
-    ([], r"-o OUTDIR or --save P.meshpaint is required"),
+    ([], r"-o OUTDIR, --gltf FILE or --save P.meshpaint is required"),
     (["--save", "{tmp}/y.meshpaint", "--labels", "{tmp}/labels.json"], r"labels.json: label 0: \"colour\" must be \[r, g, b\]"),
 ])
 def test_project_arguments_are_checked(plane, tmp_path, args, message):
