@@ -1,5 +1,6 @@
 #include "command_support.h"
 
+#include "core/atomic_file.h"
 #include "core/errors.h"
 #include "project/project_surface.h"
 
@@ -26,11 +27,13 @@ bool out_of_host_resources(const std::exception& e)
                     system->code() == std::errc::not_enough_memory);
 }
 
-//! 2: the user's input or the device's limits; 3: the device or the host's
+//! 2: the user's input or the device's limits; 3: the device, the disk or the host's
 //! memory; 1: a defect.
 int exit_code(const std::exception& e)
 {
   using namespace meshpaint;
+  if (dynamic_cast<const StorageError*>(&e))
+    return 3;
   if (dynamic_cast<const InputError*>(&e) || dynamic_cast<const IOError*>(&e) ||
       dynamic_cast<const ResourceError*>(&e))
     return 2;
@@ -55,6 +58,7 @@ std::string message(const std::exception& e, int code)
 
 int run_command(const std::string& program, const std::string& command, const std::function<int()>& run)
 {
+  remove_temporaries_on_signals(); // an interrupted save leaves no temporary behind
   try {
     return run();
   } catch (const std::exception& e) {

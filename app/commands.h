@@ -33,12 +33,12 @@ int fit_command(const Argv& argv);
 int view_command(const Argv& argv);
 
 //! Paints `script` onto the surface and, unless DIR is empty, writes
-//! DIR/surface.vtp and the textured model (model.obj, model.mtl, PNG maps),
-//! printing a table of the strokes.
+//! DIR/surface.vtp (with `labels` as field data) and the textured model
+//! (model.obj, model.mtl, model.gltf, PNG maps), printing a table of the strokes.
 //! With `lod` between 1 and the painting level (exclusive), also
 //! DIR/surface_lodL.vtp: the painted surface at that coarser level.
 void paint_job(PaintScene& scene, const StrokeScript& script, int model_level, const std::string& dir, bool quiet,
-               int lod = -1);
+               int lod = -1, const std::vector<LabelClass>& labels = {});
 
 //! \throw InputError unless the path ends in .obj, .ply or .vtp (any case).
 void check_surface_format(const std::string& path);

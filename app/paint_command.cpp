@@ -12,6 +12,7 @@
 #include "SurfaceRendering.h"
 
 #include "core/errors.h"
+#include "core/file_lock.h"
 #include "core/format.h"
 #include "core/timer.h"
 #include "project/project_surface.h"
@@ -28,7 +29,7 @@
 namespace meshpaint::cli {
 
 void paint_job(PaintScene& scene, const StrokeScript& script, int model_level, const std::string& dir, bool quiet,
-               int lod)
+               int lod, const std::vector<LabelClass>& labels)
 {
   std::string names;
   for (std::size_t o = 0; o < scene.size(); ++o) {
@@ -75,10 +76,10 @@ void paint_job(PaintScene& scene, const StrokeScript& script, int model_level, c
   for (std::size_t o = 0; o < scene.size(); ++o) {
     PaintSurface& surface = scene.surface(o);
     const std::string out = scene.folder(dir, o);
-    const PaintingExportReport written = export_painting(surface, model_level, out);
+    const PaintingExportReport written = export_painting(surface, model_level, out, labels);
     writing.step(o + 1);
     std::cout << "wrote      " << written.surface_path << ", " << out << "/model.obj (level " << model_level << ", "
-              << written.model_quads << " quads) with model.mtl and " << written.map_width << "x"
+              << written.model_quads << " quads) with model.mtl, model.gltf and " << written.map_width << "x"
               << written.map_height << " texture maps\n";
     if (lod > 0 && lod < surface.level()) {
       const std::string lod_out = out + "/surface_lod" + std::to_string(lod) + ".vtp";
@@ -93,14 +94,17 @@ int paint_command(const Argv& argv)
 {
   Args args("paint", argv, {"--quiet", "--two-sided"},
             {"--strokes", "--level", "--model-level", "--lod", "-o", "--save", "--labels", "--device", "--storage",
-             "--screenshot", "--camera", "--size", "--subsurface"});
+             "--screenshot", "--camera", "--size", "--subsurface", "--gltf"});
   args.expect_positionals(1, 64, "MESH|PROJECT... --strokes S.json [--level L] [--model-level M] [--lod L] [--two-sided] "
-                                "[-o OUTDIR] [--save P.meshpaint] [--labels labels.json] "
+                                "[-o OUTDIR] [--gltf FILE.glb|FILE.gltf] [--save P.meshpaint] [--labels labels.json] "
                                 "[--screenshot OUT.png [--camera AZ,EL,ZOOM] [--size WxH] [--subsurface N]]");
   const std::string dir = args.value("-o");
   const std::string save = args.value("--save");
-  if (dir.empty() && save.empty())
-    throw InputError("-o OUTDIR or --save P.meshpaint is required");
+  const std::string gltf = args.value("--gltf");
+  if (dir.empty() && save.empty() && gltf.empty())
+    throw InputError("-o OUTDIR, --gltf FILE or --save P.meshpaint is required");
+  if (args.has("--gltf") && lower_extension(gltf) != ".glb" && lower_extension(gltf) != ".gltf")
+    throw InputError("--gltf must name a .glb or .gltf file, not '" + gltf + "'");
   if (!save.empty() && !is_project_path(save))
     throw InputError("--save needs a file name ending in .meshpaint, not '" + save + "'");
   if (!args.has("--strokes") && save.empty())
@@ -116,6 +120,14 @@ int paint_command(const Argv& argv)
   const std::vector<std::string>& paths = args.positionals();
   if (paths.size() > 1 && !save.empty())
     throw InputError("--save keeps one surface: give one MESH or PROJECT, not " + std::to_string(paths.size()));
+  if (paths.size() > 1 && !gltf.empty())
+    throw InputError("--gltf keeps one surface: give one MESH or PROJECT, not " + std::to_string(paths.size()));
+  // Runs continuing one project take turns from reading it to saving it, so
+  // none saves over strokes another added meanwhile.
+  const FileLock turn(save, [&] {
+    if (!args.flag("--quiet"))
+      std::cerr << "meshpaint paint: waiting for another meshpaint to finish with " << save << "\n";
+  });
   std::vector<MeshOrProject> inputs;
   for (const std::string& path : paths)
     inputs.push_back(open_mesh_or_project(path));
@@ -143,7 +155,13 @@ int paint_command(const Argv& argv)
   if (!args.flag("--quiet"))
     std::cerr << "meshpaint paint: " << (inputs.size() == 1 ? "surface" : "surfaces") << " ready in "
               << format_fixed(setup.ms(), 1) << " ms\n";
-  paint_job(scene, script, model_level, dir, args.flag("--quiet"), lod);
+  const std::vector<LabelClass>& classes =
+    args.has("--labels") ? new_labels : input.project ? input.project->labels : std::vector<LabelClass>();
+  paint_job(scene, script, model_level, dir, args.flag("--quiet"), lod, classes);
+  if (!gltf.empty()) {
+    export_gltf(scene.surface(0), model_level, gltf);
+    std::cout << "wrote      " << gltf << " (level " << model_level << ", textures inside)\n";
+  }
   if (!screenshot.empty()) {
     auto all = vtkSmartPointer<vtkAppendPolyData>::New();
     for (std::size_t o = 0; o < scene.size(); ++o) {

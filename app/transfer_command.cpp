@@ -45,8 +45,10 @@ int transfer_command(const Argv& argv)
   const TransferReport r = transfer_to_scan(painted, reference, scan, args.flag("--geometry"));
   if (ext == ".ply")
     write_scan_ply(scan, out);
-  else
+  else {
+    add_label_classes(scan, project.labels);
     write_vtp(scan, out);
+  }
   if (!args.flag("--quiet")) {
     const double diagonal = project.mesh.diagonal();
     std::cerr << "meshpaint transfer: " << out << ": " << scan->GetNumberOfPoints() << " scan vertices, "

@@ -2,7 +2,10 @@
 
 #include "SurfaceConversion.h" // for to_polydata, write_vtp, write_texture_maps
 
-#include "core/errors.h"         // for meshpaint::IOError
+#include "core/atomic_file.h"   // for meshpaint::write_bytes_atomically
+#include "core/errors.h"        // for meshpaint::IOError, InputError
+#include "core/format.h"        // for meshpaint::lower_extension
+#include "paint/gltf_export.h"  // for meshpaint::gltf_bytes, metallic_roughness_map
 #include "paint/model_export.h" // for meshpaint::build_export, meshpaint::write_obj_model
 
 #include <algorithm>  // for std::max
@@ -31,6 +34,22 @@ PaintingExportReport export_model(PaintSurface& surface, int model_level, const 
   build_export(surface, model_level, model, maps);
   write_texture_maps(maps, dir);
   write_obj_model(model, maps, dir);
+  GltfImages images;
+  for (const bool inside : {false, true}) {
+    if (inside && maps.inside_diffuse.empty())
+      break;
+    const std::string prefix = inside ? "inside_" : "";
+    GltfMaterialImages& side = inside ? images.inside : images.outside;
+    side.base_colour.uri = prefix + "diffuse.png";
+    side.specular.uri = prefix + "specular.png";
+    side.metallic_roughness.uri = prefix + "metallic_roughness.png";
+    const std::string path = dir + "/" + side.metallic_roughness.uri;
+    const std::string png = map_png(metallic_roughness_map(inside ? maps.inside_roughness : maps.roughness),
+                                    maps.width, maps.height, 3, path);
+    write_bytes_atomically(path, {png});
+  }
+  const std::string gltf = gltf_bytes(model, maps, images, false);
+  write_bytes_atomically(dir + "/model.gltf", {gltf});
   PaintingExportReport report;
   report.model_quads = model.mesh.quads.size();
   report.map_width = maps.width;
@@ -38,14 +57,40 @@ PaintingExportReport export_model(PaintSurface& surface, int model_level, const 
   return report;
 }
 
-PaintingExportReport export_painting(PaintSurface& surface, int model_level, const std::string& dir)
+PaintingExportReport export_painting(PaintSurface& surface, int model_level, const std::string& dir,
+                                     const std::vector<LabelClass>& labels)
 {
   make_directory(dir);
   const std::string surface_path = dir + "/surface.vtp";
-  write_vtp(to_polydata(surface.painted_surface()), surface_path);
+  vtkSmartPointer<vtkPolyData> poly = to_polydata(surface.painted_surface());
+  add_label_classes(poly, labels);
+  write_vtp(poly, surface_path);
   PaintingExportReport report = export_model(surface, model_level, dir);
   report.surface_path = surface_path;
   return report;
+}
+
+void export_gltf(PaintSurface& surface, int model_level, const std::string& path)
+{
+  const std::string ext = lower_extension(path);
+  if (ext != ".glb" && ext != ".gltf")
+    throw InputError("--gltf must name a .glb or .gltf file, not '" + path + "'");
+  ExportModel model;
+  TextureMaps maps;
+  build_export(surface, model_level, model, maps);
+  GltfImages images;
+  images.outside.base_colour.png = map_png(maps.diffuse, maps.width, maps.height, 3, path);
+  images.outside.specular.png = map_png(maps.specular, maps.width, maps.height, 3, path);
+  images.outside.metallic_roughness.png =
+    map_png(metallic_roughness_map(maps.roughness), maps.width, maps.height, 3, path);
+  if (!maps.inside_diffuse.empty()) {
+    images.inside.base_colour.png = map_png(maps.inside_diffuse, maps.width, maps.height, 3, path);
+    images.inside.specular.png = map_png(maps.inside_specular, maps.width, maps.height, 3, path);
+    images.inside.metallic_roughness.png =
+      map_png(metallic_roughness_map(maps.inside_roughness), maps.width, maps.height, 3, path);
+  }
+  const std::string bytes = gltf_bytes(model, maps, images, ext == ".glb");
+  write_bytes_atomically(path, {bytes});
 }
 
 } // namespace meshpaint

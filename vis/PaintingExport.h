@@ -6,8 +6,10 @@
 #include "meshpaintVisModule.h" // for MESHPAINTVIS_EXPORT
 
 #include "paint/paint_surface.h" // for meshpaint::PaintSurface
+#include "project/labels.h"      // for meshpaint::LabelClass
 
 #include <string> // for std::string
+#include <vector> // for std::vector
 
 namespace meshpaint {
 
@@ -24,16 +26,28 @@ struct PaintingExportReport
 };
 
 //! Creates DIR if missing and writes, each atomically, DIR/model.obj and
-//! model.mtl at `model_level` (1 .. the painting level) and the PNG texture
-//! maps diffuse, specular, roughness and displacement (the window's Ctrl+E).
-//! \throw IOError when DIR cannot be created or a file not written.
+//! model.mtl at `model_level` (1 .. the painting level), the PNG texture
+//! maps diffuse, specular, roughness, displacement and metallic_roughness,
+//! and DIR/model.gltf, the same model as glTF 2.0 using those maps (the
+//! window's Ctrl+E).
+//! \throw IOError when DIR cannot be created or a file not written;
+//! StorageError when the disk is full.
 MESHPAINTVIS_EXPORT PaintingExportReport export_model(PaintSurface& surface, int model_level, const std::string& dir);
 
 //! export_model(), and before it DIR/surface.vtp: the painted limit surface
-//! with its channel arrays (`meshpaint paint -o DIR`, ExportModel()).
-//! \throw IOError when DIR cannot be created or a file not written.
+//! with its channel arrays and the label classes as field data
+//! (add_label_classes()) (`meshpaint paint -o DIR`, ExportModel()).
+//! \throw IOError when DIR cannot be created or a file not written;
+//! StorageError when the disk is full.
 MESHPAINTVIS_EXPORT PaintingExportReport export_painting(PaintSurface& surface, int model_level,
-                                                         const std::string& dir);
+                                                         const std::string& dir,
+                                                         const std::vector<LabelClass>& labels = {});
+
+//! Writes the model at `model_level` as one self-contained glTF 2.0 file,
+//! textures inside: binary .glb or text .gltf by the extension of `path`
+//! (`meshpaint paint --gltf FILE`). Atomic.
+//! \throw InputError for another extension; IOError, StorageError as above.
+MESHPAINTVIS_EXPORT void export_gltf(PaintSurface& surface, int model_level, const std::string& path);
 
 //! Creates `dir` and its parents unless it exists.
 //! \throw IOError when it cannot.

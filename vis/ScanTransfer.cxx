@@ -1,6 +1,6 @@
 #include "ScanTransfer.h"
 
-#include "SurfaceConversion.h" // for meshpaint::to_polydata
+#include "SurfaceConversion.h" // for meshpaint::to_polydata, colour_byte
 
 #include "core/errors.h"     // for meshpaint::IOError, InputError
 #include "core/format.h"     // for meshpaint::lower_extension
@@ -105,6 +105,21 @@ std::vector<PlyProperty> component_properties(vtkDataSetAttributes* data)
   return out;
 }
 
+//! `rgb` (3 components, 0..1) as the uchar properties red, green and blue.
+std::vector<PlyProperty> colour_properties(vtkDataArray* rgb)
+{
+  std::vector<PlyProperty> out(3);
+  const char* names[3] = {"red", "green", "blue"};
+  for (int c = 0; c < 3; ++c) {
+    out[std::size_t(c)].name = names[c];
+    out[std::size_t(c)].byte = true;
+    out[std::size_t(c)].values.resize(std::size_t(rgb->GetNumberOfTuples()));
+    for (vtkIdType t = 0; t < rgb->GetNumberOfTuples(); ++t)
+      out[std::size_t(c)].values[std::size_t(t)] = colour_byte(float(rgb->GetComponent(t, c)));
+  }
+  return out;
+}
+
 } // namespace
 
 void write_scan_ply(vtkPolyData* scan, const std::string& path)
@@ -126,8 +141,12 @@ void write_scan_ply(vtkPolyData* scan, const std::string& path)
     for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
       faces[std::size_t(f)].push_back(int(ids->GetId(k)));
   }
-  write_property_ply(points, faces, component_properties(scan->GetPointData()),
-                     component_properties(scan->GetCellData()), path);
+  std::vector<PlyProperty> vertex; // the colours first: what MeshLab and CloudCompare show
+  if (vtkDataArray* diffuse = scan->GetPointData()->GetArray("diffuse"); diffuse && diffuse->GetNumberOfComponents() == 3)
+    vertex = colour_properties(diffuse);
+  for (PlyProperty& p : component_properties(scan->GetPointData()))
+    vertex.push_back(std::move(p));
+  write_property_ply(points, faces, vertex, component_properties(scan->GetCellData()), path);
 }
 
 const std::vector<std::string>& scan_extensions()

@@ -46,10 +46,12 @@ MESHPAINTVIS_EXPORT TransferReport transfer_to_scan(const PaintedSurface& painte
                                                     vtkPolyData* scan, bool geometry);
 
 //! Writes a scan as binary PLY through OpenMesh: points in order, polygons,
-//! and every point and cell array as vertex and face properties, one per
-//! component (NAME for one component; NAME_r/_g/_b for diffuse and specular,
-//! NAME_x/_y/_z for other 3-component arrays, NAME_0.. otherwise); integer
-//! arrays as int32, others float32. Atomic.
+//! the diffuse colour as uchar vertex properties red, green and blue (what
+//! MeshLab and CloudCompare show), and every point and cell array as vertex
+//! and face properties, one per component (NAME for one component;
+//! NAME_r/_g/_b for diffuse and specular, NAME_x/_y/_z for other 3-component
+//! arrays, NAME_0.. otherwise); integer arrays (the label) as int32, others
+//! float32. Encoded in memory, then written atomically.
 //! \throw InputError when the scan has vertex, line or strip cells or a
 //! polygon OpenMesh cannot keep (PLY through OpenMesh holds polygons only);
 //! IOError when writing fails.

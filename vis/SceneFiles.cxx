@@ -1,14 +1,11 @@
 #include "SceneFiles.h"
 
 #include "PaintingExport.h"    // for meshpaint::export_model, make_directory
-#include "SurfaceConversion.h" // for meshpaint::write_vtp
+#include "SurfaceConversion.h" // for meshpaint::write_vtp, add_label_classes
 
-#include "core/atomic_file.h"        // for meshpaint::write_atomically
-#include "core/errors.h"             // for meshpaint::IOError
+#include "core/atomic_file.h"        // for meshpaint::write_bytes_atomically
 #include "paint/paint_scene.h"       // for meshpaint::PaintScene
 #include "project/project_surface.h" // for meshpaint::save_painted_project
-
-#include <fstream> // for std::ofstream
 
 namespace meshpaint {
 
@@ -18,16 +15,15 @@ std::string save_session(PaintScene& scene, const std::string& recording,
 {
   // One recording for the scene; each object's surface in its own folder.
   make_directory(dir);
-  write_atomically(dir + "/strokes.json", [&](const std::string& tmp) {
-    std::ofstream out(tmp, std::ios::binary);
-    out << recording;
-    if (!out.flush())
-      throw IOError("cannot write '" + dir + "/strokes.json'");
-  });
+  write_bytes_atomically(dir + "/strokes.json", {recording});
   for (std::size_t o = 0; o < scene.size(); ++o) {
     const std::string folder = scene.folder(dir, o);
     make_directory(folder);
-    write_vtp(drawn(o), folder + "/surface.vtp");
+    // As `meshpaint paint -o` writes it: with the label classes as field data.
+    auto surface = vtkSmartPointer<vtkPolyData>::New();
+    surface->ShallowCopy(drawn(o));
+    add_label_classes(surface, project ? project->labels : std::vector<LabelClass>());
+    write_vtp(surface, folder + "/surface.vtp");
   }
   if (project)
     save_painted_project(scene.surface(0), *project, scene.folder(dir, 0) + "/surface.meshpaint");

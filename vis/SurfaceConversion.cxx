@@ -1,6 +1,6 @@
 #include "SurfaceConversion.h"
 
-#include "core/atomic_file.h" // for meshpaint::write_atomically
+#include "core/atomic_file.h" // for meshpaint::write_bytes_atomically
 #include "core/errors.h"      // for meshpaint::IOError
 
 #include <algorithm> // for std::min, std::max
@@ -10,6 +10,7 @@
 #include <type_traits> // for std::remove_pointer_t
 
 #include <vtkCellArray.h>          // for vtkCellArray
+#include <vtkFieldData.h>          // for vtkFieldData
 #include <vtkFloatArray.h>         // for vtkFloatArray
 #include <vtkIdTypeArray.h>        // for vtkIdTypeArray
 #include <vtkImageData.h>          // for vtkImageData
@@ -17,7 +18,10 @@
 #include <vtkPNGWriter.h>          // for vtkPNGWriter
 #include <vtkPointData.h>          // for vtkPointData
 #include <vtkPoints.h>             // for vtkPoints
+#include <vtkNew.h>                // for vtkNew
 #include <vtkPolyData.h>           // for vtkPolyData
+#include <vtkStringArray.h>        // for vtkStringArray
+#include <vtkUnsignedCharArray.h>  // for vtkUnsignedCharArray
 #include <vtkXMLPolyDataWriter.h>  // for vtkXMLPolyDataWriter
 
 namespace meshpaint {
@@ -209,10 +213,10 @@ BaseMesh to_base_mesh(vtkPolyData* poly, const std::string& name)
 
 namespace {
 
-//! One map as a PNG: `components` floats per pixel in 0..1 (after
+//! One map as an image: `components` floats per pixel in 0..1 (after
 //! (v - offset) * scale), rows top first, quantised to 8 or 16 bits.
-void write_png(const std::vector<float>& values, int width, int height, int components, bool sixteen,
-               float offset, float scale, const std::string& path)
+vtkSmartPointer<vtkImageData> map_image(const std::vector<float>& values, int width, int height, int components,
+                                        bool sixteen, float offset, float scale)
 {
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(width, height, 1);
@@ -235,17 +239,34 @@ void write_png(const std::vector<float>& values, int width, int height, int comp
     quantise(static_cast<unsigned short*>(image->GetScalarPointer()), 65535.0);
   else
     quantise(static_cast<unsigned char*>(image->GetScalarPointer()), 255.0);
-  write_atomically(path, [&](const std::string& tmp) {
-    auto writer = vtkSmartPointer<vtkPNGWriter>::New();
-    writer->SetFileName(tmp.c_str());
-    writer->SetInputData(image);
-    writer->Write();
-    if (writer->GetErrorCode() != 0)
-      throw IOError("cannot write '" + path + "'");
-  });
+  return image;
+}
+
+void write_png(const std::vector<float>& values, int width, int height, int components, bool sixteen,
+               float offset, float scale, const std::string& path)
+{
+  const std::string png = png_bytes(map_image(values, width, height, components, sixteen, offset, scale), path);
+  write_bytes_atomically(path, {png});
 }
 
 } // namespace
+
+std::string png_bytes(vtkImageData* image, const std::string& path)
+{
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->WriteToMemoryOn();
+  writer->Write();
+  vtkUnsignedCharArray* result = writer->GetResult();
+  if (writer->GetErrorCode() != 0 || !result || result->GetNumberOfValues() == 0)
+    throw IOError("cannot write '" + path + "': the PNG could not be encoded");
+  return std::string(reinterpret_cast<const char*>(result->GetPointer(0)), std::size_t(result->GetNumberOfValues()));
+}
+
+std::string map_png(const std::vector<float>& values, int width, int height, int components, const std::string& path)
+{
+  return png_bytes(map_image(values, width, height, components, false, 0.f, 1.f), path);
+}
 
 void write_texture_maps(const TextureMaps& maps, const std::string& dir)
 {
@@ -264,16 +285,46 @@ void write_texture_maps(const TextureMaps& maps, const std::string& dir)
 
 void write_vtp(vtkPolyData* poly, const std::string& path)
 {
-  write_atomically(path, [&](const std::string& tmp) {
-    auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-    writer->SetFileName(tmp.c_str());
-    writer->SetInputData(poly);
-    writer->SetDataModeToAppended();
-    writer->EncodeAppendedDataOff();
-    writer->SetCompressorTypeToZLib();
-    if (!writer->Write())
-      throw IOError("cannot write '" + path + "'");
-  });
+  // Encoded in memory, then written by us: VTK's writer reports a full disk
+  // only on its own console, several lines long.
+  auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+  writer->SetInputData(poly);
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();
+  writer->SetCompressorTypeToZLib();
+  writer->WriteToOutputStringOn();
+  if (!writer->Write())
+    throw IOError("cannot write '" + path + "': VTK could not encode the surface");
+  const std::string bytes = writer->GetOutputString();
+  write_bytes_atomically(path, {bytes});
+}
+
+void add_label_classes(vtkPolyData* poly, const std::vector<LabelClass>& labels)
+{
+  auto ids = vtkSmartPointer<vtkIntArray>::New();
+  ids->SetName("label_ids");
+  auto names = vtkSmartPointer<vtkStringArray>::New();
+  names->SetName("label_names");
+  auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  colours->SetName("label_colors");
+  colours->SetNumberOfComponents(3);
+  for (const LabelClass& label : labels) {
+    ids->InsertNextValue(label.id);
+    names->InsertNextValue(label.name);
+    for (int c = 0; c < 3; ++c)
+      colours->InsertNextValue(colour_byte(label.colour[c]));
+  }
+  vtkFieldData* fd = poly->GetFieldData();
+  for (vtkAbstractArray* a : {static_cast<vtkAbstractArray*>(ids), static_cast<vtkAbstractArray*>(names),
+                              static_cast<vtkAbstractArray*>(colours)}) {
+    fd->RemoveArray(a->GetName());
+    fd->AddArray(a);
+  }
+}
+
+unsigned char colour_byte(float value)
+{
+  return static_cast<unsigned char>(std::floor(std::min(1.0, std::max(0.0, double(value))) * 255.0 + 0.5));
 }
 
 } // namespace meshpaint

@@ -8,7 +8,9 @@
 #include "paint/model_export.h" // for meshpaint::TextureMaps
 #include "paint/paint_surface.h" // for meshpaint::PaintedSurface
 #include "mesh/base_mesh.h"       // for meshpaint::BaseMesh
+#include "project/labels.h"       // for meshpaint::LabelClass
 
+#include <vtkImageData.h>    // for vtkImageData
 #include <vtkPolyData.h>     // for vtkPolyData
 #include <vtkSmartPointer.h> // for vtkSmartPointer
 
@@ -45,9 +47,28 @@ MESHPAINTVIS_EXPORT BaseMesh to_base_mesh(vtkPolyData* poly, const std::string& 
 //! the map's displacement range), each atomically.
 MESHPAINTVIS_EXPORT void write_texture_maps(const TextureMaps& maps, const std::string& dir);
 
-//! Writes .vtp (XML, appended raw binary, zlib-compressed) atomically.
-//! \throw IOError when writing fails.
+//! Writes .vtp (XML, appended raw binary, zlib-compressed) atomically,
+//! encoded in memory first.
+//! \throw IOError when writing fails; StorageError when the disk is full.
 MESHPAINTVIS_EXPORT void write_vtp(vtkPolyData* poly, const std::string& path);
+
+//! Puts the label classes into the field data of `poly`: label_ids (int),
+//! label_names (strings) and label_colors (unsigned char RGB, 3 components),
+//! one tuple per class in the table's order; arrays of those names are
+//! replaced. An empty table gives the three arrays with no tuples.
+MESHPAINTVIS_EXPORT void add_label_classes(vtkPolyData* poly, const std::vector<LabelClass>& labels);
+
+//! A colour component 0..1 as the byte 0..255 (clamped, rounded).
+MESHPAINTVIS_EXPORT unsigned char colour_byte(float value);
+
+//! `image` (8- or 16-bit, 1 to 4 components) encoded as PNG bytes.
+//! \throw IOError naming `path` when VTK cannot encode it.
+MESHPAINTVIS_EXPORT std::string png_bytes(vtkImageData* image, const std::string& path);
+
+//! A texture map (`components` values 0..1 per pixel, rows top first) as
+//! 8-bit PNG bytes, as write_texture_maps() writes it.
+MESHPAINTVIS_EXPORT std::string map_png(const std::vector<float>& values, int width, int height, int components,
+                                        const std::string& path);
 
 } // namespace meshpaint
 

@@ -1,8 +1,9 @@
 #include "SurfaceRendering.h"
 
-#include "core/atomic_file.h" // for meshpaint::write_atomically
+#include "core/atomic_file.h" // for meshpaint::write_bytes_atomically
 #include "core/errors.h"      // for meshpaint::IOError
 #include "paint/paint_surface.h" // for meshpaint::PaintSurface
+#include "SurfaceConversion.h"   // for meshpaint::png_bytes
 
 #include <vtkActor.h>                   // for vtkActor
 #include <vtkUnsignedCharArray.h>       // for vtkUnsignedCharArray
@@ -14,7 +15,6 @@
 #include <vtkFloatArray.h>              // for vtkFloatArray
 #include <vtkNew.h>                     // for vtkNew
 #include <vtkOpenGLPolyDataMapper.h>    // for vtkOpenGLPolyDataMapper
-#include <vtkPNGWriter.h>               // for vtkPNGWriter
 #include <vtkPointData.h>               // for vtkPointData
 #include <vtkPolyData.h>                // for vtkPolyData
 #include <vtkProperty.h>                // for vtkProperty
@@ -100,14 +100,8 @@ void write_screenshot(vtkRenderWindow* window, const std::string& path)
   grab->SetInputBufferTypeToRGB();
   grab->ReadFrontBufferOff();
   grab->Update();
-  write_atomically(path, [&](const std::string& tmp) {
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetInputConnection(grab->GetOutputPort());
-    writer->SetFileName(tmp.c_str());
-    writer->Write();
-    if (writer->GetErrorCode() != 0)
-      throw IOError("cannot write '" + path + "'");
-  });
+  const std::string png = png_bytes(grab->GetOutput(), path);
+  write_bytes_atomically(path, {png});
 }
 
 void show_scattered_light(vtkActor* actor, vtkPolyData* surface)

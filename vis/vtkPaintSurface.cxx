@@ -307,7 +307,9 @@ int vtkPaintSurface::ExportModel(const char* dir)
     const int level = this->Impl->surface->level();
     const int model_level =
       this->ModelLevel > 0 ? std::min(this->ModelLevel, level) : meshpaint::default_model_level(level);
-    meshpaint::export_painting(*this->Impl->surface, model_level, dir ? dir : "");
+    const Internals& in = *this->Impl;
+    meshpaint::export_painting(*in.surface, model_level, dir ? dir : "",
+                               in.project ? in.project->labels : std::vector<meshpaint::LabelClass>());
   });
 }
 

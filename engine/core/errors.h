@@ -21,6 +21,14 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+//! The file system failed a write: no space left, quota exceeded, or an I/O
+//! error. The file being written is left as it was before.
+class StorageError : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
 //! A request that does not fit the device (memory, image size); the message
 //! names the limit and what would fit.
 class ResourceError : public std::runtime_error

@@ -1,10 +1,8 @@
 #include "mesh/property_ply.h"
 
-#include "core/atomic_file.h"
 #include "core/errors.h"
 #include "mesh/openmesh_types.h"
-
-#include <OpenMesh/Core/IO/MeshIO.hh> // for OpenMesh::IO::write_mesh
+#include "mesh/surface_io.h"
 
 namespace meshpaint {
 namespace {
@@ -29,7 +27,9 @@ void add_properties(PolyMesh& mesh, const std::vector<PlyProperty>& properties, 
     if (p.values.size() != count)
       throw InputError("property '" + p.name + "' has " + std::to_string(p.values.size()) + " values for " +
                        std::to_string(count) + " " + what);
-    if (p.integer)
+    if (p.byte)
+      add_property<Handle, unsigned char>(mesh, p);
+    else if (p.integer)
       add_property<Handle, int>(mesh, p);
     else
       add_property<Handle, float>(mesh, p);
@@ -56,12 +56,8 @@ void write_property_ply(const std::vector<Vec3>& points, const std::vector<std::
   }
   add_properties<OpenMesh::VPropHandleT>(mesh, vertex_properties, points.size(), "vertices");
   add_properties<OpenMesh::FPropHandleT>(mesh, face_properties, faces.size(), "faces");
-  write_atomically(path, [&](const std::string& tmp) {
-    OpenMesh::IO::Options options(OpenMesh::IO::Options::Binary | OpenMesh::IO::Options::LSB |
-                                  OpenMesh::IO::Options::Custom);
-    if (!OpenMesh::IO::write_mesh(mesh, tmp, options))
-      throw IOError("cannot write '" + path + "'");
-  });
+  write_openmesh(mesh, path, OpenMesh::IO::Options(OpenMesh::IO::Options::Binary | OpenMesh::IO::Options::LSB |
+                                                     OpenMesh::IO::Options::Custom));
 }
 
 } // namespace meshpaint

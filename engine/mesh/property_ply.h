@@ -13,6 +13,7 @@ struct PlyProperty
 {
   std::string name;
   bool integer = false;       //!< written as int32, else float32
+  bool byte = false;          //!< written as uchar (values 0..255), whatever `integer` says
   std::vector<double> values; //!< #vertices (#faces)
 };
 

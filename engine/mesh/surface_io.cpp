@@ -8,7 +8,7 @@
 
 #include <OpenMesh/Core/IO/MeshIO.hh> // for OpenMesh::IO::write_mesh
 
-#include <filesystem> // for std::filesystem::path
+#include <sstream> // for std::ostringstream
 
 namespace meshpaint {
 
@@ -35,11 +35,19 @@ void write_surface(const WeldedSurface& s, const std::string& path)
     options += OpenMesh::IO::Options::VertexNormal;
   if (ext == ".ply")
     options += OpenMesh::IO::Options::Binary;
-  write_atomically(path, [&](const std::string& tmp) {
+  write_openmesh(mesh, path, options);
+}
+
+void write_openmesh(const PolyMesh& mesh, const std::string& path, OpenMesh::IO::Options options)
+{
+  std::ostringstream bytes(std::ios::binary);
+  {
     QuietOpenMesh quiet;
-    if (!OpenMesh::IO::write_mesh(mesh, tmp, options))
-      throw IOError("cannot write '" + path + "'");
-  });
+    if (!OpenMesh::IO::write_mesh(mesh, bytes, lower_extension(path), options))
+      throw IOError("cannot write '" + path + "': OpenMesh could not write it");
+  }
+  const std::string text = bytes.str();
+  write_bytes_atomically(path, {text});
 }
 
 } // namespace meshpaint

@@ -24,6 +24,10 @@ struct TextureMaps
   float displacement_min = 0.f, displacement_max = 0.f;
   //! Two-sided surfaces: the inside's maps; empty otherwise.
   std::vector<float> inside_diffuse, inside_specular, inside_roughness;
+  //! Means over every patch's pixels, for formats with one value per
+  //! material (the MTL's Ks and Ns); [1] is the inside's.
+  std::array<Vec3, 2> mean_specular{};
+  std::array<float, 2> mean_roughness{};
 };
 
 struct ExportModel
@@ -37,12 +41,18 @@ struct ExportModel
 //! the displacement channel, which travels in its own map.
 void build_export(PaintSurface& surface, int model_level, ExportModel& model, TextureMaps& maps);
 
+//! The Phong exponent (an MTL's Ns, 0..1000) matching a roughness 0..1:
+//! 2 / a^2 - 2 with a = roughness^2, the usual Blinn-Phong to GGX match.
+float phong_exponent(float roughness);
+
 //! Writes DIR/model.obj and DIR/model.mtl (atomically) naming the maps
 //! diffuse.png, specular.png, roughness.png and displacement.png; the MTL
-//! records how displacement pixels map back to world units. A two-sided
-//! surface gets a second material, `inside`, with the inside_*.png maps,
-//! on a second copy of the faces turned the other way.
-//! \throw IOError when a file cannot be written.
+//! records how displacement pixels map back to world units. Ks is the mean
+//! painted specular colour and Ns phong_exponent() of the mean roughness, so
+//! renderers that read no maps but Kd's (VTK's OBJ importer) show the
+//! painted shine. A two-sided surface gets a second material, `inside`, with
+//! the inside_*.png maps, on a second copy of the faces turned the other way.
+//! \throw IOError when a file cannot be written; StorageError on a full disk.
 void write_obj_model(const ExportModel& model, const TextureMaps& maps, const std::string& dir);
 
 } // namespace meshpaint

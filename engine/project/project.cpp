@@ -11,10 +11,8 @@
 #include <cerrno>     // for errno
 #include <cstdio>     // for std::FILE, std::fopen, std::fread
 #include <cstring>    // for std::memcmp, std::strerror
-#include <fcntl.h>    // for open
 #include <filesystem> // for std::filesystem::path
 #include <memory>     // for std::unique_ptr
-#include <unistd.h>   // for write, fsync, close
 
 namespace meshpaint {
 namespace {
@@ -125,33 +123,6 @@ std::uint64_t get_u64(const unsigned char* p)
   for (int k = 0; k < 8; ++k)
     v |= std::uint64_t(p[k]) << (8 * k);
   return v;
-}
-
-//! Writes all bytes and flushes them to the disk, so the rename that
-//! follows never exposes a file the kernel has not stored.
-void write_synced(const std::string& path, const std::vector<unsigned char>& header,
-                  const std::vector<unsigned char>& payload)
-{
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0)
-    throw IOError("cannot write '" + path + "': " + std::strerror(errno));
-  const auto put = [&](const std::vector<unsigned char>& bytes) {
-    std::size_t done = 0;
-    while (done < bytes.size()) {
-      const ssize_t n = ::write(fd, bytes.data() + done, std::min<std::size_t>(bytes.size() - done, 1u << 30));
-      if (n < 0 && errno == EINTR)
-        continue;
-      if (n <= 0)
-        return false;
-      done += std::size_t(n);
-    }
-    return true;
-  };
-  const bool ok = put(header) && put(payload) && ::fsync(fd) == 0;
-  const int error = errno;
-  ::close(fd);
-  if (!ok)
-    throw IOError("cannot write '" + path + "': " + std::strerror(error));
 }
 
 void write_payload(const Project& p, ByteWriter& w)
@@ -336,7 +307,8 @@ void save_project(const Project& project, const std::string& path)
   put_u64(&header[24], raw_bytes);
   put_u32(&header[32], crc_of(payload.data(), payload.size()));
   put_u32(&header[36], crc_of(header.data(), 36));
-  write_atomically(path, [&](const std::string& tmp) { write_synced(tmp, header, payload); });
+  write_bytes_atomically(path, {std::string_view(reinterpret_cast<const char*>(header.data()), header.size()),
+                               std::string_view(reinterpret_cast<const char*>(payload.data()), payload.size())});
 }
 
 Project load_project(const std::string& path)

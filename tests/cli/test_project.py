@@ -157,7 +157,7 @@ def test_damaged_projects_give_one_line_and_exit_2(plane, tmp_path, change, mess
 @pytest.mark.parametrize("args, message", [
     (["--level", "4", "--save", "{tmp}/y.meshpaint"], r"is a level-3 project; --level 4 cannot change that"),
     (["--save", "{tmp}/x.vtp"], r"--save needs a file name ending in .meshpaint, not '.*x.vtp'"),
-    ([], r"-o OUTDIR or --save P.meshpaint is required"),
+    ([], r"-o OUTDIR, --gltf FILE or --save P.meshpaint is required"),
     (["--save", "{tmp}/y.meshpaint", "--labels", "{tmp}/labels.json"], r"labels.json: label 0: \"colour\" must be \[r, g, b\]"),
 ])
 def test_project_arguments_are_checked(plane, tmp_path, args, message):
@@ -202,16 +202,23 @@ def test_killed_while_saving_the_previous_project_still_loads(tmp_path):
             time.sleep(rng.uniform(0, 0.002))
         else:
             time.sleep(rng.uniform(0.2, 1.0) * duration)
-        p.send_signal(rng.choice([signal.SIGKILL, signal.SIGTERM, signal.SIGINT]))
-        killed += p.wait(timeout=120) != 0
-        if temporary.exists():  # died in the middle of writing it
-            caught_writing += 1
-            temporary.unlink()
+        sig = rng.choice([signal.SIGKILL, signal.SIGTERM, signal.SIGINT])
+        writing = temporary.exists()
+        p.send_signal(sig)
+        code = p.wait(timeout=120)
+        killed += code != 0
+        caught_writing += writing and code != 0  # died in the middle of writing it
+        if sig != signal.SIGKILL:  # a signal it can catch: it removed its temporary
+            assert not temporary.exists(), (attempt, sig)
+
         now = history_length(project)
         assert now in (history, history + 1), (attempt, now, history)
         history = now
     assert killed >= 6, "too few runs were killed while working to test anything"
     assert caught_writing >= 1, "no run was killed while writing its file"
+    # Temporaries of runs killed by SIGKILL go with the next save into the folder.
+    assert run("paint", str(project), "--save", str(project), "--quiet").returncode == 0
+    assert list(tmp_path.glob(".femur.tmp-*")) == [], "a later save leaves the temporary of a killed run behind"
 
 def off_points(path):
     lines = [l for l in open(path).read().split("\n") if l.strip() and not l.startswith("#")]
