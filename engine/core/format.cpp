@@ -35,6 +35,24 @@ std::string lower_extension(const std::string& path)
   return ext;
 }
 
+std::string excerpt(const std::string& s, std::size_t max_chars)
+{
+  std::string out;
+  for (const char c : s) {
+    if (out.size() >= max_chars)
+      return out + "...";
+    const auto u = static_cast<unsigned char>(c);
+    if (u >= 0x20 && u < 0x7f) {
+      out += c;
+    } else {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", unsigned(u));
+      out += buf;
+    }
+  }
+  return out;
+}
+
 std::string json_string(const std::string& s)
 {
   std::string out = "\"";

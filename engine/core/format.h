@@ -15,6 +15,13 @@ std::string format_fixed(double value, int digits);
 //! ".obj" for "Mesh.OBJ": the extension, lower case, with its dot.
 std::string lower_extension(const std::string& path);
 
+//! Text from an input file made safe for a one-line message: bytes outside
+//! printable ASCII as \xNN, and at most `max_chars` of it, then "...".
+std::string excerpt(const std::string& s, std::size_t max_chars = 60);
+
+//! Length of a parser's whole message kept by excerpt().
+constexpr std::size_t kMessageChars = 300;
+
 //! `s` as a JSON string literal, quotes included.
 std::string json_string(const std::string& s);
 

@@ -1,6 +1,8 @@
 #include "paint/stroke.h"
 
 #include "core/errors.h"
+#include "core/format.h"     // for meshpaint::excerpt
+#include "core/input_file.h" // for meshpaint::read_input_file
 
 #include <nlohmann/json.hpp> // for nlohmann::json
 
@@ -8,7 +10,6 @@
 #include <array>     // for std::array
 #include <cmath>   // for std::isfinite, std::sqrt
 #include <filesystem> // for std::filesystem::path
-#include <fstream> // for std::ifstream
 #include <map>     // for std::map
 #include <set>     // for std::set
 #include <sstream> // for std::ostringstream
@@ -30,7 +31,7 @@ public:
 
   [[noreturn]] void fail(const std::string& key, const std::string& what) const
   {
-    throw StrokeKeyError(where_ + "\"" + key + "\" " + what, key, what.rfind("has no meaning", 0) == 0);
+    throw StrokeKeyError(where_ + "\"" + excerpt(key) + "\" " + what, key, what.rfind("has no meaning", 0) == 0);
   }
 
   bool has(const std::string& key) const { return j_.contains(key); }
@@ -112,7 +113,7 @@ void read_channels(const StrokeReader& r, Stroke& s)
   for (const auto& [name, v] : ch.items()) {
     const auto it = kChannels.find(name);
     if (it == kChannels.end())
-      r.fail("channels", "has an unknown channel \"" + name +
+      r.fail("channels", "has an unknown channel \"" + excerpt(name) +
                            "\" (diffuse, specular, roughness, displacement, label, mask)");
     const int c = it->second;
     Float4 value{0.f, 0.f, 0.f, 1.f};
@@ -162,7 +163,7 @@ void read_pattern(const StrokeReader& r, Stroke& s)
   static const std::set<std::string> keys = {"type", "coord", "matte", "scale", "octaves", "transform", "file"};
   for (const auto& item : p.items())
     if (!keys.count(item.key()))
-      r.fail("pattern", "has an unknown key \"" + item.key() + "\" (type, coord, matte, scale, octaves, transform, file)");
+      r.fail("pattern", "has an unknown key \"" + excerpt(item.key()) + "\" (type, coord, matte, scale, octaves, transform, file)");
   static const std::vector<std::string> types = {"noise", "turbulence", "marble", "bath", "image", "volume"};
   const auto word = [&](const char* key, const std::vector<std::string>& allowed, const std::string& fallback) {
     if (!p.contains(key))
@@ -230,7 +231,7 @@ Camera read_camera(const StrokeReader& r)
   for (const auto& item : c.items())
     if (item.key() != "position" && item.key() != "focal_point" && item.key() != "view_up" &&
         item.key() != "view_angle")
-      r.fail("camera", "has an unknown key \"" + item.key() + "\" (position, focal_point, view_up, view_angle)");
+      r.fail("camera", "has an unknown key \"" + excerpt(item.key()) + "\" (position, focal_point, view_up, view_angle)");
   Camera cam;
   for (const auto& [key, target] : {std::pair<const char*, Vec3*>{"position", &cam.position},
                                     {"focal_point", &cam.focal_point}, {"view_up", &cam.view_up}}) {
@@ -301,7 +302,7 @@ void read_space(const StrokeReader& r, Stroke& s, const std::string& tool, bool 
       r.fail("spray", "must be {\"drops\": n, \"size\": radius, \"seed\": k}");
     for (const auto& item : sp.items())
       if (item.key() != "drops" && item.key() != "size" && item.key() != "seed")
-        r.fail("spray", "has an unknown key \"" + item.key() + "\" (drops, size, seed)");
+        r.fail("spray", "has an unknown key \"" + excerpt(item.key()) + "\" (drops, size, seed)");
     if (!sp.contains("drops") || !sp["drops"].is_number_integer() || sp["drops"].get<long long>() < 1 ||
         sp["drops"].get<long long>() > 4096)
       r.fail("spray", "\"drops\" must be an integer from 1 to 4096 (droplets per dab)");
@@ -495,12 +496,12 @@ Stroke read_stroke(const json& j, std::size_t index)
       r.fail("channels", "of dye paint must give diffuse or specular");
     for (const auto& item : r.at("channels").items())
       if (item.key() != "diffuse" && item.key() != "specular")
-        r.fail("channels", "of dye paint may only be diffuse and specular, not \"" + item.key() + "\"");
+        r.fail("channels", "of dye paint may only be diffuse and specular, not \"" + excerpt(item.key()) + "\"");
   } else if (mode == "polish" || mode == "sandpaper") {
     if (r.has("channels"))
       for (const auto& item : r.at("channels").items())
         if (item.key() != "roughness")
-          r.fail("channels", "of " + mode + " paint may only be roughness, not \"" + item.key() + "\"");
+          r.fail("channels", "of " + mode + " paint may only be roughness, not \"" + excerpt(item.key()) + "\"");
     const bool polish = mode == "polish";
     if (s.paint().alpha[CHANNEL_ROUGHNESS] == 0.f) {
       const float rough = polish ? 0.1f : 0.9f;
@@ -530,7 +531,7 @@ Tool tool_named(const std::string& name)
   for (std::size_t k = 0; k < kToolNames.size(); ++k)
     if (name == kToolNames[k])
       return Tool(k);
-  throw InputError("'" + name + "' is not a tool");
+  throw InputError("'" + excerpt(name) + "' is not a tool");
 }
 
 void check_stroke(const Stroke& stroke)
@@ -658,13 +659,14 @@ StrokeScript parse_stroke_script(const std::string& text)
     // (or out_of_range.406 for a number too large for a double)
     const std::string what = e.what();
     const std::size_t at = what.find("] ");
-    throw InputError("stroke script is not valid JSON: " + (at == std::string::npos ? what : what.substr(at + 2)));
+    throw InputError("stroke script is not valid JSON: " +
+                     excerpt(at == std::string::npos ? what : what.substr(at + 2), kMessageChars));
   }
   if (!j.is_object())
     throw InputError("stroke script must be a JSON object {\"strokes\": [...]}");
   for (const auto& item : j.items())
     if (item.key() != "level" && item.key() != "strokes")
-      throw InputError("stroke script: \"" + item.key() + "\" is not a script key (level, strokes)");
+      throw InputError("stroke script: \"" + excerpt(item.key()) + "\" is not a script key (level, strokes)");
   StrokeScript script;
   if (j.contains("level")) {
     if (!j["level"].is_number_integer() || j["level"].get<long long>() < 1 || j["level"].get<long long>() > 12)
@@ -703,14 +705,10 @@ std::string drop_meaningless_keys(const std::string& stroke_object)
 
 StrokeScript load_stroke_script(const std::string& path)
 {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw IOError("cannot open stroke script '" + path + "'");
-  std::ostringstream text;
-  text << in.rdbuf();
+  const std::string text = read_input_file(path, kMaxStrokeScriptBytes, "stroke script");
   StrokeScript script;
   try {
-    script = parse_stroke_script(text.str());
+    script = parse_stroke_script(text);
   } catch (const InputError& e) {
     throw InputError("'" + path + "': " + e.what());
   }
