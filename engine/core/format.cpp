@@ -35,6 +35,13 @@ std::string lower_extension(const std::string& path)
   return ext;
 }
 
+std::string format_number(double value)
+{
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", value);
+  return buf;
+}
+
 std::string excerpt(const std::string& s, std::size_t max_chars)
 {
   std::string out;

@@ -9,6 +9,9 @@ namespace meshpaint {
 //! "1.5 GiB", "320 MiB", "12 KiB", "512 B".
 std::string format_bytes(std::size_t bytes);
 
+//! A number as printf's %g writes it: "3e+38", "0.5", "nan".
+std::string format_number(double value);
+
 //! Fixed-point with `digits` decimals.
 std::string format_fixed(double value, int digits);
 

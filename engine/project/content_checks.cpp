@@ -1,6 +1,7 @@
 #include "project/content_checks.h"
 
 #include "core/errors.h"
+#include "core/format.h"     // for meshpaint::format_number
 #include "core/input_file.h" // for meshpaint::kMaxStrokeScriptBytes
 
 #include <cmath> // for std::isfinite, std::fabs, std::round
@@ -28,7 +29,7 @@ void check_points(const std::vector<Float4>& texels, const std::string& what, co
     for (int a = 0; a < 4; ++a) {
       const float x = texels[t][std::size_t(a)];
       if (!std::isfinite(x) || (a < 3 && std::fabs(x) > kMaxCoordinate))
-        corrupt(where, what + " " + std::to_string(t) + " has the value " + std::to_string(x) +
+        corrupt(where, what + " " + std::to_string(t) + " has the value " + format_number(x) +
                            " (finite, at most 1e15 in magnitude)");
     }
 }
@@ -81,7 +82,7 @@ void check_project_content(const Project& p, const std::string& where)
                                              : channel_value_problem(channel, v);
           if (!problem.empty())
             corrupt(where, std::string(side == 1 ? "inside " : "") + channel + " at texel " + std::to_string(t) +
-                               " " + problem + " (" + std::to_string(v) + ")");
+                               " " + problem + " (" + format_number(v) + ")");
         }
     }
   try {

@@ -2,6 +2,7 @@
 
 #include "atlas/weld.h"
 #include "core/errors.h"
+#include "core/format.h" // for meshpaint::format_number
 #include "project/content_checks.h" // for meshpaint::channel_value_problem
 
 #include <algorithm> // for std::max_element
@@ -69,7 +70,7 @@ void set_vertex_channel(PaintSurface& surface, const std::string& name, const st
       const std::string problem = channel_value_problem(name, v);
       if (!problem.empty())
         throw InputError("channel '" + name + "': the value of vertex " + std::to_string(map[t]) + " " + problem +
-                         " (" + std::to_string(given) + ")");
+                         " (" + format_number(given) + ")");
       (*layer)[t][std::size_t(first + a)] = v;
     }
   surface.write_channels(c);

@@ -142,7 +142,7 @@ def make_projects(out, meshpaint, cases):
     atls_texels = 4 + 8  # level, texel count
     damaged("project-nan-control-point", r"corrupt project \(control point 0 has the value nan",
             put_float(b"ATLS", atls_texels, float("nan")))
-    damaged("project-huge-control-point", r"corrupt project \(control point 3 has the value 3\d+",
+    damaged("project-huge-control-point", r"corrupt project \(control point 3 has the value 3e\+38",
             put_float(b"ATLS", atls_texels + 16 * 3 + 4, 3e38))
     damaged("project-nan-diffuse", r"corrupt project \(diffuse at texel 2 is not finite",
             put_float(b"DIFF", 16 * 2, float("nan")))
@@ -208,6 +208,25 @@ def main():
                                "-o", "{tmp}/out"], "message": r"label table '.*' is not a regular file"})
     cases.append({"args": paint + ["{dir}/huge.json"],
                   "message": r"stroke script '.*huge.json' has 300.0 MiB, more than the 256.0 MiB accepted"})
+
+    # Results must be finite: strokes inside the documented ranges whose
+    # result would not be are refused, naming the stroke.
+    quiet = ["paint", CUBE, "--level", "3", "--quiet", "-o", "{tmp}/out", "--strokes"]
+    for name, s in [("sculpt-1e30", stroke(tool="sculpt", amount=1e30, channels=None)),
+                    ("inflate-1e20", stroke(tool="inflate", amount=1e20, channels=None)),
+                    ("displacement-3e38", stroke(channels={"displacement": 3e38}))]:
+        if s.get("channels") is None:
+            del s["channels"]
+        script(out, name + ".json", stroke(), s)
+        cases.append({"args": quiet + ["{dir}/" + name + ".json"],
+                      "message": r"stroke 1: refused: it would move the surface to .* \(results must be finite"})
+
+    # A scan whose faces lie on a line: the fit would collapse the surface.
+    with open(os.path.join(out, "scan-on-a-line.obj"), "w") as f:
+        f.write("v 0 0 0\nv 1 0 0\nv 2 0 0\nv 3 0 0\nf 1 2 3\nf 1 3 4\n")
+    cases.append({"args": ["fit", "{dir}/scan-on-a-line.obj", "--direct", "--level", "2", "--quiet",
+                           "-o", "{tmp}/out.meshpaint"],
+                  "message": r"the scan has no area \(its faces lie on a line or at a point\): nothing to fit to"})
 
     make_projects(out, meshpaint, cases)
     with open(os.path.join(out, "cases.json"), "w") as f:
