@@ -46,7 +46,13 @@ void paint_job(PaintScene& scene, const StrokeScript& script, int model_level, c
     const Stroke& stroke = script.strokes[k];
     // A scene's stroke: its dabs over every object, its time the sum.
     StrokeReport r;
-    for (const StrokeReport& o : session.apply(stroke)) {
+    std::vector<StrokeReport> reports;
+    try {
+      reports = session.apply(stroke);
+    } catch (const InputError& e) {
+      throw InputError("stroke " + std::to_string(k) + ": " + e.what());
+    }
+    for (const StrokeReport& o : reports) {
       r.dabs = std::max(r.dabs, o.dabs);
       r.dabs_applied += o.dabs_applied;
       r.patches_touched += o.patches_touched;

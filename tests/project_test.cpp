@@ -9,10 +9,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>      // for std::nanf
 #include <cstdio>     // for std::remove
 #include <cstring>    // for std::memcmp
 #include <filesystem> // for std::filesystem
 #include <fstream>    // for std::ifstream, std::ofstream
+#include <functional> // for std::function
 #include <iterator>   // for std::istreambuf_iterator
 #include <unistd.h>   // for getpid
 
@@ -241,8 +243,43 @@ TEST_F(ProjectTest, ALabelNameThatIsNotUtf8IsRefused)
     load_project(path.string());
     FAIL() << "loaded a label name that is not UTF-8";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("not valid UTF-8: \"bo\\xffne\""), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("\"name\" \"bo\\xffne\" is not valid UTF-8"), std::string::npos) << e.what();
   }
+}
+
+TEST_F(ProjectTest, ContentIsCheckedNotOnlyChecksums)
+{
+  // Each file below has valid checksums (save_project() writes them): what
+  // is refused is what it holds.
+  auto surface = painted();
+  const auto refused = [&](const char* name, const std::function<void(Project&)>& damage) {
+    Project p = sample(*surface);
+    damage(p);
+    const fs::path path = dir_ / name;
+    save_project(p, path.string());
+    return load_error(path);
+  };
+  EXPECT_NE(refused("nan.meshpaint", [](Project& p) { p.positions[3][0] = std::nanf(""); })
+              .find("corrupt project (control point 3 has the value nan"),
+            std::string::npos);
+  EXPECT_NE(refused("huge.meshpaint", [](Project& p) { p.reference[0][2] = 3e38f; })
+              .find("corrupt project (reference point 0 has the value 3e+38"),
+            std::string::npos);
+  EXPECT_NE(refused("label.meshpaint", [](Project& p) { p.channels.material[2][2] = 2.5f; })
+              .find("corrupt project (label at texel 2 is not an integer"),
+            std::string::npos);
+  EXPECT_NE(refused("mask.meshpaint", [](Project& p) { p.channels.material[2][3] = -0.5f; })
+              .find("corrupt project (mask at texel 2 is not from 0 to 1"),
+            std::string::npos);
+  EXPECT_NE(refused("classes.meshpaint", [](Project& p) { p.labels[1].id = 3; })
+              .find("corrupt project (label 1: id 3 is used twice)"),
+            std::string::npos);
+  EXPECT_NE(refused("face.meshpaint",
+                    [](Project& p) { p.mesh.face_vertices[1] = p.mesh.face_vertices[0]; })
+              .find("corrupt project (the base mesh needs repairs"),
+            std::string::npos);
+  // What the sample holds as saved loads.
+  EXPECT_EQ(refused("fine.meshpaint", [](Project&) {}), "");
 }
 
 TEST(Labels, ParsedAndChecked)

@@ -36,6 +36,13 @@ std::string lower_extension(const std::string& path)
   return ext;
 }
 
+std::string format_number(double value)
+{
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", value);
+  return buf;
+}
+
 std::string json_string(const std::string& s)
 {
   std::string out = "\"";

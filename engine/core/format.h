@@ -9,11 +9,17 @@ namespace meshpaint {
 //! "1.5 GiB", "320 MiB", "12 KiB", "512 B".
 std::string format_bytes(std::size_t bytes);
 
+//! A number as printf's %g writes it: "3e+38", "0.5", "nan".
+std::string format_number(double value);
+
 //! Fixed-point with `digits` decimals.
 std::string format_fixed(double value, int digits);
 
 //! ".obj" for "Mesh.OBJ": the extension, lower case, with its dot.
 std::string lower_extension(const std::string& path);
+
+//! Length of a parser's whole message kept by excerpt().
+constexpr std::size_t kMessageChars = 300;
 
 //! `s` as a JSON string literal, quotes included.
 std::string json_string(const std::string& s);

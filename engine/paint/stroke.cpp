@@ -1,7 +1,8 @@
 #include "paint/stroke.h"
 
 #include "core/errors.h"
-#include "core/format.h"
+#include "core/format.h"     // for meshpaint::excerpt
+#include "core/input_file.h" // for meshpaint::read_input_file
 
 #include <nlohmann/json.hpp> // for nlohmann::json
 
@@ -9,7 +10,6 @@
 #include <array>     // for std::array
 #include <cmath>   // for std::isfinite, std::sqrt
 #include <filesystem> // for std::filesystem::path
-#include <fstream> // for std::ifstream
 #include <map>     // for std::map
 #include <set>     // for std::set
 #include <sstream> // for std::ostringstream
@@ -113,7 +113,7 @@ void read_channels(const StrokeReader& r, Stroke& s)
   for (const auto& [name, v] : ch.items()) {
     const auto it = kChannels.find(name);
     if (it == kChannels.end())
-      r.fail("channels", "has an unknown channel \"" + name +
+      r.fail("channels", "has an unknown channel \"" + excerpt(name) +
                            "\" (diffuse, specular, roughness, displacement, label, mask)");
     const int c = it->second;
     Float4 value{0.f, 0.f, 0.f, 1.f};
@@ -531,7 +531,7 @@ Tool tool_named(const std::string& name)
   for (std::size_t k = 0; k < kToolNames.size(); ++k)
     if (name == kToolNames[k])
       return Tool(k);
-  throw InputError("'" + name + "' is not a tool");
+  throw InputError("'" + excerpt(name) + "' is not a tool");
 }
 
 void check_stroke(const Stroke& stroke)
@@ -659,7 +659,8 @@ StrokeScript parse_stroke_script(const std::string& text)
     // (or out_of_range.406 for a number too large for a double)
     const std::string what = e.what();
     const std::size_t at = what.find("] ");
-    throw InputError("stroke script is not valid JSON: " + (at == std::string::npos ? what : what.substr(at + 2)));
+    throw InputError("stroke script is not valid JSON: " +
+                     excerpt(at == std::string::npos ? what : what.substr(at + 2), kMessageChars));
   }
   if (!j.is_object())
     throw InputError("stroke script must be a JSON object {\"strokes\": [...]}");
@@ -704,14 +705,10 @@ std::string drop_meaningless_keys(const std::string& stroke_object)
 
 StrokeScript load_stroke_script(const std::string& path)
 {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw IOError("cannot open stroke script '" + path + "'");
-  std::ostringstream text;
-  text << in.rdbuf();
+  const std::string text = read_input_file(path, kMaxStrokeScriptBytes, "stroke script");
   StrokeScript script;
   try {
-    script = parse_stroke_script(text.str());
+    script = parse_stroke_script(text);
   } catch (const InputError& e) {
     throw InputError("'" + path + "': " + e.what());
   }

@@ -1,6 +1,7 @@
 #include "paint/stroke_session.h"
 
 #include "core/errors.h"
+#include "paint/finite_result.h"
 
 namespace meshpaint {
 
@@ -122,7 +123,21 @@ std::vector<StrokeReport> StrokeSession::apply(const Stroke& stroke)
 {
   if (scene_.empty())
     throw InputError("no surface to paint: load a mesh first");
-  return scene_.apply(stroke);
+  if (!moves_surface(stroke))
+    return scene_.apply(stroke);
+  std::vector<std::uint64_t> before;
+  for (std::size_t o = 0; o < scene_.size(); ++o)
+    before.push_back(scene_.surface(o).change_count());
+  std::vector<StrokeReport> reports = scene_.apply(stroke);
+  for (std::size_t o = 0; o < scene_.size(); ++o) {
+    const std::string problem = surface_result_problem(scene_.surface(o), before[o]);
+    if (problem.empty())
+      continue;
+    if (scene_.surface(o).undo_log().recording())
+      scene_.undo();
+    throw InputError("refused: " + problem);
+  }
+  return reports;
 }
 
 bool StrokeSession::undo()

@@ -38,7 +38,11 @@ public:
   //! The stroke being drawn (its path so far). \pre drawing()
   const Stroke& current() const { return *drawing_; }
 
-  //! Applies a whole stroke (a script's), recorded as drawn ones are.
+  //! Applies a whole stroke (a script's), recorded as drawn ones are. A
+  //! stroke that moves the surface (moves_surface()) is refused when its
+  //! result is not finite or beyond kMaxCoordinate (surface_result_problem()):
+  //! taken back where the scene records undo steps.
+  //! \throw InputError naming the problem.
   std::vector<StrokeReport> apply(const Stroke& stroke);
   //! Whole strokes off and back on; false when there is nothing to undo
   //! (redo). Not while a stroke is being drawn.

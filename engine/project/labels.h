@@ -19,12 +19,19 @@ struct LabelClass
 //! Largest id: label values are stored as floats, exact up to 2^24.
 constexpr int kMaxLabelId = 1 << 24;
 
+//! Checks label classes however they were read (a labels file, a project):
+//! ids 0..kMaxLabelId, names not empty and valid UTF-8, colours 0..1, ids
+//! and names unique.
+//! \throw InputError naming the entry (0-based) and key.
+void check_labels(const std::vector<LabelClass>& labels);
+
 //! Parses a labels file: a JSON array of {"id": int, "name": text,
 //! "colour": [r, g, b]} (0..1), ids and names unique.
 //! \throw InputError naming the entry (0-based) and key.
 std::vector<LabelClass> parse_labels(const std::string& json_text);
 
-//! Reads and parses a labels file; errors start with the path.
+//! Reads and parses a labels file (a regular file of at most
+//! kMaxLabelTableBytes); errors start with the path.
 //! \throw IOError when the file cannot be read; InputError as above.
 std::vector<LabelClass> load_labels(const std::string& path);
 

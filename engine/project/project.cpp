@@ -4,6 +4,7 @@
 #include "core/errors.h"
 #include "core/format.h"
 #include "project/byte_stream.h"
+#include "project/content_checks.h"
 
 #include <zlib.h> // for deflate, inflate, crc32
 
@@ -23,6 +24,11 @@ constexpr unsigned char kMagic[8] = {0x89, 'M', 'P', 'R', 'O', 'J', '\r', '\n'};
 constexpr std::size_t kHeaderBytes = 40;
 // Bounds a damaged header cannot push a reader past.
 constexpr std::uint64_t kMaxRawBytes = std::uint64_t(1) << 40;
+// Deflate codes at best 258 bytes in 2 bits: a payload can never decompress
+// to more than about 1032 times its size (plus the stream's few bytes of
+// framing), so a header stating more is refused before anything is allocated.
+constexpr std::uint64_t kMaxDeflateRatio = 1032;
+constexpr std::uint64_t kDeflateFramingBytes = 64;
 
 std::uint32_t crc_of(const unsigned char* data, std::size_t size)
 {
@@ -259,8 +265,6 @@ void read_payload(ByteReader& r, Project& p)
   for (LabelClass& c : p.labels) {
     c.id = r.i32();
     c.name = r.string();
-    if (!is_utf8(c.name))
-      r.fail("a label name is not valid UTF-8: \"" + excerpt(c.name) + "\"");
     for (float& x : c.colour)
       x = r.f32();
   }
@@ -343,7 +347,7 @@ Project load_project(const std::string& path)
   if (file_bytes > kHeaderBytes + packed_bytes)
     throw InputError(path + ": corrupt project (" + std::to_string(file_bytes - kHeaderBytes - packed_bytes) +
                      " bytes after the payload)");
-  if (raw_bytes > kMaxRawBytes)
+  if (raw_bytes > kMaxRawBytes || raw_bytes > kMaxDeflateRatio * packed_bytes + kDeflateFramingBytes)
     throw InputError(path + ": corrupt project (payload size out of range)");
   std::vector<unsigned char> packed(static_cast<std::size_t>(packed_bytes));
   if (std::fread(packed.data(), 1, packed.size(), f.get()) != packed.size())
@@ -355,6 +359,7 @@ Project load_project(const std::string& path)
   ByteReader r(raw.data(), raw.size(), path);
   Project p;
   read_payload(r, p);
+  check_project_content(p, path);
   return p;
 }
 

@@ -1,9 +1,10 @@
 #include "project/scan_fit.h"
 
 #include "atlas/weld.h"
+#include "core/errors.h"
 
 #include <algorithm> // for std::max, std::max_element
-#include <cmath>     // for std::sqrt
+#include <cmath>     // for std::sqrt, std::isfinite, std::abs
 #include <optional>  // for std::optional
 
 namespace meshpaint {
@@ -61,6 +62,21 @@ std::vector<std::array<int, 3>> triangles_of(const BaseMesh& mesh)
   return t;
 }
 
+double scan_area(const BaseMesh& scan)
+{
+  double area = 0;
+  for (const auto& t : triangles_of(scan)) {
+    double e[2][3];
+    for (int k = 0; k < 2; ++k)
+      for (int a = 0; a < 3; ++a)
+        e[k][a] = double(scan.points[std::size_t(t[std::size_t(k + 1)])][a]) - double(scan.points[std::size_t(t[0])][a]);
+    const double c[3] = {e[0][1] * e[1][2] - e[0][2] * e[1][1], e[0][2] * e[1][0] - e[0][0] * e[1][2],
+                         e[0][0] * e[1][1] - e[0][1] * e[1][0]};
+    area += 0.5 * std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+  }
+  return area;
+}
+
 FitReport fit_atlas(Atlas& atlas, const BaseMesh& scan, const SurfaceQueryFactory& make_query,
                     const FitOptions& options)
 {
@@ -77,6 +93,10 @@ FitReport fit_atlas(Atlas& atlas, const BaseMesh& scan, const SurfaceQueryFactor
 
   FitReport report;
   report.diagonal = scan.diagonal();
+  // A scan without area (its faces on a line or at a point) has no normals
+  // to fit along: the surface would collapse instead of fitting.
+  if (!(scan_area(scan) > kMinScanArea * report.diagonal * report.diagonal))
+    throw InputError(scan.name + ": the scan has no area (its faces lie on a line or at a point): nothing to fit to");
   report.points = welded;
   say("indexing the scan: " + std::to_string(scan.face_count()) + " faces");
   const std::unique_ptr<SurfaceQuery> scan_query = make_query(scan.points, triangles_of(scan));
@@ -114,6 +134,11 @@ FitReport fit_atlas(Atlas& atlas, const BaseMesh& scan, const SurfaceQueryFactor
     for (std::size_t t = 0; t < map.size(); ++t)
       for (int a = 0; a < 3; ++a)
         control[t][a] += delta[std::size_t(map[t])][a];
+    for (const Float4& c : control)
+      for (int a = 0; a < 3; ++a)
+        if (!std::isfinite(c[a]) || std::abs(c[a]) > kMaxCoordinate)
+          throw InputError(scan.name + ": the fit does not converge to finite positions (pass " +
+                           std::to_string(pass + 1) + ")");
     atlas.write_positions(level, control);
     say("pass " + std::to_string(pass + 1) + " of " + std::to_string(options.passes) + ": " + std::to_string(welded) +
         " points moved, " + std::to_string(report.ray_misses) + " to the closest point (the normal missed the scan)");

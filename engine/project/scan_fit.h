@@ -56,6 +56,12 @@ struct FitOptions
   Progress* progress = nullptr;
 };
 
+//! Smallest scan area fit_atlas() accepts, relative to the squared diagonal.
+constexpr double kMinScanArea = 1e-9;
+
+//! The scan's area (its triangles', in double precision).
+double scan_area(const BaseMesh& scan);
+
 //! The scan's faces fanned into triangles.
 std::vector<std::array<int, 3>> triangles_of(const BaseMesh& mesh);
 
@@ -67,6 +73,9 @@ std::vector<std::array<int, 3>> triangles_of(const BaseMesh& mesh);
 //! difference, so that the limit surface converges onto the scan. Then it
 //! measures the distances both ways and flags folded and stretched patches.
 //! The atlas's coarser levels are left as subdivided.
+//! \throw InputError when the scan has no area (kMinScanArea), or when a
+//! pass would move the surface to non-finite positions or beyond
+//! kMaxCoordinate.
 FitReport fit_atlas(Atlas& atlas, const BaseMesh& scan, const SurfaceQueryFactory& make_query,
                     const FitOptions& options = FitOptions());
 

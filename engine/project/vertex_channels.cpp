@@ -2,6 +2,8 @@
 
 #include "atlas/weld.h"
 #include "core/errors.h"
+#include "core/format.h" // for meshpaint::format_number
+#include "project/content_checks.h" // for meshpaint::channel_value_problem
 
 #include <algorithm> // for std::max_element
 #include <cmath>     // for std::round
@@ -63,8 +65,13 @@ void set_vertex_channel(PaintSurface& surface, const std::string& name, const st
                      std::to_string(values.size()) + " numbers");
   for (std::size_t t = 0; t < map.size(); ++t)
     for (int a = 0; a < k; ++a) {
-      const float v = values[std::size_t(map[t]) * std::size_t(k) + std::size_t(a)];
-      (*layer)[t][std::size_t(first + a)] = name == "label" ? std::round(v) : v;
+      const float given = values[std::size_t(map[t]) * std::size_t(k) + std::size_t(a)];
+      const float v = name == "label" ? std::round(given) : given;
+      const std::string problem = channel_value_problem(name, v);
+      if (!problem.empty())
+        throw InputError("channel '" + name + "': the value of vertex " + std::to_string(map[t]) + " " + problem +
+                         " (" + format_number(given) + ")");
+      (*layer)[t][std::size_t(first + a)] = v;
     }
   surface.write_channels(c);
 }

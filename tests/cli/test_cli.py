@@ -6,6 +6,8 @@ import json
 import os
 import re
 import subprocess
+import sys
+import tempfile
 
 import pytest
 import vtk  # Debian's python3-vtk9; read our outputs with VTK itself
@@ -21,7 +23,8 @@ with open(os.path.join(SOURCE, "tests", "support", "cube.obj")) as _f:
 
 
 def run(*args):
-    return subprocess.run([BIN, *args], capture_output=True, text=True, timeout=600)
+    # errors="replace": a message that is not UTF-8 shows as such, not as a test crash.
+    return subprocess.run([BIN, *args], capture_output=True, text=True, errors="replace", timeout=600)
 
 
 def load_cases():
@@ -29,9 +32,20 @@ def load_cases():
         return json.load(f)["cases"]
 
 
-@pytest.mark.parametrize("case", load_cases(), ids=lambda c: " ".join(c["args"][:2]) + " " + os.path.basename(c["args"][-1]))
-def test_bad_input_gives_one_line_and_exit_2(case, tmp_path):
-    args = [a.format(dir=BAD, scans=SCANS, tmp=tmp_path) for a in case["args"]]
+def generated_cases():
+    """The cases of tests/bad_input/generate_cases.py, written once per run."""
+    out = os.path.join(tempfile.mkdtemp(prefix="meshpaint-generated-"), "cases")
+    subprocess.run([sys.executable, os.path.join(BAD, "generate_cases.py"), out, BIN], check=True, timeout=600)
+    with open(os.path.join(out, "cases.json")) as f:
+        return [dict(case, dir=out) for case in json.load(f)["cases"]]
+
+
+def case_id(case):
+    return " ".join(case["args"][:2]) + " " + os.path.basename(case["args"][-1])
+
+
+def check_case(case, folder, tmp_path):
+    args = [a.format(dir=folder, scans=SCANS, tmp=tmp_path) for a in case["args"]]
     r = run(*args)
     lines = r.stderr.strip().splitlines()
     if case.get("exit", 2) == 0:
@@ -45,6 +59,18 @@ def test_bad_input_gives_one_line_and_exit_2(case, tmp_path):
     assert len(lines) == 1, r.stderr
     assert re.search(case["message"], lines[0]), lines[0]
     assert lines[0].startswith("meshpaint "), lines[0]
+    assert "\ufffd" not in lines[0], "the message must be valid UTF-8: " + lines[0]
+    assert not (tmp_path / "out").exists(), "nothing may be written for bad input"
+
+
+@pytest.mark.parametrize("case", load_cases(), ids=case_id)
+def test_bad_input_gives_one_line_and_exit_2(case, tmp_path):
+    check_case(case, BAD, tmp_path)
+
+
+@pytest.mark.parametrize("case", generated_cases(), ids=case_id)
+def test_generated_bad_input_gives_one_line_and_exit_2(case, tmp_path):
+    check_case(case, case["dir"], tmp_path)
 
 
 @pytest.mark.parametrize("name", ["zero-area-face", "high-valence", "tiny-coordinates"])

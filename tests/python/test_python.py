@@ -247,6 +247,14 @@ def test_channels_round_trip_through_numpy():
         s.SetChannel("diffuse", numpy_to_vtk(np.zeros(len(points), dtype=np.float32), deep=True))
     with pytest.raises(meshpaint.Error, match=r"channel 'roughness' needs \d+ values of 1 component, not 3 numbers"):
         s.SetChannel("roughness", numpy_to_vtk(np.zeros(3, dtype=np.float32), deep=True))
+    # values a project could not hold are refused, and nothing is written
+    bad = diffuse.copy()
+    bad[5] = [0, np.nan, 0]
+    with pytest.raises(meshpaint.Error, match=r"channel 'diffuse': the value of vertex \d+ is not finite"):
+        s.SetChannel("diffuse", numpy_to_vtk(bad, deep=True))
+    with pytest.raises(meshpaint.Error, match=r"channel 'displacement': the value of vertex \d+ is beyond 1e15"):
+        s.SetChannel("displacement", numpy_to_vtk(np.full(len(points), 3e38, dtype=np.float32), deep=True))
+    assert np.array_equal(vtk_to_numpy(s.GetChannel("diffuse")), out["diffuse"])
 
 
 def test_nothing_to_paint_on():
