@@ -164,7 +164,7 @@ def make_projects(out, meshpaint, cases):
             lambda p: p.labels([(1, b"bone", (1, 1, 1)), (1, b"skin", (1, 0, 0))]))
     damaged("project-label-colour", r"corrupt project \(label 0: \"colour\" must be",
             lambda p: p.labels([(1, b"bone", (2, 1, 1))]))
-    damaged("project-label-not-utf8", r"corrupt project \(label 0: \"name\" is not valid UTF-8",
+    damaged("project-label-not-utf8", r"corrupt project \(label 0: \"name\" \"bo\\xffne\" is not valid UTF-8",
             lambda p: p.labels([(1, b"bo\xffne", (1, 1, 1))]))
     damaged("project-label-negative-id", r"corrupt project \(label 0: \"id\" must be",
             lambda p: p.labels([(-4, b"bone", (1, 1, 1))]))
