@@ -190,7 +190,7 @@ def main(argv=None):
         from distributed import Client
 
         try:
-            client = Client(args.scheduler, timeout="30s")
+            client = Client(args.scheduler)  # waits as long as Dask's distributed.comm.timeouts.connect
         except (OSError, TimeoutError, ValueError) as e:
             _fail(EXIT_RESOURCE, f"cannot reach the scheduler {args.scheduler}: {e}".splitlines()[0])
     try:
