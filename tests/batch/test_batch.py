@@ -231,3 +231,14 @@ def test_a_crashing_or_hanging_step_fails_only_its_scan(tmp_path, body, timeout,
 def test_scan_names_are_unique_and_avoid_the_batch_files():
     assert batch.scan_names(["a/bunny.off", "b/bunny.ply", "logs.obj", "summary.csv.off", "c/bunny.off"]) == [
         "bunny", "bunny-2", "logs-2", "summary.csv-2", "bunny-3"]
+
+
+def test_run_refuses_bad_arguments_before_starting_a_cluster(tmp_path):
+    strokes, _ = write_inputs(tmp_path)
+    with pytest.raises(meshpaint.Error, match="no scans given"):
+        batch.run([], strokes, tmp_path / "out")
+    with pytest.raises(meshpaint.Error, match="cannot read labels file"):
+        batch.run([CUBE], strokes, tmp_path / "out", labels=tmp_path / "none.json")
+    with pytest.raises(meshpaint.Error, match="workers must be"):
+        batch.run([CUBE], strokes, tmp_path / "out", client=object(), workers=2)
+    assert not (tmp_path / "out").exists()
