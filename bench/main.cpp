@@ -13,13 +13,14 @@ namespace {
 
 int bench(const Argv& argv)
 {
-  Args args("bench", argv, {"--json", "--phases"}, {"--level", "--repeats", "--steps", "--tool", "--mesh", "--device", "--storage"});
+  Args args("bench", argv, {"--json", "--phases"}, {"--level", "--repeats", "--steps", "--tool", "--mesh", "--max-triangles", "--device", "--storage"});
   const std::string what = args.positionals().empty() ? "" : args.positionals()[0];
-  // One parser for all three; an option of another benchmark is refused.
+  // One parser for all four; an option of another benchmark is refused.
   const std::map<std::string, std::vector<std::string>> foreign = {
-    {"subdivide", {"--phases", "--steps", "--tool", "--mesh"}},
-    {"paint", {"--level", "--repeats"}},
-    {"view", {"--json", "--phases", "--level", "--repeats", "--tool", "--mesh"}}};
+    {"subdivide", {"--phases", "--steps", "--tool", "--mesh", "--max-triangles"}},
+    {"paint", {"--level", "--repeats", "--max-triangles"}},
+    {"view", {"--json", "--phases", "--level", "--repeats", "--tool", "--mesh", "--max-triangles"}},
+    {"fit", {"--phases", "--repeats", "--steps", "--tool", "--mesh"}}};
   if (const auto found = foreign.find(what); found != foreign.end())
     for (const std::string& option : found->second)
       if (args.has(option) || args.flag(option))
@@ -30,9 +31,12 @@ int bench(const Argv& argv)
     return bench_paint(args);
   if (what == "view")
     return bench_view(args);
+  if (what == "fit")
+    return bench_fit(args);
   throw InputError("usage: meshpaint bench subdivide MESH [--level L] [--json] [--repeats N] | "
                    "meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases] | "
-                   "meshpaint bench view [--steps N]");
+                   "meshpaint bench view [--steps N] | "
+                   "meshpaint bench fit [--level L] [--max-triangles N] [--json]");
 }
 
 } // namespace
