@@ -12,6 +12,7 @@ import io
 import json
 import os
 import sys
+import uuid
 
 from . import Error
 from . import scan_job
@@ -125,10 +126,11 @@ def _run_on(client, scans, names, output, progress, options):
     from distributed import as_completed
 
     futures = {}
+    batch_id = uuid.uuid4().hex[:12]
     for index, (scan, name) in enumerate(zip(scans, names)):
-        # pure=False: a re-run must run again, not reuse a result the cluster remembers.
+        # A key of its own per batch: a re-run must run again, not meet a result the cluster remembers.
         future = client.submit(process_scan, scan, name, output, pure=False, retries=0,
-                               key=f"meshpaint-scan-{name}-{os.getpid()}-{index}", **options)
+                               key=f"meshpaint-scan-{name}-{batch_id}", **options)
         futures[future] = index
     rows = [None] * len(scans)
     for future in as_completed(futures):
