@@ -54,6 +54,8 @@ commands:
                                       smoothing against VTK and OpenMesh
   bench view [--steps N]              the window's frame times while painting, with and
                                       without level of detail, and pick latency (needs X)
+  bench fit [--level L] [--max-triangles N] [--json]
+                                      fit's time, peak memory and error against scan size
   devices                             the OpenCL devices (for --device / MESHPAINT_DEVICE)
   help [COMMAND]                      this text, or one command's (also COMMAND --help, -h)
   --version                           the version of meshpaint

@@ -12,5 +12,7 @@ int bench_subdivide(const Args& args);
 int bench_paint(const Args& args);
 //! bench view: the window's frame times while painting.
 int bench_view(const Args& args);
+//! bench fit: `meshpaint fit`'s time, peak memory and error against scan size.
+int bench_fit(const Args& args);
 
 } // namespace meshpaint::cli

@@ -16,12 +16,14 @@ namespace {
 const char* const kUsage = R"(usage: meshpaint bench subdivide MESH [--level L] [--json] [--repeats N] [--quiet]
        meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases] [--quiet]
        meshpaint bench view [--steps N]
+       meshpaint bench fit [--level L] [--max-triangles N] [--json]
        (the same as meshpaint-bench ...)
 
   subdivide   kernels against OpenSubdiv's CpuEvaluator (level 3)
   paint       brush step times as the paper's Table 1, and smoothing against VTK and OpenMesh
   view        the window's frame times while painting, with and without level of detail,
               and pick latency (needs X)
+  fit         fit's time, peak memory and error against scan size (noisy refined femur scans)
 
 options: --device SEL (gpu, cpu, P:D or part of a name), --storage buffer|image;
 subdivide and paint: --quiet (no progress on stderr)
@@ -39,13 +41,14 @@ int bench(const Argv& argv)
     std::cout << "meshpaint-bench " << MESHPAINT_VERSION << "\n";
     return 0;
   }
-  Args args("bench", argv, {"--json", "--phases", "--quiet"}, {"--level", "--repeats", "--steps", "--tool", "--mesh", "--device", "--storage"});
+  Args args("bench", argv, {"--json", "--phases", "--quiet"}, {"--level", "--repeats", "--steps", "--tool", "--mesh", "--max-triangles", "--device", "--storage"});
   const std::string what = args.positionals().empty() ? "" : args.positionals()[0];
-  // One parser for all three; an option of another benchmark is refused.
+  // One parser for all four; an option of another benchmark is refused.
   const std::map<std::string, std::vector<std::string>> foreign = {
-    {"subdivide", {"--phases", "--steps", "--tool", "--mesh"}},
-    {"paint", {"--level", "--repeats"}},
-    {"view", {"--json", "--phases", "--level", "--repeats", "--tool", "--mesh", "--quiet"}}};
+    {"subdivide", {"--phases", "--steps", "--tool", "--mesh", "--max-triangles"}},
+    {"paint", {"--level", "--repeats", "--max-triangles"}},
+    {"view", {"--json", "--phases", "--level", "--repeats", "--tool", "--mesh", "--quiet", "--max-triangles"}},
+    {"fit", {"--phases", "--repeats", "--steps", "--tool", "--mesh", "--quiet"}}};
   if (const auto found = foreign.find(what); found != foreign.end())
     for (const std::string& option : found->second)
       if (args.has(option) || args.flag(option))
@@ -56,9 +59,12 @@ int bench(const Argv& argv)
     return bench_paint(args);
   if (what == "view")
     return bench_view(args);
+  if (what == "fit")
+    return bench_fit(args);
   throw InputError("usage: meshpaint bench subdivide MESH [--level L] [--json] [--repeats N] [--quiet] | "
                    "meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases] [--quiet] | "
-                   "meshpaint bench view [--steps N] (see meshpaint bench --help)");
+                   "meshpaint bench view [--steps N] | meshpaint bench fit [--level L] [--max-triangles N] [--json] "
+                   "(see meshpaint bench --help)");
 }
 
 } // namespace

@@ -1,0 +1,230 @@
+// meshpaint bench fit: `meshpaint fit` against scan size. The scans are the
+// femur scan refined by Loop subdivision (OpenMesh's subdivider) until it
+// has 10^5 triangles and more, each with seeded Gaussian noise; every fit
+// runs as the meshpaint program in a child process, whose wall time and
+// peak resident memory (wait4's rusage) are what a user's run would take.
+
+#include "benchmarks.h"
+#include "table.h"
+
+#include "core/errors.h"
+#include "core/format.h"
+#include "core/timer.h"
+
+#include <OpenMesh/Core/IO/MeshIO.hh>                   // for OpenMesh::IO::read_mesh, write_mesh
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>   // for TriMesh_ArrayKernelT
+#include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>   // for LoopT
+
+#include <cerrno>     // for errno
+#include <cstring>    // for std::strerror
+#include <filesystem> // for std::filesystem
+#include <fstream>    // for std::ifstream
+#include <iostream>   // for std::cout, std::cerr
+#include <random>     // for std::mt19937, std::normal_distribution
+#include <regex>      // for std::regex
+#include <sstream>    // for std::ostringstream
+
+#include <csignal>        // for SIGKILL
+#include <fcntl.h>        // for O_WRONLY
+#include <spawn.h>        // for posix_spawn
+#include <sys/resource.h> // for rusage
+#include <sys/wait.h>     // for wait4
+#include <unistd.h>       // for readlink
+
+extern char** environ;
+
+namespace meshpaint::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using TriMesh = OpenMesh::TriMesh_ArrayKernelT<>;
+
+//! Noise of the made scans: per coordinate, as a fraction of the diagonal.
+constexpr double kNoise = 1e-4;
+//! Smallest scan measured.
+constexpr std::size_t kSmallest = 100000;
+
+struct FitRun
+{
+  std::size_t triangles = 0, vertices = 0;
+  double wall_s = 0, peak_mib = 0;
+  std::string report, warnings; //!< fit's stdout and stderr
+  std::string failure;          //!< empty when the fit succeeded
+};
+
+std::string program_folder()
+{
+  std::string self(4096, '\0');
+  const ssize_t n = readlink("/proc/self/exe", self.data(), self.size());
+  if (n <= 0)
+    throw ResourceError("cannot find this program's folder: " + std::string(std::strerror(errno)));
+  self.resize(std::size_t(n));
+  return self.substr(0, self.rfind('/') + 1);
+}
+
+std::string read_text(const fs::path& path)
+{
+  std::ifstream in(path);
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+//! Runs `argv` with stdout and stderr into files; its wall time and peak memory.
+FitRun run_measured(const std::vector<std::string>& argv, const fs::path& out, const fs::path& err)
+{
+  posix_spawn_file_actions_t files;
+  posix_spawn_file_actions_init(&files);
+  posix_spawn_file_actions_addopen(&files, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&files, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  std::vector<char*> args;
+  for (const std::string& a : argv)
+    args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  FitRun run;
+  const Timer wall;
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, args[0], &files, nullptr, args.data(), environ);
+  posix_spawn_file_actions_destroy(&files);
+  if (spawned != 0)
+    throw ResourceError("cannot run " + argv[0] + ": " + std::strerror(spawned));
+  int status = 0;
+  rusage usage{};
+  if (wait4(pid, &status, 0, &usage) != pid)
+    throw ResourceError("lost the fit process: " + std::string(std::strerror(errno)));
+  run.wall_s = wall.ms() / 1000;
+  run.peak_mib = double(usage.ru_maxrss) / 1024; // kilobytes on Linux
+  run.report = read_text(out);
+  run.warnings = read_text(err);
+  if (WIFSIGNALED(status))
+    run.failure = "killed by signal " + std::to_string(WTERMSIG(status)) +
+                  (WTERMSIG(status) == SIGKILL ? " (out of memory?)" : "");
+  else if (WEXITSTATUS(status) != 0) {
+    const std::string text = run.warnings.substr(0, run.warnings.find('\n'));
+    run.failure = "exit " + std::to_string(WEXITSTATUS(status)) + ": " + text;
+  }
+  return run;
+}
+
+//! Writes the mesh with noise added, as binary PLY, leaving `mesh` unchanged.
+void write_noisy(TriMesh& mesh, double sigma, unsigned seed, const fs::path& path)
+{
+  std::vector<TriMesh::Point> clean(mesh.points(), mesh.points() + mesh.n_vertices());
+  std::mt19937 random(seed);
+  std::normal_distribution<float> noise(0.f, float(sigma));
+  for (auto v : mesh.vertices())
+    mesh.point(v) += TriMesh::Point(noise(random), noise(random), noise(random));
+  const bool written = OpenMesh::IO::write_mesh(mesh, path.string(), OpenMesh::IO::Options::Binary);
+  for (auto v : mesh.vertices())
+    mesh.set_point(v, clean[std::size_t(v.idx())]);
+  if (!written)
+    throw IOError("cannot write the made scan " + path.string());
+}
+
+//! A number of fit's report: the `group`th capture of `pattern`.
+double reported(const std::string& report, const std::string& pattern, int group)
+{
+  std::smatch m;
+  if (!std::regex_search(report, m, std::regex(pattern)))
+    throw InputError("bench fit: the fit report has no line matching '" + pattern + "'");
+  return std::stod(m[group].str());
+}
+
+std::size_t count_of(const std::string& text, const std::string& pattern)
+{
+  std::smatch m;
+  return std::regex_search(text, m, std::regex(pattern)) ? std::stoul(m[1].str()) : 0;
+}
+
+} // namespace
+
+int bench_fit(const Args& args)
+{
+  args.expect_positionals(1, 1, "fit [--level L] [--max-triangles N] [--json]");
+  const int level = args.integer("--level", 3, 1, kMaxLevel);
+  const std::size_t max_triangles = std::size_t(args.integer("--max-triangles", 10000000, 1000, 200000000));
+  const bool json = args.flag("--json");
+  const std::string source = scans_dir() + "/femur.off";
+  TriMesh mesh;
+  if (!OpenMesh::IO::read_mesh(mesh, source))
+    throw IOError("cannot read " + source + " (scripts/fetch-scans.sh puts the scans there)");
+  const auto box = [&] {
+    TriMesh::Point lo = mesh.point(*mesh.vertices_begin()), hi = lo;
+    for (auto v : mesh.vertices()) {
+      lo.minimize(mesh.point(v));
+      hi.maximize(mesh.point(v));
+    }
+    return (hi - lo).norm();
+  };
+  const double sigma = kNoise * box();
+
+  const fs::path folder = fs::temp_directory_path() / ("meshpaint-bench-fit-" + std::to_string(getpid()));
+  fs::create_directories(folder);
+  const std::string program = program_folder() + "meshpaint";
+  std::vector<std::string> passed;
+  for (const char* option : {"--device", "--storage"})
+    if (args.has(option))
+      passed.insert(passed.end(), {option, args.value(option)});
+
+  Table table({"triangles", "vertices", "subdivisions", "wall s", "decimate s", "fit s", "peak MiB", "base faces",
+               "scan->fit RMS %", "max %", "fit->scan RMS %", "max %", "folds"});
+  std::ostringstream rows;
+  OpenMesh::Subdivider::Uniform::LoopT<TriMesh> loop;
+  for (int steps = 1; mesh.n_faces() * 4 <= max_triangles; ++steps) {
+    loop.attach(mesh);
+    loop(1);
+    loop.detach();
+    if (mesh.n_faces() < kSmallest)
+      continue;
+    const fs::path scan = folder / "scan.ply";
+    write_noisy(mesh, sigma, unsigned(steps), scan);
+    std::vector<std::string> argv = {program, "fit", scan.string(), "--level", std::to_string(level), "--quiet",
+                                     "-o", (folder / "scan.meshpaint").string()};
+    argv.insert(argv.end(), passed.begin(), passed.end());
+    std::cerr << "meshpaint bench: fitting " << grouped(mesh.n_faces()) << " triangles at level " << level << "\n";
+    FitRun run = run_measured(argv, folder / "fit.txt", folder / "fit.err");
+    run.triangles = mesh.n_faces();
+    run.vertices = mesh.n_vertices();
+    fs::remove(scan);
+    if (!run.failure.empty()) {
+      std::cerr << "meshpaint bench: the fit of " << grouped(run.triangles) << " triangles failed (" << run.failure
+                << "); larger scans are not tried\n";
+      break;
+    }
+    const std::string pct = R"(RMS [^ ]+ \(([0-9.]+)%\), max [^ ]+ \(([0-9.]+)%\))";
+    const double s2f_rms = reported(run.report, "scan->fit +" + pct, 1), s2f_max = reported(run.report, "scan->fit +" + pct, 2);
+    const double f2s_rms = reported(run.report, "fit->scan +" + pct, 1), f2s_max = reported(run.report, "fit->scan +" + pct, 2);
+    const double decimate_s = reported(run.report, R"(time +decimate ([0-9.]+) ms)", 1) / 1000;
+    const double fit_s = reported(run.report, R"(, fit ([0-9.]+) ms)", 1) / 1000;
+    std::smatch m;
+    std::string base_faces; // none with --direct; fit decimates here
+    if (std::regex_search(run.report, m, std::regex(R"(decimated to ([0-9,]+) faces)")))
+      base_faces = m[1].str();
+    const std::size_t folds = count_of(run.warnings, R"(warning: ([0-9]+) patches fold)");
+    // Each fit can take minutes: its numbers as soon as it ends.
+    std::cerr << "meshpaint bench: " << grouped(run.triangles) << " triangles: " << format_fixed(run.wall_s, 1)
+              << " s, peak " << format_fixed(run.peak_mib, 0) << " MiB, scan->fit RMS " << format_fixed(s2f_rms, 4)
+              << "%, max " << format_fixed(s2f_max, 4) << "%\n";
+    table.add({grouped(run.triangles), grouped(run.vertices), std::to_string(steps), format_fixed(run.wall_s, 1),
+               format_fixed(decimate_s, 1), format_fixed(fit_s, 1), format_fixed(run.peak_mib, 0), base_faces,
+               format_fixed(s2f_rms, 4), format_fixed(s2f_max, 4), format_fixed(f2s_rms, 4), format_fixed(f2s_max, 4),
+               std::to_string(folds)});
+    rows << (rows.tellp() > 0 ? "," : "") << "{\"triangles\":" << run.triangles << ",\"vertices\":" << run.vertices
+         << ",\"wall_s\":" << run.wall_s << ",\"decimate_s\":" << decimate_s << ",\"fit_s\":" << fit_s
+         << ",\"peak_mib\":" << run.peak_mib << ",\"scan_to_fit_rms_percent\":" << s2f_rms
+         << ",\"scan_to_fit_max_percent\":" << s2f_max << ",\"fit_to_scan_rms_percent\":" << f2s_rms
+         << ",\"fit_to_scan_max_percent\":" << f2s_max << ",\"folds\":" << folds << "}";
+  }
+  fs::remove_all(folder);
+  if (json) {
+    std::cout << "{\"scan\":\"femur\",\"level\":" << level << ",\"noise\":" << kNoise << ",\"fits\":[" << rows.str()
+              << "]}\n";
+    return 0;
+  }
+  std::cout << "meshpaint fit on femur refined by Loop subdivision, noise " << kNoise * 100
+            << "% of the diagonal per coordinate, level " << level << "\n";
+  table.print(std::cout);
+  return 0;
+}
+
+} // namespace meshpaint::cli
