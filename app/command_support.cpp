@@ -55,7 +55,7 @@ std::shared_ptr<Runtime> open_device(const Args& args) { return Runtime::open(ar
 ImportOptions import_options(const Args& args)
 {
   ImportOptions options;
-  options.weld = !args.has("--no-weld");
+  options.weld = !args.flag("--no-weld");
   return options;
 }
 

@@ -338,10 +338,41 @@ bool binary_off(const std::string& path)
   return first.find("BINARY") != std::string::npos;
 }
 
+//! OpenMesh's PLY reader takes only some spellings of a list's types
+//! (uchar, uint16, int): each list type becomes the one of its size that it
+//! takes. The census has bounded every count and index, so the values read
+//! the same either way.
+void normalise_ply_list_types(std::string& bytes)
+{
+  const std::size_t end = bytes.find("end_header");
+  if (end == std::string::npos)
+    return;
+  std::istringstream header(bytes.substr(0, end));
+  std::string out, line;
+  while (std::getline(header, line)) {
+    std::istringstream words(line);
+    std::vector<std::string> w;
+    for (std::string word; words >> word;)
+      w.push_back(word);
+    if (w.size() == 5 && w[0] == "property" && w[1] == "list") {
+      for (std::string* t : {&w[2], &w[3]}) {
+        static const std::map<std::string, std::string> same_size = {
+          {"char", "uchar"},   {"int8", "uchar"},   {"uint8", "uchar"},  {"short", "uint16"},
+          {"ushort", "uint16"}, {"int16", "uint16"}, {"uint", "int"},    {"int32", "int"}, {"uint32", "int"}};
+        const auto it = same_size.find(*t);
+        if (it != same_size.end())
+          *t = it->second;
+      }
+      line = "property list " + w[2] + " " + w[3] + " " + w[4];
+    }
+    out += line + "\n";
+  }
+  bytes = out + bytes.substr(end);
+}
+
 //! A file through OpenMesh's reader for its format, after the census: the
 //! vertices with their colours, the faces as listed.
-PolygonSoup read_through_openmesh(const std::string& path, const std::string& ext, const std::string& where,
-                                  std::size_t& faces_skipped)
+PolygonSoup read_through_openmesh(const std::string& path, const std::string& ext, const std::string& where)
 {
   // OpenMesh's text readers skip a vertex written as "nan" or "inf"; say so
   // rather than let the faces after it name the wrong vertices.
@@ -366,6 +397,8 @@ PolygonSoup read_through_openmesh(const std::string& path, const std::string& ex
     std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
     if (census.text && bytes.compare(0, 3, "\xEF\xBB\xBF") == 0)
       bytes.erase(0, 3);
+    if (ext == ".ply")
+      normalise_ply_list_types(bytes);
     std::istringstream in(std::move(bytes), std::ios::binary);
     QuietOpenMesh quiet;
     ok = ext == ".off" ? OpenMesh::IO::IOManager().read(path, importer, options)
@@ -375,6 +408,7 @@ PolygonSoup read_through_openmesh(const std::string& path, const std::string& ex
     throw InputError(where + importer.problem);
   if (!ok)
     throw InputError(where + "not a readable " + ext.substr(1) + " file (truncated or malformed)");
+  std::size_t faces_skipped = 0;
   if (census.declared_faces > long(importer.faces.size())) {
     if (ext != ".obj") // a header's count, which the body must meet
       throw InputError(where + "declares " + std::to_string(census.declared_faces) + " faces, but " +
@@ -393,6 +427,7 @@ PolygonSoup read_through_openmesh(const std::string& path, const std::string& ex
       soup.colours.push_back({c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f});
     }
   soup.faces = std::move(importer.faces);
+  soup.faces_skipped = faces_skipped;
   return soup;
 }
 
@@ -404,7 +439,7 @@ BaseMesh make_base_mesh(std::vector<Vec3> points, const std::vector<std::vector<
   return build(points, faces, name, name + ": ", colours);
 }
 
-BaseMesh load_mesh(const std::string& path, const ImportOptions& import)
+PolygonSoup read_mesh_file(const std::string& path)
 {
   namespace fs = std::filesystem;
   std::error_code ec;
@@ -421,17 +456,22 @@ BaseMesh load_mesh(const std::string& path, const ImportOptions& import)
     throw InputError("'" + path + "' is empty");
 
   const std::string where = "'" + path + "': ";
-  std::size_t faces_skipped = 0;
-  PolygonSoup soup;
   if (ext == ".off" && !binary_off(path)) {
     try {
-      soup = read_off_text(path);
+      return read_off_text(path);
     } catch (const InputError& e) {
       throw InputError(where + e.what());
     }
-  } else {
-    soup = read_through_openmesh(path, ext, where, faces_skipped);
   }
+  return read_through_openmesh(path, ext, where);
+}
+
+BaseMesh load_mesh(const std::string& path, const ImportOptions& import)
+{
+  namespace fs = std::filesystem;
+  const std::string where = "'" + path + "': ";
+  PolygonSoup soup = read_mesh_file(path);
+  const std::size_t faces_skipped = soup.faces_skipped;
   if (soup.faces.empty())
     throw InputError(where + "has no faces");
   const SoupSteps steps = import_soup(soup, import.weld);

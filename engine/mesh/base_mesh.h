@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/vec.h"
+#include "mesh/polygon_soup.h"
 
 #include <cstddef> // for std::size_t
 #include <string>  // for std::string
@@ -68,15 +69,22 @@ constexpr float kMaxCoordinate = 1e15f;
 BaseMesh make_base_mesh(std::vector<Vec3> points, const std::vector<std::vector<int>>& faces,
                         const std::string& name = "mesh", const std::vector<Vec3>& colours = {});
 
+//! The checked reading every mesh file goes through, without the import
+//! steps: the census first (take_census(); text OFF through
+//! read_off_text()), then OpenMesh's readers; vertices and faces as listed.
+//! \throw IOError when the file is missing or unreadable.
+//! \throw InputError, one line naming the file (and the line where there
+//! is one), when the format is unknown or the file is malformed, truncated,
+//! non-finite, or disagrees with its header.
+PolygonSoup read_mesh_file(const std::string& path);
+
 //! How load_mesh() imports.
 struct ImportOptions
 {
   bool weld = true; //!< merge coincident vertices (--no-weld keeps them)
 };
 
-//! Reads OBJ, OFF, PLY or STL: the census first (take_census(); text OFF
-//! through read_off_text()), then OpenMesh's readers for the rest, then the
-//! import steps of import_soup() and the checks and repairs of
+//! Reads OBJ, OFF, PLY or STL through read_mesh_file(), then the import steps of import_soup() and the checks and repairs of
 //! make_base_mesh(). Vertex or face colours become `colours`.
 //! \throw IOError when the file is missing or unreadable.
 //! \throw InputError when the format is unknown or the file is malformed,

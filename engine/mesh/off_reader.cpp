@@ -118,12 +118,19 @@ bool parse_keyword(const std::string& word, OffHeader& h)
   return take("OFF") && k == word.size();
 }
 
-//! A colour from 3 or 4 components: integers are 0-255, numbers 0-1.
-Vec3 colour_of(const OffLines& lines, const std::vector<std::string>& w, std::size_t first, std::size_t n)
+//! A colour from 3 or 4 components. Face colours follow Geomview: all
+//! integers are 0-255, otherwise 0-1. Vertex colours are numbers 0-1 in
+//! Geomview; files that write them 0-255 are recognised by a value above 1.
+Vec3 colour_of(const OffLines& lines, const std::vector<std::string>& w, std::size_t first, std::size_t n,
+               bool vertex)
 {
-  bool integers = true;
-  for (std::size_t k = first; k < first + n; ++k)
+  bool integers = true, above_one = false;
+  for (std::size_t k = first; k < first + n; ++k) {
     integers = integers && is_integer_word(w[k]);
+    above_one = above_one || number(lines, w[k]) > 1;
+  }
+  if (vertex)
+    integers = integers && above_one;
   Vec3 c{};
   for (std::size_t k = 0; k < 3; ++k) {
     const double v = number(lines, w[first + k]);
@@ -210,7 +217,7 @@ PolygonSoup read_off_text(const std::string& path)
     for (std::size_t k = coords; k < fixed; ++k)
       number(lines, w[k]); // normals and texture coordinates: checked, not kept
     if (h.colour)
-      soup.colours.push_back(colour_of(lines, w, coords + (h.normal ? std::size_t(dim) : 0), colour));
+      soup.colours.push_back(colour_of(lines, w, coords + (h.normal ? std::size_t(dim) : 0), colour, true));
     soup.points.push_back(p);
   }
 
@@ -249,7 +256,7 @@ PolygonSoup read_off_text(const std::string& path)
       const auto& m = CGAL::File_scanner_OFF::get_indexed_color(int(index));
       c = {float(m.red() / 255.0), float(m.green() / 255.0), float(m.blue() / 255.0)};
     } else if (extra == 3 || extra == 4) {
-      c = colour_of(lines, w, first, extra);
+      c = colour_of(lines, w, first, extra, false);
     } else if (extra != 0) {
       lines.fail("a face of " + w[0] + " corners with " + std::to_string(extra) +
                  " more numbers: a face colour is 1 (a colour-map index), 3 or 4 numbers");

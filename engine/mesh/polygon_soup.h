@@ -16,6 +16,7 @@ struct PolygonSoup
   std::vector<std::vector<int>> faces;  //!< #faces, vertex indices each
   std::vector<Vec3> colours;            //!< #vertices RGB in [0, 1], or empty
   std::vector<Vec3> face_colours;       //!< #faces RGB in [0, 1], or empty
+  std::size_t faces_skipped = 0;        //!< OBJ faces the reader could not use (repeated vertices)
 };
 
 //! Per-vertex colours from face colours where the file gave only those:
