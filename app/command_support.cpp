@@ -1,6 +1,7 @@
 #include "command_support.h"
 
 #include "core/errors.h"
+#include "PolyDataFiles.h"
 #include "project/imported_colours.h"
 #include "project/project_surface.h"
 
@@ -61,7 +62,7 @@ ImportOptions import_options(const Args& args)
 
 BaseMesh load_reported(const std::string& path, const ImportOptions& options)
 {
-  BaseMesh mesh = load_mesh(path, options);
+  BaseMesh mesh = is_polydata_path(path) ? load_polydata_mesh(path, options) : load_mesh(path, options);
   for (const std::string& line : mesh.report.lines())
     std::cerr << "meshpaint: " << path << ": repaired: " << line << "\n";
   for (const std::string& line : mesh.report.step_lines())

@@ -1,5 +1,6 @@
 #include "ScanTransfer.h"
 
+#include "PolyDataFiles.h"     // for meshpaint::read_polydata_file, read_checked
 #include "SurfaceConversion.h" // for meshpaint::to_polydata
 
 #include "core/errors.h"     // for meshpaint::IOError, InputError
@@ -9,9 +10,6 @@
 
 #include <vtkAlgorithm.h>         // for vtkAlgorithm
 #include <vtkCellData.h>          // for vtkCellData
-#include <vtkLogger.h>            // for vtkLogger::SetStderrVerbosity
-#include <vtkObjectFactory.h>     // for vtkStandardNewMacro
-#include <vtkOutputWindow.h>      // for vtkOutputWindow
 #include <vtkIdList.h>            // for vtkIdList
 #include <vtkCellArray.h>         // for vtkCellArray
 #include <vtkFloatArray.h>        // for vtkFloatArray
@@ -21,15 +19,11 @@
 #include <vtkPLYReader.h>         // for vtkPLYReader
 #include <vtkPointData.h>         // for vtkPointData
 #include <vtkPoints.h>            // for vtkPoints
-#include <vtkSTLReader.h>         // for vtkSTLReader
 #include <vtkStaticCellLocator.h> // for vtkStaticCellLocator
-#include <vtkXMLPolyDataReader.h> // for vtkXMLPolyDataReader
 
 #include <algorithm>  // for std::find, std::max_element
 #include <cmath>      // for std::sqrt, std::isfinite
-#include <filesystem> // for std::filesystem::is_regular_file, file_size
-#include <fstream>    // for std::ifstream
-#include <regex>      // for std::regex, std::sregex_iterator
+#include <filesystem> // for std::filesystem::is_regular_file
 
 namespace meshpaint {
 namespace {
@@ -53,91 +47,6 @@ vtkSmartPointer<vtkPolyData> polygons_of(const PolygonSoup& soup)
   poly->SetPolys(cells);
   return poly;
 }
-
-//! VTK's XML readers allocate what the header's attributes say before
-//! reading data: counts and component numbers are bounded by what the file
-//! could hold (zlib compresses at most about 1000 to 1).
-void check_vtp_sizes(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::string head(1 << 16, '\0');
-  in.read(&head[0], std::streamsize(head.size()));
-  head.resize(std::size_t(in.gcount()));
-  const auto cut = head.find("<AppendedData");
-  if (cut != std::string::npos)
-    head.resize(cut);
-  std::error_code ec;
-  const double budget = 1100.0 * double(std::filesystem::file_size(path, ec));
-  static const std::regex attribute(R"re((NumberOf(Points|Polys|Cells|Verts|Lines|Strips|Components|Tuples))="\s*(-?[0-9]+)\s*")re");
-  for (auto it = std::sregex_iterator(head.begin(), head.end(), attribute); it != std::sregex_iterator(); ++it) {
-    const std::string name = (*it)[1], value = (*it)[3];
-    const double n = std::strtod(value.c_str(), nullptr);
-    const bool components = name == "NumberOfComponents";
-    if (n < 0 || (components && n > 4096) || n > budget)
-      throw InputError("'" + path + "': " + name + "=\"" + value.substr(0, 20) +
-                       "\" is more than the file can hold");
-  }
-}
-
-//! VTK's messages while a reader runs, kept instead of printed: the output
-//! window and the logger's console output are swapped out for that time
-//! and restored after, whatever happens.
-class KeptVtkMessages : public vtkOutputWindow
-{
-public:
-  static KeptVtkMessages* New();
-  vtkTypeMacro(KeptVtkMessages, vtkOutputWindow);
-
-  void DisplayText(const char* text) override
-  {
-    if (first.empty() && text)
-      first = text;
-  }
-
-  //! The first message's text, without VTK's "ERROR: In FILE, line N" and
-  //! the object's name and address.
-  std::string message() const
-  {
-    std::string text = first;
-    if (text.rfind("ERROR: In ", 0) == 0 || text.rfind("Warning: In ", 0) == 0)
-      text.erase(0, text.find('\n') + 1);
-    const auto address = text.find("): ");
-    if (address != std::string::npos && address < 80)
-      text.erase(0, address + 3);
-    const auto end = text.find('\n');
-    if (end != std::string::npos)
-      text.erase(end);
-    return text.substr(0, 200);
-  }
-
-  std::string first;
-};
-vtkStandardNewMacro(KeptVtkMessages);
-
-//! Installs a KeptVtkMessages for its lifetime.
-class VtkMessagesKept
-{
-public:
-  VtkMessagesKept() : previous_(vtkOutputWindow::GetInstance()), verbosity_(vtkLogger::GetCurrentVerbosityCutoff())
-  {
-    kept = vtkSmartPointer<KeptVtkMessages>::New();
-    vtkOutputWindow::SetInstance(kept);
-    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-  }
-  ~VtkMessagesKept()
-  {
-    vtkOutputWindow::SetInstance(previous_);
-    vtkLogger::SetStderrVerbosity(verbosity_);
-  }
-  VtkMessagesKept(const VtkMessagesKept&) = delete;
-  VtkMessagesKept& operator=(const VtkMessagesKept&) = delete;
-
-  vtkSmartPointer<KeptVtkMessages> kept;
-
-private:
-  vtkSmartPointer<vtkOutputWindow> previous_;
-  vtkLogger::Verbosity verbosity_;
-};
 
 //! The quads split into two triangles each, (0, 1, 2) and (0, 2, 3):
 //! closest points on them are exact, and triangle t lies in quad t / 2.
@@ -244,60 +153,19 @@ vtkSmartPointer<vtkPolyData> read_scan(const std::string& path)
     if (ext == ".off" || ext == ".stl")
       return polygons_of(soup);
   } else {
-    check_vtp_sizes(path);
+    return read_polydata_file(path);
   }
   vtkSmartPointer<vtkAlgorithm> reader;
-  if (ext == ".vtp") {
-    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  } else if (ext == ".ply") {
+  if (ext == ".ply") {
     auto r = vtkSmartPointer<vtkPLYReader>::New();
     r->SetFileName(path.c_str());
     reader = r;
-  } else if (ext == ".obj") {
+  } else {
     auto r = vtkSmartPointer<vtkOBJReader>::New();
     r->SetFileName(path.c_str());
     reader = r;
-  } else {
-    auto r = vtkSmartPointer<vtkSTLReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
   }
-  std::string message;
-  {
-    VtkMessagesKept messages;
-    reader->Update();
-    message = messages.kept->message();
-  }
-  vtkPolyData* out = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (!message.empty())
-    throw InputError("cannot read scan '" + path + "': " + message);
-  if (reader->GetErrorCode() != 0 || !out || out->GetNumberOfPoints() == 0)
-    throw InputError("cannot read scan '" + path + "': not a readable " + ext.substr(1) + " file with points");
-  for (vtkIdType v = 0; v < out->GetNumberOfPoints(); ++v) {
-    double x[3];
-    out->GetPoint(v, x);
-    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
-      throw InputError("cannot read scan '" + path + "': point " + std::to_string(v) + " is not finite");
-  }
-  // Cells naming points the scan does not have would be written out as invalid cells.
-  const vtkIdType points = out->GetNumberOfPoints();
-  for (vtkCellArray* cells : {out->GetVerts(), out->GetLines(), out->GetPolys(), out->GetStrips()}) {
-    if (!cells)
-      continue;
-    vtkIdType n = 0;
-    const vtkIdType* ids = nullptr;
-    vtkIdType cell = 0;
-    for (cells->InitTraversal(); cells->GetNextCell(n, ids); ++cell)
-      for (vtkIdType k = 0; k < n; ++k)
-        if (ids[k] < 0 || ids[k] >= points)
-          throw InputError("cannot read scan '" + path + "': cell " + std::to_string(cell) + " names point " +
-                           std::to_string(ids[k]) + ", but there are only " + std::to_string(points));
-  }
-  auto scan = vtkSmartPointer<vtkPolyData>::New();
-  scan->ShallowCopy(out);
-  return scan;
+  return read_checked(reader, path);
 }
 
 TransferReport transfer_to_scan(const PaintedSurface& painted, const WeldedSurface& reference, vtkPolyData* scan,

@@ -469,15 +469,19 @@ PolygonSoup read_mesh_file(const std::string& path)
 BaseMesh load_mesh(const std::string& path, const ImportOptions& import)
 {
   namespace fs = std::filesystem;
-  const std::string where = "'" + path + "': ";
-  PolygonSoup soup = read_mesh_file(path);
+  return import_mesh(read_mesh_file(path), fs::path(path).stem().string(), "'" + path + "': ", import);
+}
+
+BaseMesh import_mesh(PolygonSoup soup, const std::string& name, const std::string& where,
+                     const ImportOptions& import)
+{
   const std::size_t faces_skipped = soup.faces_skipped;
   if (soup.faces.empty())
     throw InputError(where + "has no faces");
   const SoupSteps steps = import_soup(soup, import.weld);
   if (soup.faces.empty())
     throw InputError(where + "has no faces (every face is degenerate)");
-  BaseMesh mesh = build(soup.points, soup.faces, fs::path(path).stem().string(), where, soup.colours);
+  BaseMesh mesh = build(soup.points, soup.faces, name, where, soup.colours);
   ImportReport& r = mesh.report;
   r.faces_skipped_by_reader = faces_skipped;
   r.degenerate_faces_dropped += steps.degenerate_faces_dropped;

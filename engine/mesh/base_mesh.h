@@ -91,6 +91,12 @@ struct ImportOptions
 //! truncated, or disagrees with its header, or the mesh is unusable.
 BaseMesh load_mesh(const std::string& path, const ImportOptions& options = {});
 
+//! The import steps and checks of load_mesh() for polygons read elsewhere
+//! (VTK's readers in vis/); messages start with `where`.
+//! \throw InputError when the mesh is unusable.
+BaseMesh import_mesh(PolygonSoup soup, const std::string& name, const std::string& where,
+                     const ImportOptions& options = {});
+
 //! File extensions load_mesh reads, lower case with the dot.
 const std::vector<std::string>& readable_mesh_extensions();
 

@@ -220,3 +220,53 @@ def test_an_inward_wound_closed_scan_gets_outward_limit_normals(tmp_path):
     centre = pts.mean(axis=0)
     # Most normals point away from the centre on this roughly convex scan.
     assert ((normals * (pts - centre)).sum(axis=1) > 0).mean() > 0.8
+
+
+def test_meshpaint_reads_its_own_vtp_output_with_its_colours(tmp_path):
+    data = dict(mesh_inputs.valid())["coff.off"]
+    poly, diffuse = diffuse_of(tmp_path, write(tmp_path, "coff.off", data))
+    again = tmp_path / "again"
+    again.mkdir()
+    back, diffuse_back = diffuse_of(again, str(tmp_path / "out" / "surface.vtp"))
+    r = run("info", str(tmp_path / "out" / "surface.vtp"))
+    assert r.returncode == 0, r.stderr
+    assert "took the file's colours as the diffuse channel" in r.stdout
+    # The read-back surface starts from the painted one's colours: the same range.
+    assert abs(diffuse_back.max() - diffuse.max()) < 0.1 and abs(diffuse_back.min() - diffuse.min()) < 0.1
+
+
+def test_legacy_vtk_polydata_reads(tmp_path):
+    sphere = vtk.vtkSphereSource()
+    sphere.Update()
+    w = vtk.vtkPolyDataWriter()
+    w.SetFileName(str(tmp_path / "sphere.vtk"))
+    w.SetInputData(sphere.GetOutput())
+    w.Write()
+    r = run("info", str(tmp_path / "sphere.vtk"))
+    assert r.returncode == 0, r.stderr
+    assert "topology     1 component, genus 0" in r.stdout
+
+
+@pytest.mark.parametrize("name, text, message", [
+    ("huge.vtk", "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 2000000000 float\n0 0 0\n",
+     "POINTS 2000000000 is more than the file can hold"),
+    ("nan.vtk", "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 nan 0\n"
+     "POLYGONS 1 4\n3 0 1 2\n", "point 2 is not finite|cannot read"),
+    ("missing-point.vtk", "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\n"
+     "POLYGONS 1 4\n3 0 1 7\n", "names point 7|cannot read"),
+    ("components.vtp", '<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">\n'
+     '<PolyData><Piece NumberOfPoints="1" NumberOfPolys="0"><Points><DataArray type="Float32" '
+     'NumberOfComponents="1000000000" format="ascii">0 0 0</DataArray></Points></Piece></PolyData></VTKFile>\n',
+     "NumberOfComponents=\"1000000000\" is more than the file can hold"),
+    ("truncated.vtp", '<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">\n'
+     '<PolyData><Piece NumberOfPoints="3" NumberOfPolys="1"><Points><DataArray type="Float32" ', "cannot read"),
+])
+def test_damaged_vtk_files_give_one_line(tmp_path, name, text, message):
+    path = tmp_path / name
+    path.write_text(text)
+    r = run("info", str(path))
+    lines = r.stderr.strip().splitlines()
+    assert r.returncode == 2, r.stdout + r.stderr
+    assert len(lines) == 1, r.stderr
+    import re
+    assert re.search(message, lines[0]), lines[0]
