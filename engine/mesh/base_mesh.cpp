@@ -130,6 +130,16 @@ std::string vertex_text(const Vec3& p)
   return s.str();
 }
 
+//! \throw InputError when a coordinate of vertex `v` is not finite or beyond kMaxCoordinate.
+void check_coordinates(const Vec3& p, std::size_t v, const std::string& where)
+{
+  if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    throw InputError(where + "vertex " + std::to_string(v) + " has a non-finite coordinate " + vertex_text(p));
+  if (std::max({std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2])}) > kMaxCoordinate)
+    throw InputError(where + "vertex " + std::to_string(v) + " has a coordinate beyond +-1e15 " + vertex_text(p) +
+                     ": limit normals would overflow single precision; scale the mesh down");
+}
+
 //! Union-find over the corners around one vertex.
 struct Fans
 {
@@ -198,13 +208,7 @@ BaseMesh finish(const PolyMesh& om, const ImportReport& report, const std::strin
       remap[vh.idx()] = 0;
   for (std::size_t v = 0; v < om.n_vertices(); ++v) {
     const auto& p = om.point(PolyMesh::VertexHandle(int(v)));
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-      throw InputError(where + "vertex " + std::to_string(v) + " has a non-finite coordinate " +
-                       vertex_text({p[0], p[1], p[2]}));
-    if (std::max({std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2])}) > kMaxCoordinate)
-      throw InputError(where + "vertex " + std::to_string(v) + " has a coordinate beyond +-1e15 " +
-                       vertex_text({p[0], p[1], p[2]}) + ": limit normals would overflow single precision; "
-                       "scale the mesh down");
+    check_coordinates({p[0], p[1], p[2]}, v, where);
     if (remap[v] < 0) {
       ++mesh.report.isolated_vertices_removed;
       continue;
@@ -478,6 +482,9 @@ BaseMesh import_mesh(PolygonSoup soup, const std::string& name, const std::strin
   const std::size_t faces_skipped = soup.faces_skipped;
   if (soup.faces.empty())
     throw InputError(where + "has no faces");
+  // Welding and orienting compute with the coordinates: they must be usable.
+  for (std::size_t v = 0; v < soup.points.size(); ++v)
+    check_coordinates(soup.points[v], v, where);
   const SoupSteps steps = import_soup(soup, import.weld);
   if (soup.faces.empty())
     throw InputError(where + "has no faces (every face is degenerate)");

@@ -152,6 +152,23 @@ struct PlyElement
   std::vector<std::string> count_types; //!< per property: a list's count type, else empty
 };
 
+//! Whether a word is one number from 0 to 1.
+bool unit_number(const std::string& w)
+{
+  char* end = nullptr;
+  const double v = std::strtod(w.c_str(), &end);
+  return end != w.c_str() && !*end && v >= 0 && v <= 1;
+}
+
+//! A colour property stored as a real number: OpenMesh scales it by 255
+//! into a byte, which is only defined for 0-1.
+bool is_real_colour(const std::string& name, const std::string& type)
+{
+  const bool colour = name == "red" || name == "green" || name == "blue" || name == "alpha" ||
+                      name == "diffuse_red" || name == "diffuse_green" || name == "diffuse_blue";
+  return colour && (type == "float" || type == "float32" || type == "double" || type == "float64");
+}
+
 //! Bytes of a PLY scalar type.
 int ply_size(const std::string& t)
 {
@@ -224,6 +241,13 @@ void check_ply_binary_body(std::istream& in, const std::vector<PlyElement>& elem
               !std::isfinite(ply_real(b + at, e.types[p], big_endian))) {
             c.problem = "vertex " + std::to_string(k) + " has a non-finite coordinate " + name;
             return;
+          }
+          if (e.name == "vertex" && is_real_colour(name, e.types[p])) {
+            const double v = ply_real(b + at, e.types[p], big_endian);
+            if (!(v >= 0 && v <= 1)) {
+              c.problem = "vertex " + std::to_string(k) + " has a colour " + name + " outside 0-1";
+              return;
+            }
           }
           at += bytes;
           continue;
@@ -336,7 +360,8 @@ void check_ply_ascii_body(std::istream& in, long& number, const std::vector<PlyE
   };
   for (const PlyElement& e : elements)
     for (long k = 0; k < e.count; ++k)
-      for (const bool list : e.lists) {
+      for (std::size_t p = 0; p < e.lists.size(); ++p) {
+        const bool list = e.lists[p];
         if (!next()) {
           c.problem = "the PLY body ends before its " + std::to_string(e.count) + " " + e.name +
                       " elements (truncated?)";
@@ -350,6 +375,11 @@ void check_ply_ascii_body(std::istream& in, long& number, const std::vector<PlyE
           }
           if (!is_number(word, kFloatWord)) {
             c.problem = "line " + std::to_string(number) + ": " + shown(word) + " is not a number that fits";
+            return;
+          }
+          if (e.name == "vertex" && is_real_colour(e.names[p], e.types[p]) && !unit_number(word)) {
+            c.problem = "line " + std::to_string(number) + ": colour " + e.names[p] + " " + shown(word) +
+                        " is outside 0-1";
             return;
           }
           continue;
@@ -470,6 +500,10 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         if (c.problem.empty() && w.size() != 3 && w.size() != 4 && w.size() != 6 && w.size() != 7)
           c.problem = "line " + std::to_string(number) + ": a vertex of " + std::to_string(w.size()) +
                       " numbers (x y z, x y z w, or x y z r g b)";
+        // Colours are 0-1: OpenMesh scales them by 255 into a byte.
+        for (std::size_t k = 3; c.problem.empty() && w.size() >= 6 && k < w.size(); ++k)
+          if (!unit_number(w[k]))
+            c.problem = "line " + std::to_string(number) + ": colour " + shown(w[k]) + " is outside 0-1";
       }
     }
   } else if (ext == ".off") {

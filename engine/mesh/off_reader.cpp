@@ -5,7 +5,7 @@
 #include <CGAL/IO/OFF/File_scanner_OFF.h> // for CGAL::File_scanner_OFF::get_indexed_color, Geomview's colour map
 
 #include <cerrno>  // for errno, ERANGE
-#include <cmath>   // for std::isfinite
+#include <cmath>   // for std::isfinite, std::fabs
 #include <cstdlib> // for std::strtod, std::strtol
 #include <fstream> // for std::ifstream
 #include <sstream> // for std::istringstream
@@ -76,7 +76,10 @@ double number(const OffLines& lines, const std::string& w)
   const double v = std::strtod(w.c_str(), &end);
   if (end == w.c_str() || *end)
     lines.fail(shown(w) + " is not a number");
-  if (!std::isfinite(v) || errno == ERANGE)
+  // Beyond single precision, where coordinates are kept (1e999 included).
+  if ((errno == ERANGE && std::fabs(v) > 1) || (std::isfinite(v) && std::fabs(v) > 3.4e38))
+    lines.fail(shown(w) + " is not a number that fits");
+  if (!std::isfinite(v))
     lines.fail("non-finite coordinate " + shown(w));
   return v;
 }
@@ -211,8 +214,11 @@ PolygonSoup read_off_text(const std::string& path)
       const double hw = number(lines, w[std::size_t(dim)]);
       if (hw == 0)
         lines.fail("a vertex at infinity (homogeneous coordinate 0)");
-      for (float& x : p)
+      for (float& x : p) {
         x = float(x / hw);
+        if (!std::isfinite(x))
+          lines.fail("a vertex beyond single precision once divided by its homogeneous coordinate");
+      }
     }
     for (std::size_t k = coords; k < fixed; ++k)
       number(lines, w[k]); // normals and texture coordinates: checked, not kept

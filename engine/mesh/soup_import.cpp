@@ -9,7 +9,7 @@
 #include <CGAL/Surface_mesh.h>                                      // for CGAL::Surface_mesh
 
 #include <algorithm> // for std::min, std::max, std::reverse
-#include <cmath>     // for std::floor, std::sqrt
+#include <cmath>     // for std::floor, std::sqrt, std::fabs, std::isfinite
 #include <map>       // for std::map
 #include <set>       // for std::set
 #include <tuple>     // for std::tuple
@@ -41,13 +41,20 @@ double diagonal_of(const std::vector<Vec3>& points)
 //! take that cell's first point, so that CGAL's exact merge joins them.
 std::size_t snap_to_first_in_cell(std::vector<Point>& points, double tolerance)
 {
-  if (tolerance <= 0)
+  if (!(tolerance > 0) || !std::isfinite(tolerance))
     return 0;
   std::map<std::tuple<long long, long long, long long>, std::size_t> first;
   std::size_t snapped = 0;
   for (std::size_t v = 0; v < points.size(); ++v) {
-    const auto cell = [&](int a) { return (long long)std::floor(points[v][a] / tolerance); };
-    const auto [it, fresh] = first.emplace(std::make_tuple(cell(0), cell(1), cell(2)), v);
+    double q[3];
+    bool fits = true;
+    for (int a = 0; a < 3; ++a) {
+      q[a] = std::floor(points[v][a] / tolerance);
+      fits = fits && std::fabs(q[a]) < 9e18; // a cell number as a long long; the rest is refused later
+    }
+    if (!fits)
+      continue;
+    const auto [it, fresh] = first.emplace(std::make_tuple((long long)q[0], (long long)q[1], (long long)q[2]), v);
     if (!fresh && points[it->second] != points[v]) {
       points[v] = points[it->second];
       ++snapped;

@@ -123,6 +123,10 @@ def damaged():
         ("two-colour-numbers.off", off(face_extra=lambda k: "1 1"), r"line 11: a face of 4 corners with 2 more numbers"),
         ("colour-out-of-range.off", off(face_extra=lambda k: "300 0 0"), r"colour component '300' is outside 0-255"),
         ("huge-nOFF-dimension.off", off(keyword="nOFF\n4"), r"nOFF of dimension 4"),
+        ("beyond-float.off", off().replace(b"\n1 1 0\n", b"\n1 1e39 0\n", 1), r"line 5: '1e39' is not a number that fits"),
+        ("colour-beyond-one.obj", obj(colours=[(2, 0, 0)] * 8), r"line [0-9]+: colour '2' is outside 0-1"),
+        ("float-colour-beyond-one.ply", ply_ascii(colours=[(2.5, 0, 0)] * 8).replace(b"uchar", b"float").replace(
+            b"property list float int", b"property list uchar int"), r"line [0-9]+: colour red '2.5' is outside 0-1"),
     ]
     return cases
 
