@@ -480,10 +480,10 @@ FileCensus take_census(const std::string& path, const std::string& ext)
       words >> keyword;
       if (keyword == "f") {
         ++c.declared_faces;
-        const std::streampos at = words.tellg();
+        const std::streampos at = words.tellg(); // -1 when the line ends at the keyword
         check_obj_face(words, number, c);
         // A face cut short (the last line of a truncated file) is no face.
-        std::istringstream again(line.substr(std::size_t(at)));
+        std::istringstream again(at < 0 ? std::string() : line.substr(std::size_t(at)));
         long corners = 0;
         for (std::string w; again >> w;)
           ++corners;

@@ -114,6 +114,7 @@ def damaged():
         ("short-v-line.obj", obj().replace(b"v 1 1 0", b"v 1 1", 1), r"line [0-9]+: a vertex of 2 numbers"),
         ("nan.obj", obj().replace(b"v 1 1 0", b"v 1 nan 0", 1), r"line [0-9]+: non-finite coordinate 'nan'"),
         ("index-out-of-range.obj", obj(faces=CUBE_QUADS[:-1] + [(3, 0, 4, 70)]), r"names vertex 70"),
+        ("face-keyword-alone.obj", obj() + b"f", r"line [0-9]+: a face without vertices"),
         ("truncated.obj", obj()[:-4], r"line [0-9]+: a face of [0-2] corners \(truncated\?\)"),
         ("nan.off", off().replace(b"\n1 1 0\n", b"\n1 nan 0\n", 1), r"line [0-9]+: non-finite coordinate 'nan'"),
         ("index-out-of-range.off", off(faces=CUBE_QUADS[:-1] + [(3, 0, 4, 70)]), r"line [0-9]+: face 5 names vertex 70"),
