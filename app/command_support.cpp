@@ -2,6 +2,8 @@
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "PolyDataFiles.h"
+#include "project/imported_colours.h"
 #include "project/project_surface.h"
 
 #include <filesystem>   // for std::filesystem
@@ -71,22 +73,31 @@ int run_command(const std::string& program, const std::string& command, const st
 
 std::shared_ptr<Runtime> open_device(const Args& args) { return Runtime::open(args.value("--device")); }
 
-BaseMesh load_reported(const std::string& path)
+ImportOptions import_options(const Args& args)
 {
-  BaseMesh mesh = load_mesh(path);
+  ImportOptions options;
+  options.weld = !args.flag("--no-weld");
+  return options;
+}
+
+BaseMesh load_reported(const std::string& path, const ImportOptions& options)
+{
+  BaseMesh mesh = is_polydata_path(path) ? load_polydata_mesh(path, options) : load_mesh(path, options);
   for (const std::string& line : mesh.report.lines())
     std::cerr << "meshpaint: " << path << ": repaired: " << line << "\n";
+  for (const std::string& line : mesh.report.step_lines())
+    std::cerr << "meshpaint: " << path << ": imported: " << line << "\n";
   return mesh;
 }
 
-MeshOrProject open_mesh_or_project(const std::string& path)
+MeshOrProject open_mesh_or_project(const std::string& path, const ImportOptions& options)
 {
   MeshOrProject input;
   input.path = path;
   if (is_project_path(path))
     input.project = load_project(path);
   else
-    input.loaded = load_reported(path);
+    input.loaded = load_reported(path, options);
   return input;
 }
 
@@ -126,7 +137,9 @@ std::unique_ptr<PaintSurface> open_paint_surface(const std::shared_ptr<Runtime>&
 {
   if (input.project)
     return open_project_surface(runtime, *input.project, storage);
-  return std::make_unique<PaintSurface>(runtime, input.loaded, level, storage);
+  auto surface = std::make_unique<PaintSurface>(runtime, input.loaded, level, storage);
+  apply_imported_colours(*surface);
+  return surface;
 }
 
 void check_output_folder(const std::string& path)

@@ -25,8 +25,12 @@ using Argv = std::vector<std::string>;
 //! The device named by --device (or MESHPAINT_DEVICE, or the default).
 std::shared_ptr<Runtime> open_device(const Args& args);
 
-//! Loads a mesh and reports on stderr what import repaired.
-BaseMesh load_reported(const std::string& path);
+//! The import options of the flags (--no-weld).
+ImportOptions import_options(const Args& args);
+
+//! Loads a mesh and reports on stderr what import repaired and what its
+//! steps did ("meshpaint: PATH: repaired: ...", "... imported: ...").
+BaseMesh load_reported(const std::string& path, const ImportOptions& options = {});
 
 //! What the commands that take a mesh take: a mesh file, or a project.
 struct MeshOrProject
@@ -39,7 +43,7 @@ struct MeshOrProject
 };
 //! Loads PATH as a project when it ends in .meshpaint, else as a mesh
 //! (reporting repairs).
-MeshOrProject open_mesh_or_project(const std::string& path);
+MeshOrProject open_mesh_or_project(const std::string& path, const ImportOptions& options = {});
 //! The level to work at: a project's own level (a differing --level is an
 //! error), else --level, else `fallback`.
 int input_level(const Args& args, const MeshOrProject& input, int fallback);
@@ -49,7 +53,8 @@ int scene_level(const Args& args, const std::vector<MeshOrProject>& inputs, int 
 //! \throw InputError naming the first stroke whose edit_level is finer
 //! than `level`, before anything is painted.
 void check_edit_levels(const StrokeScript& script, int level);
-//! A painting surface at `level`: the project's state, or the fresh mesh.
+//! A painting surface at `level`: the project's state, or the fresh mesh
+//! with the file's colours as its diffuse channel.
 std::unique_ptr<PaintSurface> open_paint_surface(const std::shared_ptr<Runtime>& runtime, AtlasStorage storage,
                                                  const MeshOrProject& input, int level);
 //! Checked before long work, so that it does not fail only at the end (as

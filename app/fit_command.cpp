@@ -48,7 +48,7 @@ std::string patch_list(const std::vector<int>& patches, const Atlas& atlas, cons
 
 int fit_command(const Argv& argv)
 {
-  Args args("fit", argv, {"--direct", "--quiet"}, {"--base-faces", "--level", "--passes", "-o", "--device", "--storage"});
+  Args args("fit", argv, {"--direct", "--quiet", "--no-weld"}, {"--base-faces", "--level", "--passes", "-o", "--device", "--storage"});
   args.expect_positionals(1, 1, "SCAN [--base-faces N] [--level L] [--direct] -o PROJECT.meshpaint");
   const std::string out = args.value("-o");
   if (out.empty())
@@ -66,7 +66,7 @@ int fit_command(const Argv& argv)
 
   Timer total, t;
   const std::string path = args.positionals()[0];
-  const BaseMesh scan = load_reported(path);
+  const BaseMesh scan = load_reported(path, import_options(args));
   const ScanReference scan_file = scan_reference(path);
   say("read " + path + ": " + grouped(scan.vertex_count()) + " vertices, " + grouped(scan.face_count()) +
       " faces (" + format_fixed(t.ms(), 0) + " ms)");

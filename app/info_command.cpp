@@ -35,10 +35,10 @@ std::string hex32(std::uint32_t v)
 
 int info_command(const Argv& argv)
 {
-  Args args("info", argv, {}, {"--device", "--storage"});
+  Args args("info", argv, {"--no-weld"}, {"--device", "--storage"});
   args.expect_positionals(1, 1, "MESH|PROJECT");
   const std::string path = args.positionals()[0];
-  const MeshOrProject input = open_mesh_or_project(path);
+  const MeshOrProject input = open_mesh_or_project(path, import_options(args));
   const BaseMesh& mesh = input.mesh();
   const MeshStats s = compute_stats(mesh);
   std::ostream& os = std::cout;
@@ -57,7 +57,9 @@ int info_command(const Argv& argv)
   os << "bounds       (" << s.bbox_min[0] << ", " << s.bbox_min[1] << ", " << s.bbox_min[2] << ") - ("
      << s.bbox_max[0] << ", " << s.bbox_max[1] << ", " << s.bbox_max[2] << "), diagonal "
      << mesh.diagonal() << "\n";
-  const auto repairs = mesh.report.lines();
+  auto repairs = mesh.report.lines();
+  for (const std::string& step : mesh.report.step_lines())
+    repairs.push_back(step);
   os << "import       " << (repairs.empty() ? "no repairs" : repairs.front()) << "\n";
   for (std::size_t r = 1; r < repairs.size(); ++r)
     os << "             " << repairs[r] << "\n";

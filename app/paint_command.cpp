@@ -98,7 +98,7 @@ void paint_job(PaintScene& scene, const StrokeScript& script, int model_level, c
 
 int paint_command(const Argv& argv)
 {
-  Args args("paint", argv, {"--quiet", "--two-sided"},
+  Args args("paint", argv, {"--quiet", "--two-sided", "--no-weld"},
             {"--strokes", "--level", "--model-level", "--lod", "-o", "--save", "--labels", "--device", "--storage",
              "--screenshot", "--camera", "--size", "--subsurface", "--gltf"});
   args.expect_positionals(1, 64, "MESH|PROJECT... --strokes S.json [--level L] [--model-level M] [--lod L] [--two-sided] "
@@ -136,7 +136,7 @@ int paint_command(const Argv& argv)
   });
   std::vector<MeshOrProject> inputs;
   for (const std::string& path : paths)
-    inputs.push_back(open_mesh_or_project(path));
+    inputs.push_back(open_mesh_or_project(path, import_options(args)));
   const MeshOrProject& input = inputs.front();
   const int level = scene_level(args, inputs, script.level > 0 ? script.level : 3);
   const int model_level = args.integer("--model-level", default_model_level(level), 1, level);

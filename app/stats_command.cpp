@@ -59,13 +59,13 @@ nlohmann::json json_triple(const Vec3& v) { return nlohmann::json::array({v[0], 
 
 int stats_command(const Argv& argv)
 {
-  Args args("stats", argv, {"--json", "--csv"}, {"--labels", "--level", "--device", "--storage"});
+  Args args("stats", argv, {"--json", "--csv", "--no-weld"}, {"--labels", "--level", "--device", "--storage"});
   args.expect_positionals(1, 1, "MESH|PROJECT [--labels labels.json] [--json|--csv]");
   if (args.flag("--json") && args.flag("--csv"))
     throw InputError("--json and --csv exclude each other");
   const std::vector<LabelClass> table_labels =
     args.has("--labels") ? load_labels(args.value("--labels")) : std::vector<LabelClass>();
-  const MeshOrProject input = open_mesh_or_project(args.positionals()[0]);
+  const MeshOrProject input = open_mesh_or_project(args.positionals()[0], import_options(args));
   const std::vector<LabelClass>& classes = args.has("--labels") || !input.project ? table_labels : input.project->labels;
   const int level = input_level(args, input, 3);
   auto runtime = open_device(args);

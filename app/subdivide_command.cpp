@@ -35,7 +35,7 @@ void write_any(const WeldedSurface& surface, const std::string& path)
 
 int subdivide_command(const Argv& argv)
 {
-  Args args("subdivide", argv, {"--limit", "--quiet"}, {"--level", "-o", "--device", "--storage"});
+  Args args("subdivide", argv, {"--limit", "--quiet", "--no-weld"}, {"--level", "-o", "--device", "--storage"});
   args.expect_positionals(1, 1, "MESH|PROJECT --level L [--limit] -o OUT.{obj,ply,vtp}");
   if (!args.has("--level"))
     throw InputError("--level is required (1.." + std::to_string(kMaxLevel) + ")");
@@ -47,7 +47,7 @@ int subdivide_command(const Argv& argv)
   check_output_folder(out);
 
   Timer t;
-  const MeshOrProject input = open_mesh_or_project(args.positionals()[0]);
+  const MeshOrProject input = open_mesh_or_project(args.positionals()[0], import_options(args));
   // A project's surface is its painting level's control points: refined
   // from there, or reduced below it.
   const int own = input.project ? input.project->level : 1;

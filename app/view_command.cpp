@@ -37,7 +37,7 @@ int default_view_level(const std::vector<MeshOrProject>& inputs)
 
 int view_command(const Argv& argv)
 {
-  Args args("view", argv, {}, {"--strokes", "--level", "--lod", "-o", "--size", "--device", "--storage"});
+  Args args("view", argv, {"--no-weld"}, {"--strokes", "--level", "--lod", "-o", "--size", "--device", "--storage"});
   args.expect_positionals(1, 64, "MESH...|PROJECT [--strokes S.json] [--level L] [--lod L] [-o DIR] [--size WxH]");
   const std::vector<std::string>& paths = args.positionals();
   if (paths.size() > 1)
@@ -55,7 +55,7 @@ int view_command(const Argv& argv)
     parse_storage(args.value("--storage"));
   std::vector<MeshOrProject> inputs;
   for (const std::string& path : paths)
-    inputs.push_back(open_mesh_or_project(path));
+    inputs.push_back(open_mesh_or_project(path, import_options(args)));
   const MeshOrProject& input = inputs.front();
   const BaseMesh& mesh = input.mesh();
   const int level = scene_level(args, inputs, script.level > 0 ? script.level : default_view_level(inputs));

@@ -1,5 +1,6 @@
 #include "ScanTransfer.h"
 
+#include "PolyDataFiles.h"     // for meshpaint::read_polydata_file, read_checked
 #include "SurfaceConversion.h" // for meshpaint::to_polydata, colour_byte
 
 #include "core/errors.h"     // for meshpaint::IOError, InputError
@@ -18,31 +19,29 @@
 #include <vtkPLYReader.h>         // for vtkPLYReader
 #include <vtkPointData.h>         // for vtkPointData
 #include <vtkPoints.h>            // for vtkPoints
-#include <vtkSTLReader.h>         // for vtkSTLReader
 #include <vtkStaticCellLocator.h> // for vtkStaticCellLocator
-#include <vtkXMLPolyDataReader.h> // for vtkXMLPolyDataReader
 
 #include <algorithm>  // for std::find, std::max_element
-#include <cmath>      // for std::sqrt
+#include <cmath>      // for std::sqrt, std::isfinite
 #include <filesystem> // for std::filesystem::is_regular_file
 
 namespace meshpaint {
 namespace {
 
-//! Points and polygons in the mesh's own order.
-vtkSmartPointer<vtkPolyData> polygons_of(const BaseMesh& mesh)
+//! Points and polygons in the file's own order.
+vtkSmartPointer<vtkPolyData> polygons_of(const PolygonSoup& soup)
 {
   auto poly = vtkSmartPointer<vtkPolyData>::New();
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(vtkIdType(mesh.vertex_count()));
-  for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
-    points->SetPoint(vtkIdType(v), mesh.points[v].data());
+  points->SetNumberOfPoints(vtkIdType(soup.points.size()));
+  for (std::size_t v = 0; v < soup.points.size(); ++v)
+    points->SetPoint(vtkIdType(v), soup.points[v].data());
   auto cells = vtkSmartPointer<vtkCellArray>::New();
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    cells->InsertNextCell(mesh.face_sizes[f]);
-    for (int k = 0; k < mesh.face_sizes[f]; ++k)
-      cells->InsertCellPoint(mesh.face_vertices[std::size_t(mesh.face_offsets[f] + k)]);
+  for (const auto& face : soup.faces) {
+    cells->InsertNextCell(vtkIdType(face.size()));
+    for (const int v : face)
+      cells->InsertCellPoint(v);
   }
   poly->SetPoints(points);
   poly->SetPolys(cells);
@@ -164,38 +163,28 @@ vtkSmartPointer<vtkPolyData> read_scan(const std::string& path)
   const auto& exts = scan_extensions();
   if (std::find(exts.begin(), exts.end(), ext) == exts.end())
     throw InputError("cannot read scan '" + path + "': unknown format '" + ext + "' (.vtp .ply .obj .stl .off)");
-  if (ext == ".off") {
-    const BaseMesh mesh = load_mesh(path);
-    if (mesh.report.changed())
-      throw InputError("'" + path + "' needs repairs (" + mesh.report.lines().front() +
-                       "), which would renumber its vertices; save it as .ply or .vtp first");
-    return polygons_of(mesh);
+  // The one checked path every mesh file takes first: nothing reaches a VTK
+  // reader that the census and the strict readers have not accepted.
+  if (ext != ".vtp") {
+    const PolygonSoup soup = read_mesh_file(path);
+    // STL carries no point arrays: the checked reading is the scan (VTK's
+    // reader would also stumble on a byte-order mark).
+    if (ext == ".off" || ext == ".stl")
+      return polygons_of(soup);
+  } else {
+    return read_polydata_file(path);
   }
   vtkSmartPointer<vtkAlgorithm> reader;
-  if (ext == ".vtp") {
-    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  } else if (ext == ".ply") {
+  if (ext == ".ply") {
     auto r = vtkSmartPointer<vtkPLYReader>::New();
     r->SetFileName(path.c_str());
     reader = r;
-  } else if (ext == ".obj") {
+  } else {
     auto r = vtkSmartPointer<vtkOBJReader>::New();
     r->SetFileName(path.c_str());
     reader = r;
-  } else {
-    auto r = vtkSmartPointer<vtkSTLReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
   }
-  reader->Update();
-  vtkPolyData* out = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (reader->GetErrorCode() != 0 || !out || out->GetNumberOfPoints() == 0)
-    throw InputError("cannot read scan '" + path + "': not a readable " + ext.substr(1) + " file with points");
-  auto scan = vtkSmartPointer<vtkPolyData>::New();
-  scan->ShallowCopy(out);
-  return scan;
+  return read_checked(reader, path);
 }
 
 TransferReport transfer_to_scan(const PaintedSurface& painted, const WeldedSurface& reference, vtkPolyData* scan,

@@ -18,11 +18,14 @@ namespace meshpaint {
 //! File extensions read_scan() reads, lower case with the dot.
 MESHPAINTVIS_EXPORT const std::vector<std::string>& scan_extensions();
 
-//! A scan exactly as its file holds it: .vtp, .ply, .obj and .stl through
-//! VTK's readers (every point, cell and array), .off through OpenMesh as
-//! points and polygons in file order.
-//! \throw IOError when the file cannot be read; InputError for another
-//! format, or an OFF file that could not be kept as it is (it needs repairs).
+//! A scan exactly as its file holds it: .ply, .obj and .stl checked by
+//! read_mesh_file() first, then read through VTK's readers (every point,
+//! cell and array); .off as read_mesh_file() reads it, points and polygons
+//! in file order; .vtp through VTK's XML reader after its size attributes
+//! are checked against the file. VTK's messages become the error, never
+//! printed; non-finite points and cells naming missing points are refused.
+//! \throw IOError when the file cannot be read; InputError, one line, for
+//! another format or a malformed, truncated or inconsistent file.
 MESHPAINTVIS_EXPORT vtkSmartPointer<vtkPolyData> read_scan(const std::string& path);
 
 //! What transfer_to_scan() found.

@@ -11,6 +11,7 @@
 #include "core/errors.h"         // for meshpaint::InputError
 #include "mesh/base_mesh.h"      // for meshpaint::BaseMesh, load_mesh
 #include "paint/paint_surface.h" // for meshpaint::PaintSurface
+#include "project/imported_colours.h" // for meshpaint::apply_imported_colours
 
 #include <vtkBoundingBox.h> // for vtkBoundingBox
 #include <vtkPolyData.h>    // for vtkPolyData
@@ -75,6 +76,7 @@ int vtkPaintView::MeshObject(const meshpaint::BaseMesh& mesh, bool add)
     const meshpaint::AtlasStorage storage = this->Storage.empty() ? meshpaint::default_storage(runtime->info())
                                                                   : meshpaint::parse_storage(this->Storage);
     auto surface = std::make_shared<meshpaint::PaintSurface>(runtime, mesh, level, storage);
+    meshpaint::apply_imported_colours(*surface);
     if (!add)
       this->RemoveObjects();
     this->AddObject(std::move(surface), mesh.name);

@@ -3,8 +3,10 @@
 #include "core/errors.h"
 #include "core/format.h"
 #include "mesh/file_census.h"
+#include "mesh/off_reader.h"
 #include "mesh/openmesh_types.h"
 #include "mesh/quiet_openmesh.h"
+#include "mesh/soup_import.h"
 
 #include <OpenMesh/Core/IO/IOManager.hh>          // for OpenMesh::IO::IOManager
 #include <OpenMesh/Core/IO/importer/ImporterT.hh> // for OpenMesh::IO::ImporterT
@@ -15,7 +17,9 @@
 #include <map>        // for std::map
 #include <numeric>    // for std::iota
 #include <set>        // for std::set
-#include <sstream>    // for std::ostringstream
+#include <fstream>    // for std::ifstream
+#include <iterator>   // for std::istreambuf_iterator
+#include <sstream>    // for std::ostringstream, std::istringstream
 
 namespace meshpaint {
 namespace {
@@ -54,8 +58,11 @@ public:
     }
     const std::size_t before = mesh_.n_vertices();
     const OpenMesh::FaceHandle fh = ImporterT<PolyMesh>::add_face(indices);
-    if (mesh_.n_vertices() != before)
-      ++report.nonmanifold_faces_detached; // OpenMesh gave the face its own vertices
+    if (mesh_.n_vertices() != before) {
+      ++report.nonmanifold_faces_detached; // OpenMesh gave the face its own vertices, one per corner
+      for (std::size_t k = 0; k < indices.size() && before + k < mesh_.n_vertices(); ++k)
+        copied_from.emplace(int(before + k), indices[k].idx());
+    }
     return fh;
   }
 
@@ -63,6 +70,7 @@ public:
 
   ImportReport report;
   std::string problem_;
+  std::map<int, int> copied_from; //!< vertex copies OpenMesh made -> the vertex copied
 
 private:
   //! The corners from the smallest index on, in the direction of its
@@ -83,11 +91,53 @@ private:
   std::set<std::vector<int>> seen_; // cyclic_key of every face added
 };
 
+//! OpenMesh's readers into a PolygonSoup: vertices (and their colours)
+//! through the mesh, faces only recorded, so that import_soup() sees the
+//! file's faces as they are, whatever their orientation.
+class SoupImporter : public OpenMesh::IO::ImporterT<PolyMesh>
+{
+public:
+  explicit SoupImporter(PolyMesh& mesh) : ImporterT<PolyMesh>(mesh), mesh_(mesh) {}
+
+  OpenMesh::FaceHandle add_face(const VHandles& indices) override
+  {
+    const std::size_t face = faces.size();
+    std::vector<int> f;
+    for (const OpenMesh::VertexHandle vh : indices) {
+      if (!mesh_.is_valid_handle(vh)) {
+        if (problem.empty())
+          problem = "face " + std::to_string(face) + " names vertex " + std::to_string(vh.idx()) +
+                    ", but there are only " + std::to_string(mesh_.n_vertices()) + " vertices";
+        return OpenMesh::FaceHandle();
+      }
+      f.push_back(vh.idx());
+    }
+    faces.push_back(std::move(f));
+    return OpenMesh::FaceHandle();
+  }
+
+  std::vector<std::vector<int>> faces;
+  std::string problem;
+
+private:
+  PolyMesh& mesh_;
+};
+
 std::string vertex_text(const Vec3& p)
 {
   std::ostringstream s;
   s << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
   return s.str();
+}
+
+//! \throw InputError when a coordinate of vertex `v` is not finite or beyond kMaxCoordinate.
+void check_coordinates(const Vec3& p, std::size_t v, const std::string& where)
+{
+  if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    throw InputError(where + "vertex " + std::to_string(v) + " has a non-finite coordinate " + vertex_text(p));
+  if (std::max({std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2])}) > kMaxCoordinate)
+    throw InputError(where + "vertex " + std::to_string(v) + " has a coordinate beyond +-1e15 " + vertex_text(p) +
+                     ": limit normals would overflow single precision; scale the mesh down");
 }
 
 //! Union-find over the corners around one vertex.
@@ -132,6 +182,8 @@ void split_nonmanifold_vertices(BaseMesh& mesh)
       if (it == copy_of_root.end()) {
         it = copy_of_root.emplace(root, int(mesh.points.size())).first;
         mesh.points.push_back(mesh.points[v]);
+        if (!mesh.colours.empty())
+          mesh.colours.push_back(mesh.colours[v]);
         ++mesh.report.nonmanifold_vertices_split;
       }
       mesh.face_vertices[mesh.face_offsets[cs[c].first] + cs[c].second] = it->second;
@@ -142,7 +194,7 @@ void split_nonmanifold_vertices(BaseMesh& mesh)
 //! Takes the faces out of OpenMesh, checks coordinates, drops unused vertices
 //! and splits non-manifold ones.
 BaseMesh finish(const PolyMesh& om, const ImportReport& report, const std::string& name,
-                const std::string& where)
+                const std::string& where, const std::vector<Vec3>& colours, const std::map<int, int>& copied_from)
 {
   BaseMesh mesh;
   mesh.name = name;
@@ -156,19 +208,17 @@ BaseMesh finish(const PolyMesh& om, const ImportReport& report, const std::strin
       remap[vh.idx()] = 0;
   for (std::size_t v = 0; v < om.n_vertices(); ++v) {
     const auto& p = om.point(PolyMesh::VertexHandle(int(v)));
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-      throw InputError(where + "vertex " + std::to_string(v) + " has a non-finite coordinate " +
-                       vertex_text({p[0], p[1], p[2]}));
-    if (std::max({std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2])}) > kMaxCoordinate)
-      throw InputError(where + "vertex " + std::to_string(v) + " has a coordinate beyond +-1e15 " +
-                       vertex_text({p[0], p[1], p[2]}) + ": limit normals would overflow single precision; "
-                       "scale the mesh down");
+    check_coordinates({p[0], p[1], p[2]}, v, where);
     if (remap[v] < 0) {
       ++mesh.report.isolated_vertices_removed;
       continue;
     }
     remap[v] = int(mesh.points.size());
     mesh.points.push_back({p[0], p[1], p[2]});
+    if (!colours.empty()) {
+      const auto copy = copied_from.find(int(v));
+      mesh.colours.push_back(colours[std::size_t(copy == copied_from.end() ? int(v) : copy->second)]);
+    }
   }
   mesh.face_offsets.push_back(0);
   for (const auto fh : om.faces()) {
@@ -217,6 +267,28 @@ std::vector<std::string> ImportReport::lines() const
   return out;
 }
 
+std::vector<std::string> ImportReport::step_lines() const
+{
+  std::vector<std::string> out;
+  if (vertices_welded) {
+    std::ostringstream t;
+    t << weld_tolerance;
+    out.push_back("welded " + std::to_string(vertices_welded) + " coincident vertices (within " + t.str() +
+                  "; --no-weld keeps them)");
+  }
+  if (faces_flipped)
+    out.push_back("turned " + std::to_string(faces_flipped) + " faces to agree with their neighbours");
+  if (components_turned_outward)
+    out.push_back("turned " + std::to_string(components_turned_outward) +
+                  " closed components wound inwards outward");
+  if (nonorientable_components)
+    out.push_back("cut " + std::to_string(nonorientable_components) + " non-orientable or non-manifold components "
+                  "open at " + std::to_string(vertices_cut) + " vertex copies to orient them");
+  if (coloured)
+    out.push_back("took the file's colours as the diffuse channel");
+  return out;
+}
+
 double BaseMesh::diagonal() const
 {
   Vec3 lo = points.front(), hi = points.front();
@@ -237,11 +309,14 @@ const std::vector<std::string>& readable_mesh_extensions()
   return exts;
 }
 
-BaseMesh make_base_mesh(std::vector<Vec3> points, const std::vector<std::vector<int>>& faces,
-                        const std::string& name)
+namespace {
+
+//! make_base_mesh() with the prefix its messages carry.
+BaseMesh build(const std::vector<Vec3>& points, const std::vector<std::vector<int>>& faces, const std::string& name,
+               const std::string& where, const std::vector<Vec3>& colours)
 {
   if (points.empty() || faces.empty())
-    throw InputError(name + ": has no faces");
+    throw InputError(where + "has no faces");
   PolyMesh om;
   CheckedImporter importer(om);
   QuietOpenMesh quiet;
@@ -253,12 +328,122 @@ BaseMesh make_base_mesh(std::vector<Vec3> points, const std::vector<std::vector<
       vh.push_back(PolyMesh::VertexHandle(i));
     importer.add_face(vh);
     if (!importer.problem_.empty())
-      throw InputError(name + ": " + importer.problem_);
+      throw InputError(where + importer.problem_);
   }
-  return finish(om, importer.report, name, name + ": ");
+  return finish(om, importer.report, name, where, colours, importer.copied_from);
 }
 
-BaseMesh load_mesh(const std::string& path)
+//! Whether an OFF file is binary: OpenMesh's rule, BINARY on the first line.
+bool binary_off(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string first;
+  std::getline(in, first);
+  return first.find("BINARY") != std::string::npos;
+}
+
+//! OpenMesh's PLY reader takes only some spellings of a list's types
+//! (uchar, uint16, int): each list type becomes the one of its size that it
+//! takes. The census has bounded every count and index, so the values read
+//! the same either way.
+void normalise_ply_list_types(std::string& bytes)
+{
+  const std::size_t end = bytes.find("end_header");
+  if (end == std::string::npos)
+    return;
+  std::istringstream header(bytes.substr(0, end));
+  std::string out, line;
+  while (std::getline(header, line)) {
+    std::istringstream words(line);
+    std::vector<std::string> w;
+    for (std::string word; words >> word;)
+      w.push_back(word);
+    if (w.size() == 5 && w[0] == "property" && w[1] == "list") {
+      for (std::string* t : {&w[2], &w[3]}) {
+        static const std::map<std::string, std::string> same_size = {
+          {"char", "uchar"},   {"int8", "uchar"},   {"uint8", "uchar"},  {"short", "uint16"},
+          {"ushort", "uint16"}, {"int16", "uint16"}, {"uint", "int"},    {"int32", "int"}, {"uint32", "int"}};
+        const auto it = same_size.find(*t);
+        if (it != same_size.end())
+          *t = it->second;
+      }
+      line = "property list " + w[2] + " " + w[3] + " " + w[4];
+    }
+    out += line + "\n";
+  }
+  bytes = out + bytes.substr(end);
+}
+
+//! A file through OpenMesh's reader for its format, after the census: the
+//! vertices with their colours, the faces as listed.
+PolygonSoup read_through_openmesh(const std::string& path, const std::string& ext, const std::string& where)
+{
+  // OpenMesh's text readers skip a vertex written as "nan" or "inf"; say so
+  // rather than let the faces after it name the wrong vertices.
+  const FileCensus census = take_census(path, ext);
+  if (!census.problem.empty())
+    throw InputError(where + census.problem);
+  if (census.nonfinite_line >= 0)
+    throw InputError(where + "line " + std::to_string(census.nonfinite_line) + ": non-finite coordinate '" +
+                     census.nonfinite_token + "'");
+
+  PolyMesh om;
+  om.request_vertex_colors();
+  SoupImporter importer(om);
+  OpenMesh::IO::Options options = OpenMesh::IO::Options::VertexColor;
+  if (census.binary)
+    options += OpenMesh::IO::Options::Binary;
+  bool ok = false;
+  {
+    // From memory, past a UTF-8 byte-order mark, which OpenMesh would read
+    // as part of the first word.
+    std::ifstream file(path, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    if (census.text && bytes.compare(0, 3, "\xEF\xBB\xBF") == 0)
+      bytes.erase(0, 3);
+    if (ext == ".ply")
+      normalise_ply_list_types(bytes);
+    std::istringstream in(std::move(bytes), std::ios::binary);
+    QuietOpenMesh quiet;
+    ok = ext == ".off" ? OpenMesh::IO::IOManager().read(path, importer, options)
+                       : OpenMesh::IO::IOManager().read(in, ext.substr(1), importer, options);
+  }
+  if (!importer.problem.empty())
+    throw InputError(where + importer.problem);
+  if (!ok)
+    throw InputError(where + "not a readable " + ext.substr(1) + " file (truncated or malformed)");
+  std::size_t faces_skipped = 0;
+  if (census.declared_faces > long(importer.faces.size())) {
+    if (ext != ".obj") // a header's count, which the body must meet
+      throw InputError(where + "declares " + std::to_string(census.declared_faces) + " faces, but " +
+                       std::to_string(importer.faces.size()) + " could be read (truncated or malformed?)");
+    faces_skipped = std::size_t(census.declared_faces) - importer.faces.size();
+  }
+  PolygonSoup soup;
+  soup.points.reserve(om.n_vertices());
+  for (const auto vh : om.vertices()) {
+    const auto& p = om.point(vh);
+    soup.points.push_back({p[0], p[1], p[2]});
+  }
+  if (options.vertex_has_color())
+    for (const auto vh : om.vertices()) {
+      const auto& c = om.color(vh);
+      soup.colours.push_back({c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f});
+    }
+  soup.faces = std::move(importer.faces);
+  soup.faces_skipped = faces_skipped;
+  return soup;
+}
+
+} // namespace
+
+BaseMesh make_base_mesh(std::vector<Vec3> points, const std::vector<std::vector<int>>& faces,
+                        const std::string& name, const std::vector<Vec3>& colours)
+{
+  return build(points, faces, name, name + ": ", colours);
+}
+
+PolygonSoup read_mesh_file(const std::string& path)
 {
   namespace fs = std::filesystem;
   std::error_code ec;
@@ -275,31 +460,47 @@ BaseMesh load_mesh(const std::string& path)
     throw InputError("'" + path + "' is empty");
 
   const std::string where = "'" + path + "': ";
-  // OpenMesh's text readers skip a vertex written as "nan" or "inf"; say so
-  // rather than let the faces after it name the wrong vertices.
-  const FileCensus census = take_census(path, ext);
-  if (!census.problem.empty())
-    throw InputError(where + census.problem);
-  if (census.nonfinite_line >= 0)
-    throw InputError(where + "line " + std::to_string(census.nonfinite_line) + ": non-finite coordinate '" +
-                     census.nonfinite_token + "'");
-
-  PolyMesh om;
-  CheckedImporter importer(om);
-  OpenMesh::IO::Options options;
-  bool ok = false;
-  {
-    QuietOpenMesh quiet;
-    ok = OpenMesh::IO::IOManager().read(path, importer, options);
+  if (ext == ".off" && !binary_off(path)) {
+    try {
+      return read_off_text(path);
+    } catch (const InputError& e) {
+      throw InputError(where + e.what());
+    }
   }
-  if (!importer.problem_.empty())
-    throw InputError(where + importer.problem_);
-  if (!ok)
-    throw InputError(where + "not a readable " + ext.substr(1) + " file (truncated or malformed)");
-  ImportReport report = importer.report;
-  if (census.declared_faces > long(importer.faces_seen()))
-    report.faces_skipped_by_reader = std::size_t(census.declared_faces) - importer.faces_seen();
-  return finish(om, report, fs::path(path).stem().string(), where);
+  return read_through_openmesh(path, ext, where);
+}
+
+BaseMesh load_mesh(const std::string& path, const ImportOptions& import)
+{
+  namespace fs = std::filesystem;
+  return import_mesh(read_mesh_file(path), fs::path(path).stem().string(), "'" + path + "': ", import);
+}
+
+BaseMesh import_mesh(PolygonSoup soup, const std::string& name, const std::string& where,
+                     const ImportOptions& import)
+{
+  const std::size_t faces_skipped = soup.faces_skipped;
+  if (soup.faces.empty())
+    throw InputError(where + "has no faces");
+  // Welding and orienting compute with the coordinates: they must be usable.
+  for (std::size_t v = 0; v < soup.points.size(); ++v)
+    check_coordinates(soup.points[v], v, where);
+  const SoupSteps steps = import_soup(soup, import.weld);
+  if (soup.faces.empty())
+    throw InputError(where + "has no faces (every face is degenerate)");
+  BaseMesh mesh = build(soup.points, soup.faces, name, where, soup.colours);
+  ImportReport& r = mesh.report;
+  r.faces_skipped_by_reader = faces_skipped;
+  r.degenerate_faces_dropped += steps.degenerate_faces_dropped;
+  r.duplicate_faces_dropped += steps.duplicate_faces_dropped;
+  r.vertices_welded = steps.vertices_welded;
+  r.weld_tolerance = steps.weld_tolerance;
+  r.faces_flipped = steps.faces_flipped;
+  r.components_turned_outward = steps.components_turned_outward;
+  r.nonorientable_components = steps.nonorientable_components;
+  r.vertices_cut = steps.vertices_cut;
+  r.coloured = !mesh.colours.empty();
+  return mesh;
 }
 
 PolyMesh to_openmesh(const BaseMesh& base)

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/vec.h"
+#include "mesh/polygon_soup.h"
 
 #include <cstddef> // for std::size_t
 #include <string>  // for std::string
@@ -18,10 +19,23 @@ struct ImportReport
   std::size_t nonmanifold_faces_detached = 0;  //!< faces OpenMesh could not join to their neighbours
   std::size_t nonmanifold_vertices_split = 0;  //!< extra surface sheets at one vertex
   std::size_t isolated_vertices_removed = 0;   //!< vertices used by no face
+  // The import steps every file goes through (not repairs: a clean file's
+  // soup of separate faces, or its inward winding, is normal input).
+  std::size_t vertices_welded = 0;             //!< merged into a coincident vertex
+  double weld_tolerance = 0;                   //!< absolute; 0 when welding was off
+  std::size_t faces_flipped = 0;               //!< turned to agree with their neighbours
+  std::size_t components_turned_outward = 0;   //!< closed components that were wound inward
+  std::size_t nonorientable_components = 0;    //!< cut open (or split at non-manifold vertices) to orient
+  std::size_t vertices_cut = 0;                //!< vertex copies made for those cuts
+  bool coloured = false;                       //!< the file's colours became the diffuse channel
 
+  //! Whether a repair changed the file's mesh (the import steps do not count).
   bool changed() const;
   //! One line per repair, e.g. "removed 2 vertices used by no face".
   std::vector<std::string> lines() const;
+  //! One line per import step that did something, e.g. "welded 960
+  //! coincident vertices (tolerance 1e-05)".
+  std::vector<std::string> step_lines() const;
 };
 
 //! Polygons as a flat index list. Valid by construction: at least one face,
@@ -34,6 +48,7 @@ struct BaseMesh
   std::vector<int> face_sizes;    //!< #faces, corners per face
   std::vector<int> face_offsets;  //!< #faces + 1, into face_vertices
   std::vector<int> face_vertices; //!< sum(face_sizes), counter-clockwise
+  std::vector<Vec3> colours;      //!< #vertices RGB in [0, 1] from the file, or empty
   ImportReport report;
 
   std::size_t vertex_count() const { return points.size(); }
@@ -52,12 +67,35 @@ constexpr float kMaxCoordinate = 1e15f;
 //! \throw InputError naming the first problem (no faces, non-finite
 //! coordinate or one beyond kMaxCoordinate, index out of range).
 BaseMesh make_base_mesh(std::vector<Vec3> points, const std::vector<std::vector<int>>& faces,
-                        const std::string& name = "mesh");
+                        const std::string& name = "mesh", const std::vector<Vec3>& colours = {});
 
-//! Reads OBJ, OFF, PLY or STL through OpenMesh.
+//! The checked reading every mesh file goes through, without the import
+//! steps: the census first (take_census(); text OFF through
+//! read_off_text()), then OpenMesh's readers; vertices and faces as listed.
 //! \throw IOError when the file is missing or unreadable.
-//! \throw InputError when the format is unknown or the mesh is unusable.
-BaseMesh load_mesh(const std::string& path);
+//! \throw InputError, one line naming the file (and the line where there
+//! is one), when the format is unknown or the file is malformed, truncated,
+//! non-finite, or disagrees with its header.
+PolygonSoup read_mesh_file(const std::string& path);
+
+//! How load_mesh() imports.
+struct ImportOptions
+{
+  bool weld = true; //!< merge coincident vertices (--no-weld keeps them)
+};
+
+//! Reads OBJ, OFF, PLY or STL through read_mesh_file(), then the import steps of import_soup() and the checks and repairs of
+//! make_base_mesh(). Vertex or face colours become `colours`.
+//! \throw IOError when the file is missing or unreadable.
+//! \throw InputError when the format is unknown or the file is malformed,
+//! truncated, or disagrees with its header, or the mesh is unusable.
+BaseMesh load_mesh(const std::string& path, const ImportOptions& options = {});
+
+//! The import steps and checks of load_mesh() for polygons read elsewhere
+//! (VTK's readers in vis/); messages start with `where`.
+//! \throw InputError when the mesh is unusable.
+BaseMesh import_mesh(PolygonSoup soup, const std::string& name, const std::string& where,
+                     const ImportOptions& options = {});
 
 //! File extensions load_mesh reads, lower case with the dot.
 const std::vector<std::string>& readable_mesh_extensions();

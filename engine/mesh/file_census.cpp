@@ -1,7 +1,7 @@
 #include "mesh/file_census.h"
 
 #include <algorithm> // for std::max, std::all_of, std::none_of
-#include <cctype>    // for std::tolower, std::isprint
+#include <cctype>    // for std::tolower, std::isprint, std::isspace
 #include <cerrno>    // for errno, ERANGE
 #include <cmath>     // for std::isfinite, std::fabs
 #include <cstdint>   // for std::int32_t, std::uint32_t
@@ -142,30 +142,203 @@ std::vector<std::string> numeric_words(const std::string& line, long number, dou
   return out;
 }
 
-//! The next word as an element count; false when there is none. A word
-//! that is not a non-negative number is a problem (OpenMesh would read a
-//! wrapped or partial value and reserve for it).
-bool read_count(std::istream& words, long& value, long number, FileCensus& c)
-{
-  std::string word;
-  if (!(words >> word))
-    return false;
-  char* end = nullptr;
-  errno = 0;
-  value = std::strtol(word.c_str(), &end, 10);
-  if (end == word.c_str() || *end || errno == ERANGE || value < 0) {
-    c.problem = "line " + std::to_string(number) + ": " + shown(word) + " is not a count";
-    return false;
-  }
-  return true;
-}
-
 struct PlyElement
 {
   std::string name;
   long count = 0;
-  std::vector<bool> lists; //!< per property: a list (count, then items)
+  std::vector<bool> lists;              //!< per property: a list (count, then items)
+  std::vector<std::string> names;       //!< per property
+  std::vector<std::string> types;       //!< per property: its type, a list's item type
+  std::vector<std::string> count_types; //!< per property: a list's count type, else empty
 };
+
+//! Whether a word is one number from 0 to 1.
+bool unit_number(const std::string& w)
+{
+  char* end = nullptr;
+  const double v = std::strtod(w.c_str(), &end);
+  return end != w.c_str() && !*end && v >= 0 && v <= 1;
+}
+
+//! A colour property stored as a real number: OpenMesh scales it by 255
+//! into a byte, which is only defined for 0-1.
+bool is_real_colour(const std::string& name, const std::string& type)
+{
+  const bool colour = name == "red" || name == "green" || name == "blue" || name == "alpha" ||
+                      name == "diffuse_red" || name == "diffuse_green" || name == "diffuse_blue";
+  return colour && (type == "float" || type == "float32" || type == "double" || type == "float64");
+}
+
+//! Bytes of a PLY scalar type.
+int ply_size(const std::string& t)
+{
+  if (t == "char" || t == "uchar" || t == "int8" || t == "uint8")
+    return 1;
+  if (t == "short" || t == "ushort" || t == "int16" || t == "uint16")
+    return 2;
+  if (t == "double" || t == "float64")
+    return 8;
+  return 4;
+}
+
+//! A binary PLY integer of type `t` as a signed value.
+long long ply_integer(const unsigned char* b, const std::string& t, bool big_endian)
+{
+  const int n = ply_size(t);
+  unsigned long long u = 0;
+  for (int k = 0; k < n; ++k)
+    u |= (unsigned long long)b[big_endian ? n - 1 - k : k] << (8 * k);
+  const bool is_signed = t == "char" || t == "int8" || t == "short" || t == "int16" || t == "int" || t == "int32";
+  if (is_signed && n < 8 && (u >> (8 * n - 1)) & 1)
+    return (long long)u - (1LL << (8 * n));
+  return (long long)u;
+}
+
+//! A binary PLY float or double as a double.
+double ply_real(const unsigned char* b, const std::string& t, bool big_endian)
+{
+  unsigned char le[8];
+  const int n = ply_size(t);
+  for (int k = 0; k < n; ++k)
+    le[k] = b[big_endian ? n - 1 - k : k];
+  if (n == 4) {
+    float f;
+    std::memcpy(&f, le, 4);
+    return f;
+  }
+  double d;
+  std::memcpy(&d, le, 8);
+  return d;
+}
+
+//! Walks a binary PLY body as the header lays it out, before OpenMesh
+//! allocates what its counts say: every list fits the file and names at
+//! most the vertex count, every vertex coordinate is finite, and the body
+//! ends where the file does.
+void check_ply_binary_body(std::istream& in, const std::vector<PlyElement>& elements, long nv, long size,
+                           bool big_endian, FileCensus& c)
+{
+  const std::streamoff start = in.tellg();
+  std::string body(std::size_t(size - start), '\0');
+  in.read(&body[0], std::streamsize(body.size()));
+  const auto* b = reinterpret_cast<const unsigned char*>(body.data());
+  const std::size_t n = body.size();
+  std::size_t at = 0;
+  for (const PlyElement& e : elements)
+    for (long k = 0; k < e.count; ++k)
+      for (std::size_t p = 0; p < e.types.size(); ++p) {
+        const std::string where = e.name + " " + std::to_string(k);
+        if (!e.lists[p]) {
+          const std::size_t bytes = std::size_t(ply_size(e.types[p]));
+          if (at + bytes > n) {
+            c.problem = "the binary PLY body ends inside " + where + " (truncated?)";
+            return;
+          }
+          const std::string& name = e.names[p];
+          if (e.name == "vertex" && (name == "x" || name == "y" || name == "z") &&
+              (e.types[p] == "float" || e.types[p] == "float32" || e.types[p] == "double" ||
+               e.types[p] == "float64") &&
+              !std::isfinite(ply_real(b + at, e.types[p], big_endian))) {
+            c.problem = "vertex " + std::to_string(k) + " has a non-finite coordinate " + name;
+            return;
+          }
+          if (e.name == "vertex" && is_real_colour(name, e.types[p])) {
+            const double v = ply_real(b + at, e.types[p], big_endian);
+            if (!(v >= 0 && v <= 1)) {
+              c.problem = "vertex " + std::to_string(k) + " has a colour " + name + " outside 0-1";
+              return;
+            }
+          }
+          at += bytes;
+          continue;
+        }
+        const std::size_t count_bytes = std::size_t(ply_size(e.count_types[p]));
+        if (at + count_bytes > n) {
+          c.problem = "the binary PLY body ends inside " + where + " (truncated?)";
+          return;
+        }
+        const long long items = ply_integer(b + at, e.count_types[p], big_endian);
+        at += count_bytes;
+        const std::size_t item = std::size_t(ply_size(e.types[p]));
+        if (items < 0 || items > nv || at + std::size_t(items) * item > n) {
+          c.problem = where + " has a list of " + std::to_string(items) + " items, but there are " +
+                      std::to_string(nv) + " vertices and " + std::to_string(n - at) + " bytes left";
+          return;
+        }
+        at += std::size_t(items) * item;
+      }
+  if (at != n)
+    c.problem = "the binary PLY body has " + std::to_string(n - at) + " bytes after the elements its header declares";
+}
+
+//! Every triangle of a binary STL (`in` after the 84-byte header): finite
+//! normal and corners.
+void check_binary_stl_numbers(std::istream& in, long triangles, FileCensus& c)
+{
+  char record[50];
+  for (long t = 0; t < triangles; ++t) {
+    in.read(record, 50);
+    float values[12];
+    std::memcpy(values, record, sizeof values);
+    for (int k = 3; k < 12; ++k)
+      if (!std::isfinite(values[k])) {
+        c.problem = "binary STL triangle " + std::to_string(t) + " has a non-finite coordinate";
+        return;
+      }
+  }
+}
+
+//! ASCII STL, line by line: facets of exactly three vertices of three
+//! numbers each, and the closing endsolid (a file without it is cut short).
+void check_ascii_stl(std::istream& in, FileCensus& c)
+{
+  std::string line;
+  long number = 0, vertices = 0;
+  bool ended = false, in_facet = false;
+  c.declared_faces = 0;
+  while (std::getline(in, line) && c.problem.empty()) {
+    ++number;
+    if (number == 1 && starts_with(line, "\xEF\xBB\xBF"))
+      line.erase(0, 3);
+    std::istringstream words(line);
+    std::string keyword;
+    if (!(words >> keyword))
+      continue;
+    for (char& ch : keyword)
+      ch = char(std::tolower(static_cast<unsigned char>(ch)));
+    const auto fail = [&](const std::string& what) { c.problem = "line " + std::to_string(number) + ": " + what; };
+    if (ended)
+      fail("content after endsolid");
+    else if (keyword == "solid" && number > 1 && c.declared_faces > 0)
+      fail("a second solid (only one is read)");
+    else if (keyword == "facet") {
+      ++c.declared_faces;
+      in_facet = true;
+      vertices = 0;
+    } else if (keyword == "vertex") {
+      const std::string rest = line.substr(line.find_first_of("xX") + 1);
+      check_numbers(rest, number, c);
+      if (c.nonfinite_line >= 0)
+        return;
+      const std::vector<std::string> w = numeric_words(rest, number, kFloatWord, c);
+      if (c.problem.empty() && (w.size() != 3 || !in_facet))
+        fail(in_facet ? "a vertex of " + std::to_string(w.size()) + " numbers (x y z)" : "a vertex outside a facet");
+      ++vertices;
+    } else if (keyword == "endfacet") {
+      if (vertices != 3)
+        fail("a facet of " + std::to_string(vertices) + " vertices (STL facets are triangles)");
+      in_facet = false;
+    } else if (keyword == "endsolid") {
+      if (in_facet)
+        fail("endsolid inside a facet");
+      ended = true;
+    } else if (keyword != "solid" && keyword != "outer" && keyword != "endloop") {
+      fail(shown(keyword) + " is not an STL keyword");
+    }
+  }
+  if (c.problem.empty() && !ended)
+    c.problem = "the ASCII STL ends without endsolid (truncated?)";
+}
 
 //! Walks an ASCII PLY body word by word, as the header lays it out: a
 //! non-finite vertex coordinate is noted, and a list count (which OpenMesh
@@ -187,9 +360,13 @@ void check_ply_ascii_body(std::istream& in, long& number, const std::vector<PlyE
   };
   for (const PlyElement& e : elements)
     for (long k = 0; k < e.count; ++k)
-      for (const bool list : e.lists) {
-        if (!next())
-          return; // ends early: the reader delivers fewer faces, which is counted
+      for (std::size_t p = 0; p < e.lists.size(); ++p) {
+        const bool list = e.lists[p];
+        if (!next()) {
+          c.problem = "the PLY body ends before its " + std::to_string(e.count) + " " + e.name +
+                      " elements (truncated?)";
+          return;
+        }
         if (!list) {
           if (e.name == "vertex" && c.nonfinite_line < 0 && nonfinite_word(word)) {
             c.nonfinite_line = number;
@@ -198,6 +375,11 @@ void check_ply_ascii_body(std::istream& in, long& number, const std::vector<PlyE
           }
           if (!is_number(word, kFloatWord)) {
             c.problem = "line " + std::to_string(number) + ": " + shown(word) + " is not a number that fits";
+            return;
+          }
+          if (e.name == "vertex" && is_real_colour(e.names[p], e.types[p]) && !unit_number(word)) {
+            c.problem = "line " + std::to_string(number) + ": colour " + e.names[p] + " " + shown(word) +
+                        " is outside 0-1";
             return;
           }
           continue;
@@ -211,8 +393,10 @@ void check_ply_ascii_body(std::istream& in, long& number, const std::vector<PlyE
           return;
         }
         for (long i = 0; i < n; ++i) {
-          if (!next())
+          if (!next()) {
+            c.problem = "the PLY body ends inside a " + e.name + " list (truncated?)";
             return;
+          }
           const char* text = word.c_str();
           char* end = nullptr;
           const long index = std::strtol(text, &end, 10);
@@ -222,6 +406,9 @@ void check_ply_ascii_body(std::istream& in, long& number, const std::vector<PlyE
           }
         }
       }
+  if (next())
+    c.problem = "line " + std::to_string(number) + ": " + shown(word) +
+                " after the elements the PLY header declares";
 }
 
 //! Element counts a file of `size` bytes cannot hold (at `min_bytes` per
@@ -282,140 +469,59 @@ FileCensus take_census(const std::string& path, const std::string& ext)
 
   if (ext == ".obj") {
     c.declared_faces = 0;
+    c.text = true;
     while (std::getline(in, line) && c.problem.empty()) {
       ++number;
+      if (number == 1 && starts_with(line, "\xEF\xBB\xBF"))
+        line.erase(0, 3);
       // OpenMesh reads the keyword as a word, leading blanks skipped.
       std::istringstream words(line);
       std::string keyword;
       words >> keyword;
       if (keyword == "f") {
         ++c.declared_faces;
+        const std::streampos at = words.tellg(); // -1 when the line ends at the keyword
         check_obj_face(words, number, c);
+        // A face cut short (the last line of a truncated file) is no face.
+        std::istringstream again(at < 0 ? std::string() : line.substr(std::size_t(at)));
+        long corners = 0;
+        for (std::string w; again >> w;)
+          ++corners;
+        if (c.problem.empty() && corners < 3)
+          c.problem = "line " + std::to_string(number) + ": a face of " + std::to_string(corners) +
+                      " corners (truncated?)";
       } else if (keyword == "v") {
+        // x y z, with w or with r g b: a line OpenMesh cannot read whole
+        // would be skipped, and every later index would name the wrong vertex.
         check_numbers(line.substr(line.find('v') + 1), number, c);
+        if (c.nonfinite_line >= 0)
+          break;
+        const std::vector<std::string> w = numeric_words(line.substr(line.find('v') + 1), number, kFloatWord, c);
+        if (c.problem.empty() && w.size() != 3 && w.size() != 4 && w.size() != 6 && w.size() != 7)
+          c.problem = "line " + std::to_string(number) + ": a vertex of " + std::to_string(w.size()) +
+                      " numbers (x y z, x y z w, or x y z r g b)";
+        // Colours are 0-1: OpenMesh scales them by 255 into a byte.
+        for (std::size_t k = 3; c.problem.empty() && w.size() >= 6 && k < w.size(); ++k)
+          if (!unit_number(w[k]))
+            c.problem = "line " + std::to_string(number) + ": colour " + shown(w[k]) + " is outside 0-1";
       }
     }
   } else if (ext == ".off") {
-    long nv = -1, seen_vertices = 0, face_lines = 0;
-    while (std::getline(in, line)) {
-      ++number;
-      // OpenMesh looks for BINARY anywhere in the header line, comment or not.
-      const bool binary = number == 1 && line.find("BINARY") != std::string::npos;
-      if (binary) {
-        // Three 32-bit counts (vertices, faces, edges) follow the line.
-        std::int32_t counts[3] = {0, 0, 0};
-        if (!in.read(reinterpret_cast<char*>(counts), sizeof counts))
-          c.problem = "the binary OFF header is truncated";
-        else
-          check_counts(counts[0], counts[1], file_size, 12, c);
-        c.declared_faces = counts[1];
-        if (c.problem.empty())
-          check_binary_off_faces(in, counts[0], counts[1], file_size, c);
-        return c;
-      }
-      const std::size_t hash = line.find('#');
-      if (hash != std::string::npos)
-        line.erase(hash);
-      if (line.find_first_not_of(" \t\r\v\f") == std::string::npos) // blank as OpenMesh reads it
-        continue;
-      if (number == 1 && line.find("OFF") != std::string::npos) {
-        // The variants with per-vertex colours, normals or texture
-        // coordinates (COFF, NOFF, STOFF, ...) are refused: OpenMesh reads
-        // their numbers across line ends, and no rule here could follow it.
-        const std::size_t start = line.find_first_not_of(" \t");
-        if (line.compare(start, 3, "OFF") != 0) {
-          c.problem = "line 1: " + shown(line.substr(start, line.find_first_of(" \t\r", start) - start)) +
-                      " files (per-vertex colours, normals or texture coordinates) are not read; only plain OFF";
-          return c;
-        }
-        // OpenMesh reads the counts from the next line, whatever follows
-        // the keyword here: the file would be read out of step.
-        std::istringstream rest(line.substr(line.find("OFF") + 3));
-        std::string word;
-        if (rest >> word) {
-          c.problem = "line 1: " + shown(word) + " after OFF is not read; the counts go on the next line";
-          return c;
-        }
-        continue;
-      }
-      if (nv < 0) {
-        std::istringstream counts(line);
-        long f = -1, v = -1;
-        const bool counted = read_count(counts, v, number, c);
-        if (counted)
-          nv = v;
-        long e = -1;
-        if (!counted || !read_count(counts, f, number, c) || !read_count(counts, e, number, c)) {
-          // OpenMesh would take the missing counts from the lines that follow.
-          if (c.problem.empty())
-            c.problem = "line " + std::to_string(number) + ": the counts need vertices, faces and edges";
-          return c;
-        }
-        std::string extra;
-        if (counts >> extra) { // OpenMesh would read it as the first coordinate
-          c.problem = "line " + std::to_string(number) + ": " + shown(extra) +
-                      " after the vertex, face and edge counts";
-          return c;
-        }
-        c.declared_faces = f;
-        if (!check_counts(nv, f, file_size, 6, c).problem.empty())
-          return c;
-      } else if (seen_vertices < nv) {
-        ++seen_vertices;
-        check_numbers(line, number, c);
-        // OpenMesh reads numbers across line ends: a vertex line must hold
-        // its three coordinates (exactly three in plain OFF), all numbers,
-        // or what follows is read out of step.
-        const std::vector<std::string> w = numeric_words(line, number, kFloatWord, c);
-        if (c.problem.empty() && w.size() != 3)
-          c.problem = "line " + std::to_string(number) + ": a vertex of " + std::to_string(w.size()) +
-                      " numbers (x y z)";
-        if (!c.problem.empty())
-          return c;
-      } else {
-        // A face starts with its corner count, which OpenMesh allocates,
-        // then names that many vertices.
-        ++face_lines;
-        const std::vector<std::string> w = numeric_words(line, number, kIntWord, c);
-        if (!c.problem.empty())
-          return c;
-        const long corners = std::strtol(w[0].c_str(), nullptr, 10);
-        if (corners < 1 || corners > nv) {
-          c.problem = "line " + std::to_string(number) + ": a face of " + w[0] +
-                      " corners, but there are only " + std::to_string(nv) + " vertices";
-          return c;
-        }
-        // Plain OFF faces carry no colour: OpenMesh would read extra
-        // numbers as the next face.
-        if (long(w.size()) != corners + 1) {
-          c.problem = "line " + std::to_string(number) + ": a face of " + w[0] + " corners names " +
-                      std::to_string(w.size() - 1) + " vertices";
-          return c;
-        }
-        for (long k = 1; k <= corners; ++k) {
-          char* end = nullptr;
-          const long index = std::strtol(w[std::size_t(k)].c_str(), &end, 10);
-          if (*end || index < 0 || index >= nv) {
-            c.problem = "line " + std::to_string(number) + ": face " + std::to_string(face_lines - 1) +
-                        " names vertex " + w[std::size_t(k)] + ", but there are only " + std::to_string(nv) +
-                        " vertices";
-            return c;
-          }
-        }
-      }
-    }
-    // A text OFF file that ends early: OpenMesh would make up the rest (or,
-    // without even the counts, wait for them forever).
-    if (c.problem.empty() && nv < 0)
-      c.problem = "has no counts line (vertices faces edges) after OFF";
-    else if (nv > seen_vertices)
-      c.problem = "declares " + std::to_string(nv) + " vertices, but the file ends after " +
-                  std::to_string(seen_vertices) + " (truncated?)";
-    else if (c.declared_faces > face_lines)
-      c.problem = "declares " + std::to_string(c.declared_faces) + " faces, but the file ends after " +
-                  std::to_string(face_lines) + " (truncated?)";
+    // Text OFF goes through read_off_text(); here only OpenMesh's binary
+    // OFF, BINARY on the first line.
+    std::getline(in, line);
+    c.binary = true;
+    std::int32_t counts[3] = {0, 0, 0};
+    if (!in.read(reinterpret_cast<char*>(counts), sizeof counts))
+      c.problem = "the binary OFF header is truncated";
+    else
+      check_counts(counts[0], counts[1], file_size, 12, c);
+    c.declared_faces = counts[1];
+    if (c.problem.empty())
+      check_binary_off_faces(in, counts[0], counts[1], file_size, c);
+    return c;
   } else if (ext == ".ply") {
-    bool ascii = false, ended = false;
+    bool ascii = false, ended = false, big_endian = false;
     long nv = 0, nf = 0;
     std::vector<PlyElement> elements; // in file order
     while (!ended && std::getline(in, line) && c.problem.empty()) {
@@ -445,11 +551,24 @@ FileCensus take_census(const std::string& path, const std::string& ext)
                       " is not read (only vertex and face)";
           break;
         }
-        elements.push_back({w[1], std::stol(w[2]), {}});
+        elements.push_back({w[1], std::stol(w[2]), {}, {}, {}, {}});
         (w[1] == "face" ? nf : nv) += elements.back().count;
       }
-      if (w[0] == "property")
-        elements.back().lists.push_back(w[1] == "list");
+      if (w[0] == "property") {
+        PlyElement& e = elements.back();
+        const bool list = w[1] == "list";
+        e.lists.push_back(list);
+        e.names.push_back(w.back());
+        e.types.push_back(list ? w[3] : w[1]);
+        e.count_types.push_back(list ? w[2] : "");
+        // A list's count is a number of items: a real type cannot be one.
+        if (list && (w[2] == "float" || w[2] == "float32" || w[2] == "double" || w[2] == "float64")) {
+          c.problem = "line " + std::to_string(number) + ": a list count of type " + w[2];
+          break;
+        }
+      }
+      if (w[0] == "format")
+        big_endian = w[1] == "binary_big_endian";
     }
     if (!c.problem.empty())
       return c;
@@ -461,29 +580,45 @@ FileCensus take_census(const std::string& path, const std::string& ext)
     }
     if (!check_counts(nv, c.declared_faces, file_size, ascii ? 6 : 12, c).problem.empty())
       return c;
-    if (ascii)
+    c.binary = !ascii;
+    c.text = ascii;
+    if (!elements.empty() && elements.front().name != "vertex" && nv > 0)
+      c.problem = "the PLY face element comes before the vertex element, which is not read";
+    else if (ascii)
       check_ply_ascii_body(in, number, elements, nv, c);
+    else
+      check_ply_binary_body(in, elements, nv, file_size, big_endian, c);
   } else if (ext == ".stl") {
+    // Binary exactly when the length is a binary STL's for the count in its
+    // header: an ASCII file may start with a byte-order mark, a blank line
+    // or SOLID, and a binary one with "solid".
     char header[84];
     in.read(header, 84);
-    if (in.gcount() == 84 && !starts_with(std::string(header, 5), "solid")) {
-      std::uint32_t n = 0;
+    std::uint32_t n = 0;
+    if (in.gcount() == 84)
       std::memcpy(&n, header + 80, 4);
+    std::size_t first = 0;
+    while (first < std::size_t(in.gcount()) && (std::isspace(static_cast<unsigned char>(header[first])) ||
+                                                static_cast<unsigned char>(header[first]) >= 0x80))
+      ++first;
+    std::string opening(header + first, header + std::min<long>(long(in.gcount()), long(first) + 5));
+    for (char& ch : opening)
+      ch = char(std::tolower(static_cast<unsigned char>(ch)));
+    const bool says_solid = opening == "solid";
+    if (in.gcount() == 84 && file_size == 84 + 50 * long(n)) {
+      c.binary = true;
       c.declared_faces = long(n);
+      check_binary_stl_numbers(in, long(n), c);
+    } else if (!says_solid) {
+      c.problem = in.gcount() < 84 ? "too short for a binary STL header and not ASCII STL ('solid')"
+                                   : "a binary STL of " + std::to_string(n) + " triangles has " +
+                                         std::to_string(84 + 50 * long(n)) + " bytes, this file " +
+                                         std::to_string(file_size) + " (truncated or not STL)";
     } else {
       in.clear();
       in.seekg(0);
-      c.declared_faces = 0;
-      while (std::getline(in, line)) {
-        ++number;
-        const std::size_t first = line.find_first_not_of(" \t");
-        if (first == std::string::npos)
-          continue;
-        if (line.compare(first, 5, "facet") == 0)
-          ++c.declared_faces;
-        else if (line.compare(first, 6, "vertex") == 0)
-          check_numbers(line.substr(first + 6), number, c);
-      }
+      c.text = true;
+      check_ascii_stl(in, c);
     }
   }
   return c;

@@ -15,10 +15,15 @@ struct FileCensus
   long nonfinite_line = -1;    //!< first text line with a "nan"/"inf" number, 1-based
   std::string nonfinite_token; //!< that number as written
   std::string problem;         //!< malformed structure, e.g. "line 4: ..."; empty: none found
+  bool binary = false;         //!< binary PLY, STL or OFF
+  bool text = false;           //!< text that may open with a UTF-8 byte-order mark
 };
 
-//! Scans OBJ, OFF and ASCII PLY/STL text, or the header of binary PLY/STL.
-//! The first structural problem found ends the scan.
+//! Scans OBJ and ASCII PLY/STL text (a UTF-8 byte-order mark skipped), the
+//! header of binary PLY and OFF, and binary STL whole (its length must be
+//! its triangles', its numbers finite). Text OFF has its own strict reader
+//! (read_off_text()). The first structural problem found ends the scan; a
+//! file that ends before its header's counts are met is a problem.
 FileCensus take_census(const std::string& path, const std::string& lower_extension);
 
 } // namespace meshpaint

@@ -1,0 +1,24 @@
+#include "mesh/polygon_soup.h"
+
+namespace meshpaint {
+
+void colours_from_faces(PolygonSoup& soup)
+{
+  if (soup.face_colours.empty() || !soup.colours.empty())
+    return;
+  std::vector<Vec3> sum(soup.points.size(), Vec3{0, 0, 0});
+  std::vector<int> count(soup.points.size(), 0);
+  for (std::size_t f = 0; f < soup.faces.size(); ++f)
+    for (const int v : soup.faces[f]) {
+      for (int a = 0; a < 3; ++a)
+        sum[std::size_t(v)][a] += soup.face_colours[f][a];
+      ++count[std::size_t(v)];
+    }
+  soup.colours.resize(soup.points.size(), Vec3{0.5f, 0.5f, 0.5f});
+  for (std::size_t v = 0; v < sum.size(); ++v)
+    if (count[v] > 0)
+      for (int a = 0; a < 3; ++a)
+        soup.colours[v][a] = sum[v][a] / float(count[v]);
+}
+
+} // namespace meshpaint

@@ -1,0 +1,26 @@
+// Polygons as a file lists them, before import joins and orients them: the
+// common form every reader produces.
+#pragma once
+
+#include "core/vec.h"
+
+#include <vector> // for std::vector
+
+namespace meshpaint {
+
+//! Points, faces and optional colours exactly as read; nothing checked
+//! beyond what the reader itself guarantees (finite numbers, indices in range).
+struct PolygonSoup
+{
+  std::vector<Vec3> points;             //!< #vertices
+  std::vector<std::vector<int>> faces;  //!< #faces, vertex indices each
+  std::vector<Vec3> colours;            //!< #vertices RGB in [0, 1], or empty
+  std::vector<Vec3> face_colours;       //!< #faces RGB in [0, 1], or empty
+  std::size_t faces_skipped = 0;        //!< OBJ faces the reader could not use (repeated vertices)
+};
+
+//! Per-vertex colours from face colours where the file gave only those:
+//! each vertex takes the mean of its faces' colours.
+void colours_from_faces(PolygonSoup& soup);
+
+} // namespace meshpaint

@@ -1,0 +1,272 @@
+"""Reading meshes: the variants other tools write, the import steps, and damaged files.
+
+The files come from tests/bad_input/mesh_inputs.py (generated here, not stored),
+VTK's own writers, and Geomview's OFF models where the package is installed.
+"""
+import glob
+import math
+import os
+import subprocess
+import sys
+
+import pytest
+import vtk
+from vtkmodules.util import numpy_support
+
+BIN = os.environ["MESHPAINT_BIN"]
+SOURCE = os.environ["MESHPAINT_SOURCE_DIR"]
+sys.path.insert(0, os.path.join(SOURCE, "tests", "bad_input"))
+import mesh_inputs  # noqa: E402
+
+GEOMVIEW = sorted(glob.glob("/usr/share/geomview/geom/*.off"))
+
+
+def run(*args):
+    return subprocess.run([BIN, *args], capture_output=True, text=True, timeout=600)
+
+
+def write(tmp_path, name, data):
+    path = tmp_path / name
+    path.write_bytes(data)
+    return str(path)
+
+
+def read_vtp(path):
+    r = vtk.vtkXMLPolyDataReader()
+    r.SetFileName(str(path))
+    r.Update()
+    return r.GetOutput()
+
+
+@pytest.fixture(scope="module")
+def project(tmp_path_factory):
+    """A small project for `transfer`, fitted straight onto the cube."""
+    d = tmp_path_factory.mktemp("project")
+    cube = write(d, "cube.obj", mesh_inputs.obj())
+    r = run("fit", cube, "--direct", "--level", "2", "-o", str(d / "cube.meshpaint"), "--quiet")
+    assert r.returncode == 0, r.stderr
+    return str(d / "cube.meshpaint")
+
+
+@pytest.mark.parametrize("name, data, message", mesh_inputs.damaged(), ids=lambda v: v if isinstance(v, str) else "")
+def test_damaged_mesh_gives_one_line_and_exit_2(tmp_path, name, data, message):
+    path = write(tmp_path, name, data)
+    r = run("info", path)
+    lines = r.stderr.strip().splitlines()
+    assert r.returncode == 2, r.stdout + r.stderr
+    assert len(lines) == 1, r.stderr
+    assert lines[0].startswith("meshpaint info: "), lines[0]
+    import re
+    assert re.search(message, lines[0]), lines[0]
+
+
+@pytest.mark.parametrize("name, data, message", mesh_inputs.damaged(), ids=lambda v: v if isinstance(v, str) else "")
+def test_damaged_scan_is_refused_by_transfer(tmp_path, project, name, data, message):
+    path = write(tmp_path, name, data)
+    out = tmp_path / "out.vtp"
+    r = run("transfer", project, "--to", path, "-o", str(out), "--quiet")
+    lines = r.stderr.strip().splitlines()
+    assert r.returncode == 2, r.stdout + r.stderr
+    assert len(lines) == 1 and lines[0].startswith("meshpaint transfer: "), r.stderr
+    assert not out.exists()
+
+
+def test_vtp_with_absurd_component_count_is_refused_by_transfer(tmp_path, project):
+    path = tmp_path / "huge.vtp"
+    path.write_text('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">\n'
+                    '<PolyData><Piece NumberOfPoints="1" NumberOfPolys="0"><Points>'
+                    '<DataArray type="Float32" NumberOfComponents="1000000000" format="ascii">0 0 0</DataArray>'
+                    '</Points></Piece></PolyData></VTKFile>\n')
+    r = run("transfer", project, "--to", str(path), "-o", str(tmp_path / "o.vtp"), "--quiet")
+    assert r.returncode == 2, r.stderr
+    assert len(r.stderr.strip().splitlines()) == 1, r.stderr
+    assert "NumberOfComponents" in r.stderr
+
+
+@pytest.mark.parametrize("name, data", mesh_inputs.valid(), ids=lambda v: v if isinstance(v, str) else "")
+def test_valid_variant_reads_without_repairs(tmp_path, name, data):
+    path = write(tmp_path, name, data)
+    r = run("info", path)
+    assert r.returncode == 0, r.stderr
+    assert "repaired" not in r.stderr, r.stderr
+    assert "topology     1 component," in r.stdout, r.stdout
+
+
+@pytest.mark.parametrize("name, data", [v for v in mesh_inputs.valid() if not v[0].startswith("4off")],
+                         ids=lambda v: v if isinstance(v, str) else "")
+def test_valid_variant_is_transferred_onto(tmp_path, project, name, data):
+    path = write(tmp_path, name, data)
+    r = run("transfer", project, "--to", path, "-o", str(tmp_path / "o.vtp"), "--quiet")
+    assert r.returncode == 0, r.stderr
+
+
+@pytest.mark.skipif(not GEOMVIEW, reason="Geomview's OFF models are not installed (apt-get install geomview)")
+@pytest.mark.parametrize("path", GEOMVIEW, ids=os.path.basename)
+def test_geomview_off_models_read(path):
+    r = run("info", path)
+    assert r.returncode == 0, r.stderr
+    assert "repaired" not in r.stderr or "hypercube" in path, r.stderr  # the 4D hypercube projects onto itself
+
+
+def diffuse_of(tmp_path, mesh, *flags):
+    strokes = tmp_path / "none.json"
+    strokes.write_text('{"strokes": []}')
+    out = tmp_path / "out"
+    r = run("paint", mesh, "--strokes", str(strokes), "--level", "2", "-o", str(out), *flags)
+    assert r.returncode == 0, r.stderr
+    poly = read_vtp(out / "surface.vtp")
+    return poly, numpy_support.vtk_to_numpy(poly.GetPointData().GetArray("diffuse"))
+
+
+@pytest.mark.parametrize("name", ["coff.off", "face-colour-rgb-int.off", "vertex-colours.obj", "uchar-colours.ply"])
+def test_file_colours_arrive_in_the_diffuse_channel(tmp_path, name):
+    data = dict(mesh_inputs.valid())[name]
+    poly, diffuse = diffuse_of(tmp_path, write(tmp_path, name, data))
+    if name == "face-colour-rgb-int.off":  # every face red
+        assert abs(diffuse[:, 0].min() - 1) < 1e-5 and abs(diffuse[:, 1:]).max() < 1e-5
+    else:  # each corner of the cube its own colour: the surface there is nearest to it
+        import numpy as np
+        colours = np.array([[(i >> b) & 1 for b in range(3)] for i in range(8)], dtype=float)
+        pts = numpy_support.vtk_to_numpy(poly.GetPoints().GetData())
+        for i, corner in enumerate(mesh_inputs.CUBE_POINTS):
+            k = int(np.argmax((pts - pts.mean(axis=0)) @ (np.array(corner) - 0.5)))
+            assert int(np.argmin(((colours - diffuse[k]) ** 2).sum(axis=1))) == i, (corner, diffuse[k])
+
+
+def test_vtk_written_ply_colours_arrive_in_the_diffuse_channel(tmp_path):
+    sphere = vtk.vtkSphereSource()
+    sphere.SetThetaResolution(16)
+    sphere.SetPhiResolution(8)
+    sphere.Update()
+    poly = sphere.GetOutput()
+    colours = vtk.vtkUnsignedCharArray()
+    colours.SetName("RGB")
+    colours.SetNumberOfComponents(3)
+    for i in range(poly.GetNumberOfPoints()):
+        z = poly.GetPoint(i)[2]
+        colours.InsertNextTuple3(255 if z > 0 else 0, 0, 255 if z <= 0 else 0)
+    poly.GetPointData().SetScalars(colours)
+    w = vtk.vtkPLYWriter()
+    w.SetFileName(str(tmp_path / "sphere.ply"))
+    w.SetInputData(poly)
+    w.SetArrayName("RGB")
+    w.Write()
+    out, diffuse = diffuse_of(tmp_path, str(tmp_path / "sphere.ply"))
+    z = numpy_support.vtk_to_numpy(out.GetPoints().GetData())[:, 2]
+    assert diffuse[z > 0.3, 0].min() > 0.9 and diffuse[z < -0.3, 2].min() > 0.9
+
+
+@pytest.mark.parametrize("writer", ["stl", "obj", "off-soup"])
+def test_a_soup_becomes_one_component(tmp_path, writer):
+    if writer == "off-soup":
+        pts, faces = mesh_inputs.soup_of(mesh_inputs.CUBE_POINTS, mesh_inputs.CUBE_QUADS)
+        path = write(tmp_path, "soup.off", mesh_inputs.off(points=pts, faces=faces))
+    else:
+        pts, faces = mesh_inputs.soup_of(mesh_inputs.CUBE_POINTS, mesh_inputs.CUBE_TRIANGLES)
+        poly = vtk.vtkPolyData()
+        points = vtk.vtkPoints()
+        for p in pts:
+            points.InsertNextPoint(p)
+        cells = vtk.vtkCellArray()
+        for f in faces:
+            cells.InsertNextCell(len(f), f)
+        poly.SetPoints(points)
+        poly.SetPolys(cells)
+        path = str(tmp_path / f"soup.{writer}")
+        w = vtk.vtkSTLWriter() if writer == "stl" else vtk.vtkOBJWriter()
+        w.SetFileName(path)
+        w.SetInputData(poly)
+        w.Write()
+    r = run("info", path)
+    assert r.returncode == 0, r.stderr
+    assert "topology     1 component, genus 0" in r.stdout, r.stdout
+    if writer != "stl":  # VTK's STL reader... no: OpenMesh's STL reader welds itself
+        assert "welded" in r.stdout
+        kept = run("info", path, "--no-weld")
+        assert kept.returncode == 0 and "topology     6 components" in kept.stdout or \
+            "topology     12 components" in kept.stdout, kept.stdout
+
+
+def signed_volume(poly):
+    tri = vtk.vtkTriangleFilter()
+    tri.SetInputData(poly)
+    tri.Update()
+    t = tri.GetOutput()
+    pts = numpy_support.vtk_to_numpy(t.GetPoints().GetData()).astype(float)
+    ids = numpy_support.vtk_to_numpy(t.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    a, b, c = pts[ids[:, 0]], pts[ids[:, 1]], pts[ids[:, 2]]
+    return float((a * ((b[:, [1, 2, 0]] * c[:, [2, 0, 1]]) - (b[:, [2, 0, 1]] * c[:, [1, 2, 0]]))).sum() / 6)
+
+
+def test_an_inward_wound_closed_scan_gets_outward_limit_normals(tmp_path):
+    scan = os.path.join(SOURCE, "data", "scans", "bunny00.off")
+    if not os.path.exists(scan):
+        pytest.skip("the scans are not installed (scripts/fetch-scans.sh)")
+    lines = open(scan).read().splitlines()
+    nv, nf = (int(x) for x in lines[1].split()[:2])
+    for k in range(2 + nv, 2 + nv + nf):
+        w = lines[k].split()
+        lines[k] = " ".join([w[0]] + w[1:][::-1])
+    inward = tmp_path / "inward.off"
+    inward.write_text("\n".join(lines) + "\n")
+    out = tmp_path / "limit.vtp"
+    r = run("subdivide", str(inward), "--level", "1", "--limit", "-o", str(out))
+    assert r.returncode == 0, r.stderr
+    assert "turned 1 closed components wound inwards outward" in r.stderr
+    poly = read_vtp(out)
+    assert signed_volume(poly) > 0
+    pts = numpy_support.vtk_to_numpy(poly.GetPoints().GetData())
+    normals = numpy_support.vtk_to_numpy(poly.GetPointData().GetArray("Normals"))
+    centre = pts.mean(axis=0)
+    # Most normals point away from the centre on this roughly convex scan.
+    assert ((normals * (pts - centre)).sum(axis=1) > 0).mean() > 0.8
+
+
+def test_meshpaint_reads_its_own_vtp_output_with_its_colours(tmp_path):
+    data = dict(mesh_inputs.valid())["coff.off"]
+    poly, diffuse = diffuse_of(tmp_path, write(tmp_path, "coff.off", data))
+    again = tmp_path / "again"
+    again.mkdir()
+    back, diffuse_back = diffuse_of(again, str(tmp_path / "out" / "surface.vtp"))
+    r = run("info", str(tmp_path / "out" / "surface.vtp"))
+    assert r.returncode == 0, r.stderr
+    assert "took the file's colours as the diffuse channel" in r.stdout
+    # The read-back surface starts from the painted one's colours: the same range.
+    assert abs(diffuse_back.max() - diffuse.max()) < 0.1 and abs(diffuse_back.min() - diffuse.min()) < 0.1
+
+
+def test_legacy_vtk_polydata_reads(tmp_path):
+    sphere = vtk.vtkSphereSource()
+    sphere.Update()
+    w = vtk.vtkPolyDataWriter()
+    w.SetFileName(str(tmp_path / "sphere.vtk"))
+    w.SetInputData(sphere.GetOutput())
+    w.Write()
+    r = run("info", str(tmp_path / "sphere.vtk"))
+    assert r.returncode == 0, r.stderr
+    assert "topology     1 component, genus 0" in r.stdout
+
+
+@pytest.mark.parametrize("name, text, message", [
+    ("huge.vtk", "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 2000000000 float\n0 0 0\n",
+     "POINTS 2000000000 is more than the file can hold"),
+    ("nan.vtk", "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 nan 0\n"
+     "POLYGONS 1 4\n3 0 1 2\n", "point 2 is not finite|cannot read"),
+    ("missing-point.vtk", "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\n"
+     "POLYGONS 1 4\n3 0 1 7\n", "names point 7|cannot read"),
+    ("components.vtp", '<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">\n'
+     '<PolyData><Piece NumberOfPoints="1" NumberOfPolys="0"><Points><DataArray type="Float32" '
+     'NumberOfComponents="1000000000" format="ascii">0 0 0</DataArray></Points></Piece></PolyData></VTKFile>\n',
+     "NumberOfComponents=\"1000000000\" is more than the file can hold"),
+    ("truncated.vtp", '<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">\n'
+     '<PolyData><Piece NumberOfPoints="3" NumberOfPolys="1"><Points><DataArray type="Float32" ', "cannot read"),
+])
+def test_damaged_vtk_files_give_one_line(tmp_path, name, text, message):
+    path = tmp_path / name
+    path.write_text(text)
+    r = run("info", str(path))
+    lines = r.stderr.strip().splitlines()
+    assert r.returncode == 2, r.stdout + r.stderr
+    assert len(lines) == 1, r.stderr
+    import re
+    assert re.search(message, lines[0]), lines[0]

@@ -1,0 +1,211 @@
+#include "PolyDataFiles.h"
+
+#include "core/errors.h" // for meshpaint::IOError, InputError
+#include "core/format.h" // for meshpaint::lower_extension
+
+#include <vtkCellArray.h>         // for vtkCellArray
+#include <vtkDataArray.h>         // for vtkDataArray
+#include <vtkLogger.h>            // for vtkLogger::SetStderrVerbosity
+#include <vtkObjectFactory.h>     // for vtkStandardNewMacro
+#include <vtkOutputWindow.h>      // for vtkOutputWindow
+#include <vtkPointData.h>         // for vtkPointData
+#include <vtkPolyDataReader.h>    // for vtkPolyDataReader
+#include <vtkXMLPolyDataReader.h> // for vtkXMLPolyDataReader
+
+#include <cmath>      // for std::isfinite
+#include <cstdlib>    // for std::strtod
+#include <filesystem> // for std::filesystem::file_size, path
+#include <fstream>    // for std::ifstream
+#include <regex>      // for std::regex, std::sregex_iterator
+
+namespace meshpaint {
+namespace {
+
+//! VTK's readers allocate what the header says before reading data: counts
+//! and component numbers are bounded by what the file could hold (zlib
+//! compresses at most about 1000 to 1): the XML attributes of .vtp, the
+//! POINTS, POLYGONS, ... and SCALARS/COLOR_SCALARS counts of legacy .vtk.
+void check_polydata_sizes(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string head(1 << 16, '\0');
+  in.read(&head[0], std::streamsize(head.size()));
+  head.resize(std::size_t(in.gcount()));
+  const auto cut = head.find("<AppendedData");
+  if (cut != std::string::npos)
+    head.resize(cut);
+  std::error_code ec;
+  const double budget = 1100.0 * double(std::filesystem::file_size(path, ec));
+  static const std::regex attribute(
+    R"re((NumberOf(Points|Polys|Cells|Verts|Lines|Strips|Components|Tuples))="\s*(-?[0-9]+)\s*"|\n(POINTS|POLYGONS|VERTICES|LINES|TRIANGLE_STRIPS|POINT_DATA|CELL_DATA|COLOR_SCALARS [^ \n]+|SCALARS [^ \n]+ [^ \n]+) +(-?[0-9]+))re");
+  for (auto it = std::sregex_iterator(head.begin(), head.end(), attribute); it != std::sregex_iterator(); ++it) {
+    const bool xml = (*it)[1].matched;
+    const std::string name = xml ? (*it)[1].str() : (*it)[4].str(), value = xml ? (*it)[3].str() : (*it)[5].str();
+    const double n = std::strtod(value.c_str(), nullptr);
+    // For legacy SCALARS and COLOR_SCALARS the number is the components.
+    const bool components = name == "NumberOfComponents" || name.rfind("SCALARS", 0) == 0 ||
+                            name.rfind("COLOR_SCALARS", 0) == 0;
+    if (n < 0 || (components && n > 4096) || n > budget)
+      throw InputError("'" + path + "': " + name + (xml ? "=\"" : " ") + value.substr(0, 20) +
+                       (xml ? "\"" : "") + " is more than the file can hold");
+  }
+}
+
+//! VTK's messages while a reader runs, kept instead of printed: the output
+//! window and the logger's console output are swapped out for that time
+//! and restored after, whatever happens.
+class KeptVtkMessages : public vtkOutputWindow
+{
+public:
+  static KeptVtkMessages* New();
+  vtkTypeMacro(KeptVtkMessages, vtkOutputWindow);
+
+  void DisplayText(const char* text) override
+  {
+    if (first.empty() && text)
+      first = text;
+  }
+
+  //! The first message's text, without VTK's "ERROR: In FILE, line N" and
+  //! the object's name and address.
+  std::string message() const
+  {
+    std::string text = first;
+    if (text.rfind("ERROR: In ", 0) == 0 || text.rfind("Warning: In ", 0) == 0)
+      text.erase(0, text.find('\n') + 1);
+    const auto address = text.find("): ");
+    if (address != std::string::npos && address < 80)
+      text.erase(0, address + 3);
+    const auto end = text.find('\n');
+    if (end != std::string::npos)
+      text.erase(end);
+    return text.substr(0, 200);
+  }
+
+  std::string first;
+};
+vtkStandardNewMacro(KeptVtkMessages);
+
+//! Installs a KeptVtkMessages for its lifetime.
+class VtkMessagesKept
+{
+public:
+  VtkMessagesKept() : previous_(vtkOutputWindow::GetInstance()), verbosity_(vtkLogger::GetCurrentVerbosityCutoff())
+  {
+    kept = vtkSmartPointer<KeptVtkMessages>::New();
+    vtkOutputWindow::SetInstance(kept);
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  }
+  ~VtkMessagesKept()
+  {
+    vtkOutputWindow::SetInstance(previous_);
+    vtkLogger::SetStderrVerbosity(verbosity_);
+  }
+  VtkMessagesKept(const VtkMessagesKept&) = delete;
+  VtkMessagesKept& operator=(const VtkMessagesKept&) = delete;
+
+  vtkSmartPointer<KeptVtkMessages> kept;
+
+private:
+  vtkSmartPointer<vtkOutputWindow> previous_;
+  vtkLogger::Verbosity verbosity_;
+};
+
+} // namespace
+
+bool is_polydata_path(const std::string& path)
+{
+  const std::string ext = lower_extension(path);
+  return ext == ".vtp" || ext == ".vtk";
+}
+
+vtkSmartPointer<vtkPolyData> read_checked(vtkAlgorithm* reader, const std::string& path)
+{
+  std::string message;
+  {
+    VtkMessagesKept messages;
+    reader->Update();
+    message = messages.kept->message();
+  }
+  vtkPolyData* out = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  const std::string where = "cannot read '" + path + "': ";
+  if (!message.empty())
+    throw InputError(where + message);
+  if (reader->GetErrorCode() != 0 || !out || out->GetNumberOfPoints() == 0)
+    throw InputError(where + "not a readable " + lower_extension(path).substr(1) + " file with points");
+  for (vtkIdType v = 0; v < out->GetNumberOfPoints(); ++v) {
+    double x[3];
+    out->GetPoint(v, x);
+    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+      throw InputError(where + "point " + std::to_string(v) + " is not finite");
+  }
+  // Cells naming points the file does not have would be written out as invalid cells.
+  const vtkIdType points = out->GetNumberOfPoints();
+  for (vtkCellArray* cells : {out->GetVerts(), out->GetLines(), out->GetPolys(), out->GetStrips()}) {
+    if (!cells)
+      continue;
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    vtkIdType cell = 0;
+    for (cells->InitTraversal(); cells->GetNextCell(n, ids); ++cell)
+      for (vtkIdType k = 0; k < n; ++k)
+        if (ids[k] < 0 || ids[k] >= points)
+          throw InputError(where + "cell " + std::to_string(cell) + " names point " + std::to_string(ids[k]) +
+                           ", but there are only " + std::to_string(points));
+  }
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(out);
+  return copy;
+}
+
+vtkSmartPointer<vtkPolyData> read_polydata_file(const std::string& path)
+{
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw IOError("cannot open '" + path + "': no such file");
+  if (std::filesystem::file_size(path, ec) == 0)
+    throw InputError("'" + path + "' is empty");
+  check_polydata_sizes(path);
+  if (lower_extension(path) == ".vtk") {
+    auto r = vtkSmartPointer<vtkPolyDataReader>::New();
+    r->SetFileName(path.c_str());
+    r->ReadAllScalarsOn();
+    r->ReadAllColorScalarsOn();
+    return read_checked(r, path);
+  }
+  auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+  r->SetFileName(path.c_str());
+  return read_checked(r, path);
+}
+
+BaseMesh load_polydata_mesh(const std::string& path, const ImportOptions& options)
+{
+  vtkSmartPointer<vtkPolyData> poly = read_polydata_file(path);
+  PolygonSoup soup;
+  soup.points.reserve(std::size_t(poly->GetNumberOfPoints()));
+  for (vtkIdType v = 0; v < poly->GetNumberOfPoints(); ++v) {
+    double x[3];
+    poly->GetPoint(v, x);
+    soup.points.push_back({float(x[0]), float(x[1]), float(x[2])});
+  }
+  vtkCellArray* polys = poly->GetPolys();
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+    soup.faces.emplace_back(ids, ids + n);
+  vtkDataArray* diffuse = poly->GetPointData()->GetArray("diffuse");
+  if (diffuse && diffuse->GetNumberOfComponents() == 3 && diffuse->GetNumberOfTuples() == poly->GetNumberOfPoints())
+    for (vtkIdType v = 0; v < poly->GetNumberOfPoints(); ++v) {
+      Vec3 c;
+      for (int a = 0; a < 3; ++a) {
+        const double value = diffuse->GetComponent(v, a);
+        if (!(value >= 0 && value <= 1))
+          throw InputError("'" + path + "': point " + std::to_string(v) + " has a diffuse value outside 0-1");
+        c[std::size_t(a)] = float(value);
+      }
+      soup.colours.push_back(c);
+    }
+  return import_mesh(std::move(soup), std::filesystem::path(path).stem().string(), "'" + path + "': ", options);
+}
+
+} // namespace meshpaint

@@ -1,0 +1,42 @@
+// Reading VTK's own polygon files (.vtp, legacy .vtk) and checking what any
+// VTK reader delivers: sizes bounded before reading, messages kept instead
+// of printed, non-finite points and cells naming missing points refused.
+#ifndef PolyDataFiles_h
+#define PolyDataFiles_h
+
+#include "meshpaintVisModule.h" // for MESHPAINTVIS_EXPORT
+
+#include "mesh/base_mesh.h" // for meshpaint::BaseMesh, ImportOptions
+
+#include <vtkAlgorithm.h>    // for vtkAlgorithm
+#include <vtkPolyData.h>     // for vtkPolyData
+#include <vtkSmartPointer.h> // for vtkSmartPointer
+
+#include <string> // for std::string
+
+namespace meshpaint {
+
+//! Whether `path` ends in .vtp or .vtk (any case).
+MESHPAINTVIS_EXPORT bool is_polydata_path(const std::string& path);
+
+//! Runs a reader whose file name is set: VTK's messages meanwhile are kept,
+//! never printed (output window and logger restored after), and the first
+//! becomes the error; the output must have points, all finite, and cells
+//! naming only those points.
+//! \throw InputError naming `path`, one line.
+MESHPAINTVIS_EXPORT vtkSmartPointer<vtkPolyData> read_checked(vtkAlgorithm* reader, const std::string& path);
+
+//! A .vtp (VTK XML PolyData) or legacy .vtk polydata file, its header's
+//! sizes checked against the file's length first, then read_checked().
+//! \throw IOError when missing; InputError otherwise.
+MESHPAINTVIS_EXPORT vtkSmartPointer<vtkPolyData> read_polydata_file(const std::string& path);
+
+//! A .vtp or .vtk file as a base mesh: its polygons through the import
+//! steps of load_mesh() (import_mesh()); a 3-component point array named
+//! `diffuse` (values 0-1) becomes the mesh's colours.
+//! \throw IOError, InputError as read_polydata_file() and import_mesh().
+MESHPAINTVIS_EXPORT BaseMesh load_polydata_mesh(const std::string& path, const ImportOptions& options = {});
+
+} // namespace meshpaint
+
+#endif
