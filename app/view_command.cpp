@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "picture_options.h"
 
+#include "DisplayCheck.h"
 #include "RasterIO.h"
 #include "vtkPaintView.h"
 
@@ -62,6 +63,7 @@ int view_command(const Argv& argv)
   check_edit_levels(script, level);
 
   const int lod = args.integer("--lod", -1, 0, level); // absent: automatic
+  require_display(); // VTK aborts without one
   vtkNew<vtkPaintView> view;
   view->SetLevel(level);
   view->SetLodLevel(lod);

@@ -2,18 +2,22 @@
 #include "vtkPaintViewInternals.h"
 
 #include "CallGuard.h"        // for meshpaint::guarded
+#include "ChannelDisplay.h"   // for meshpaint::show_channel, parse_shown_channel
 #include "PaintingExport.h"   // for meshpaint::default_model_level
 #include "SceneFiles.h"       // for meshpaint::save_session, export_scene
 #include "SurfaceRendering.h" // for meshpaint::show_materials, show_scattered_light, add_scattered_light, set_camera
 #include "WindowKeys.h"       // for meshpaint::window_key, window_help
 
+#include "project/labels.h" // for meshpaint::LabelClass, parse_labels, labels_json
+
 #include <vtkCamera.h>        // for vtkCamera
+#include <vtkCommand.h>       // for vtkCommand::UpdateDataEvent
 #include <vtkMapper.h>        // for vtkMapper
 #include <vtkObjectFactory.h> // for vtkStandardNewMacro
 #include <vtkPointData.h>     // for vtkPointData
 #include <vtkPolyData.h>      // for vtkPolyData
 
-#include <algorithm> // for std::min, std::max
+#include <algorithm> // for std::min, std::max, std::remove_if, std::sort
 #include <chrono>    // for std::chrono::steady_clock
 
 vtkStandardNewMacro(vtkPaintView);
@@ -165,7 +169,8 @@ void vtkPaintView::Show()
 {
   Internals& in = *this->Impl;
   const int level = in.moving ? this->CoarseLevel() : this->Level;
-  const bool lit = this->SubsurfacePasses > 0 && level == this->Level && in.initialized;
+  const bool lit = this->SubsurfacePasses > 0 && level == this->Level && in.initialized &&
+                   in.shown == meshpaint::ShownChannel::diffuse;
   for (std::size_t o = 0; o < in.drawings.size(); ++o) {
     meshpaint::ObjectDrawing& d = *in.drawings[o];
     vtkPolyData* poly = nullptr;
@@ -182,7 +187,10 @@ void vtkPaintView::Show()
                                        this->SubsurfacePasses);
       });
       meshpaint::show_scattered_light(d.actor, poly);
-    } else if (in.lit && in.initialized) {
+    } else if (in.shown != meshpaint::ShownChannel::diffuse && in.initialized) {
+      // Colours made from the channel: again after every change.
+      meshpaint::guarded(this->LastError, [&] { meshpaint::show_channel(d.actor, poly, in.shown, in.labels); });
+    } else if ((in.lit || in.channel_drawn) && in.initialized) {
       poly->GetPointData()->RemoveArray("scattered_light");
       meshpaint::show_materials(d.actor, poly);
     } else if (poly != d.shown.GetPointer() && in.initialized) {
@@ -191,6 +199,7 @@ void vtkPaintView::Show()
     d.shown = poly;
   }
   in.renderer->SetUseFXAA(this->AntiAliasing && !in.moving);
+  in.channel_drawn = in.shown != meshpaint::ShownChannel::diffuse && !lit && in.initialized;
   in.lit = lit;
   in.shown_level = level;
 }
@@ -254,6 +263,15 @@ int vtkPaintView::HandleKey(const char* keysym, bool control, bool shift)
       this->Message = this->SubsurfacePasses > 0 ? "subsurface light on" : "subsurface light off";
       this->Show();
       break;
+    case meshpaint::WindowKey::shown_next:
+    case meshpaint::WindowKey::shown_back: {
+      const int n = int(meshpaint::shown_channel_names().size());
+      const bool back = shift || meshpaint::window_key(key, control) == meshpaint::WindowKey::shown_back;
+      in.shown = meshpaint::ShownChannel((int(in.shown) + (back ? n - 1 : 1)) % n);
+      this->Message = "showing " + meshpaint::shown_channel_name(in.shown);
+      this->Show();
+      break;
+    }
     case meshpaint::WindowKey::reset_camera:
       meshpaint::set_camera(in.renderer, meshpaint::CameraView());
       break;
@@ -306,9 +324,74 @@ bool vtkPaintView::GetHelpVisible() { return this->Impl->text.help_visible(); }
 void vtkPaintView::UpdateText()
 {
   Internals& in = *this->Impl;
-  if (!in.initialized || !in.brush)
-    return;
-  in.text.update(meshpaint::status_line(in.brush->describe(), this->Level, this->CoarseLevel(),
-                                        in.scene.history().size(), this->Message),
-                 in.window->GetSize()[1]);
+  if (in.initialized && in.brush)
+    in.text.update(meshpaint::status_line(in.brush->describe(), this->Level, this->CoarseLevel(),
+                                          in.scene.history().size(), this->Message),
+                   in.window->GetSize()[1]);
+  this->InvokeEvent(vtkCommand::UpdateDataEvent);
 }
+
+int vtkPaintView::SetShownChannel(const char* name)
+{
+  Internals& in = *this->Impl;
+  if (!meshpaint::guarded(this->LastError, [&] { in.shown = meshpaint::parse_shown_channel(name ? name : ""); }))
+    return 0;
+  if (!in.scene.empty())
+    this->Show();
+  this->UpdateText();
+  this->Render();
+  return 1;
+}
+
+const char* vtkPaintView::GetShownChannel() { return meshpaint::shown_channel_name(this->Impl->shown).c_str(); }
+
+int vtkPaintView::AddLabelClass(int id, const char* name, double r, double g, double b)
+{
+  std::vector<meshpaint::LabelClass> labels = this->Impl->labels;
+  labels.erase(std::remove_if(labels.begin(), labels.end(), [&](const meshpaint::LabelClass& c) { return c.id == id; }),
+               labels.end());
+  meshpaint::LabelClass c;
+  c.id = id;
+  c.name = name ? name : "";
+  c.colour = {float(r), float(g), float(b)};
+  labels.push_back(c);
+  std::sort(labels.begin(), labels.end(),
+            [](const meshpaint::LabelClass& a, const meshpaint::LabelClass& b) { return a.id < b.id; });
+  // The checks of a labels file: ids, names and colours.
+  if (!meshpaint::guarded(this->LastError, [&] { meshpaint::parse_labels(meshpaint::labels_json(labels)); }))
+    return 0;
+  this->SetLabelClasses(labels);
+  return 1;
+}
+
+void vtkPaintView::RemoveLabelClass(int id)
+{
+  std::vector<meshpaint::LabelClass> labels = this->Impl->labels;
+  labels.erase(std::remove_if(labels.begin(), labels.end(), [&](const meshpaint::LabelClass& c) { return c.id == id; }),
+               labels.end());
+  this->SetLabelClasses(labels);
+}
+
+void vtkPaintView::RemoveAllLabelClasses() { this->SetLabelClasses({}); }
+
+int vtkPaintView::GetNumberOfLabelClasses() { return int(this->Impl->labels.size()); }
+
+const std::vector<meshpaint::LabelClass>& vtkPaintView::GetLabelClasses() const { return this->Impl->labels; }
+
+void vtkPaintView::SetLabelClasses(const std::vector<meshpaint::LabelClass>& labels)
+{
+  Internals& in = *this->Impl;
+  in.labels = labels;
+  if (in.project)
+    in.project->labels = labels; // what a save keeps
+  if (in.shown == meshpaint::ShownChannel::label && !in.scene.empty())
+    this->Show();
+  this->UpdateText();
+  this->Render();
+}
+
+meshpaint::BrushSettings* vtkPaintView::GetBrush() { return this->Impl->brush.get(); }
+
+meshpaint::PaintScene& vtkPaintView::GetScene() { return this->Impl->scene; }
+
+const meshpaint::Project* vtkPaintView::GetProject() const { return this->Impl->project.get(); }

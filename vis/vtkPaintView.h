@@ -36,6 +36,7 @@
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
+#include <vector> // for std::vector
 
 class vtkPaintSurface;
 class vtkPolyData;
@@ -46,6 +47,9 @@ class vtkSurfacePicker;
 
 namespace meshpaint {
 struct BaseMesh;
+class BrushSettings;
+struct LabelClass;
+class PaintScene;
 class PaintSurface;
 struct Project;
 struct StrokeScript;
@@ -240,6 +244,40 @@ public:
   /// The session so far as a stroke script (undone strokes left out).
   const char* GetRecording();
 
+  //@{
+  /// The channel the surface is shown with: "diffuse" (default: the
+  /// materials), "label" (classes in their colours, unlabelled surface in
+  /// its material), "specular", "roughness", "displacement" or "mask"
+  /// (through a colour map). Keys v / V cycle them. 0 for another name.
+  int SetShownChannel(const char* name);
+  const char* GetShownChannel();
+  //@}
+
+  //@{
+  /// Label classes: the colours the label channel is shown in, and the
+  /// names a project saved from this window keeps. A project opened in the
+  /// window brings its own. Ids without a class show in fixed colours.
+  /// AddLabelClass replaces a class of the same id; 0 for a bad id or name.
+  int AddLabelClass(int id, const char* name, double r, double g, double b);
+  void RemoveLabelClass(int id);
+  void RemoveAllLabelClasses();
+  int GetNumberOfLabelClasses();
+  //@}
+#ifndef __VTK_WRAP__
+  const std::vector<meshpaint::LabelClass>& GetLabelClasses() const;
+  void SetLabelClasses(const std::vector<meshpaint::LabelClass>& labels);
+  /// The brush the keys change (null before a surface is loaded); after
+  /// changing it, call UpdateText() to show the change.
+  meshpaint::BrushSettings* GetBrush();
+  /// The scene painted, for its history and undone strokes.
+  meshpaint::PaintScene& GetScene();
+  /// The project the first object came from, null when from a mesh.
+  const meshpaint::Project* GetProject() const;
+#endif
+  /// Brings the status line up to date, and tells observers (UpdateDataEvent)
+  /// that the view's state changed: strokes, undo, brush, messages.
+  void UpdateText();
+
   /// The help overlay listing the keys.
   void SetHelpVisible(bool visible);
   bool GetHelpVisible();
@@ -299,7 +337,6 @@ private:
   vtkPolyData* Surface(std::size_t object, int level);
   //! Hands the actors the level that fits the moment.
   void Show();
-  void UpdateText();
 
   struct Internals;
   std::unique_ptr<Internals> Impl;

@@ -7,6 +7,7 @@
 
 #include "BrushCursor.h"             // for meshpaint::BrushCursor
 #include "BrushSettings.h"           // for meshpaint::BrushSettings
+#include "ChannelDisplay.h"          // for meshpaint::ShownChannel
 #include "LevelOfDetail.h"           // for meshpaint::FrameTiming
 #include "PaintControls.h"           // for meshpaint::PaintControls
 #include "SceneDrawing.h"            // for meshpaint::ObjectDrawing
@@ -59,6 +60,9 @@ struct vtkPaintView::Internals
   std::unique_ptr<meshpaint::Project> project; // where the first object came from, if from a project
   std::unique_ptr<meshpaint::BrushSettings> brush;
   bool lit = false;    // drawn with the subsurface light
+  meshpaint::ShownChannel shown = meshpaint::ShownChannel::diffuse;
+  bool channel_drawn = false; // the actors draw another channel than the materials
+  std::vector<meshpaint::LabelClass> labels; // the classes the label channel shows
   bool moving = false; // the camera turns or a stroke is drawn
   int shown_level = 0;
   meshpaint::FrameTiming timing; // of frames at rest, for the automatic level of detail

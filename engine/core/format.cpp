@@ -1,5 +1,7 @@
 #include "core/format.h"
 
+#include "core/errors.h"
+
 #include <cctype>     // for std::tolower
 #include <cstdio>     // for std::snprintf
 #include <filesystem> // for std::filesystem::path
@@ -51,6 +53,17 @@ std::string json_string(const std::string& s)
     }
   }
   return out + "\"";
+}
+
+int index_of_name(const std::vector<std::string>& names, const std::string& name, const std::string& what)
+{
+  for (std::size_t k = 0; k < names.size(); ++k)
+    if (names[k] == name)
+      return int(k);
+  std::string all;
+  for (const std::string& n : names)
+    all += (all.empty() ? "" : ", ") + n;
+  throw InputError(what + " must be one of " + all + ", not '" + name + "'");
 }
 
 } // namespace meshpaint

@@ -3,6 +3,7 @@
 
 #include <cstddef> // for std::size_t
 #include <string>  // for std::string
+#include <vector>  // for std::vector
 
 namespace meshpaint {
 
@@ -17,5 +18,9 @@ std::string lower_extension(const std::string& path);
 
 //! `s` as a JSON string literal, quotes included.
 std::string json_string(const std::string& s);
+
+//! Index of `name` in `names`.
+//! \throw InputError "`what` must be one of a, b, c, not 'name'".
+int index_of_name(const std::vector<std::string>& names, const std::string& name, const std::string& what);
 
 } // namespace meshpaint

@@ -24,6 +24,9 @@ constexpr int kMaxLabelId = 1 << 24;
 //! \throw InputError naming the entry (0-based) and key.
 std::vector<LabelClass> parse_labels(const std::string& json_text);
 
+//! The labels file of `labels` (parse_labels() reads it back equal).
+std::string labels_json(const std::vector<LabelClass>& labels);
+
 //! Reads and parses a labels file; errors start with the path.
 //! \throw IOError when the file cannot be read; InputError as above.
 std::vector<LabelClass> load_labels(const std::string& path);

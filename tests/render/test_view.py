@@ -408,3 +408,36 @@ def test_drags_paint_on_inward_wound_surfaces(tmp_path, space):
     assert ((diffuse[:, 0] > 0.8) & (diffuse[:, 1] < 0.2)).sum() > 10
     for name in live:
         assert live[name].tobytes() == again[name].tobytes(), name
+
+
+def window_pixels(view):
+    view.Render()
+    grab = vtk.vtkWindowToImageFilter()
+    grab.SetInput(view.GetRenderWindow())
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(int)
+
+
+def test_the_window_shows_labels_in_their_class_colours(tmp_path):
+    view = open_view(tmp_path)
+    assert view.AddLabelClass(3, "lesion", 0.1, 0.2, 1.0), view.GetLastError()
+    assert not view.AddLabelClass(4, "lesion", 1, 1, 1)  # names are unique
+    key(view, "t", shift=True)  # the label tool
+    key(view, "3")
+    drag(view, line(150, 120, 260, 180))
+    (stroke,) = json.loads(view.GetRecording())["strokes"]
+    assert stroke["tool"] == "label" and stroke["channels"]["label"] == 3
+
+    def blue(rgb):
+        return ((rgb[:, 2] > 180) & (rgb[:, 0] < 60) & (rgb[:, 1] < 90)).sum()
+
+    assert blue(window_pixels(view)) == 0  # the materials: labels do not show
+    key(view, "v")
+    assert view.GetShownChannel() == "label"
+    assert blue(window_pixels(view)) > 200
+    view.RemoveLabelClass(3)  # without its class the label keeps a colour of its own, not the class's
+    assert blue(window_pixels(view)) == 0
+    key(view, "V")
+    assert view.GetShownChannel() == "diffuse"
+    assert view.SetShownChannel("roughness") and not view.SetShownChannel("nothing")
