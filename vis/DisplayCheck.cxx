@@ -5,19 +5,23 @@
 #include <cstdlib> // for std::getenv
 #include <string>  // for std::string
 
-#include <X11/Xlib.h> // for XOpenDisplay, XCloseDisplay (last: its macros)
+#include <X11/Xlib.h> // for XOpenDisplay (last: its macros)
 
 namespace meshpaint {
 
 void require_display()
 {
+  // The connection stays open: closing the only client's connection makes
+  // an X server such as Xvfb reset, and a window opened just then fails.
+  static Display* display = nullptr;
+  if (display)
+    return;
   const char* name = std::getenv("DISPLAY");
-  Display* display = name && *name ? XOpenDisplay(name) : nullptr;
+  display = name && *name ? XOpenDisplay(name) : nullptr;
   if (!display)
     throw DeviceError(name && *name ? "cannot open the X display '" + std::string(name) +
                                         "': run under xvfb-run -a, or set DISPLAY to a display that works"
                                     : "no X display to render with: run under xvfb-run -a, or set DISPLAY");
-  XCloseDisplay(display);
 }
 
 } // namespace meshpaint
