@@ -16,7 +16,7 @@
 #include <vtkShaderProperty.h>        // for vtkShaderProperty
 #include <vtkUnsignedCharArray.h>     // for vtkUnsignedCharArray
 
-#include <algorithm> // for std::max, std::min
+#include <algorithm> // for std::max, std::min, std::find
 #include <cmath>     // for std::fabs, std::lround
 
 namespace meshpaint {
@@ -87,7 +87,8 @@ vtkSmartPointer<vtkScalarsToColors> channel_colour_map(vtkPolyData* surface, Sho
 }
 
 vtkSmartPointer<vtkUnsignedCharArray> channel_colours(vtkPolyData* surface, ShownChannel channel,
-                                                      const std::vector<LabelClass>& labels)
+                                                      const std::vector<LabelClass>& labels,
+                                                      const std::vector<int>& hidden)
 {
   const vtkIdType n = surface->GetNumberOfPoints();
   auto out = vtkSmartPointer<vtkUnsignedCharArray>::New();
@@ -106,6 +107,7 @@ vtkSmartPointer<vtkUnsignedCharArray> channel_colours(vtkPolyData* surface, Show
       const long id = std::lround(label->GetComponent(v, 0));
       if (id != last) {
         colour = label_colour(int(id), labels, &coloured);
+        coloured = coloured && std::find(hidden.begin(), hidden.end(), int(id)) == hidden.end();
         last = id;
       }
       for (int c = 0; c < 3; ++c)
@@ -128,7 +130,8 @@ vtkSmartPointer<vtkUnsignedCharArray> channel_colours(vtkPolyData* surface, Show
   return out;
 }
 
-void show_channel(vtkActor* actor, vtkPolyData* surface, ShownChannel channel, const std::vector<LabelClass>& labels)
+void show_channel(vtkActor* actor, vtkPolyData* surface, ShownChannel channel, const std::vector<LabelClass>& labels,
+                  const std::vector<int>& hidden)
 {
   if (channel == ShownChannel::diffuse) {
     show_materials(actor, surface);
@@ -136,7 +139,7 @@ void show_channel(vtkActor* actor, vtkPolyData* surface, ShownChannel channel, c
   }
   vtkNew<vtkPolyData> shown;
   shown->ShallowCopy(surface);
-  shown->GetPointData()->AddArray(channel_colours(surface, channel, labels));
+  shown->GetPointData()->AddArray(channel_colours(surface, channel, labels, hidden));
   vtkNew<vtkOpenGLPolyDataMapper> mapper;
   mapper->SetInputData(shown);
   mapper->SetScalarModeToUsePointFieldData();

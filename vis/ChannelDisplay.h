@@ -54,14 +54,16 @@ MESHPAINTVIS_EXPORT vtkSmartPointer<vtkScalarsToColors> channel_colour_map(vtkPo
 //! showing `channel` (not diffuse): labels over the diffuse colour, the
 //! specular colour as it is, scalar channels through channel_colour_map().
 //! \throw InputError when the surface lacks the channel's array.
+//! Label ids in `hidden` show the material, as unlabelled surface does.
 MESHPAINTVIS_EXPORT vtkSmartPointer<vtkUnsignedCharArray> channel_colours(vtkPolyData* surface,
                                                                          ShownChannel channel,
-                                                                         const std::vector<LabelClass>& labels);
+                                                                         const std::vector<LabelClass>& labels,
+                                                                         const std::vector<int>& hidden = {});
 
 //! Makes `actor` draw `surface` showing `channel`: show_materials() for
 //! diffuse, else channel_colours() on a shallow copy, lit by VTK's lights.
 MESHPAINTVIS_EXPORT void show_channel(vtkActor* actor, vtkPolyData* surface, ShownChannel channel,
-                                      const std::vector<LabelClass>& labels);
+                                      const std::vector<LabelClass>& labels, const std::vector<int>& hidden = {});
 
 } // namespace meshpaint
 

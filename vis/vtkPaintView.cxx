@@ -8,7 +8,9 @@
 #include "SurfaceRendering.h" // for meshpaint::show_materials, show_scattered_light, add_scattered_light, set_camera
 #include "WindowKeys.h"       // for meshpaint::window_key, window_help
 
-#include "project/labels.h" // for meshpaint::LabelClass, parse_labels, labels_json
+#include "core/errors.h"             // for meshpaint::InputError
+#include "project/labels.h"          // for meshpaint::LabelClass, parse_labels, labels_json
+#include "project/project_surface.h" // for meshpaint::save_painted_project
 
 #include <vtkCamera.h>        // for vtkCamera
 #include <vtkCommand.h>       // for vtkCommand::UpdateDataEvent
@@ -17,7 +19,7 @@
 #include <vtkPointData.h>     // for vtkPointData
 #include <vtkPolyData.h>      // for vtkPolyData
 
-#include <algorithm> // for std::min, std::max, std::remove_if, std::sort
+#include <algorithm> // for std::min, std::max, std::remove_if, std::sort, std::find
 #include <chrono>    // for std::chrono::steady_clock
 
 vtkStandardNewMacro(vtkPaintView);
@@ -56,20 +58,24 @@ int vtkPaintView::Initialize()
   in.text.add_to(in.renderer, meshpaint::window_help());
 
   in.window->AddRenderer(in.renderer);
-  in.window->SetSize(this->Size);
+  if (!in.hosted)
+    in.window->SetSize(this->Size);
   // Multisampling triples the cost of a frame on a software rasterizer;
   // FXAA smooths the edges of frames at rest instead (see Show()).
   in.window->SetMultiSamples(0);
   in.renderer->SetUseFXAA(this->AntiAliasing);
-  in.window->SetOffScreenRendering(this->OffScreen ? 1 : 0);
-  in.window->SetWindowName("meshpaint");
-  in.interactor->SetRenderWindow(in.window);
+  if (!in.hosted) {
+    in.window->SetOffScreenRendering(this->OffScreen ? 1 : 0);
+    in.window->SetWindowName("meshpaint");
+    in.interactor->SetRenderWindow(in.window);
+  }
   in.style->SetControls(&in.controls);
   in.interactor->SetInteractorStyle(in.style);
   in.cursor.picker()->SetRenderer(in.renderer);
   in.cursor.picker()->SetPatchResolution(1 << (this->Level - 1)); // captures happen at rest: the full level
   meshpaint::set_camera(in.renderer, meshpaint::CameraView());
-  in.interactor->Initialize();
+  if (!in.hosted)
+    in.interactor->Initialize();
   in.initialized = true;
   this->UpdateText();
   this->Render();
@@ -95,6 +101,21 @@ void vtkPaintView::Render()
   const int* size = in.window->GetSize();
   in.timing.add_frame(took.count(), size[0], size[1], double(this->GetFaceCount()));
 }
+
+void vtkPaintView::SetRenderWindow(vtkRenderWindow* window)
+{
+  Internals& in = *this->Impl;
+  if (!window || in.initialized)
+    return;
+  in.window = window;
+  if (window->GetInteractor())
+    in.interactor = window->GetInteractor();
+  else
+    in.interactor->SetRenderWindow(window);
+  in.hosted = true;
+}
+
+double vtkPaintView::GetLastStepTime() { return this->Impl->step_ms; }
 
 vtkRenderWindow* vtkPaintView::GetRenderWindow() { return this->Impl->window; }
 vtkRenderer* vtkPaintView::GetRenderer() { return this->Impl->renderer; }
@@ -189,7 +210,7 @@ void vtkPaintView::Show()
       meshpaint::show_scattered_light(d.actor, poly);
     } else if (in.shown != meshpaint::ShownChannel::diffuse && in.initialized) {
       // Colours made from the channel: again after every change.
-      meshpaint::guarded(this->LastError, [&] { meshpaint::show_channel(d.actor, poly, in.shown, in.labels); });
+      meshpaint::guarded(this->LastError, [&] { meshpaint::show_channel(d.actor, poly, in.shown, in.labels, in.hidden_labels); });
     } else if ((in.lit || in.channel_drawn) && in.initialized) {
       poly->GetPointData()->RemoveArray("scattered_light");
       meshpaint::show_materials(d.actor, poly);
@@ -300,6 +321,22 @@ int vtkPaintView::Save()
   return ok;
 }
 
+int vtkPaintView::SaveProject(const char* path)
+{
+  Internals& in = *this->Impl;
+  const int ok = meshpaint::guarded(this->LastError, [&] {
+    if (in.scene.size() != 1)
+      throw meshpaint::InputError("a project keeps one surface: this scene has " + std::to_string(in.scene.size()));
+    meshpaint::Project base = in.project ? *in.project : meshpaint::Project();
+    base.labels = in.labels;
+    meshpaint::save_painted_project(in.scene.surface(0), base, path ? path : "");
+  });
+  this->Message = ok ? std::string("saved ") + path : this->LastError;
+  this->UpdateText();
+  this->Render();
+  return ok;
+}
+
 int vtkPaintView::Export()
 {
   Internals& in = *this->Impl;
@@ -370,6 +407,23 @@ void vtkPaintView::RemoveLabelClass(int id)
   labels.erase(std::remove_if(labels.begin(), labels.end(), [&](const meshpaint::LabelClass& c) { return c.id == id; }),
                labels.end());
   this->SetLabelClasses(labels);
+}
+
+void vtkPaintView::SetLabelClassVisible(int id, bool visible)
+{
+  Internals& in = *this->Impl;
+  in.hidden_labels.erase(std::remove(in.hidden_labels.begin(), in.hidden_labels.end(), id), in.hidden_labels.end());
+  if (!visible)
+    in.hidden_labels.push_back(id);
+  if (in.shown == meshpaint::ShownChannel::label && !in.scene.empty())
+    this->Show();
+  this->Render();
+}
+
+bool vtkPaintView::GetLabelClassVisible(int id)
+{
+  const std::vector<int>& h = this->Impl->hidden_labels;
+  return std::find(h.begin(), h.end(), id) == h.end();
 }
 
 void vtkPaintView::RemoveAllLabelClasses() { this->SetLabelClasses({}); }

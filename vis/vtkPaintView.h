@@ -192,6 +192,15 @@ public:
   /// Applies a stroke script's strokes (recorded like any other stroke).
   int ApplyStrokes(const char* json);
 
+  /// Draws into `window` instead of a window of the view's own, with the
+  /// window's interactor (a Qt widget's: QVTKOpenGLNativeWidget); the host
+  /// sizes it and runs the event loop. Set before Initialize().
+  void SetRenderWindow(vtkRenderWindow* window);
+
+  /// Milliseconds the last brush step took: the dabs of one new point of a
+  /// drawn stroke, painted and the display brought up to date.
+  double GetLastStepTime();
+
   /// Creates the window, renderer, actors and interactor (not started).
   int Initialize();
   /// Runs the interactor's event loop until the window closes.
@@ -236,6 +245,11 @@ public:
   /// surface.vtp goes into SaveDirectory/<name>/ (as `meshpaint paint -o`
   /// writes a scene). The one place a project format plugs in.
   virtual int Save();
+  /// Writes the first object's surface as a project (`*.meshpaint`,
+  /// atomically): the project it came from continued, or a new one, with
+  /// the view's label classes. 0 for a scene of several objects.
+  int SaveProject(const char* path);
+
   /// Writes the textured model (model.obj, model.mtl, PNG maps) of level
   /// max(1, Level - 2) into SaveDirectory (several objects: each into
   /// SaveDirectory/<name>/).
@@ -262,6 +276,9 @@ public:
   void RemoveLabelClass(int id);
   void RemoveAllLabelClasses();
   int GetNumberOfLabelClasses();
+  /// A hidden class shows as unlabelled surface (default: all visible).
+  void SetLabelClassVisible(int id, bool visible);
+  bool GetLabelClassVisible(int id);
   //@}
 #ifndef __VTK_WRAP__
   const std::vector<meshpaint::LabelClass>& GetLabelClasses() const;
