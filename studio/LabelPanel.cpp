@@ -34,7 +34,8 @@ LabelPanel::LabelPanel(vtkPaintView* view, QWidget* parent) : QWidget(parent), v
   table_ = new QTableWidget(0, 4);
   table_->setObjectName("label_classes");
   table_->setHorizontalHeaderLabels({"shown", "id", "name", "colour"});
-  table_->horizontalHeader()->setStretchLastSection(true);
+  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  table_->horizontalHeader()->setSectionResizeMode(kName, QHeaderView::Stretch);
   table_->verticalHeader()->hide();
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
   table_->setSelectionMode(QAbstractItemView::SingleSelection);

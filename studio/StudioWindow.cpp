@@ -54,6 +54,8 @@ StudioWindow::StudioWindow(vtkPaintView* view, QWidget* parent) : QMainWindow(pa
   vtkNew<vtkGenericOpenGLRenderWindow> window;
   widget_->setRenderWindow(window);
   setCentralWidget(widget_);
+  widget_->setFocusPolicy(Qt::StrongFocus); // the window's keys go to the view, as in vtkPaintView's own window
+  widget_->setFocus();
   view_->SetRenderWindow(window);
   if (!view_->Initialize()) {
     error_ = view_->GetLastError();
@@ -75,7 +77,8 @@ StudioWindow::StudioWindow(vtkPaintView* view, QWidget* parent) : QMainWindow(pa
   observers_[0] = view_->AddObserver(vtkCommand::UpdateDataEvent, this, &StudioWindow::view_changed);
   observers_[1] = window->AddObserver(vtkCommand::StartEvent, this, &StudioWindow::frame_started);
   observers_[2] = window->AddObserver(vtkCommand::EndEvent, this, &StudioWindow::frame_ended);
-  resize(1400, 900);
+  const int* size = view_->GetSize(); // the view's, with the panels around it
+  resize(size[0] + 640, size[1] + 90);
   show_status();
 }
 

@@ -56,6 +56,7 @@ int vtkPaintView::Initialize()
   in.renderer->SetBackground(0.12, 0.12, 0.14);
   in.cursor.add_to(in.renderer);
   in.text.add_to(in.renderer, meshpaint::window_help());
+  in.legend.add_to(in.renderer);
 
   in.window->AddRenderer(in.renderer);
   if (!in.hosted)
@@ -220,6 +221,14 @@ void vtkPaintView::Show()
     d.shown = poly;
   }
   in.renderer->SetUseFXAA(this->AntiAliasing && !in.moving);
+  if (in.initialized && !in.drawings.empty())
+    meshpaint::guarded(this->LastError, [&] {
+      std::vector<meshpaint::LabelClass> shown_classes; // hidden ones are not in the legend
+      for (const meshpaint::LabelClass& c : in.labels)
+        if (this->GetLabelClassVisible(c.id))
+          shown_classes.push_back(c);
+      in.legend.update(lit ? meshpaint::ShownChannel::diffuse : in.shown, in.drawings.front()->shown, shown_classes);
+    });
   in.channel_drawn = in.shown != meshpaint::ShownChannel::diffuse && !lit && in.initialized;
   in.lit = lit;
   in.shown_level = level;

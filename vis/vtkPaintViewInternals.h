@@ -8,6 +8,7 @@
 #include "BrushCursor.h"             // for meshpaint::BrushCursor
 #include "BrushSettings.h"           // for meshpaint::BrushSettings
 #include "ChannelDisplay.h"          // for meshpaint::ShownChannel
+#include "ChannelLegend.h"           // for meshpaint::ChannelLegend
 #include "LevelOfDetail.h"           // for meshpaint::FrameTiming
 #include "PaintControls.h"           // for meshpaint::PaintControls
 #include "SceneDrawing.h"            // for meshpaint::ObjectDrawing
@@ -78,6 +79,7 @@ struct vtkPaintView::Internals
   vtkNew<vtkPaintInteractorStyle> style;
   meshpaint::BrushCursor cursor;
   meshpaint::ViewText text;
+  meshpaint::ChannelLegend legend; // colour bar or label classes of the channel shown
   bool initialized = false;
   // The stroke being drawn (its path is the session's).
   bool painting = false;
