@@ -4,7 +4,10 @@
 #include "ChannelDisplay.h" // for meshpaint::label_colour
 #include "vtkPaintView.h"   // for vtkPaintView
 
-#include "project/labels.h" // for meshpaint::LabelClass
+#include "paint/paint_scene.h"   // for meshpaint::PaintScene
+#include "paint/paint_surface.h" // for meshpaint::PaintSurface
+#include "project/label_stats.h" // for meshpaint::label_stats
+#include "project/labels.h"      // for meshpaint::LabelClass
 
 #include <QColorDialog>  // for QColorDialog
 #include <QHBoxLayout>   // for QHBoxLayout
@@ -21,7 +24,8 @@ enum Column
   kShown,
   kId,
   kName,
-  kColour
+  kColour,
+  kArea
 };
 
 QColor qcolour(const Vec3& c) { return QColor::fromRgbF(c[0], c[1], c[2]); }
@@ -31,9 +35,9 @@ QColor qcolour(const Vec3& c) { return QColor::fromRgbF(c[0], c[1], c[2]); }
 LabelPanel::LabelPanel(vtkPaintView* view, QWidget* parent) : QWidget(parent), view_(view)
 {
   auto* layout = new QVBoxLayout(this);
-  table_ = new QTableWidget(0, 4);
+  table_ = new QTableWidget(0, 5);
   table_->setObjectName("label_classes");
-  table_->setHorizontalHeaderLabels({"shown", "id", "name", "colour"});
+  table_->setHorizontalHeaderLabels({"shown", "id", "name", "colour", "area"});
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table_->horizontalHeader()->setSectionResizeMode(kName, QHeaderView::Stretch);
   table_->verticalHeader()->hide();
@@ -80,8 +84,25 @@ LabelPanel::LabelPanel(vtkPaintView* view, QWidget* parent) : QWidget(parent), v
   sync();
 }
 
+void LabelPanel::measure()
+{
+  PaintScene& scene = view_->GetScene();
+  if (view_->IsPainting() || scene.empty())
+    return;
+  const std::tuple<const void*, std::size_t, std::size_t> now{&scene.surface(0), scene.history().size(),
+                                                             scene.undone().size()};
+  if (now == measured_)
+    return;
+  measured_ = now;
+  areas_.clear();
+  PaintSurface& surface = view_->GetScene().surface(0);
+  for (const LabelStats& l : label_stats(surface.painted_surface(surface.level())))
+    areas_[l.id] = l.area;
+}
+
 void LabelPanel::sync()
 {
+  measure();
   syncing_ = true;
   const std::vector<LabelClass>& labels = view_->GetLabelClasses();
   const int selected = table_->currentRow();
@@ -102,6 +123,10 @@ void LabelPanel::sync()
     colour->setBackground(qcolour(c.colour));
     colour->setForeground(qcolour(c.colour).lightness() > 128 ? Qt::black : Qt::white);
     table_->setItem(row, kColour, colour);
+    const auto area = areas_.find(c.id);
+    auto* a = new QTableWidgetItem(QString::number(area == areas_.end() ? 0.0 : area->second, 'g', 4));
+    a->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
+    table_->setItem(row, kArea, a);
   }
   if (selected >= 0 && selected < table_->rowCount())
     table_->selectRow(selected);

@@ -5,6 +5,10 @@
 
 #include <QWidget> // for QWidget
 
+#include <cstddef> // for std::size_t
+#include <map>     // for std::map
+#include <tuple>   // for std::tuple
+
 class QTableWidget;
 class vtkPaintView;
 
@@ -24,10 +28,15 @@ public:
 
 private:
   void recolour(int row);
+  //! Each class's area on the surface now, measured again when strokes
+  //! were added or undone since (not while a stroke is drawn).
+  void measure();
 
   vtkPaintView* view_;
   QTableWidget* table_;
   bool syncing_ = false;
+  std::map<int, double> areas_;            // class id to area, world units squared
+  std::tuple<const void*, std::size_t, std::size_t> measured_{nullptr, 0, 0}; // surface, strokes done and undone then
 };
 
 } // namespace meshpaint::studio

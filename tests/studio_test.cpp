@@ -178,6 +178,9 @@ private Q_SLOTS:
     for (const meshpaint::Float4& m : view->GetScene().surface(0).read_channels().material)
       fives += m[2] == 5.f;
     QVERIFY(fives > 5);
+    // The live area per class: the painted class has some, the other none.
+    QVERIFY(table->item(1, 4)->text().toDouble() > 0.0);
+    QCOMPARE(table->item(0, 4)->text().toDouble(), 0.0);
     view->Render();
     QVERIFY(pixels_like(*w, blue) > 200);
     // Hidden, the class shows as unlabelled surface.
