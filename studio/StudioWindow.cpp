@@ -1,6 +1,7 @@
 #include "StudioWindow.h"
 
 #include "BrushPanel.h"
+#include "FitDialog.h"
 #include "HistoryPanel.h"
 #include "LabelPanel.h"
 
@@ -13,6 +14,7 @@
 #include "paint/paint_surface.h" // for meshpaint::PaintSurface
 
 #include <QAction>                  // for QAction
+#include <QCoreApplication>         // for QCoreApplication
 #include <QDockWidget>              // for QDockWidget
 #include <QFileDialog>              // for QFileDialog
 #include <QFileInfo>                // for QFileInfo
@@ -46,7 +48,8 @@ QDockWidget* dock(QMainWindow* window, const QString& title, QWidget* panel, Qt:
 
 } // namespace
 
-StudioWindow::StudioWindow(vtkPaintView* view, QWidget* parent) : QMainWindow(parent), view_(view)
+StudioWindow::StudioWindow(vtkPaintView* view, QWidget* parent)
+  : QMainWindow(parent), view_(view), program_(QCoreApplication::applicationFilePath())
 {
   setWindowTitle("meshpaint");
   widget_ = new QVTKOpenGLNativeWidget(this);
@@ -100,6 +103,15 @@ void StudioWindow::build_menus()
     if (!path.isEmpty())
       open_path(path);
   }, QKeySequence(QKeySequence::Open));
+  file->addAction("&Fit a scan...", [this] {
+    const QString scan = QFileDialog::getOpenFileName(this, "Scan to fit", QString(),
+                                                      "Meshes (*.obj *.off *.ply *.stl);;All files (*)");
+    if (scan.isEmpty())
+      return;
+    const QString out = QFileDialog::getSaveFileName(this, "Project to write", QString(), "Projects (*.meshpaint)");
+    if (!out.isEmpty())
+      fit_scan(scan, out.endsWith(".meshpaint") ? out : out + ".meshpaint");
+  });
   recent_ = file->addMenu("Open &recent");
   fill_recent();
   file->addSeparator();
@@ -152,6 +164,18 @@ bool StudioWindow::open_path(const QString& path)
   setWindowTitle("meshpaint - " + info.fileName());
   view_changed();
   return true;
+}
+
+FitDialog* StudioWindow::fit_scan(const QString& scan, const QString& out)
+{
+  auto* dialog = new FitDialog(program_, scan, out, [this, out](bool ok) {
+    if (ok)
+      open_path(out);
+  }, this);
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  dialog->show();
+  dialog->start();
+  return dialog;
 }
 
 bool StudioWindow::save_project(const QString& path)

@@ -19,6 +19,7 @@ class vtkPaintView;
 namespace meshpaint::studio {
 
 class BrushPanel;
+class FitDialog;
 class HistoryPanel;
 class LabelPanel;
 
@@ -45,6 +46,11 @@ public:
   bool save_project(const QString& path);
   //! Writes what the view shows as a PNG.
   bool screenshot(const QString& path);
+  //! Fits `scan` into the project `out` in a FitDialog (the fit runs as a
+  //! child process); the project opens when the fit succeeds.
+  FitDialog* fit_scan(const QString& scan, const QString& out);
+  //! The `meshpaint` executable fits run with (default: this program).
+  void set_program(const QString& program) { program_ = program; }
 
 private:
   void build_menus();
@@ -58,6 +64,7 @@ private:
 
   vtkPaintView* view_;
   QString error_;
+  QString program_;
   QVTKOpenGLNativeWidget* widget_;
   BrushPanel* brush_ = nullptr;
   LabelPanel* labels_ = nullptr;

@@ -4,6 +4,7 @@
 // replays to the same bits with `meshpaint paint`.
 
 #include "BrushSettings.h"
+#include "FitDialog.h"
 #include "HistoryPanel.h"
 #include "LabelPanel.h"
 #include "Studio.h"
@@ -19,6 +20,7 @@
 #include <QListWidget>              // for QListWidget
 #include <QMouseEvent>              // for QMouseEvent
 #include <QProcess>                 // for QProcess
+#include <QPushButton>              // for QPushButton
 #include <QTableWidget>             // for QTableWidget
 #include <QTemporaryDir>            // for QTemporaryDir
 #include <QTest>                    // for QTest
@@ -244,6 +246,37 @@ private Q_SLOTS:
     const std::vector<meshpaint::Float4> after = view->GetScene().surface(0).read_channels().diffuse;
     QCOMPARE(after.size(), before.size());
     QVERIFY(std::memcmp(after.data(), before.data(), before.size() * sizeof(meshpaint::Float4)) == 0);
+  }
+
+  void the_fit_dialog_runs_and_cancels()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("session"));
+    w->set_program(MESHPAINT_BIN);
+    // A fit of the bunny scan takes seconds: Cancel stops it, and nothing is written.
+    const QString bunny = QString(MESHPAINT_SOURCE_DIR) + "/data/scans/bunny00.off";
+    if (QFile::exists(bunny)) {
+      bool finished = false, fitted = true;
+      meshpaint::studio::FitDialog dialog(MESHPAINT_BIN, bunny, dir.filePath("bunny.meshpaint"), [&](bool ok) {
+        finished = true;
+        fitted = ok;
+      });
+      dialog.show();
+      dialog.start();
+      QVERIFY(dialog.running());
+      QTest::mouseClick(dialog.findChild<QPushButton*>("cancel"), Qt::LeftButton);
+      QTRY_VERIFY_WITH_TIMEOUT(finished, 10000);
+      QVERIFY(!fitted && !dialog.running());
+      QVERIFY(!QFile::exists(dir.filePath("bunny.meshpaint")));
+    }
+    // The cube fits in a moment; the project opens in the window when done.
+    const QString out = dir.filePath("cube.meshpaint");
+    meshpaint::studio::FitDialog* dialog = w->fit_scan(kCube, out);
+    QTRY_VERIFY_WITH_TIMEOUT(!dialog->running(), 60000);
+    QVERIFY2(QFile::exists(out), qPrintable(dialog->log()));
+    QTRY_VERIFY(view->GetProject() != nullptr);
+    QVERIFY(dialog->log().contains("saved"));
   }
 };
 
