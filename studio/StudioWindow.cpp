@@ -78,6 +78,7 @@ StudioWindow::StudioWindow(vtkPaintView* view, QWidget* parent)
   for (QDockWidget* d : {brush_dock, label_dock, history_dock})
     panels->addAction(d->toggleViewAction());
   observers_[0] = view_->AddObserver(vtkCommand::UpdateDataEvent, this, &StudioWindow::view_changed);
+  observers_[3] = view_->AddObserver(vtkCommand::ExitEvent, this, &StudioWindow::quit_key);
   observers_[1] = window->AddObserver(vtkCommand::StartEvent, this, &StudioWindow::frame_started);
   observers_[2] = window->AddObserver(vtkCommand::EndEvent, this, &StudioWindow::frame_ended);
   const int* size = view_->GetSize(); // the view's, with the panels around it
@@ -88,6 +89,7 @@ StudioWindow::StudioWindow(vtkPaintView* view, QWidget* parent)
 StudioWindow::~StudioWindow()
 {
   view_->RemoveObserver(observers_[0]);
+  view_->RemoveObserver(observers_[3]);
   if (vtkRenderWindow* w = widget_->renderWindow()) {
     w->RemoveObserver(observers_[1]);
     w->RemoveObserver(observers_[2]);
@@ -226,6 +228,12 @@ void StudioWindow::view_changed()
   labels_->sync();
   history_->sync();
   show_status();
+}
+
+void StudioWindow::quit_key()
+{
+  // Qt's interactor does not end the event loop itself; the window closes later, out of VTK's event.
+  QMetaObject::invokeMethod(this, &QWidget::close, Qt::QueuedConnection);
 }
 
 void StudioWindow::frame_started() { frame_start_ = std::chrono::steady_clock::now(); }

@@ -58,6 +58,8 @@ private:
   void fill_recent();
   //! The view changed (a stroke, undo, a key): panels and status follow.
   void view_changed();
+  //! q or Escape in the view: the window closes.
+  void quit_key();
   void frame_started();
   void frame_ended();
   void show_status();
@@ -74,7 +76,7 @@ private:
   vtkSmartPointer<vtkPaintSurface> project_; // the filter a project was opened through
   std::chrono::steady_clock::time_point frame_start_;
   double frame_ms_ = 0;
-  unsigned long observers_[3] = {0, 0, 0};
+  unsigned long observers_[4] = {0, 0, 0, 0};
 };
 
 } // namespace meshpaint::studio

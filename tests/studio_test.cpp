@@ -248,6 +248,15 @@ private Q_SLOTS:
     QVERIFY(std::memcmp(after.data(), before.data(), before.size() * sizeof(meshpaint::Float4)) == 0);
   }
 
+  void q_closes_the_window()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("session"));
+    QTest::keyClick(w->render_widget(), Qt::Key_Q);
+    QTRY_VERIFY(!w->isVisible());
+  }
+
   void the_fit_dialog_runs_and_cancels()
   {
     QTemporaryDir dir;

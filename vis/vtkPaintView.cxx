@@ -306,6 +306,7 @@ int vtkPaintView::HandleKey(const char* keysym, bool control, bool shift)
       meshpaint::set_camera(in.renderer, meshpaint::CameraView());
       break;
     case meshpaint::WindowKey::quit:
+      this->InvokeEvent(vtkCommand::ExitEvent); // a host window (the studio) closes itself on it
       if (in.initialized)
         in.interactor->TerminateApp();
       return 1;
