@@ -6,6 +6,8 @@
 #include "progress_bar.h"
 #include "table.h"
 
+#include "ChannelDisplay.h"
+#include "DisplayCheck.h"
 #include "PaintingExport.h"
 #include "RasterIO.h"
 #include "SurfaceConversion.h"
@@ -100,10 +102,11 @@ int paint_command(const Argv& argv)
 {
   Args args("paint", argv, {"--quiet", "--two-sided", "--no-weld"},
             {"--strokes", "--level", "--model-level", "--lod", "-o", "--save", "--labels", "--device", "--storage",
-             "--screenshot", "--camera", "--size", "--subsurface", "--gltf"});
+             "--screenshot", "--camera", "--size", "--subsurface", "--gltf", "--show"});
   args.expect_positionals(1, 64, "MESH|PROJECT... --strokes S.json [--level L] [--model-level M] [--lod L] [--two-sided] "
                                 "[-o OUTDIR] [--gltf FILE.glb|FILE.gltf] [--save P.meshpaint] [--labels labels.json] "
-                                "[--screenshot OUT.png [--camera AZ,EL,ZOOM] [--size WxH] [--subsurface N]]");
+                                "[--screenshot OUT.png [--camera AZ,EL,ZOOM] [--size WxH] [--subsurface N] "
+                                "[--show label|diffuse|specular|roughness|displacement|mask]]");
   const std::string dir = args.value("-o");
   const std::string save = args.value("--save");
   const std::string gltf = args.value("--gltf");
@@ -146,9 +149,15 @@ int paint_command(const Argv& argv)
   const std::string screenshot = args.value("--screenshot");
   if (args.has("--screenshot") && lower_extension(screenshot) != ".png")
     throw InputError("--screenshot must name a .png file, not '" + screenshot + "'");
-  if (!args.has("--screenshot") && (args.has("--camera") || args.has("--size") || args.has("--subsurface")))
-    throw InputError("--camera, --size and --subsurface need --screenshot OUT.png");
+  if (!args.has("--screenshot") &&
+      (args.has("--camera") || args.has("--size") || args.has("--subsurface") || args.has("--show")))
+    throw InputError("--camera, --size, --subsurface and --show need --screenshot OUT.png");
   const int subsurface = args.integer("--subsurface", 0, 0, 10000);
+  const ShownChannel shown = parse_shown_channel(args.value("--show", "diffuse"));
+  if (shown != ShownChannel::diffuse && subsurface > 0)
+    throw InputError("--subsurface lights the diffuse colour: it does not go with --show " + args.value("--show"));
+  if (!screenshot.empty())
+    require_display(); // before the painting, which may take long
   auto runtime = open_device(args);
   Timer setup;
   PaintScene scene;
@@ -177,7 +186,9 @@ int paint_command(const Argv& argv)
       all->AddInputData(poly);
     }
     all->Update();
-    render_screenshot(all->GetOutput(), picture.camera, picture.width, picture.height, screenshot);
+    const std::vector<LabelClass>& labels =
+      args.has("--labels") || !input.project ? new_labels : input.project->labels;
+    render_screenshot(all->GetOutput(), picture.camera, picture.width, picture.height, screenshot, shown, labels);
     std::cout << "wrote      " << screenshot << " (" << picture.width << "x" << picture.height << ")\n";
   }
   PaintSurface* const surface = &scene.surface(0);

@@ -1,10 +1,12 @@
-// meshpaint view: the interactive painting window, on one mesh or project or
+// meshpaint view: the studio, the painting window, on one mesh or project or
 // on a scene of several meshes.
 
 #include "commands.h"
 #include "picture_options.h"
 
+#include "DisplayCheck.h"
 #include "RasterIO.h"
+#include "Studio.h"
 #include "vtkPaintView.h"
 
 #include "core/errors.h"
@@ -62,6 +64,7 @@ int view_command(const Argv& argv)
   check_edit_levels(script, level);
 
   const int lod = args.integer("--lod", -1, 0, level); // absent: automatic
+  require_display(); // VTK aborts without one
   vtkNew<vtkPaintView> view;
   view->SetLevel(level);
   view->SetLodLevel(lod);
@@ -80,15 +83,12 @@ int view_command(const Argv& argv)
   }
   if (!script.strokes.empty() && !view->ApplyScript(script))
     throw DeviceError(view->GetLastError()); // the script was checked: what fails now is the device
-  if (!view->Initialize())
-    throw DeviceError(view->GetLastError());
   std::string names;
   for (int k = 0; k < view->GetNumberOfObjects(); ++k)
     names += (k ? ", " : "") + std::string(view->GetObjectName(k));
   std::cout << "view       " << names << " at level " << level << "; h in the window lists the keys; saves go to "
             << view->GetSaveDirectory() << "/" << std::endl;
-  view->Start();
-  return 0;
+  return studio::run_studio(view);
 }
 
 } // namespace meshpaint::cli

@@ -86,8 +86,8 @@ TEXEL_INLINE float brush_t(__global const BrushDab *dab, __global const PatchUnf
     *plane = (convert_float2(at) - vload2(0, dab->centre_texel)) * dab->texel_size;
     return fmax(fabs((*plane).x), fabs((*plane).y)) / dab->radius;
   }
-  case SPACE_TANGENT:
-    if (!dab->paint_backfaces && dot(nx, vload3(0, dab->centre_normal)) < 0.0f)
+  case SPACE_TANGENT: /* both normals on the side painted: side_sign cancels */
+    if (!dab->paint_backfaces && dab->side_sign * dot(nx, vload3(0, dab->centre_normal)) < 0.0f)
       return INFINITY;
     *plane = (float2)(dot(d, vload3(0, dab->stamp_u)), dot(d, vload3(0, dab->stamp_v)));
     return sqrt(dot(*plane, *plane)) / dab->radius;

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>    // for std::array
 #include <cmath>    // for std::sqrt, std::sin, std::cos
 #include <cstdio>   // for std::printf
 #include <cstring>  // for std::memcmp
@@ -374,6 +375,59 @@ TEST(BrushSpace, ScreenStrokesEndAtTheSilhouette)
   s.brush.space = SPACE_OBJECT;
   s.brush.has_camera = false;
   EXPECT_FALSE(object.apply(s).left_surface);
+}
+
+//! Red texels in front (z > 0.05) and behind (z < -0.05) of the z = 0 plane.
+std::array<std::size_t, 2> red_front_and_back(PaintSurface& surface)
+{
+  const std::vector<Float4> pos = surface.atlas().read_limit_positions();
+  const std::vector<Float4> diffuse = surface.read_channels().diffuse;
+  std::array<std::size_t, 2> n{0, 0};
+  for (std::size_t t = 0; t < pos.size(); ++t)
+    if (red(diffuse[t]) && std::fabs(pos[t][2]) > 0.05f)
+      ++n[pos[t][2] > 0.f ? 0 : 1];
+  return n;
+}
+
+TEST(BrushSpace, InwardWoundSurfacesPaintAsOutwardOnes)
+{
+  // Seen from above, a stroke over the top of a sphere and on past its
+  // silhouette: every space paints the same on the sphere wound either way.
+  Camera above;
+  above.position = {0.f, 0.f, 10.f};
+  above.view_up = {0.f, 1.f, 0.f};
+  for (const int space : {SPACE_OBJECT, SPACE_TANGENT, SPACE_SCREEN}) {
+    std::array<std::size_t, 2> counts[2];
+    bool left[2];
+    for (const bool inwards : {false, true}) {
+      SCOPED_TRACE(testing::Message() << "space " << space << (inwards ? " inwards" : " outwards"));
+      const BaseMesh sphere = test::noisy_sphere(4, 0.f);
+      PaintSurface surface(test::runtime(), inwards ? test::wound_inwards(sphere) : sphere, 3, AtlasStorage::Buffer);
+      Stroke s = red_dab({0.f, 0.f, 1.f}, 0.3f, space);
+      if (space == SPACE_SCREEN) {
+        s.brush.camera = above;
+        s.brush.has_camera = true;
+      }
+      for (int k = 1; k <= 12; ++k) {
+        const double a = k * 15.0 * M_PI / 180.0;
+        s.points.push_back({float(std::sin(a)), 0.f, float(std::cos(a))});
+      }
+      left[inwards] = surface.apply(s).left_surface;
+      counts[inwards] = red_front_and_back(surface);
+      EXPECT_GT(counts[inwards][0], 200u);
+    }
+    EXPECT_EQ(left[0], left[1]) << "space " << space;
+    for (int side = 0; side < 2; ++side) // the same surface, in another atlas layout
+      EXPECT_NEAR(double(counts[1][side]), double(counts[0][side]), 0.02 * double(counts[0][side]) + 2.0)
+        << "space " << space << " side " << side;
+  }
+  // The tangent brush keeps to the side it started on, inside and outside.
+  for (const bool inwards : {false, true}) {
+    const BaseMesh sphere = test::noisy_sphere(4, 0.f);
+    PaintSurface surface(test::runtime(), inwards ? test::wound_inwards(sphere) : sphere, 3, AtlasStorage::Buffer);
+    surface.apply(red_dab({0.f, 0.f, 1.f}, 1.5f, SPACE_TANGENT));
+    EXPECT_EQ(red_front_and_back(surface)[1], 0u) << (inwards ? "inwards" : "outwards");
+  }
 }
 
 //! A roof: the plane z = 0 for y in [0, 4] (facing +z) and, from its edge

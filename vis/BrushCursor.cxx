@@ -6,6 +6,8 @@
 #include <vtkRenderWindow.h>   // for vtkRenderWindow
 #include <vtkRenderer.h>       // for vtkRenderer
 
+#include <cmath> // for std::fabs
+
 namespace meshpaint {
 
 void BrushCursor::add_to(vtkRenderer* renderer)
@@ -40,10 +42,15 @@ bool BrushCursor::pick_facing(vtkRenderer* renderer, vtkRenderWindow* window, in
     picker_->Capture();
     captured_view_ = view;
   }
-  if (!picker_->Pick(x, y) || picker_->GetFacing() < min_facing)
+  // Scans come wound either way: whichever side of the surface the eye
+  // sees is the one under the cursor, and its normal is turned towards it.
+  if (!picker_->Pick(x, y) || std::fabs(picker_->GetFacing()) < min_facing)
     return false;
   picker_->GetPoint(point);
   picker_->GetNormal(normal);
+  if (picker_->GetFacing() < 0.0)
+    for (int c = 0; c < 3; ++c)
+      normal[c] = -normal[c];
   return true;
 }
 

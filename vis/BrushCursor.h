@@ -24,7 +24,8 @@ public:
   void add_to(vtkRenderer* renderer);
   vtkSurfacePicker* picker() { return picker_; }
   //! The surface at display pixel (x, y) of `window` when it faces the
-  //! viewer with a cosine of at least `min_facing`: its point and normal.
+  //! viewer with a cosine of at least `min_facing`, on either side (faces
+  //! wound inwards or outwards): its point and its normal turned to the viewer.
   bool pick_facing(vtkRenderer* renderer, vtkRenderWindow* window, int x, int y, double min_facing,
                    double point[3], double normal[3]);
   //! Shows a ring of `radius` at `point`, just above the surface along

@@ -1,6 +1,8 @@
 #include "BrushSettings.h"
 
-#include "core/format.h" // for meshpaint::format_fixed
+#include "core/errors.h"     // for meshpaint::InputError
+#include "core/format.h"     // for meshpaint::format_fixed
+#include "project/labels.h"  // for meshpaint::kMaxLabelId
 
 #include <algorithm> // for std::clamp
 #include <array>     // for std::array
@@ -10,12 +12,12 @@
 namespace meshpaint {
 namespace {
 
-const std::array<const char*, 9> kTools = {"paint", "smooth", "blur", "sculpt", "inflate", "flatten", "grab",
-                                           "smear", "label"};
-const std::array<const char*, 6> kChannels = {"diffuse", "specular", "roughness", "displacement", "mask", "material"};
-const std::array<const char*, 4> kFalloffs = {"constant", "linear", "smoothstep", "gaussian"};
-const std::array<const char*, 5> kOps = {"copy", "over", "max", "add", "subtract"};
-const std::array<const char*, 4> kSpaces = {"object", "tangent", "screen", "parameter"};
+const std::vector<std::string> kTools = {"paint", "smooth", "blur", "sculpt", "inflate", "flatten", "grab",
+                                         "smear", "label"};
+const std::vector<std::string> kChannels = {"diffuse", "specular", "roughness", "displacement", "mask", "material"};
+const std::vector<std::string> kFalloffs = {"constant", "linear", "smoothstep", "gaussian"};
+const std::vector<std::string> kOps = {"copy", "over", "max", "add", "subtract"};
+const std::vector<std::string> kSpaces = {"object", "tangent", "screen", "parameter"};
 // Swatches 0..9 for the colour channels.
 const std::array<std::array<double, 3>, 10> kPalette = {{{0.05, 0.05, 0.05}, {0.85, 0.1, 0.1}, {0.95, 0.55, 0.1},
                                                          {0.95, 0.9, 0.2}, {0.2, 0.7, 0.2}, {0.1, 0.6, 0.7},
@@ -40,8 +42,49 @@ bool moves(const std::string& tool)
 } // namespace
 
 BrushSettings::BrushSettings(double size, int level)
-  : size_(size > 0 ? size : 1.0), radius_(0.03 * size_), level_(level), edit_level_(level)
+  : size_(size > 0 ? size : 1.0), colour_(kPalette[1]), radius_(0.03 * size_), level_(level), edit_level_(level)
 {
+}
+
+const std::vector<std::string>& BrushSettings::tools() { return kTools; }
+const std::vector<std::string>& BrushSettings::channels() { return kChannels; }
+const std::vector<std::string>& BrushSettings::falloffs() { return kFalloffs; }
+const std::vector<std::string>& BrushSettings::ops() { return kOps; }
+const std::vector<std::string>& BrushSettings::spaces() { return kSpaces; }
+std::string BrushSettings::tool() const { return kTools[std::size_t(tool_)]; }
+void BrushSettings::set_tool(const std::string& tool) { tool_ = index_of_name(kTools, tool, "the tool"); }
+std::string BrushSettings::channel() const { return kChannels[std::size_t(channel_)]; }
+void BrushSettings::set_channel(const std::string& channel) { channel_ = index_of_name(kChannels, channel, "the channel"); }
+std::string BrushSettings::falloff() const { return kFalloffs[std::size_t(falloff_)]; }
+void BrushSettings::set_falloff(const std::string& falloff) { falloff_ = index_of_name(kFalloffs, falloff, "the falloff"); }
+std::string BrushSettings::op() const { return kOps[std::size_t(op_)]; }
+void BrushSettings::set_op(const std::string& op) { op_ = index_of_name(kOps, op, "the op"); }
+std::string BrushSettings::space() const { return kSpaces[std::size_t(space_)]; }
+void BrushSettings::set_space(const std::string& space) { space_ = index_of_name(kSpaces, space, "the brush space"); }
+std::array<double, 3> BrushSettings::swatch_colour(int k) { return kPalette[std::size_t(std::clamp(k, 0, 9))]; }
+
+void BrushSettings::set_swatch(int k)
+{
+  swatch_ = std::clamp(k, 0, 9);
+  colour_ = kPalette[std::size_t(swatch_)];
+  label_ = swatch_;
+}
+
+void BrushSettings::set_label(int id)
+{
+  if (id < 0 || id > kMaxLabelId)
+    throw InputError("a label id must be 0 to " + std::to_string(kMaxLabelId) + ", not " + std::to_string(id));
+  label_ = id;
+}
+
+void BrushSettings::set_strength(double strength)
+{
+  strength_ = std::clamp(strength, 0.0, 1.0);
+}
+
+void BrushSettings::set_spacing(double spacing)
+{
+  spacing_ = std::clamp(spacing, 0.01, 100.0);
 }
 
 bool BrushSettings::coarse_edit() const
@@ -56,7 +99,7 @@ bool BrushSettings::handle_key(const std::string& key, bool shift)
   else if (key == "c" || key == "C")
     channel_ = cycle(channel_, kChannels, shift || key == "C");
   else if (key.size() == 1 && key[0] >= '0' && key[0] <= '9')
-    swatch_ = key[0] - '0';
+    set_swatch(key[0] - '0');
   else if (key == "bracketright")
     radius_ *= 1.25;
   else if (key == "bracketleft")
@@ -94,6 +137,8 @@ Stroke BrushSettings::stroke(const std::vector<Vec3>& points) const
   s.brush.radius = float(radius_);
   s.brush.strength = float(strength_);
   s.brush.falloff = falloff_;
+  s.brush.spacing = float(spacing_);
+  s.brush.paint_backfaces = backfaces_;
   if (tool != "grab") // a grab pulls one region
     s.brush.mirror_axis = mirror_;
   const auto paint = [&s](int channel, double r, double g, double b) {
@@ -101,7 +146,7 @@ Stroke BrushSettings::stroke(const std::vector<Vec3>& points) const
     s.paint().alpha[std::size_t(channel)] = 1.f;
   };
   if (is_paint(tool)) {
-    const auto& rgb = kPalette[std::size_t(swatch_)];
+    const auto& rgb = colour_;
     const std::string channel = kChannels[std::size_t(channel_)];
     const double level = swatch_ / 9.0, height = (swatch_ - 5) * 0.004 * size_; // 5: the unpainted height
     if (channel == "diffuse")
@@ -121,7 +166,7 @@ Stroke BrushSettings::stroke(const std::vector<Vec3>& points) const
     }
     s.paint().op = op_;
   } else if (tool == "label") {
-    paint(CHANNEL_LABEL, swatch_, swatch_, swatch_);
+    paint(CHANNEL_LABEL, label_, label_, label_);
   } else if (tool == "sculpt" || tool == "inflate") {
     s.move().amount = float((inwards_ ? -0.1 : 0.1) * radius_);
   } else if (tool == "flatten") {
@@ -147,7 +192,7 @@ std::string BrushSettings::describe() const
     out << "   channel " << kChannels[std::size_t(channel_)] << "   swatch " << swatch_ << "   op "
         << kOps[std::size_t(op_)];
   else if (tool == "label")
-    out << "   label " << swatch_;
+    out << "   label " << label_;
   else if (tool == "sculpt" || tool == "inflate")
     out << (inwards_ ? "   inwards" : "   outwards");
   if (moves(tool))

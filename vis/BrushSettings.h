@@ -8,6 +8,7 @@
 #include "core/vec.h"     // for meshpaint::Vec3
 #include "paint/stroke.h" // for meshpaint::Stroke
 
+#include <array>  // for std::array
 #include <string> // for std::string
 #include <vector> // for std::vector
 
@@ -34,10 +35,51 @@ public:
   //! The keys the brush reacts to, one per line.
   static std::string key_help();
 
+  //@{
+  //! The settings one by one, for panels (the keys change the same ones).
+  //! Names as in stroke scripts; a setter given a name not in its list
+  //! throws InputError.
+  static const std::vector<std::string>& tools();
+  static const std::vector<std::string>& channels(); //!< of the paint tool; "material" paints a coat
+  static const std::vector<std::string>& falloffs();
+  static const std::vector<std::string>& ops();
+  static const std::vector<std::string>& spaces();
+  std::string tool() const;
+  void set_tool(const std::string& tool);
+  std::string channel() const;
+  void set_channel(const std::string& channel);
+  //! The swatch keys 0..9 set: colour, value k/9, height, label id k.
+  int swatch() const { return swatch_; }
+  void set_swatch(int k);
+  //! The colour painted into diffuse, specular or a material coat (the
+  //! swatch's until set).
+  std::array<double, 3> colour() const { return colour_; }
+  void set_colour(const std::array<double, 3>& rgb) { colour_ = rgb; }
+  //! The swatch colours, 0..9.
+  static std::array<double, 3> swatch_colour(int k);
+  //! The class id the label tool paints (the swatch's until set).
+  int label() const { return label_; }
+  void set_label(int id);
+  double strength() const { return strength_; }
+  void set_strength(double strength);
+  std::string falloff() const;
+  void set_falloff(const std::string& falloff);
+  std::string op() const;
+  void set_op(const std::string& op);
+  std::string space() const;
+  void set_space(const std::string& space);
+  //! -1 off, 0..2 across x, y, z.
+  int mirror() const { return mirror_; }
+  void set_mirror(int axis) { mirror_ = axis < 0 || axis > 2 ? -1 : axis; }
+  bool backfaces() const { return backfaces_; }
+  void set_backfaces(bool on) { backfaces_ = on; }
+  void set_spacing(double spacing);
+  //@}
+
   double radius() const { return radius_; }
   //! True when strokes edit geometry at a level coarser than the painting level.
   bool coarse_edit() const;
-  double spacing() const { return 0.25; }
+  double spacing() const { return spacing_; }
   void set_radius(double radius) { radius_ = radius; }
   //! The view screen-space strokes are drawn in.
   void set_camera(const Camera& camera)
@@ -51,6 +93,10 @@ private:
   int tool_ = 0;       // index into the tool list
   int channel_ = 0;    // index into the channel list
   int swatch_ = 1;     // 0..9, the value painted into the channel
+  std::array<double, 3> colour_; // colour channels: the swatch's colour, or one set
+  int label_ = 1;                // the label tool's class id
+  double spacing_ = 0.25;
+  bool backfaces_ = false;
   double radius_;
   double strength_ = 1.0;
   int falloff_ = 2;    // smoothstep

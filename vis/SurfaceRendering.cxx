@@ -1,7 +1,9 @@
 #include "SurfaceRendering.h"
 
+#include "ChannelDisplay.h"  // for meshpaint::show_channel, ShownChannel
+#include "DisplayCheck.h"    // for meshpaint::require_display
 #include "core/atomic_file.h" // for meshpaint::write_bytes_atomically
-#include "core/errors.h"      // for meshpaint::IOError
+#include "core/errors.h"      // for meshpaint::IOError, DeviceError
 #include "paint/paint_surface.h" // for meshpaint::PaintSurface
 #include "SurfaceConversion.h"   // for meshpaint::png_bytes
 
@@ -158,10 +160,14 @@ std::array<double, 3> headlight_direction(const CameraView& view)
   return {std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el)};
 }
 
-void render_screenshot(vtkPolyData* surface, const CameraView& view, int width, int height, const std::string& path)
+void render_screenshot(vtkPolyData* surface, const CameraView& view, int width, int height, const std::string& path,
+                       ShownChannel channel, const std::vector<LabelClass>& labels)
 {
+  require_display();
   vtkNew<vtkActor> actor;
-  if (surface->GetPointData()->GetArray("scattered_light"))
+  if (channel != ShownChannel::diffuse)
+    show_channel(actor, surface, channel, labels);
+  else if (surface->GetPointData()->GetArray("scattered_light"))
     show_scattered_light(actor, surface);
   else
     show_materials(actor, surface);

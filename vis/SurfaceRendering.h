@@ -5,8 +5,12 @@
 
 #include "meshpaintVisModule.h" // for MESHPAINTVIS_EXPORT
 
+#include "ChannelDisplay.h" // for meshpaint::ShownChannel
+#include "project/labels.h" // for meshpaint::LabelClass
+
 #include <array>  // for std::array
 #include <string> // for std::string
+#include <vector> // for std::vector
 
 class vtkActor;
 class vtkPolyData;
@@ -56,10 +60,13 @@ MESHPAINTVIS_EXPORT void set_camera(vtkRenderer* renderer, const CameraView& vie
 MESHPAINTVIS_EXPORT void write_screenshot(vtkRenderWindow* window, const std::string& path);
 
 //! Renders `surface` offscreen with show_materials() (show_scattered_light()
-//! when it has a "scattered_light" array) at width x height pixels and
-//! writes the PNG (needs an X display, e.g. under xvfb-run).
+//! when it has a "scattered_light" array), or showing another `channel`
+//! (show_channel(), label classes coloured as `labels` say), at width x
+//! height pixels and writes the PNG.
+//! \throw DeviceError when there is no X display to render with (require_display()).
 MESHPAINTVIS_EXPORT void render_screenshot(vtkPolyData* surface, const CameraView& view, int width, int height,
-                                           const std::string& path);
+                                           const std::string& path, ShownChannel channel = ShownChannel::diffuse,
+                                           const std::vector<LabelClass>& labels = {});
 
 } // namespace meshpaint
 

@@ -21,6 +21,10 @@ WindowKey window_key(const std::string& key, bool control)
     return WindowKey::help;
   if (key == "b")
     return WindowKey::subsurface;
+  if (key == "v")
+    return WindowKey::shown_next;
+  if (key == "V")
+    return WindowKey::shown_back;
   if (key == "r")
     return WindowKey::reset_camera;
   if (key == "q" || key == "Escape")
@@ -38,6 +42,7 @@ std::string window_help()
          "Ctrl+E       export model.obj with texture maps\n"
          "r            reset the camera\n"
          "b            subsurface light at rest (on / off)\n"
+         "v / V        show the next / previous channel (diffuse label specular roughness displacement mask)\n"
          "h, F1        this help;  q, Escape: quit";
 }
 

@@ -18,6 +18,8 @@ enum class WindowKey
   export_model, //!< Ctrl+E
   help,         //!< h, F1, ?
   subsurface,   //!< b: subsurface light at rest, on or off
+  shown_next,   //!< v: show the next channel (diffuse, label, ...)
+  shown_back,   //!< V: the previous one
   reset_camera, //!< r
   quit          //!< q, Escape
 };

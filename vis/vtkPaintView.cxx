@@ -2,18 +2,24 @@
 #include "vtkPaintViewInternals.h"
 
 #include "CallGuard.h"        // for meshpaint::guarded
+#include "ChannelDisplay.h"   // for meshpaint::show_channel, parse_shown_channel
 #include "PaintingExport.h"   // for meshpaint::default_model_level
 #include "SceneFiles.h"       // for meshpaint::save_session, export_scene
 #include "SurfaceRendering.h" // for meshpaint::show_materials, show_scattered_light, add_scattered_light, set_camera
 #include "WindowKeys.h"       // for meshpaint::window_key, window_help
 
+#include "core/errors.h"             // for meshpaint::InputError
+#include "project/labels.h"          // for meshpaint::LabelClass, parse_labels, labels_json
+#include "project/project_surface.h" // for meshpaint::save_painted_project
+
 #include <vtkCamera.h>        // for vtkCamera
+#include <vtkCommand.h>       // for vtkCommand::UpdateDataEvent
 #include <vtkMapper.h>        // for vtkMapper
 #include <vtkObjectFactory.h> // for vtkStandardNewMacro
 #include <vtkPointData.h>     // for vtkPointData
 #include <vtkPolyData.h>      // for vtkPolyData
 
-#include <algorithm> // for std::min, std::max
+#include <algorithm> // for std::min, std::max, std::remove_if, std::sort, std::find
 #include <chrono>    // for std::chrono::steady_clock
 
 vtkStandardNewMacro(vtkPaintView);
@@ -50,22 +56,27 @@ int vtkPaintView::Initialize()
   in.renderer->SetBackground(0.12, 0.12, 0.14);
   in.cursor.add_to(in.renderer);
   in.text.add_to(in.renderer, meshpaint::window_help());
+  in.legend.add_to(in.renderer);
 
   in.window->AddRenderer(in.renderer);
-  in.window->SetSize(this->Size);
+  if (!in.hosted)
+    in.window->SetSize(this->Size);
   // Multisampling triples the cost of a frame on a software rasterizer;
   // FXAA smooths the edges of frames at rest instead (see Show()).
   in.window->SetMultiSamples(0);
   in.renderer->SetUseFXAA(this->AntiAliasing);
-  in.window->SetOffScreenRendering(this->OffScreen ? 1 : 0);
-  in.window->SetWindowName("meshpaint");
-  in.interactor->SetRenderWindow(in.window);
+  if (!in.hosted) {
+    in.window->SetOffScreenRendering(this->OffScreen ? 1 : 0);
+    in.window->SetWindowName("meshpaint");
+    in.interactor->SetRenderWindow(in.window);
+  }
   in.style->SetControls(&in.controls);
   in.interactor->SetInteractorStyle(in.style);
   in.cursor.picker()->SetRenderer(in.renderer);
   in.cursor.picker()->SetPatchResolution(1 << (this->Level - 1)); // captures happen at rest: the full level
   meshpaint::set_camera(in.renderer, meshpaint::CameraView());
-  in.interactor->Initialize();
+  if (!in.hosted)
+    in.interactor->Initialize();
   in.initialized = true;
   this->UpdateText();
   this->Render();
@@ -91,6 +102,21 @@ void vtkPaintView::Render()
   const int* size = in.window->GetSize();
   in.timing.add_frame(took.count(), size[0], size[1], double(this->GetFaceCount()));
 }
+
+void vtkPaintView::SetRenderWindow(vtkRenderWindow* window)
+{
+  Internals& in = *this->Impl;
+  if (!window || in.initialized)
+    return;
+  in.window = window;
+  if (window->GetInteractor())
+    in.interactor = window->GetInteractor();
+  else
+    in.interactor->SetRenderWindow(window);
+  in.hosted = true;
+}
+
+double vtkPaintView::GetLastStepTime() { return this->Impl->step_ms; }
 
 vtkRenderWindow* vtkPaintView::GetRenderWindow() { return this->Impl->window; }
 vtkRenderer* vtkPaintView::GetRenderer() { return this->Impl->renderer; }
@@ -165,7 +191,8 @@ void vtkPaintView::Show()
 {
   Internals& in = *this->Impl;
   const int level = in.moving ? this->CoarseLevel() : this->Level;
-  const bool lit = this->SubsurfacePasses > 0 && level == this->Level && in.initialized;
+  const bool lit = this->SubsurfacePasses > 0 && level == this->Level && in.initialized &&
+                   in.shown == meshpaint::ShownChannel::diffuse;
   for (std::size_t o = 0; o < in.drawings.size(); ++o) {
     meshpaint::ObjectDrawing& d = *in.drawings[o];
     vtkPolyData* poly = nullptr;
@@ -182,7 +209,10 @@ void vtkPaintView::Show()
                                        this->SubsurfacePasses);
       });
       meshpaint::show_scattered_light(d.actor, poly);
-    } else if (in.lit && in.initialized) {
+    } else if (in.shown != meshpaint::ShownChannel::diffuse && in.initialized) {
+      // Colours made from the channel: again after every change.
+      meshpaint::guarded(this->LastError, [&] { meshpaint::show_channel(d.actor, poly, in.shown, in.labels, in.hidden_labels); });
+    } else if ((in.lit || in.channel_drawn) && in.initialized) {
       poly->GetPointData()->RemoveArray("scattered_light");
       meshpaint::show_materials(d.actor, poly);
     } else if (poly != d.shown.GetPointer() && in.initialized) {
@@ -191,6 +221,15 @@ void vtkPaintView::Show()
     d.shown = poly;
   }
   in.renderer->SetUseFXAA(this->AntiAliasing && !in.moving);
+  if (in.initialized && !in.drawings.empty())
+    meshpaint::guarded(this->LastError, [&] {
+      std::vector<meshpaint::LabelClass> shown_classes; // hidden ones are not in the legend
+      for (const meshpaint::LabelClass& c : in.labels)
+        if (this->GetLabelClassVisible(c.id))
+          shown_classes.push_back(c);
+      in.legend.update(lit ? meshpaint::ShownChannel::diffuse : in.shown, in.drawings.front()->shown, shown_classes);
+    });
+  in.channel_drawn = in.shown != meshpaint::ShownChannel::diffuse && !lit && in.initialized;
   in.lit = lit;
   in.shown_level = level;
 }
@@ -254,10 +293,20 @@ int vtkPaintView::HandleKey(const char* keysym, bool control, bool shift)
       this->Message = this->SubsurfacePasses > 0 ? "subsurface light on" : "subsurface light off";
       this->Show();
       break;
+    case meshpaint::WindowKey::shown_next:
+    case meshpaint::WindowKey::shown_back: {
+      const int n = int(meshpaint::shown_channel_names().size());
+      const bool back = shift || meshpaint::window_key(key, control) == meshpaint::WindowKey::shown_back;
+      in.shown = meshpaint::ShownChannel((int(in.shown) + (back ? n - 1 : 1)) % n);
+      this->Message = "showing " + meshpaint::shown_channel_name(in.shown);
+      this->Show();
+      break;
+    }
     case meshpaint::WindowKey::reset_camera:
       meshpaint::set_camera(in.renderer, meshpaint::CameraView());
       break;
     case meshpaint::WindowKey::quit:
+      this->InvokeEvent(vtkCommand::ExitEvent); // a host window (the studio) closes itself on it
       if (in.initialized)
         in.interactor->TerminateApp();
       return 1;
@@ -277,6 +326,22 @@ int vtkPaintView::Save()
       in.project.get(), this->SaveDirectory);
   });
   this->Message = ok ? message : this->LastError;
+  this->UpdateText();
+  this->Render();
+  return ok;
+}
+
+int vtkPaintView::SaveProject(const char* path)
+{
+  Internals& in = *this->Impl;
+  const int ok = meshpaint::guarded(this->LastError, [&] {
+    if (in.scene.size() != 1)
+      throw meshpaint::InputError("a project keeps one surface: this scene has " + std::to_string(in.scene.size()));
+    meshpaint::Project base = in.project ? *in.project : meshpaint::Project();
+    base.labels = in.labels;
+    meshpaint::save_painted_project(in.scene.surface(0), base, path ? path : "");
+  });
+  this->Message = ok ? std::string("saved ") + path : this->LastError;
   this->UpdateText();
   this->Render();
   return ok;
@@ -306,9 +371,91 @@ bool vtkPaintView::GetHelpVisible() { return this->Impl->text.help_visible(); }
 void vtkPaintView::UpdateText()
 {
   Internals& in = *this->Impl;
-  if (!in.initialized || !in.brush)
-    return;
-  in.text.update(meshpaint::status_line(in.brush->describe(), this->Level, this->CoarseLevel(),
-                                        in.scene.history().size(), this->Message),
-                 in.window->GetSize()[1]);
+  if (in.initialized && in.brush)
+    in.text.update(meshpaint::status_line(in.brush->describe(), this->Level, this->CoarseLevel(),
+                                          in.scene.history().size(), this->Message),
+                   in.window->GetSize()[1]);
+  this->InvokeEvent(vtkCommand::UpdateDataEvent);
 }
+
+int vtkPaintView::SetShownChannel(const char* name)
+{
+  Internals& in = *this->Impl;
+  if (!meshpaint::guarded(this->LastError, [&] { in.shown = meshpaint::parse_shown_channel(name ? name : ""); }))
+    return 0;
+  if (!in.scene.empty())
+    this->Show();
+  this->UpdateText();
+  this->Render();
+  return 1;
+}
+
+const char* vtkPaintView::GetShownChannel() { return meshpaint::shown_channel_name(this->Impl->shown).c_str(); }
+
+int vtkPaintView::AddLabelClass(int id, const char* name, double r, double g, double b)
+{
+  std::vector<meshpaint::LabelClass> labels = this->Impl->labels;
+  labels.erase(std::remove_if(labels.begin(), labels.end(), [&](const meshpaint::LabelClass& c) { return c.id == id; }),
+               labels.end());
+  meshpaint::LabelClass c;
+  c.id = id;
+  c.name = name ? name : "";
+  c.colour = {float(r), float(g), float(b)};
+  labels.push_back(c);
+  std::sort(labels.begin(), labels.end(),
+            [](const meshpaint::LabelClass& a, const meshpaint::LabelClass& b) { return a.id < b.id; });
+  // The checks of a labels file: ids, names and colours.
+  if (!meshpaint::guarded(this->LastError, [&] { meshpaint::parse_labels(meshpaint::labels_json(labels)); }))
+    return 0;
+  this->SetLabelClasses(labels);
+  return 1;
+}
+
+void vtkPaintView::RemoveLabelClass(int id)
+{
+  std::vector<meshpaint::LabelClass> labels = this->Impl->labels;
+  labels.erase(std::remove_if(labels.begin(), labels.end(), [&](const meshpaint::LabelClass& c) { return c.id == id; }),
+               labels.end());
+  this->SetLabelClasses(labels);
+}
+
+void vtkPaintView::SetLabelClassVisible(int id, bool visible)
+{
+  Internals& in = *this->Impl;
+  in.hidden_labels.erase(std::remove(in.hidden_labels.begin(), in.hidden_labels.end(), id), in.hidden_labels.end());
+  if (!visible)
+    in.hidden_labels.push_back(id);
+  if (in.shown == meshpaint::ShownChannel::label && !in.scene.empty())
+    this->Show();
+  this->Render();
+}
+
+bool vtkPaintView::GetLabelClassVisible(int id)
+{
+  const std::vector<int>& h = this->Impl->hidden_labels;
+  return std::find(h.begin(), h.end(), id) == h.end();
+}
+
+void vtkPaintView::RemoveAllLabelClasses() { this->SetLabelClasses({}); }
+
+int vtkPaintView::GetNumberOfLabelClasses() { return int(this->Impl->labels.size()); }
+
+const std::vector<meshpaint::LabelClass>& vtkPaintView::GetLabelClasses() const { return this->Impl->labels; }
+
+void vtkPaintView::SetLabelClasses(const std::vector<meshpaint::LabelClass>& labels)
+{
+  Internals& in = *this->Impl;
+  in.labels = labels;
+  if (in.project)
+    in.project->labels = labels; // what a save keeps
+  if (in.shown == meshpaint::ShownChannel::label && !in.scene.empty())
+    this->Show();
+  this->UpdateText();
+  this->Render();
+}
+
+meshpaint::BrushSettings* vtkPaintView::GetBrush() { return this->Impl->brush.get(); }
+
+meshpaint::PaintScene& vtkPaintView::GetScene() { return this->Impl->scene; }
+
+const meshpaint::Project* vtkPaintView::GetProject() const { return this->Impl->project.get(); }

@@ -36,6 +36,7 @@
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
+#include <vector> // for std::vector
 
 class vtkPaintSurface;
 class vtkPolyData;
@@ -46,6 +47,9 @@ class vtkSurfacePicker;
 
 namespace meshpaint {
 struct BaseMesh;
+class BrushSettings;
+struct LabelClass;
+class PaintScene;
 class PaintSurface;
 struct Project;
 struct StrokeScript;
@@ -188,6 +192,15 @@ public:
   /// Applies a stroke script's strokes (recorded like any other stroke).
   int ApplyStrokes(const char* json);
 
+  /// Draws into `window` instead of a window of the view's own, with the
+  /// window's interactor (a Qt widget's: QVTKOpenGLNativeWidget); the host
+  /// sizes it and runs the event loop. Set before Initialize().
+  void SetRenderWindow(vtkRenderWindow* window);
+
+  /// Milliseconds the last brush step took: the dabs of one new point of a
+  /// drawn stroke, painted and the display brought up to date.
+  double GetLastStepTime();
+
   /// Creates the window, renderer, actors and interactor (not started).
   int Initialize();
   /// Runs the interactor's event loop until the window closes.
@@ -221,7 +234,8 @@ public:
 
   /// Acts on a key (VTK key symbol, e.g. "z", "bracketleft", "F1"): brush
   /// settings, undo/redo (Ctrl+Z, Ctrl+Y), save (Ctrl+S), export (Ctrl+E),
-  /// help (h, F1), camera reset (r), quit (q, Escape). 1 when it was one.
+  /// help (h, F1), camera reset (r), quit (q, Escape: ExitEvent, then the
+  /// interactor's TerminateApp()). 1 when it was one.
   int HandleKey(const char* keysym, bool control, bool shift);
 
   int Undo();
@@ -232,6 +246,11 @@ public:
   /// surface.vtp goes into SaveDirectory/<name>/ (as `meshpaint paint -o`
   /// writes a scene). The one place a project format plugs in.
   virtual int Save();
+  /// Writes the first object's surface as a project (`*.meshpaint`,
+  /// atomically): the project it came from continued, or a new one, with
+  /// the view's label classes. 0 for a scene of several objects.
+  int SaveProject(const char* path);
+
   /// Writes the textured model (model.obj, model.mtl, PNG maps) of level
   /// max(1, Level - 2) into SaveDirectory (several objects: each into
   /// SaveDirectory/<name>/).
@@ -239,6 +258,43 @@ public:
 
   /// The session so far as a stroke script (undone strokes left out).
   const char* GetRecording();
+
+  //@{
+  /// The channel the surface is shown with: "diffuse" (default: the
+  /// materials), "label" (classes in their colours, unlabelled surface in
+  /// its material), "specular", "roughness", "displacement" or "mask"
+  /// (through a colour map). Keys v / V cycle them. 0 for another name.
+  int SetShownChannel(const char* name);
+  const char* GetShownChannel();
+  //@}
+
+  //@{
+  /// Label classes: the colours the label channel is shown in, and the
+  /// names a project saved from this window keeps. A project opened in the
+  /// window brings its own. Ids without a class show in fixed colours.
+  /// AddLabelClass replaces a class of the same id; 0 for a bad id or name.
+  int AddLabelClass(int id, const char* name, double r, double g, double b);
+  void RemoveLabelClass(int id);
+  void RemoveAllLabelClasses();
+  int GetNumberOfLabelClasses();
+  /// A hidden class shows as unlabelled surface (default: all visible).
+  void SetLabelClassVisible(int id, bool visible);
+  bool GetLabelClassVisible(int id);
+  //@}
+#ifndef __VTK_WRAP__
+  const std::vector<meshpaint::LabelClass>& GetLabelClasses() const;
+  void SetLabelClasses(const std::vector<meshpaint::LabelClass>& labels);
+  /// The brush the keys change (null before a surface is loaded); after
+  /// changing it, call UpdateText() to show the change.
+  meshpaint::BrushSettings* GetBrush();
+  /// The scene painted, for its history and undone strokes.
+  meshpaint::PaintScene& GetScene();
+  /// The project the first object came from, null when from a mesh.
+  const meshpaint::Project* GetProject() const;
+#endif
+  /// Brings the status line up to date, and tells observers (UpdateDataEvent)
+  /// that the view's state changed: strokes, undo, brush, messages.
+  void UpdateText();
 
   /// The help overlay listing the keys.
   void SetHelpVisible(bool visible);
@@ -299,7 +355,6 @@ private:
   vtkPolyData* Surface(std::size_t object, int level);
   //! Hands the actors the level that fits the moment.
   void Show();
-  void UpdateText();
 
   struct Internals;
   std::unique_ptr<Internals> Impl;

@@ -7,6 +7,8 @@
 
 #include "BrushCursor.h"             // for meshpaint::BrushCursor
 #include "BrushSettings.h"           // for meshpaint::BrushSettings
+#include "ChannelDisplay.h"          // for meshpaint::ShownChannel
+#include "ChannelLegend.h"           // for meshpaint::ChannelLegend
 #include "LevelOfDetail.h"           // for meshpaint::FrameTiming
 #include "PaintControls.h"           // for meshpaint::PaintControls
 #include "SceneDrawing.h"            // for meshpaint::ObjectDrawing
@@ -22,6 +24,7 @@
 #include <vtkRenderWindow.h>           // for vtkRenderWindow
 #include <vtkRenderWindowInteractor.h> // for vtkRenderWindowInteractor
 #include <vtkRenderer.h>               // for vtkRenderer
+#include <vtkSmartPointer.h>           // for vtkSmartPointer
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -59,15 +62,24 @@ struct vtkPaintView::Internals
   std::unique_ptr<meshpaint::Project> project; // where the first object came from, if from a project
   std::unique_ptr<meshpaint::BrushSettings> brush;
   bool lit = false;    // drawn with the subsurface light
+  meshpaint::ShownChannel shown = meshpaint::ShownChannel::diffuse;
+  bool channel_drawn = false; // the actors draw another channel than the materials
+  std::vector<meshpaint::LabelClass> labels; // the classes the label channel shows
+  std::vector<int> hidden_labels;            // class ids shown as unlabelled
   bool moving = false; // the camera turns or a stroke is drawn
   int shown_level = 0;
   meshpaint::FrameTiming timing; // of frames at rest, for the automatic level of detail
   vtkNew<vtkRenderer> renderer;
-  vtkNew<vtkRenderWindow> window;
-  vtkNew<vtkRenderWindowInteractor> interactor;
+  // The view's own window and interactor, or those of a widget that hosts
+  // the view (SetRenderWindow()).
+  vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::New();
+  vtkSmartPointer<vtkRenderWindowInteractor> interactor = vtkSmartPointer<vtkRenderWindowInteractor>::New();
+  bool hosted = false; // the window is a widget's: its size and event loop are the widget's
+  double step_ms = 0;  // the last brush step: the dabs of one new point of a stroke
   vtkNew<vtkPaintInteractorStyle> style;
   meshpaint::BrushCursor cursor;
   meshpaint::ViewText text;
+  meshpaint::ChannelLegend legend; // colour bar or label classes of the channel shown
   bool initialized = false;
   // The stroke being drawn (its path is the session's).
   bool painting = false;

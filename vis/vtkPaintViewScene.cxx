@@ -86,6 +86,7 @@ int vtkPaintView::MeshObject(const meshpaint::BaseMesh& mesh, bool add)
 void vtkPaintView::SetProject(const meshpaint::Project& project)
 {
   this->Impl->project = std::make_unique<meshpaint::Project>(project);
+  this->Impl->labels = project.labels; // shown in their colours, kept by a save
   // The layers live in the surface; a save takes them from there.
   this->Impl->project->positions.clear();
   this->Impl->project->channels = meshpaint::PaintChannels();

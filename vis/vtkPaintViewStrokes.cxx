@@ -12,6 +12,8 @@
 
 #include <vtkCamera.h> // for vtkCamera
 
+#include <chrono> // for std::chrono::steady_clock
+
 
 int vtkPaintView::ApplyStrokes(const char* json)
 {
@@ -88,11 +90,13 @@ int vtkPaintView::ContinueStroke(int x, int y)
   if (meshpaint::length(meshpaint::sub(q, last)) < 0.5 * in.brush->spacing() * in.brush->radius())
     return 1;
   bool on = true;
+  const auto start = std::chrono::steady_clock::now();
   if (!meshpaint::guarded(this->LastError, [&] { on = in.session.extend(q); }))
     on = false; // the session has closed the stroke; EndStroke() says why
   in.ended = !on;
   this->PlaceCursor(x, y);
   this->Refresh(false); // renders
+  in.step_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return 1;
 }
 

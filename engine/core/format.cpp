@@ -1,5 +1,7 @@
 #include "core/format.h"
 
+#include "core/errors.h"
+
 #include <cctype>     // for std::tolower
 #include <cstdint>    // for std::uint32_t
 #include <cstdio>     // for std::snprintf
@@ -107,6 +109,17 @@ std::string excerpt(const std::string& s, std::size_t limit)
   if (cut < s.size())
     out += "... (" + std::to_string(s.size()) + " bytes)";
   return out;
+}
+
+int index_of_name(const std::vector<std::string>& names, const std::string& name, const std::string& what)
+{
+  for (std::size_t k = 0; k < names.size(); ++k)
+    if (names[k] == name)
+      return int(k);
+  std::string all;
+  for (const std::string& n : names)
+    all += (all.empty() ? "" : ", ") + n;
+  throw InputError(what + " must be one of " + all + ", not '" + excerpt(name) + "'");
 }
 
 } // namespace meshpaint

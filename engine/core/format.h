@@ -3,6 +3,7 @@
 
 #include <cstddef> // for std::size_t
 #include <string>  // for std::string
+#include <vector>  // for std::vector
 
 namespace meshpaint {
 
@@ -33,5 +34,9 @@ bool is_utf8(const std::string& s);
 //! cut after about `limit` bytes (on a UTF-8 boundary) with
 //! "... (N bytes)" when longer, so a huge name cannot flood the terminal.
 std::string excerpt(const std::string& s, std::size_t limit = 60);
+
+//! Index of `name` in `names`.
+//! \throw InputError "`what` must be one of a, b, c, not 'name'".
+int index_of_name(const std::vector<std::string>& names, const std::string& name, const std::string& what);
 
 } // namespace meshpaint

@@ -148,6 +148,16 @@ bool PaintSurface::aim(const Stroke& stroke, const Vec3& point, const Vec3& norm
     inside_ = stroke.brush.side == 2 || (stroke.brush.side == 0 && seen < 0.f);
   }
   dab.side_sign = inside_ ? -1.f : 1.f;
+  if (stroke.brush.has_camera && !(two_sided_ && colours) && open_) {
+    // A surface of one side shows it to the eye whichever way its faces
+    // are wound: the side facing the camera where the stroke starts is the
+    // front for the whole stroke, so inward-wound scans paint as outward ones.
+    if (open_->facing_side == 0.f) {
+      const Vec3 to_eye = sub(stroke.brush.camera.position, Vec3{dab.centre[0], dab.centre[1], dab.centre[2]});
+      open_->facing_side = dot(to_eye, normal) < 0.f ? -1.f : 1.f;
+    }
+    dab.side_sign = open_->facing_side;
+  }
   dab.space = stroke.brush.space;
   dab.paint_backfaces = stroke.brush.paint_backfaces ? 1 : 0;
   for (int k = 0; k < 3; ++k)

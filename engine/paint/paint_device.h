@@ -70,6 +70,7 @@ struct PaintSurface::OpenStroke
   std::optional<std::array<Float4, 2>> carried[2]; // the smear brush's load per side of the mirror
   std::size_t next = 0;                            // samples painted or passed over so far
   bool ended = false;                              // left the surface: no later dab is painted
+  float facing_side = 0.f; // a camera's stroke on one side: the side its first dab saw (1 or -1; 0: none yet)
   GrabRegion grab;
   StrokeReport report;
   Timer timer;

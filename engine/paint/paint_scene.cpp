@@ -34,6 +34,12 @@ const std::vector<Stroke>& PaintScene::history() const
   return objects_.empty() ? none : objects_.front().surface->history();
 }
 
+const std::vector<Stroke>& PaintScene::undone() const
+{
+  static const std::vector<Stroke> none;
+  return objects_.empty() ? none : objects_.front().surface->undone();
+}
+
 std::vector<StrokeReport> PaintScene::apply(const Stroke& stroke)
 {
   begin_stroke(stroke);

@@ -52,6 +52,8 @@ public:
   //! one that did not reach it, so the first object's history is the
   //! scene's. Empty for an empty scene.
   const std::vector<Stroke>& history() const;
+  //! The strokes undone and not yet redone (the first object's), the next to redo last.
+  const std::vector<Stroke>& undone() const;
 
 private:
   struct Object

@@ -192,6 +192,8 @@ public:
   //! The strokes applied so far, in order; undo() takes the last one off,
   //! redo() puts it back.
   const std::vector<Stroke>& history() const { return history_; }
+  //! The strokes undone and not yet redone, the next to redo last.
+  const std::vector<Stroke>& undone() const { return undone_; }
 
   //! Undo and redo whole strokes; false when there is nothing to undo
   //! (redo). Undoing everything gives back the channels bit for bit.

@@ -92,6 +92,14 @@ std::vector<LabelClass> parse_labels(const std::string& json_text)
   return labels;
 }
 
+std::string labels_json(const std::vector<LabelClass>& labels)
+{
+  nlohmann::json j = nlohmann::json::array();
+  for (const LabelClass& c : labels)
+    j.push_back({{"id", c.id}, {"name", c.name}, {"colour", {c.colour[0], c.colour[1], c.colour[2]}}});
+  return j.dump(1) + "\n";
+}
+
 std::vector<LabelClass> load_labels(const std::string& path)
 {
   const std::string text = read_input_file(path, kMaxLabelTableBytes, "label table");

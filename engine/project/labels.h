@@ -30,6 +30,9 @@ void check_labels(const std::vector<LabelClass>& labels);
 //! \throw InputError naming the entry (0-based) and key.
 std::vector<LabelClass> parse_labels(const std::string& json_text);
 
+//! The labels file of `labels` (parse_labels() reads it back equal).
+std::string labels_json(const std::vector<LabelClass>& labels);
+
 //! Reads and parses a labels file (a regular file of at most
 //! kMaxLabelTableBytes); errors start with the path.
 //! \throw IOError when the file cannot be read; InputError as above.

@@ -220,3 +220,59 @@ def test_subsurface_light_softens_the_shading(tmp_path):
     assert (soft[0, 0] == background).all()
     grey = lambda img: img[on_cube].mean(axis=1)
     assert grey(soft).std() < 0.8 * grey(plain).std(), (grey(soft).std(), grey(plain).std())
+
+
+def label_spot(centre, label):
+    return {"tool": "label", "points": [centre], "radius": 0.15, "falloff": "constant", "channels": {"label": label}}
+
+
+def test_show_label_draws_classes_in_their_colours(tmp_path):
+    labels = tmp_path / "labels.json"
+    labels.write_text(json.dumps([{"id": 3, "name": "lesion", "colour": [0.1, 0.2, 1.0]}]))
+    strokes = [spot([0.5, 0.5, 1.0]), label_spot([0.5, 0.5, 1.0], 3)]
+    shown = paint_picture(tmp_path, strokes, "--show", "label", "--labels", str(labels))
+    # the class's blue at the centre; around it the surface in its material (grey)
+    c = shown[80, 100]
+    assert c[2] > 180 and c[0] < 60 and c[1] < 90, c
+    assert is_grey(shown[80, 135]), shown[80, 135]
+    # the default shows the diffuse paint, not the label
+    assert is_red(paint_picture(tmp_path, strokes)[80, 100])
+    # a label without a class still shows, in a colour of its own
+    other = paint_picture(tmp_path, [label_spot([0.5, 0.5, 1.0], 4)], "--show", "label")
+    assert not is_grey(other[80, 100]) and is_grey(other[80, 135]), other[80, 100]
+
+
+def test_show_scalar_channels_through_a_colour_map(tmp_path):
+    strokes = [{"tool": "paint", "points": [[0.5, 0.5, 1.0]], "radius": 0.15, "falloff": "constant",
+                "channels": {"roughness": 1.0, "mask": 1.0}}]
+    for channel in ("roughness", "mask"):
+        img = paint_picture(tmp_path, strokes, "--show", channel)
+        centre, beside = img[80, 100], img[80, 135]
+        assert centre[0] > centre[2] and beside[2] > beside[0], (channel, centre, beside)  # yellow over dark blue-green
+
+
+def test_show_needs_a_screenshot_and_a_known_channel(tmp_path):
+    script = tmp_path / "s.json"
+    script.write_text(json.dumps({"strokes": []}))
+    base = [BIN, "paint", write_cube(tmp_path), "--strokes", str(script), "-o", str(tmp_path / "o")]
+    for extra in (["--show", "label"], ["--screenshot", str(tmp_path / "a.png"), "--show", "labels"]):
+        r = subprocess.run(base + extra, capture_output=True, text=True, timeout=600)
+        assert r.returncode == 2 and len(r.stderr.splitlines()) == 1, r.stderr
+
+
+@pytest.mark.parametrize("display", [None, ":97"])
+def test_without_a_display_view_and_screenshot_say_so(tmp_path, display):
+    env = dict(os.environ)
+    env.pop("DISPLAY", None)
+    if display:
+        env["DISPLAY"] = display  # a display nobody serves
+    script = tmp_path / "s.json"
+    script.write_text(json.dumps({"strokes": []}))
+    cube = write_cube(tmp_path)
+    for args in (["paint", cube, "--strokes", str(script), "-o", str(tmp_path / "o"),
+                  "--screenshot", str(tmp_path / "a.png")], ["view", cube]):
+        r = subprocess.run([BIN, *args], capture_output=True, text=True, timeout=600, env=env)
+        assert r.returncode == 3, (args[0], r.returncode, r.stderr)
+        (line,) = r.stderr.splitlines()
+        assert "xvfb-run" in line and "DISPLAY" in line
+    assert not (tmp_path / "a.png").exists()

@@ -22,14 +22,14 @@ CUBE = os.path.join(os.environ["MESHPAINT_SOURCE_DIR"], "tests", "support", "cub
 SIZE = (400, 300)
 
 
-def open_view(tmp_path, level=4, share=True):
+def open_view(tmp_path, level=4, share=True, mesh=CUBE):
     view = meshpaint.vtkPaintView()
     view.SetShareArrays(share)
     view.SetLevel(level)
     view.SetSize(*SIZE)
     view.OffScreenOn()
     view.SetSaveDirectory(str(tmp_path / "session"))
-    assert view.LoadMesh(CUBE), view.GetLastError()
+    assert view.LoadMesh(str(mesh)), view.GetLastError()
     assert view.Initialize(), view.GetLastError()
     return view
 
@@ -130,11 +130,11 @@ def test_recorded_session_replays_to_the_same_bits(tmp_path, share):
     assert ((diffuse[:, 2] > 0.8) & (diffuse[:, 0] < 0.2)).any()
 
 
-def save_and_replay(view, tmp_path):
+def save_and_replay(view, tmp_path, mesh=CUBE):
     """Saves the session, replays its recording headless; both surfaces' arrays."""
     key(view, "s", ctrl=True)
     session, replay = tmp_path / "session", tmp_path / "replay"
-    r = subprocess.run([BIN, "paint", CUBE, "--strokes", str(session / "strokes.json"), "-o", str(replay)],
+    r = subprocess.run([BIN, "paint", str(mesh), "--strokes", str(session / "strokes.json"), "-o", str(replay)],
                        capture_output=True, text=True, timeout=600)
     assert r.returncode == 0, r.stderr
     return arrays(read_vtp(session / "surface.vtp")), arrays(read_vtp(replay / "surface.vtp"))
@@ -381,3 +381,63 @@ def test_brush_spaces_from_the_window_replay(tmp_path):
     assert "camera" in script["strokes"][1]
     for name in live:
         assert live[name].tobytes() == again[name].tobytes(), name
+
+
+def inward_cube(tmp_path):
+    """The test cube with every face wound the other way (normals inwards)."""
+    lines = open(CUBE).read().splitlines()
+    out = [" ".join(["f"] + ln.split()[1:][::-1]) if ln.startswith("f ") else ln for ln in lines]
+    path = tmp_path / "inward.obj"
+    path.write_text("\n".join(out) + "\n")
+    return path
+
+
+@pytest.mark.parametrize("space", ["object", "tangent", "screen"])
+def test_drags_paint_on_inward_wound_surfaces(tmp_path, space):
+    mesh = inward_cube(tmp_path)
+    view = open_view(tmp_path, mesh=mesh)
+    assert view.PickObject(200, 150) == 0  # the eye sees the inside of its faces: still the surface
+    for _ in range(["object", "tangent", "screen"].index(space)):
+        key(view, "p")
+    drag(view, line(150, 120, 260, 180, 8))
+    (stroke,) = json.loads(view.GetRecording())["strokes"]
+    assert stroke.get("space", "object") == space
+    assert len(stroke["points"]) >= 5  # it went on with the drag, no silhouette
+    live, again = save_and_replay(view, tmp_path, mesh)
+    diffuse = live["diffuse"]
+    assert ((diffuse[:, 0] > 0.8) & (diffuse[:, 1] < 0.2)).sum() > 10
+    for name in live:
+        assert live[name].tobytes() == again[name].tobytes(), name
+
+
+def window_pixels(view):
+    view.Render()
+    grab = vtk.vtkWindowToImageFilter()
+    grab.SetInput(view.GetRenderWindow())
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(int)
+
+
+def test_the_window_shows_labels_in_their_class_colours(tmp_path):
+    view = open_view(tmp_path)
+    assert view.AddLabelClass(3, "lesion", 0.1, 0.2, 1.0), view.GetLastError()
+    assert not view.AddLabelClass(4, "lesion", 1, 1, 1)  # names are unique
+    key(view, "t", shift=True)  # the label tool
+    key(view, "3")
+    drag(view, line(150, 120, 260, 180))
+    (stroke,) = json.loads(view.GetRecording())["strokes"]
+    assert stroke["tool"] == "label" and stroke["channels"]["label"] == 3
+
+    def blue(rgb):
+        return ((rgb[:, 2] > 180) & (rgb[:, 0] < 60) & (rgb[:, 1] < 90)).sum()
+
+    assert blue(window_pixels(view)) == 0  # the materials: labels do not show
+    key(view, "v")
+    assert view.GetShownChannel() == "label"
+    assert blue(window_pixels(view)) > 200
+    view.RemoveLabelClass(3)  # without its class the label keeps a colour of its own, not the class's
+    assert blue(window_pixels(view)) == 0
+    key(view, "V")
+    assert view.GetShownChannel() == "diffuse"
+    assert view.SetShownChannel("roughness") and not view.SetShownChannel("nothing")

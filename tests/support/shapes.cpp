@@ -2,6 +2,7 @@
 
 #include <cmath>      // for std::cos, std::sin
 #include <filesystem> // for std::filesystem::exists
+#include <iterator>   // for std::make_reverse_iterator
 #include <map>        // for std::map
 #include <stdexcept>  // for std::invalid_argument
 
@@ -205,6 +206,16 @@ BaseMesh flat_grid(int n)
     for (int x = 0; x < n; ++x)
       faces.push_back({y * (n + 1) + x, y * (n + 1) + x + 1, (y + 1) * (n + 1) + x + 1, (y + 1) * (n + 1) + x});
   return make_base_mesh(pts, faces, "flat_grid");
+}
+
+BaseMesh wound_inwards(const BaseMesh& mesh)
+{
+  std::vector<std::vector<int>> faces;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    const auto first = mesh.face_vertices.begin() + mesh.face_offsets[f];
+    faces.emplace_back(std::make_reverse_iterator(first + mesh.face_sizes[f]), std::make_reverse_iterator(first));
+  }
+  return make_base_mesh(mesh.points, faces, mesh.name + "_inwards");
 }
 
 std::vector<std::string> shape_names()

@@ -34,6 +34,10 @@ BaseMesh flat_grid(int n);
 //! deterministic radial noise of relative amplitude `noise`.
 BaseMesh noisy_sphere(int n, float noise);
 
+//! `mesh` with every face's corners in reverse order: its faces wound
+//! inwards where they were wound outwards (as some scans come).
+BaseMesh wound_inwards(const BaseMesh& mesh);
+
 //! Every shape above, by name.
 std::vector<std::string> shape_names();
 BaseMesh shape(const std::string& name);

@@ -1,0 +1,301 @@
+// The studio driven by real Qt mouse and key events under xvfb-run: drags
+// paint on meshes wound either way, a label class chosen in its list paints
+// its id in its colour, the history list undoes, and a saved session
+// replays to the same bits with `meshpaint paint`.
+
+#include "BrushSettings.h"
+#include "FitDialog.h"
+#include "HistoryPanel.h"
+#include "LabelPanel.h"
+#include "Studio.h"
+#include "StudioWindow.h"
+#include "vtkPaintView.h"
+
+#include "paint/paint_scene.h"
+#include "paint/paint_surface.h"
+
+#include <QApplication>             // for QApplication
+#include <QFile>                    // for QFile
+#include <QImage>                   // for QImage
+#include <QListWidget>              // for QListWidget
+#include <QMouseEvent>              // for QMouseEvent
+#include <QProcess>                 // for QProcess
+#include <QPushButton>              // for QPushButton
+#include <QTableWidget>             // for QTableWidget
+#include <QTemporaryDir>            // for QTemporaryDir
+#include <QTest>                    // for QTest
+#include <QVTKOpenGLNativeWidget.h> // for QVTKOpenGLNativeWidget
+
+#include <vtkDataArray.h>          // for vtkDataArray
+#include <vtkNew.h>                // for vtkNew
+#include <vtkPointData.h>          // for vtkPointData
+#include <vtkRenderWindow.h>       // for vtkRenderWindow
+#include <vtkPolyData.h>           // for vtkPolyData
+#include <vtkSmartPointer.h>       // for vtkSmartPointer
+#include <vtkXMLPolyDataReader.h>  // for vtkXMLPolyDataReader
+
+#include <cstring> // for std::memcmp
+#include <memory>  // for std::unique_ptr
+
+using meshpaint::studio::StudioWindow;
+
+namespace {
+
+const QString kCube = QString(MESHPAINT_SOURCE_DIR) + "/tests/support/cube.obj";
+
+//! The test cube with its faces wound the other way, written into `dir`.
+QString inward_cube(const QTemporaryDir& dir)
+{
+  QFile in(kCube);
+  in.open(QIODevice::ReadOnly);
+  QString out;
+  for (const QString& line : QString(in.readAll()).split('\n')) {
+    QStringList parts = line.split(' ', Qt::SkipEmptyParts);
+    if (!parts.isEmpty() && parts[0] == "f")
+      std::reverse(parts.begin() + 1, parts.end());
+    out += parts.join(' ') + "\n";
+  }
+  const QString path = dir.filePath("inward.obj");
+  QFile f(path);
+  f.open(QIODevice::WriteOnly);
+  f.write(out.toUtf8());
+  return path;
+}
+
+//! A studio on `mesh` at level 4, shown and exposed, its brush twice the
+//! texel spacing (a dab with no texel within its radius is off the surface).
+std::unique_ptr<StudioWindow> open_studio(vtkPaintView* view, const QString& mesh, const QString& save_dir)
+{
+  view->SetLevel(4);
+  view->SetSaveDirectory(save_dir.toStdString().c_str());
+  if (!view->LoadMesh(mesh.toStdString().c_str()))
+    qFatal("cannot load %s: %s", qPrintable(mesh), view->GetLastError());
+  auto window = std::make_unique<StudioWindow>(view);
+  if (!window->ready())
+    qFatal("no studio: %s", qPrintable(window->error()));
+  window->resize(1200, 800);
+  window->show();
+  QApplication::setActiveWindow(window.get()); // no window manager: shortcuts need an active window
+  if (!QTest::qWaitForWindowExposed(window.get()))
+    qFatal("the window was not exposed");
+  QTest::qWait(50);
+  for (int k = 0; k < 3; ++k)
+    QTest::keyClick(window->render_widget(), Qt::Key_BracketRight);
+  return window;
+}
+
+void mouse(QWidget* w, QEvent::Type type, const QPoint& at, Qt::MouseButton button, Qt::MouseButtons held)
+{
+  QMouseEvent e(type, at, w->mapToGlobal(at), button, held, Qt::NoModifier);
+  QApplication::sendEvent(w, &e);
+}
+
+//! A left-drag across the widget, from `from` to `to` (fractions of its size).
+void drag(QWidget* w, QPointF from, QPointF to, int steps = 10)
+{
+  QTest::qWait(20); // the item buffer is captured at rest
+  const auto at = [&](double t) {
+    return QPoint(int(w->width() * (from.x() + t * (to.x() - from.x()))),
+                  int(w->height() * (from.y() + t * (to.y() - from.y()))));
+  };
+  mouse(w, QEvent::MouseMove, at(0), Qt::NoButton, Qt::NoButton);
+  mouse(w, QEvent::MouseButtonPress, at(0), Qt::LeftButton, Qt::LeftButton);
+  for (int k = 1; k <= steps; ++k) {
+    mouse(w, QEvent::MouseMove, at(double(k) / steps), Qt::NoButton, Qt::LeftButton);
+    QApplication::processEvents();
+  }
+  mouse(w, QEvent::MouseButtonRelease, at(1), Qt::LeftButton, Qt::NoButton);
+  QApplication::processEvents();
+}
+
+std::size_t red_texels(vtkPaintView* view)
+{
+  std::size_t n = 0;
+  for (const meshpaint::Float4& d : view->GetScene().surface(0).read_channels().diffuse)
+    n += d[0] > 0.8f && d[1] < 0.2f;
+  return n;
+}
+
+//! Pixels of the view close to `colour` (within 40 per channel).
+int pixels_like(StudioWindow& w, const QColor& colour)
+{
+  const QImage image = w.render_widget()->grabFramebuffer();
+  int n = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      const QColor c = image.pixelColor(x, y);
+      n += std::abs(c.red() - colour.red()) < 40 && std::abs(c.green() - colour.green()) < 40 &&
+           std::abs(c.blue() - colour.blue()) < 40;
+    }
+  return n;
+}
+
+vtkSmartPointer<vtkPolyData> read_vtp(const QString& path)
+{
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName(path.toStdString().c_str());
+  reader->Update();
+  return reader->GetOutput();
+}
+
+} // namespace
+
+class StudioTest : public QObject
+{
+  Q_OBJECT
+
+private Q_SLOTS:
+  void drag_paints_on_meshes_wound_either_way()
+  {
+    QTemporaryDir dir;
+    for (const QString& mesh : {kCube, inward_cube(dir)}) {
+      vtkNew<vtkPaintView> view;
+      auto w = open_studio(view, mesh, dir.filePath("session"));
+      drag(w->render_widget(), {0.4, 0.45}, {0.6, 0.55});
+      QCOMPARE(int(view->GetScene().history().size()), 1);
+      QVERIFY2(view->GetScene().history()[0].points.size() >= 5, qPrintable(mesh)); // went on with the drag
+      QVERIFY2(red_texels(view) > 5, qPrintable(mesh));
+    }
+  }
+
+  void a_label_class_chosen_in_the_list_paints_its_id_in_its_colour()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("session"));
+    QVERIFY(view->AddLabelClass(2, "bone", 0.9, 0.9, 0.2));
+    QVERIFY(view->AddLabelClass(5, "lesion", 0.1, 0.2, 1.0));
+    QTableWidget* table = w->label_panel()->table();
+    QCOMPARE(table->rowCount(), 2);
+    const QColor blue = QColor::fromRgbF(0.1, 0.2, 1.0);
+    QCOMPARE(pixels_like(*w, blue), 0);
+    // Choose "lesion" in the list with the mouse.
+    const QRect cell = table->visualItemRect(table->item(1, 2));
+    QTest::mouseClick(table->viewport(), Qt::LeftButton, Qt::NoModifier, cell.center());
+    QCOMPARE(QString::fromStdString(view->GetBrush()->tool()), QString("label"));
+    QCOMPARE(view->GetBrush()->label(), 5);
+    QCOMPARE(QString(view->GetShownChannel()), QString("label"));
+    drag(w->render_widget(), {0.4, 0.45}, {0.6, 0.55});
+    std::size_t fives = 0;
+    for (const meshpaint::Float4& m : view->GetScene().surface(0).read_channels().material)
+      fives += m[2] == 5.f;
+    QVERIFY(fives > 5);
+    // The live area per class: the painted class has some, the other none.
+    QVERIFY(table->item(1, 4)->text().toDouble() > 0.0);
+    QCOMPARE(table->item(0, 4)->text().toDouble(), 0.0);
+    view->Render();
+    QVERIFY(pixels_like(*w, blue) > 200);
+    // Hidden, the class shows as unlabelled surface.
+    QTableWidgetItem* shown = table->item(1, 0);
+    QTest::mouseClick(table->viewport(), Qt::LeftButton, Qt::NoModifier, table->visualItemRect(shown).center());
+    shown->setCheckState(Qt::Unchecked); // the check box itself, as a click on it does
+    QVERIFY(!view->GetLabelClassVisible(5));
+    QCOMPARE(pixels_like(*w, blue), 0);
+  }
+
+  void the_history_list_undoes_and_redoes()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("session"));
+    drag(w->render_widget(), {0.35, 0.4}, {0.5, 0.45});
+    QTest::keyClick(w->render_widget(), Qt::Key_6); // the blue swatch, through the window's keys
+    drag(w->render_widget(), {0.5, 0.55}, {0.65, 0.6});
+    QListWidget* list = w->history_panel()->list();
+    QCOMPARE(list->count(), 3); // unpainted, stroke 1, stroke 2
+    const std::size_t both = red_texels(view);
+    QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::NoModifier, list->visualItemRect(list->item(0)).center());
+    QCOMPARE(int(view->GetScene().history().size()), 0);
+    QCOMPARE(red_texels(view), std::size_t(0));
+    QCOMPARE(list->count(), 3); // the undone strokes stay listed, to redo
+    QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::NoModifier, list->visualItemRect(list->item(2)).center());
+    QCOMPARE(int(view->GetScene().history().size()), 2);
+    QCOMPARE(red_texels(view), both);
+    QTest::keyClick(w->render_widget(), Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(int(view->GetScene().history().size()), 1);
+  }
+
+  void a_saved_session_reopens_and_replays_to_the_same_bits()
+  {
+    QTemporaryDir dir;
+    const QString session = dir.filePath("session");
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, session);
+    drag(w->render_widget(), {0.35, 0.4}, {0.6, 0.55});
+    QTest::keyClick(w->render_widget(), Qt::Key_T, Qt::ShiftModifier); // the label tool
+    QTest::keyClick(w->render_widget(), Qt::Key_3);
+    drag(w->render_widget(), {0.45, 0.6}, {0.55, 0.35});
+    QTest::keyClick(w->render_widget(), Qt::Key_S, Qt::ControlModifier); // save: strokes.json, surface.vtp
+    QVERIFY(QFile::exists(session + "/strokes.json"));
+    const QString project = dir.filePath("cube.meshpaint");
+    QVERIFY(w->save_project(project));
+    QProcess paint;
+    paint.start(MESHPAINT_BIN, {"paint", kCube, "--strokes", session + "/strokes.json", "-o", dir.filePath("replay"),
+                                "--quiet"});
+    QVERIFY(paint.waitForFinished(600000));
+    QCOMPARE(paint.exitCode(), 0);
+    const auto live = read_vtp(session + "/surface.vtp"), again = read_vtp(dir.filePath("replay/surface.vtp"));
+    for (const char* name : {"diffuse", "label", "specular", "roughness", "displacement", "mask"}) {
+      vtkDataArray *a = live->GetPointData()->GetArray(name), *b = again->GetPointData()->GetArray(name);
+      QVERIFY2(a && b && a->GetDataSize() == b->GetDataSize(), name);
+      QVERIFY2(std::memcmp(a->GetVoidPointer(0), b->GetVoidPointer(0), std::size_t(a->GetDataSize()) * 4) == 0, name);
+    }
+    // Reopened, the project has the painted channels.
+    const std::vector<meshpaint::Float4> before = view->GetScene().surface(0).read_channels().diffuse;
+    QVERIFY(w->open_path(project));
+    const std::vector<meshpaint::Float4> after = view->GetScene().surface(0).read_channels().diffuse;
+    QCOMPARE(after.size(), before.size());
+    QVERIFY(std::memcmp(after.data(), before.data(), before.size() * sizeof(meshpaint::Float4)) == 0);
+  }
+
+  void q_closes_the_window()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("session"));
+    QTest::keyClick(w->render_widget(), Qt::Key_Q);
+    QTRY_VERIFY(!w->isVisible());
+  }
+
+  void the_fit_dialog_runs_and_cancels()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("session"));
+    w->set_program(MESHPAINT_BIN);
+    // A fit of the bunny scan takes seconds: Cancel stops it, and nothing is written.
+    const QString bunny = QString(MESHPAINT_SOURCE_DIR) + "/data/scans/bunny00.off";
+    if (QFile::exists(bunny)) {
+      bool finished = false, fitted = true;
+      meshpaint::studio::FitDialog dialog(MESHPAINT_BIN, bunny, dir.filePath("bunny.meshpaint"), [&](bool ok) {
+        finished = true;
+        fitted = ok;
+      });
+      dialog.show();
+      dialog.start();
+      QVERIFY(dialog.running());
+      QTest::mouseClick(dialog.findChild<QPushButton*>("cancel"), Qt::LeftButton);
+      QTRY_VERIFY_WITH_TIMEOUT(finished, 10000);
+      QVERIFY(!fitted && !dialog.running());
+      QVERIFY(!QFile::exists(dir.filePath("bunny.meshpaint")));
+    }
+    // The cube fits in a moment; the project opens in the window when done.
+    const QString out = dir.filePath("cube.meshpaint");
+    meshpaint::studio::FitDialog* dialog = w->fit_scan(kCube, out);
+    QTRY_VERIFY_WITH_TIMEOUT(!dialog->running(), 60000);
+    QVERIFY2(QFile::exists(out), qPrintable(dialog->log()));
+    QTRY_VERIFY(view->GetProject() != nullptr);
+    QVERIFY(dialog->log().contains("saved"));
+  }
+};
+
+int main(int argc, char** argv)
+{
+  meshpaint::studio::prepare_qt();
+  QApplication app(argc, argv);
+  app.setOrganizationName("meshpaint-test"); // recent files apart from a user's
+  StudioTest test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "studio_test.moc"
