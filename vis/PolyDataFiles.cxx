@@ -13,7 +13,7 @@
 #include <vtkXMLPolyDataReader.h> // for vtkXMLPolyDataReader
 
 #include <cmath>      // for std::isfinite
-#include <cstdlib>    // for std::strtod
+#include <cstdlib>    // for std::strtod, std::getenv
 #include <filesystem> // for std::filesystem::file_size, path
 #include <fstream>    // for std::ifstream
 #include <regex>      // for std::regex, std::sregex_iterator
@@ -64,6 +64,8 @@ public:
   {
     if (first.empty() && text)
       first = text;
+    if (passed_on && text)
+      passed_on->DisplayText(text);
   }
 
   //! The first message's text, without VTK's "ERROR: In FILE, line N" and
@@ -83,6 +85,9 @@ public:
   }
 
   std::string first;
+  //! Where the messages also go when MESHPAINT_LIBRARY_MESSAGES is 1 (for
+  //! looking into a failure, as the command line documents); else null.
+  vtkOutputWindow* passed_on = nullptr;
 };
 vtkStandardNewMacro(KeptVtkMessages);
 
@@ -93,8 +98,12 @@ public:
   VtkMessagesKept() : previous_(vtkOutputWindow::GetInstance()), verbosity_(vtkLogger::GetCurrentVerbosityCutoff())
   {
     kept = vtkSmartPointer<KeptVtkMessages>::New();
+    const char* through = std::getenv("MESHPAINT_LIBRARY_MESSAGES");
     vtkOutputWindow::SetInstance(kept);
-    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+    if (through && std::string(through) == "1")
+      kept->passed_on = previous_; // printed through VTK's log, so that stays on
+    else
+      vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   }
   ~VtkMessagesKept()
   {
