@@ -269,21 +269,28 @@ std::vector<std::string> ImportReport::lines() const
 
 std::vector<std::string> ImportReport::step_lines() const
 {
+  // "1 face", "2 faces": the count and its noun in agreement.
+  const auto count = [](std::size_t n, const std::string& one, const std::string& many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+  };
   std::vector<std::string> out;
   if (vertices_welded) {
     std::ostringstream t;
     t << weld_tolerance;
-    out.push_back("welded " + std::to_string(vertices_welded) + " coincident vertices (within " + t.str() +
-                  "; --no-weld keeps them)");
+    out.push_back("welded " + count(vertices_welded, "coincident vertex", "coincident vertices") + " (within " +
+                  t.str() + "; --no-weld keeps them)");
   }
   if (faces_flipped)
-    out.push_back("turned " + std::to_string(faces_flipped) + " faces to agree with their neighbours");
+    out.push_back("turned " + count(faces_flipped, "face", "faces") + " to agree with their neighbours");
   if (components_turned_outward)
-    out.push_back("turned " + std::to_string(components_turned_outward) +
-                  " closed components wound inwards outward");
+    out.push_back("turned " +
+                  count(components_turned_outward, "closed component wound inwards", "closed components wound inwards") +
+                  " outward");
   if (nonorientable_components)
-    out.push_back("cut " + std::to_string(nonorientable_components) + " non-orientable or non-manifold components "
-                  "open at " + std::to_string(vertices_cut) + " vertex copies to orient them");
+    out.push_back("cut " +
+                  count(nonorientable_components, "non-orientable or non-manifold component",
+                        "non-orientable or non-manifold components") +
+                  " open at " + count(vertices_cut, "vertex copy", "vertex copies") + " to orient them");
   if (coloured)
     out.push_back("took the file's colours as the diffuse channel");
   return out;

@@ -212,7 +212,7 @@ def test_an_inward_wound_closed_scan_gets_outward_limit_normals(tmp_path):
     out = tmp_path / "limit.vtp"
     r = run("subdivide", str(inward), "--level", "1", "--limit", "-o", str(out))
     assert r.returncode == 0, r.stderr
-    assert "turned 1 closed components wound inwards outward" in r.stderr
+    assert "turned 1 closed component wound inwards outward" in r.stderr
     poly = read_vtp(out)
     assert signed_volume(poly) > 0
     pts = numpy_support.vtk_to_numpy(poly.GetPoints().GetData())
