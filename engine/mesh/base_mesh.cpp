@@ -337,7 +337,14 @@ BaseMesh build(const std::vector<Vec3>& points, const std::vector<std::vector<in
     if (!importer.problem_.empty())
       throw InputError(where + importer.problem_);
   }
-  return finish(om, importer.report, name, where, colours, importer.copied_from);
+  BaseMesh mesh = finish(om, importer.report, name, where, colours, importer.copied_from);
+  if (!(mesh.diagonal() >= kMinDiagonal)) {
+    std::ostringstream size;
+    size << mesh.diagonal();
+    throw InputError(where + "is only " + size.str() + " across: its limit normals would underflow single precision; "
+                     "scale the mesh up (at least 1e-12 across)");
+  }
+  return mesh;
 }
 
 //! Whether an OFF file is binary: OpenMesh's rule, BINARY on the first line.

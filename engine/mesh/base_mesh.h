@@ -61,6 +61,11 @@ struct BaseMesh
 //! tangents, then their squared length) overflow single precision near 1e19.
 constexpr float kMaxCoordinate = 1e15f;
 
+//! Smallest bounding-box diagonal accepted: below it the tangents' cross
+//! products at the finest levels underflow single precision, and limit
+//! normals become zero (1e-22 across already at level 3).
+constexpr double kMinDiagonal = 1e-12;
+
 //! Builds a base mesh from points and faces, checking and repairing as
 //! load_mesh does.
 //! Faces with fewer than three distinct vertices are dropped and counted.

@@ -73,7 +73,7 @@ def test_generated_bad_input_gives_one_line_and_exit_2(case, tmp_path):
     check_case(case, case["dir"], tmp_path)
 
 
-@pytest.mark.parametrize("name", ["zero-area-face", "high-valence", "tiny-coordinates"])
+@pytest.mark.parametrize("name", ["zero-area-face", "high-valence"])
 def test_awkward_meshes_give_finite_limit_surfaces(name, tmp_path):
     out = tmp_path / (name + ".obj")
     r = run("subdivide", os.path.join(BAD, name + ".obj"), "--level", "3", "--limit", "-o", str(out))
