@@ -2,10 +2,13 @@
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "core/format.h"  // for meshpaint::lower_extension
+#include "mesh/base_mesh.h" // for meshpaint::readable_mesh_extensions
 #include "PolyDataFiles.h"
 #include "project/imported_colours.h"
 #include "project/project_surface.h"
 
+#include <algorithm>    // for std::find
 #include <filesystem>   // for std::filesystem
 #include <iostream>     // for std::cerr
 #include <new>          // for std::bad_alloc
@@ -82,6 +85,11 @@ ImportOptions import_options(const Args& args)
 
 BaseMesh load_reported(const std::string& path, const ImportOptions& options)
 {
+  const auto& exts = readable_mesh_extensions();
+  if (!is_polydata_path(path) && std::find(exts.begin(), exts.end(), lower_extension(path)) == exts.end() &&
+      std::filesystem::is_regular_file(path))
+    throw InputError("cannot read '" + path + "': unknown mesh format '" + lower_extension(path) +
+                     "' (readable: .obj .off .ply .stl .vtp .vtk)");
   BaseMesh mesh = is_polydata_path(path) ? load_polydata_mesh(path, options) : load_mesh(path, options);
   for (const std::string& line : mesh.report.lines())
     std::cerr << "meshpaint: " << path << ": repaired: " << line << "\n";

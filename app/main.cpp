@@ -60,7 +60,7 @@ commands:
   help [COMMAND]                      this text, or one command's (also COMMAND --help, -h)
   --version                           the version of meshpaint
 
-MESH: a mesh file (.obj .off .ply .stl) or a project (.meshpaint) for info, subdivide,
+MESH: a mesh file (.obj .off .ply .stl .vtp .vtk) or a project (.meshpaint) for info, subdivide,
 paint, view and stats
 options of demo, info, subdivide, paint, view, stats and bench: --device SEL (gpu, cpu, P:D
 or part of a name), --storage buffer|image

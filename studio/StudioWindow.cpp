@@ -101,13 +101,13 @@ void StudioWindow::build_menus()
   QMenu* file = menuBar()->addMenu("&File");
   file->addAction("&Open mesh or project...", [this] {
     const QString path = QFileDialog::getOpenFileName(this, "Open a mesh or a project", QString(),
-                                                      "Meshes and projects (*.obj *.off *.ply *.stl *.meshpaint);;All files (*)");
+                                                      "Meshes and projects (*.obj *.off *.ply *.stl *.vtp *.vtk *.meshpaint);;All files (*)");
     if (!path.isEmpty())
       open_path(path);
   }, QKeySequence(QKeySequence::Open));
   file->addAction("&Fit a scan...", [this] {
     const QString scan = QFileDialog::getOpenFileName(this, "Scan to fit", QString(),
-                                                      "Meshes (*.obj *.off *.ply *.stl);;All files (*)");
+                                                      "Meshes (*.obj *.off *.ply *.stl *.vtp *.vtk);;All files (*)");
     if (scan.isEmpty())
       return;
     const QString out = QFileDialog::getSaveFileName(this, "Project to write", QString(), "Projects (*.meshpaint)");
