@@ -1,5 +1,7 @@
 #include "mesh/file_census.h"
 
+#include "core/format.h" // for meshpaint::excerpt
+
 #include <algorithm> // for std::max, std::all_of, std::none_of
 #include <cctype>    // for std::tolower, std::isprint, std::isspace
 #include <cerrno>    // for errno, ERANGE
@@ -504,6 +506,15 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         for (std::size_t k = 3; c.problem.empty() && w.size() >= 6 && k < w.size(); ++k)
           if (!unit_number(w[k]))
             c.problem = "line " + std::to_string(number) + ": colour " + shown(w[k]) + " is outside 0-1";
+      } else if (keyword == "vc") {
+        // OpenMesh takes vertex colours from these lines too, scaled by 255 into a byte.
+        check_numbers(line.substr(line.find("vc") + 2), number, c);
+        if (c.nonfinite_line >= 0)
+          break;
+        const std::vector<std::string> w = numeric_words(line.substr(line.find("vc") + 2), number, kFloatWord, c);
+        for (std::size_t k = 0; c.problem.empty() && k < w.size(); ++k)
+          if (!unit_number(w[k]))
+            c.problem = "line " + std::to_string(number) + ": colour " + shown(w[k]) + " is outside 0-1";
       }
     }
   } else if (ext == ".off") {
@@ -511,6 +522,14 @@ FileCensus take_census(const std::string& path, const std::string& ext)
     // OFF, BINARY on the first line.
     std::getline(in, line);
     c.binary = true;
+    // OpenMesh reads other keywords on that line as options (colours,
+    // normals, ...) with a layout of their own: only its own header is read.
+    if (!line.empty() && line.back() == '\r')
+      line.pop_back();
+    if (line != "OFF BINARY") {
+      c.problem = "a binary OFF file must start with the line 'OFF BINARY', not '" + excerpt(line) + "'";
+      return c;
+    }
     std::int32_t counts[3] = {0, 0, 0};
     if (!in.read(reinterpret_cast<char*>(counts), sizeof counts))
       c.problem = "the binary OFF header is truncated";
