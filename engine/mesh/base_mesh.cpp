@@ -298,16 +298,7 @@ std::vector<std::string> ImportReport::step_lines() const
 
 double BaseMesh::diagonal() const
 {
-  Vec3 lo = points.front(), hi = points.front();
-  for (const Vec3& p : points)
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = std::min(lo[a], p[a]);
-      hi[a] = std::max(hi[a], p[a]);
-    }
-  double d2 = 0;
-  for (int a = 0; a < 3; ++a)
-    d2 += double(hi[a] - lo[a]) * double(hi[a] - lo[a]);
-  return std::sqrt(d2);
+  return diagonal_of(points);
 }
 
 const std::vector<std::string>& readable_mesh_extensions()

@@ -1,5 +1,8 @@
 #include "mesh/polygon_soup.h"
 
+#include <algorithm> // for std::min, std::max
+#include <cmath>     // for std::sqrt
+
 namespace meshpaint {
 
 void colours_from_faces(PolygonSoup& soup)
@@ -19,6 +22,20 @@ void colours_from_faces(PolygonSoup& soup)
     if (count[v] > 0)
       for (int a = 0; a < 3; ++a)
         soup.colours[v][a] = sum[v][a] / float(count[v]);
+}
+
+double diagonal_of(const std::vector<Vec3>& points)
+{
+  Vec3 lo = points.front(), hi = lo;
+  for (const Vec3& p : points)
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], p[a]);
+      hi[a] = std::max(hi[a], p[a]);
+    }
+  double d2 = 0;
+  for (int a = 0; a < 3; ++a)
+    d2 += double(hi[a] - lo[a]) * double(hi[a] - lo[a]);
+  return std::sqrt(d2);
 }
 
 } // namespace meshpaint

@@ -23,4 +23,7 @@ struct PolygonSoup
 //! each vertex takes the mean of its faces' colours.
 void colours_from_faces(PolygonSoup& soup);
 
+//! Length of the bounding-box diagonal of `points` (at least one).
+double diagonal_of(const std::vector<Vec3>& points);
+
 } // namespace meshpaint

@@ -23,20 +23,6 @@ using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 using Polygon = std::vector<std::size_t>;
 
-double diagonal_of(const std::vector<Vec3>& points)
-{
-  Vec3 lo = points.front(), hi = lo;
-  for (const Vec3& p : points)
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = std::min(lo[a], p[a]);
-      hi[a] = std::max(hi[a], p[a]);
-    }
-  double d2 = 0;
-  for (int a = 0; a < 3; ++a)
-    d2 += double(hi[a] - lo[a]) * double(hi[a] - lo[a]);
-  return std::sqrt(d2);
-}
-
 //! Points within `tolerance` of one another that fall into one grid cell
 //! take that cell's first point, so that CGAL's exact merge joins them.
 std::size_t snap_to_first_in_cell(std::vector<Point>& points, double tolerance)
