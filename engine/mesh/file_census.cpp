@@ -472,6 +472,7 @@ FileCensus take_census(const std::string& path, const std::string& ext)
   if (ext == ".obj") {
     c.declared_faces = 0;
     c.text = true;
+    long vertices = 0, coloured_vertices = 0, colour_lines = 0;
     while (std::getline(in, line) && c.problem.empty()) {
       ++number;
       if (number == 1 && starts_with(line, "\xEF\xBB\xBF"))
@@ -499,6 +500,8 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         if (c.nonfinite_line >= 0)
           break;
         const std::vector<std::string> w = numeric_words(line.substr(line.find('v') + 1), number, kFloatWord, c);
+        ++vertices;
+        coloured_vertices += w.size() >= 6 ? 1 : 0;
         if (c.problem.empty() && w.size() != 3 && w.size() != 4 && w.size() != 6 && w.size() != 7)
           c.problem = "line " + std::to_string(number) + ": a vertex of " + std::to_string(w.size()) +
                       " numbers (x y z, x y z w, or x y z r g b)";
@@ -512,10 +515,22 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         if (c.nonfinite_line >= 0)
           break;
         const std::vector<std::string> w = numeric_words(line.substr(line.find("vc") + 2), number, kFloatWord, c);
+        ++colour_lines;
         for (std::size_t k = 0; c.problem.empty() && k < w.size(); ++k)
           if (!unit_number(w[k]))
             c.problem = "line " + std::to_string(number) + ": colour " + shown(w[k]) + " is outside 0-1";
       }
+    }
+    // OpenMesh gives vertex i the i-th colour it read, from either kind of
+    // line, without a bounds check: fewer colours than vertices read past
+    // its list, and a mix of the two kinds pairs colours with wrong vertices.
+    const long colours = coloured_vertices + colour_lines;
+    if (c.problem.empty() && c.nonfinite_line < 0 && colours > 0) {
+      if (coloured_vertices > 0 && colour_lines > 0)
+        c.problem = "vertex colours given both on 'v' lines and on 'vc' lines";
+      else if (colours != vertices)
+        c.problem = std::to_string(colours) + " vertex colours for " + std::to_string(vertices) +
+                    " vertices: colours must be given for every vertex or none";
     }
   } else if (ext == ".off") {
     // Text OFF goes through read_off_text(); here only OpenMesh's binary
