@@ -299,7 +299,8 @@ void StudioWindow::view_changed()
   if (!brush_)
     return;
   brush_->sync();
-  labels_->sync();
+  if (!busy()) // its areas are measured on the surface, which the work running may be reading
+    labels_->sync();
   history_->sync();
   levels_->sync();
   update_patch_borders();
@@ -523,7 +524,7 @@ void StudioWindow::update_patch_borders()
     actor->SetMapper(mapper);
     actor->PickableOff();
     actor->GetProperty()->SetColor(0.05, 0.15, 0.45);
-    actor->GetProperty()->SetLineWidth(1.5);
+    actor->GetProperty()->SetLineWidth(1.0);
     actor->GetProperty()->LightingOff();
     view_->GetRenderer()->AddActor(actor);
     borders_.push_back(actor);
