@@ -52,8 +52,9 @@ commands:
   bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases] [--quiet]
                                       brush step times as the paper's Table 1, and
                                       smoothing against VTK and OpenMesh
-  bench view [--steps N]              the window's frame times while painting, with and
-                                      without level of detail, and pick latency (needs X)
+  bench view [--steps N] [--studio]   the window's frame times while painting, with and
+                                      without level of detail, and pick latency (needs X);
+                                      --studio: the studio's own frames
   bench fit [--level L] [--max-triangles N] [--json]
                                       fit's time, peak memory and error against scan size
   devices                             the OpenCL devices (for --device / MESHPAINT_DEVICE)

@@ -4,7 +4,6 @@
 #include "commands.h"
 
 #include "ScanTransfer.h"
-#include "SurfaceConversion.h"
 
 #include "core/errors.h"
 #include "core/format.h"
@@ -43,12 +42,7 @@ int transfer_command(const Argv& argv)
   const PaintedSurface painted = open_project_surface(runtime, project, storage)->painted_surface();
   const WeldedSurface reference = reference_surface(runtime, project, storage);
   const TransferReport r = transfer_to_scan(painted, reference, scan, args.flag("--geometry"));
-  if (ext == ".ply")
-    write_scan_ply(scan, out);
-  else {
-    add_label_classes(scan, project.labels);
-    write_vtp(scan, out);
-  }
+  write_transferred_scan(scan, out, project.labels);
   if (!args.flag("--quiet")) {
     const double diagonal = project.mesh.diagonal();
     std::cerr << "meshpaint transfer: " << out << ": " << scan->GetNumberOfPoints() << " scan vertices, "

@@ -14,7 +14,7 @@
 
 #include <vtkNew.h> // for vtkNew
 
-#include <iostream> // for std::cout
+#include <iostream> // for std::cout, std::cerr
 
 namespace meshpaint::cli {
 namespace {
@@ -65,16 +65,33 @@ int view_command(const Argv& argv)
 
   const int lod = args.integer("--lod", -1, 0, level); // absent: automatic
   require_display(); // VTK aborts without one
+  // The flags, else the studio's preferences (a saved device gone since is passed over with a warning).
+  const studio::DeviceChoice saved = studio::preferred_device();
+  std::string device = args.value("--device"), storage = args.value("--storage");
+  std::shared_ptr<Runtime> runtime;
+  if (!args.has("--device") && !saved.device.empty()) {
+    try {
+      runtime = Runtime::open(saved.device);
+      device = saved.device;
+    } catch (const std::exception& e) {
+      std::cerr << "meshpaint view: warning: the preferred device '" << saved.device << "' cannot be opened ("
+                << e.what() << "); using the default\n";
+    }
+  }
+  if (!runtime)
+    runtime = open_device(args); // reports a bad --device like every command
+  if (!args.has("--storage") && (saved.storage == "buffer" || saved.storage == "image"))
+    storage = saved.storage;
   vtkNew<vtkPaintView> view;
   view->SetLevel(level);
   view->SetLodLevel(lod);
-  view->SetDevice(args.value("--device").c_str());
-  view->SetStorage(args.value("--storage").c_str());
+  view->SetDevice(device.c_str());
+  view->SetStorage(storage.c_str());
   view->SetSaveDirectory(args.value("-o", mesh.name + "-session").c_str());
   view->SetSize(picture.width, picture.height);
-  const auto runtime = open_device(args); // reports a bad --device like every command
   if (input.project) { // the project's surface as saved, painted on from here
-    view->SetSurface(open_paint_surface(runtime, chosen_storage(args, *runtime), input, level), mesh.name);
+    const AtlasStorage chosen = storage.empty() ? default_storage(runtime->info()) : parse_storage(storage);
+    view->SetSurface(open_paint_surface(runtime, chosen, input, level), mesh.name);
     view->SetProject(*input.project);
   } else {
     for (const MeshOrProject& in : inputs)

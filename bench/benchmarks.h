@@ -12,6 +12,8 @@ int bench_subdivide(const Args& args);
 int bench_paint(const Args& args);
 //! bench view: the window's frame times while painting.
 int bench_view(const Args& args);
+//! bench view --studio: the studio's own frame times while painting.
+int bench_view_studio(const Args& args);
 //! bench fit: `meshpaint fit`'s time, peak memory and error against scan size.
 int bench_fit(const Args& args);
 

@@ -15,14 +15,15 @@ namespace {
 
 const char* const kUsage = R"(usage: meshpaint bench subdivide MESH [--level L] [--json] [--repeats N] [--quiet]
        meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases] [--quiet]
-       meshpaint bench view [--steps N]
+       meshpaint bench view [--steps N] [--studio]
        meshpaint bench fit [--level L] [--max-triangles N] [--json]
        (the same as meshpaint-bench ...)
 
   subdivide   kernels against OpenSubdiv's CpuEvaluator (level 3)
   paint       brush step times as the paper's Table 1, and smoothing against VTK and OpenMesh
   view        the window's frame times while painting, with and without level of detail,
-              and pick latency (needs X)
+              and pick latency (needs X); --studio: the studio's own frames, its view
+              driven by Qt mouse events
   fit         fit's time, peak memory and error against scan size (noisy refined femur scans)
 
 options: --device SEL (gpu, cpu, P:D or part of a name), --storage buffer|image;
@@ -41,14 +42,14 @@ int bench(const Argv& argv)
     std::cout << "meshpaint-bench " << MESHPAINT_VERSION << "\n";
     return 0;
   }
-  Args args("bench", argv, {"--json", "--phases", "--quiet"}, {"--level", "--repeats", "--steps", "--tool", "--mesh", "--max-triangles", "--device", "--storage"});
+  Args args("bench", argv, {"--json", "--phases", "--quiet", "--studio"}, {"--level", "--repeats", "--steps", "--tool", "--mesh", "--max-triangles", "--device", "--storage"});
   const std::string what = args.positionals().empty() ? "" : args.positionals()[0];
   // One parser for all four; an option of another benchmark is refused.
   const std::map<std::string, std::vector<std::string>> foreign = {
-    {"subdivide", {"--phases", "--steps", "--tool", "--mesh", "--max-triangles"}},
-    {"paint", {"--level", "--repeats", "--max-triangles"}},
+    {"subdivide", {"--phases", "--steps", "--tool", "--mesh", "--max-triangles", "--studio"}},
+    {"paint", {"--level", "--repeats", "--max-triangles", "--studio"}},
     {"view", {"--json", "--phases", "--level", "--repeats", "--tool", "--mesh", "--quiet", "--max-triangles"}},
-    {"fit", {"--phases", "--repeats", "--steps", "--tool", "--mesh", "--quiet"}}};
+    {"fit", {"--phases", "--repeats", "--steps", "--tool", "--mesh", "--quiet", "--studio"}}};
   if (const auto found = foreign.find(what); found != foreign.end())
     for (const std::string& option : found->second)
       if (args.has(option) || args.flag(option))
@@ -58,12 +59,12 @@ int bench(const Argv& argv)
   if (what == "paint")
     return bench_paint(args);
   if (what == "view")
-    return bench_view(args);
+    return args.flag("--studio") ? bench_view_studio(args) : bench_view(args);
   if (what == "fit")
     return bench_fit(args);
   throw InputError("usage: meshpaint bench subdivide MESH [--level L] [--json] [--repeats N] [--quiet] | "
                    "meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases] [--quiet] | "
-                   "meshpaint bench view [--steps N] | meshpaint bench fit [--level L] [--max-triangles N] [--json] "
+                   "meshpaint bench view [--steps N] [--studio] | meshpaint bench fit [--level L] [--max-triangles N] [--json] "
                    "(see meshpaint bench --help)");
 }
 

@@ -1,16 +1,33 @@
 #include "Studio.h"
 
+#include "PreferencesDialog.h"
 #include "StudioWindow.h"
 
 #include "core/errors.h" // for meshpaint::DeviceError
 
 #include <QApplication>           // for QApplication
+#include <QCoreApplication>       // for QCoreApplication::setOrganizationName
 #include <QSurfaceFormat>         // for QSurfaceFormat
 #include <QVTKOpenGLNativeWidget.h> // for QVTKOpenGLNativeWidget::defaultFormat
 
 namespace meshpaint::studio {
 
-void prepare_qt() { QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat()); }
+DeviceChoice preferred_device()
+{
+  prepare_qt();
+  const Preferences p = saved_preferences();
+  return {p.device.toStdString(), p.storage.toStdString()};
+}
+
+void prepare_qt()
+{
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  // The names QSettings files the preferences and recent files under, also before the application exists.
+  if (QCoreApplication::organizationName().isEmpty())
+    QCoreApplication::setOrganizationName("meshpaint");
+  if (QCoreApplication::applicationName().isEmpty())
+    QCoreApplication::setApplicationName("meshpaint");
+}
 
 int run_studio(vtkPaintView* view)
 {

@@ -1,21 +1,37 @@
 // The studio driven by real Qt mouse and key events under xvfb-run: drags
 // paint on meshes wound either way, a label class chosen in its list paints
 // its id in its colour, the history list undoes, and a saved session
-// replays to the same bits with `meshpaint paint`.
+// replays to the same bits with `meshpaint paint`; exports, level changes
+// and the labelled scan run off the interface thread, preferences persist,
+// and a file dropped on the window opens.
 
+#include "BackgroundTask.h"
 #include "BrushSettings.h"
 #include "FitDialog.h"
 #include "HistoryPanel.h"
 #include "LabelPanel.h"
+#include "LevelPanel.h"
+#include "PreferencesDialog.h"
 #include "Studio.h"
 #include "StudioWindow.h"
 #include "vtkPaintView.h"
 
+#include "atlas/atlas.h"
 #include "paint/paint_scene.h"
 #include "paint/paint_surface.h"
 
 #include <QApplication>             // for QApplication
+#include <QCheckBox>                // for QCheckBox
+#include <QComboBox>                // for QComboBox
+#include <QDir>                     // for QDir
+#include <QDragEnterEvent>          // for QDragEnterEvent
+#include <QDropEvent>               // for QDropEvent
 #include <QFile>                    // for QFile
+#include <QMimeData>                // for QMimeData
+#include <QSettings>                // for QSettings
+#include <QSpinBox>                 // for QSpinBox
+#include <QTimer>                   // for QTimer
+#include <QUrl>                     // for QUrl
 #include <QImage>                   // for QImage
 #include <QListWidget>              // for QListWidget
 #include <QMouseEvent>              // for QMouseEvent
@@ -26,7 +42,9 @@
 #include <QTest>                    // for QTest
 #include <QVTKOpenGLNativeWidget.h> // for QVTKOpenGLNativeWidget
 
+#include <vtkCellArray.h>          // for vtkCellArray
 #include <vtkDataArray.h>          // for vtkDataArray
+#include <vtkFieldData.h>          // for vtkFieldData
 #include <vtkNew.h>                // for vtkNew
 #include <vtkPointData.h>          // for vtkPointData
 #include <vtkRenderWindow.h>       // for vtkRenderWindow
@@ -136,6 +154,30 @@ vtkSmartPointer<vtkPolyData> read_vtp(const QString& path)
   reader->SetFileName(path.toStdString().c_str());
   reader->Update();
   return reader->GetOutput();
+}
+
+//! Counts the turns of the event loop while it runs.
+struct LoopTicks
+{
+  LoopTicks()
+  {
+    timer.setInterval(0);
+    QObject::connect(&timer, &QTimer::timeout, [this] { ++ticks; });
+    timer.start();
+  }
+  QTimer timer;
+  int ticks = 0;
+};
+
+//! Runs `meshpaint ARGS`; its exit code.
+int run_meshpaint(const QStringList& args)
+{
+  QProcess p;
+  p.start(MESHPAINT_BIN, args);
+  p.waitForFinished(600000);
+  if (p.exitCode() != 0)
+    qWarning("%s", p.readAllStandardError().constData());
+  return p.exitCode();
 }
 
 } // namespace
@@ -286,6 +328,201 @@ private Q_SLOTS:
     QVERIFY2(QFile::exists(out), qPrintable(dialog->log()));
     QTRY_VERIFY(view->GetProject() != nullptr);
     QVERIFY(dialog->log().contains("saved"));
+  }
+
+  void ctrl_e_exports_off_the_interface_thread()
+  {
+    QTemporaryDir dir;
+    const QString session = dir.filePath("session");
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, session);
+    drag(w->render_widget(), {0.4, 0.45}, {0.6, 0.55});
+    const std::size_t red = red_texels(view);
+    LoopTicks loop;
+    QTest::keyClick(w->render_widget(), Qt::Key_E, Qt::ControlModifier);
+    // Back from the key at once, the export still running: not done in the key's handler.
+    QVERIFY(w->busy());
+    QVERIFY(view->GetLocked());
+    // Meanwhile no stroke starts on the surface (it is being read), and undo is refused.
+    const int cx = w->render_widget()->width() / 2, cy = w->render_widget()->height() / 2;
+    QCOMPARE(view->BeginStroke(cx, cy), 0);
+    QCOMPARE(view->Undo(), 0);
+    QTRY_VERIFY_WITH_TIMEOUT(!w->busy(), 120000);
+    QVERIFY(loop.ticks > 0);
+    QVERIFY(!view->GetLocked());
+    QCOMPARE(int(view->GetScene().history().size()), 1);
+    QCOMPARE(red_texels(view), red);
+    drag(w->render_widget(), {0.3, 0.6}, {0.6, 0.3}); // unlocked again: it paints
+    QCOMPARE(int(view->GetScene().history().size()), 2);
+    // Every file written whole under its name, no temporary left beside them.
+    const QStringList files = QDir(session).entryList(QDir::Files, QDir::Name);
+    for (const char* name : {"model.obj", "model.mtl", "model.gltf", "diffuse.png", "specular.png"})
+      QVERIFY2(files.contains(name), qPrintable(files.join(' ')));
+    for (const QString& f : files)
+      QVERIFY2(!f.contains("tmp") && !f.startsWith('.'), qPrintable(f));
+    // glTF from the menu's path: a binary glTF file.
+    meshpaint::studio::BackgroundTask* task = w->export_gltf(dir.filePath("cube.glb"));
+    QVERIFY(task != nullptr);
+    QVERIFY(w->export_model() == nullptr); // one at a time
+    QTRY_VERIFY_WITH_TIMEOUT(!w->busy(), 120000);
+    QFile glb(dir.filePath("cube.glb"));
+    QVERIFY(glb.open(QIODevice::ReadOnly));
+    QCOMPARE(glb.read(4), QByteArray("glTF"));
+  }
+
+  void the_level_panel_changes_the_level_in_the_background()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("session"));
+    drag(w->render_widget(), {0.4, 0.45}, {0.6, 0.55});
+    QCOMPARE(view->GetLevel(), 4);
+    const vtkIdType faces = view->GetFaceCount();
+    meshpaint::studio::LevelPanel* panel = w->level_panel();
+    // Cancelled, the scene stays as it was.
+    panel->level()->setValue(5);
+    QTest::mouseClick(panel->apply(), Qt::LeftButton);
+    QVERIFY(w->busy());
+    w->task()->cancel();
+    QTRY_VERIFY_WITH_TIMEOUT(!w->busy(), 120000);
+    QCOMPARE(view->GetLevel(), 4);
+    QCOMPARE(view->GetFaceCount(), faces);
+    // Applied: level 3, a quarter of the quads, the stroke painted again on them.
+    panel->level()->setValue(3);
+    QTest::mouseClick(panel->apply(), Qt::LeftButton);
+    QVERIFY(w->busy());
+    QTRY_VERIFY_WITH_TIMEOUT(!w->busy(), 120000);
+    QCOMPARE(view->GetLevel(), 3);
+    QCOMPARE(view->GetFaceCount(), faces / 4);
+    QCOMPARE(int(view->GetScene().history().size()), 1);
+    QVERIFY(red_texels(view) > 0);
+    QCOMPARE(view->GetBrush()->edit_level(), 3);
+    // The edit level from the panel reaches the brush.
+    panel->findChild<QSpinBox*>("edit_level")->setValue(2);
+    QCOMPARE(view->GetBrush()->edit_level(), 2);
+    // Level of detail: "off" draws the painting level while moving.
+    auto* lod = panel->findChild<QComboBox*>("lod");
+    lod->setCurrentIndex(1);
+    Q_EMIT lod->activated(1);
+    QCOMPARE(view->GetLodLevel(), 0);
+    QCOMPARE(view->GetLodLevelInUse(), 3);
+    // Still paints after the change.
+    drag(w->render_widget(), {0.35, 0.6}, {0.6, 0.35});
+    QCOMPARE(int(view->GetScene().history().size()), 2);
+  }
+
+  void patch_borders_show_over_the_surface()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("session"));
+    QTest::qWait(50);
+    const QColor line = QColor::fromRgbF(0.05, 0.15, 0.45);
+    QCOMPARE(pixels_like(*w, line), 0);
+    QVERIFY(w->patch_border_lines() == nullptr);
+    QCheckBox* borders = w->level_panel()->borders();
+    const QPoint box(6, borders->height() / 2); // on the box, not the empty width the layout gives it
+    QTest::mouseClick(borders, Qt::LeftButton, Qt::NoModifier, box);
+    QVERIFY(borders->isChecked());
+    vtkPolyData* lines = w->patch_border_lines();
+    QVERIFY(lines != nullptr);
+    const int n = 1 << (view->GetLevel() - 1);
+    QCOMPARE(lines->GetNumberOfLines(), view->GetFaceCount() / (n * n)); // one loop per patch
+    QCOMPARE(lines->GetLines()->GetCellSize(0), vtkIdType(4 * n + 1));
+    QTest::qWait(50);
+    QVERIFY(pixels_like(*w, line) > 100);
+    QTest::mouseClick(borders, Qt::LeftButton, Qt::NoModifier, box);
+    QVERIFY(w->patch_border_lines() == nullptr);
+  }
+
+  void preferences_persist()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("session"));
+    meshpaint::studio::PreferencesDialog* prefs = w->preferences();
+    QComboBox* storage = prefs->storage();
+    storage->setCurrentIndex(storage->findData("image")); // not the default of a CPU device
+    QComboBox* device = prefs->device();
+    QVERIFY(device->count() >= 2); // the default and at least the device painting now
+    device->setCurrentIndex(1);
+    const QString chosen = device->currentData().toString();
+    prefs->apply();
+    QCOMPARE(QString(view->GetStorage()), QString("image"));
+    QCOMPARE(QString(view->GetDevice()), chosen);
+    QCOMPARE(QSettings().value("storage").toString(), QString("image"));
+    const meshpaint::studio::DeviceChoice saved = meshpaint::studio::preferred_device();
+    QCOMPARE(QString::fromStdString(saved.storage), QString("image"));
+    QCOMPARE(QString::fromStdString(saved.device), chosen);
+    // A dialog opened later shows what was kept; the next surface is made with it.
+    meshpaint::studio::PreferencesDialog again(view);
+    QCOMPARE(again.storage()->currentData().toString(), QString("image"));
+    QVERIFY(w->open_path(inward_cube(dir)));
+    QCOMPARE(int(view->GetScene().surface(0).atlas().storage()), int(meshpaint::AtlasStorage::Image));
+    meshpaint::studio::save_preferences({});
+    QCOMPARE(QSettings().value("storage").toString(), QString());
+  }
+
+  void a_file_dropped_on_the_window_opens()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("session"));
+    const QString path = inward_cube(dir);
+    QMimeData data;
+    data.setUrls({QUrl::fromLocalFile(path)});
+    const QPoint at = w->render_widget()->geometry().center();
+    QDragEnterEvent enter(at, Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(w.get(), &enter);
+    QVERIFY(enter.isAccepted());
+    QDropEvent drop(at, Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(w.get(), &drop);
+    QVERIFY(drop.isAccepted());
+    QCOMPARE(QString(view->GetObjectName(0)), QString("inward"));
+    QVERIFY(w->windowTitle().contains("inward.obj"));
+    // Something else than files: not taken.
+    QMimeData text;
+    text.setText("not a file");
+    QDragEnterEvent other(at, Qt::CopyAction, &text, Qt::LeftButton, Qt::NoModifier);
+    other.setAccepted(false);
+    QApplication::sendEvent(w.get(), &other);
+    QVERIFY(!other.isAccepted());
+  }
+
+  void the_labelled_scan_is_written_as_transfer_writes_it()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("session"));
+    QVERIFY(view->AddLabelClass(3, "defect", 1, 0.5, 0));
+    QTest::keyClick(w->render_widget(), Qt::Key_T, Qt::ShiftModifier); // the label tool
+    QTest::keyClick(w->render_widget(), Qt::Key_3);
+    drag(w->render_widget(), {0.35, 0.45}, {0.65, 0.55});
+    // A scan with many vertices: the cube subdivided.
+    const QString scan = dir.filePath("scan.ply");
+    QCOMPARE(run_meshpaint({"subdivide", kCube, "--level", "4", "--quiet", "-o", scan}), 0);
+    const QString out = dir.filePath("labelled.vtp");
+    QVERIFY(w->export_labelled_scan(scan, out) != nullptr);
+    QVERIFY(w->busy());
+    QTRY_VERIFY_WITH_TIMEOUT(!w->busy(), 120000);
+    QVERIFY(QFile::exists(out));
+    // The command line on the same painting, saved as a project, writes the same labels.
+    const QString project = dir.filePath("cube.meshpaint");
+    QVERIFY(w->save_project(project));
+    const QString cli = dir.filePath("cli.vtp");
+    QCOMPARE(run_meshpaint({"transfer", project, "--to", scan, "-o", cli, "--quiet"}), 0);
+    const auto mine = read_vtp(out), theirs = read_vtp(cli);
+    vtkDataArray *a = mine->GetPointData()->GetArray("label"), *b = theirs->GetPointData()->GetArray("label");
+    QVERIFY(a && b);
+    QCOMPARE(a->GetNumberOfTuples(), theirs->GetNumberOfPoints());
+    int labelled = 0;
+    for (vtkIdType k = 0; k < a->GetNumberOfTuples(); ++k) {
+      QCOMPARE(a->GetTuple1(k), b->GetTuple1(k));
+      labelled += a->GetTuple1(k) == 3;
+    }
+    QVERIFY(labelled > 0);
+    QVERIFY(labelled < a->GetNumberOfTuples());
+    QVERIFY(mine->GetFieldData()->GetAbstractArray("label_names") != nullptr);
   }
 };
 

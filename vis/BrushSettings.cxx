@@ -87,6 +87,15 @@ void BrushSettings::set_spacing(double spacing)
   spacing_ = std::clamp(spacing, 0.01, 100.0);
 }
 
+void BrushSettings::set_edit_level(int level) { edit_level_ = std::clamp(level, 1, level_); }
+
+void BrushSettings::set_level(int level)
+{
+  const bool finest = edit_level_ == level_;
+  level_ = std::max(1, level);
+  edit_level_ = finest ? level_ : std::min(edit_level_, level_);
+}
+
 bool BrushSettings::coarse_edit() const
 {
   return moves(kTools[std::size_t(tool_)]) && edit_level_ < level_;

@@ -74,6 +74,13 @@ public:
   bool backfaces() const { return backfaces_; }
   void set_backfaces(bool on) { backfaces_ = on; }
   void set_spacing(double spacing);
+  //! The level geometry tools edit (keys l / L), 1 to the painting level;
+  //! a level out of that range is clamped into it.
+  int edit_level() const { return edit_level_; }
+  void set_edit_level(int level);
+  //! The painting level, when the surfaces were rebuilt at another one;
+  //! the edit level keeps its value where the new level allows it.
+  void set_level(int level);
   //@}
 
   double radius() const { return radius_; }

@@ -262,4 +262,16 @@ TransferReport transfer_to_scan(const PaintedSurface& painted, const WeldedSurfa
   return report;
 }
 
+void write_transferred_scan(vtkPolyData* scan, const std::string& path, const std::vector<LabelClass>& labels)
+{
+  const std::string ext = lower_extension(path);
+  if (ext == ".ply")
+    write_scan_ply(scan, path);
+  else if (ext == ".vtp") {
+    add_label_classes(scan, labels);
+    write_vtp(scan, path);
+  } else
+    throw InputError("cannot write '" + path + "': unknown format '" + ext + "' (.vtp, .ply)");
+}
+
 } // namespace meshpaint

@@ -11,7 +11,10 @@
 #include <vtkPolyData.h>     // for vtkPolyData
 #include <vtkSmartPointer.h> // for vtkSmartPointer
 
+#include "project/labels.h" // for meshpaint::LabelClass
+
 #include <string> // for std::string
+#include <vector> // for std::vector
 
 namespace meshpaint {
 
@@ -59,6 +62,14 @@ MESHPAINTVIS_EXPORT TransferReport transfer_to_scan(const PaintedSurface& painte
 //! polygon OpenMesh cannot keep (PLY through OpenMesh holds polygons only);
 //! IOError when writing fails.
 MESHPAINTVIS_EXPORT void write_scan_ply(vtkPolyData* scan, const std::string& path);
+
+//! Writes a transferred scan by the extension of `path`: .ply through
+//! write_scan_ply(), .vtp with the label classes as field data
+//! (add_label_classes()); atomically (`meshpaint transfer -o`, the studio's
+//! export of the labelled scan).
+//! \throw InputError for another extension; as write_scan_ply() and write_vtp().
+MESHPAINTVIS_EXPORT void write_transferred_scan(vtkPolyData* scan, const std::string& path,
+                                                const std::vector<LabelClass>& labels);
 
 } // namespace meshpaint
 

@@ -3,6 +3,8 @@
 #ifndef SceneFiles_h
 #define SceneFiles_h
 
+#include "meshpaintVisModule.h" // for MESHPAINTVIS_EXPORT
+
 #include <functional> // for std::function
 #include <string>     // for std::string
 
@@ -19,14 +21,14 @@ struct Project;
 //! (where the first object came from) that folder's surface.meshpaint, the
 //! project continued (save_painted_project()). Returns the status message.
 //! \throw IOError when a folder or file cannot be written.
-std::string save_session(PaintScene& scene, const std::string& recording,
+MESHPAINTVIS_EXPORT std::string save_session(PaintScene& scene, const std::string& recording,
                          const std::function<vtkPolyData*(std::size_t)>& drawn, const Project* project,
                          const std::string& dir);
 
 //! Writes each object's model at `model_level` (export_model()) into
 //! PaintScene::folder(dir, k). Returns the status message.
 //! \throw IOError when a folder or file cannot be written.
-std::string export_scene(PaintScene& scene, int model_level, const std::string& dir);
+MESHPAINTVIS_EXPORT std::string export_scene(PaintScene& scene, int model_level, const std::string& dir);
 
 } // namespace meshpaint
 

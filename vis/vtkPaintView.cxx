@@ -249,6 +249,34 @@ void vtkPaintView::Refresh(bool geometry)
   this->Render();
 }
 
+vtkPolyData* vtkPaintView::GetPaintedPolyData(int object)
+{
+  Internals& in = *this->Impl;
+  if (object < 0 || std::size_t(object) >= in.drawings.size())
+    return nullptr;
+  vtkPolyData* poly = nullptr;
+  meshpaint::guarded(this->LastError, [&] { poly = this->Surface(std::size_t(object), this->Level); });
+  return poly;
+}
+
+void vtkPaintView::SetLocked(bool locked)
+{
+  if (this->Locked == locked)
+    return;
+  this->Locked = locked;
+  this->Modified();
+}
+
+bool vtkPaintView::RefusedWhileLocked()
+{
+  if (!this->Locked)
+    return false;
+  this->LastError = "busy: the surface is being exported or rebuilt, wait for it to finish";
+  this->Message = this->LastError;
+  this->UpdateText();
+  return true;
+}
+
 void vtkPaintView::SetMoving(bool moving)
 {
   Internals& in = *this->Impl;
@@ -289,6 +317,8 @@ int vtkPaintView::HandleKey(const char* keysym, bool control, bool shift)
       this->SetHelpVisible(!this->GetHelpVisible());
       break;
     case meshpaint::WindowKey::subsurface:
+      if (this->RefusedWhileLocked())
+        return 1;
       this->SubsurfacePasses = this->SubsurfacePasses > 0 ? 0 : 60;
       this->Message = this->SubsurfacePasses > 0 ? "subsurface light on" : "subsurface light off";
       this->Show();
@@ -319,6 +349,8 @@ int vtkPaintView::HandleKey(const char* keysym, bool control, bool shift)
 int vtkPaintView::Save()
 {
   Internals& in = *this->Impl;
+  if (this->RefusedWhileLocked())
+    return 0;
   std::string message;
   const int ok = !in.scene.empty() && meshpaint::guarded(this->LastError, [&] {
     message = meshpaint::save_session(
@@ -334,6 +366,8 @@ int vtkPaintView::Save()
 int vtkPaintView::SaveProject(const char* path)
 {
   Internals& in = *this->Impl;
+  if (this->RefusedWhileLocked())
+    return 0;
   const int ok = meshpaint::guarded(this->LastError, [&] {
     if (in.scene.size() != 1)
       throw meshpaint::InputError("a project keeps one surface: this scene has " + std::to_string(in.scene.size()));
@@ -350,6 +384,8 @@ int vtkPaintView::SaveProject(const char* path)
 int vtkPaintView::Export()
 {
   Internals& in = *this->Impl;
+  if (this->RefusedWhileLocked())
+    return 0;
   std::string message;
   const int ok = !in.scene.empty() && meshpaint::guarded(this->LastError, [&] {
     message = meshpaint::export_scene(in.scene, meshpaint::default_model_level(this->Level), this->SaveDirectory);

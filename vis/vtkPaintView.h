@@ -127,6 +127,9 @@ public:
   vtkIdType GetFaceCount();
   /// The level drawn now.
   int GetShownLevel();
+  /// The painted surface of object `object` at the painting level, as drawn
+  /// at rest (its points and arrays are the drawing's); null out of range.
+  vtkPolyData* GetPaintedPolyData(int object = 0);
   /// Draws as while the camera moves (true) or as at rest (false); the
   /// interactor style does this itself during camera interaction.
   void SetMoving(bool moving);
@@ -196,6 +199,14 @@ public:
   /// window's interactor (a Qt widget's: QVTKOpenGLNativeWidget); the host
   /// sizes it and runs the event loop. Set before Initialize().
   void SetRenderWindow(vtkRenderWindow* window);
+
+  /// While locked, nothing changes the surfaces: strokes do not start (a
+  /// left-drag turns the camera), and undo, redo, Save(), SaveProject(),
+  /// Export(), scripts and the subsurface light are refused with a message.
+  /// A host locks the view while other work reads or replaces the surfaces
+  /// on another thread (the studio's exports and level changes).
+  void SetLocked(bool locked);
+  vtkGetMacro(Locked, bool);
 
   /// Milliseconds the last brush step took: the dabs of one new point of a
   /// drawn stroke, painted and the display brought up to date.
@@ -323,6 +334,7 @@ protected:
   bool OffScreen = false;
   std::string SaveDirectory = "meshpaint-session";
   double SilhouetteCosine = 0.1;
+  bool Locked = false;
   std::string LastError;
   std::string Message;
 
@@ -342,6 +354,8 @@ private:
   void ShowObject(std::size_t object);
 
   int Step(bool back); // Undo (back) or Redo
+  //! True (with the reason in LastError and the status line) while locked.
+  bool RefusedWhileLocked();
   //! Result of a look-up at a pixel: on a surface facing the viewer?
   bool PickFacing(int x, int y, double point[3], double normal[3]);
   //! Puts the cursor at the surface under (x, y), or hides it; true when shown.

@@ -29,6 +29,8 @@ int vtkPaintView::ApplyStrokes(const char* json)
 int vtkPaintView::ApplyScript(const meshpaint::StrokeScript& script)
 {
   Internals& in = *this->Impl;
+  if (this->RefusedWhileLocked())
+    return 0;
   const int ok = meshpaint::guarded(this->LastError, [&] {
     if (in.scene.empty())
       throw meshpaint::InputError("no surface to paint: load a mesh first");
@@ -46,7 +48,7 @@ int vtkPaintView::BeginStroke(int x, int y)
 {
   Internals& in = *this->Impl;
   double p[3], n[3];
-  if (in.painting || !this->PickFacing(x, y, p, n))
+  if (in.painting || this->Locked || !this->PickFacing(x, y, p, n))
     return 0;
   for (std::size_t o = 0; o < in.scene.size(); ++o)
     in.scene.surface(o).undo_log().set_budget(std::size_t(this->UndoBudget * 1048576.0));
@@ -120,6 +122,8 @@ bool vtkPaintView::IsPainting() const { return this->Impl->painting; }
 int vtkPaintView::Step(bool back)
 {
   Internals& in = *this->Impl;
+  if (this->RefusedWhileLocked())
+    return 0;
   bool done = false;
   const int ok = !in.scene.empty() && meshpaint::guarded(this->LastError, [&] {
     done = back ? in.session.undo() : in.session.redo();
