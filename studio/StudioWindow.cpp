@@ -66,6 +66,7 @@ StudioWindow::StudioWindow(vtkPaintView* view, QWidget* parent)
   }
   brush_ = new BrushPanel(view_);
   labels_ = new LabelPanel(view_);
+  labels_->watch(widget_);
   history_ = new HistoryPanel(view_);
   QDockWidget* brush_dock = dock(this, "Brush", brush_, Qt::LeftDockWidgetArea);
   QDockWidget* label_dock = dock(this, "Label classes", labels_, Qt::RightDockWidgetArea);
