@@ -28,11 +28,11 @@ namespace {
 enum Column
 {
   kShown,
+  kLocked,
   kId,
   kName,
   kColour,
-  kArea,
-  kLocked
+  kArea
 };
 
 QColor qcolour(const Vec3& c) { return QColor::fromRgbF(c[0], c[1], c[2]); }
@@ -44,7 +44,7 @@ LabelPanel::LabelPanel(vtkPaintView* view, QWidget* parent) : QWidget(parent), v
   auto* layout = new QVBoxLayout(this);
   table_ = new QTableWidget(0, 6);
   table_->setObjectName("label_classes");
-  table_->setHorizontalHeaderLabels({"shown", "id", "name", "colour", "area", "locked"});
+  table_->setHorizontalHeaderLabels({"shown", "lock", "id", "name", "colour", "area"});
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table_->horizontalHeader()->setSectionResizeMode(kName, QHeaderView::Stretch);
   table_->verticalHeader()->hide();

@@ -16,6 +16,7 @@
 #include "paint/paint_surface.h"
 
 #include <QApplication>             // for QApplication
+#include <QComboBox>                // for QComboBox
 #include <QFile>                    // for QFile
 #include <QImage>                   // for QImage
 #include <QListWidget>              // for QListWidget
@@ -174,7 +175,7 @@ private Q_SLOTS:
     const QColor blue = QColor::fromRgbF(0.1, 0.2, 1.0);
     QCOMPARE(pixels_like(*w, blue), 0);
     // Choose "lesion" in the list with the mouse.
-    const QRect cell = table->visualItemRect(table->item(1, 2));
+    const QRect cell = table->visualItemRect(table->item(1, 3));
     QTest::mouseClick(table->viewport(), Qt::LeftButton, Qt::NoModifier, cell.center());
     QCOMPARE(QString::fromStdString(view->GetBrush()->tool()), QString("label"));
     QCOMPARE(view->GetBrush()->label(), 5);
@@ -185,8 +186,8 @@ private Q_SLOTS:
       fives += m[2] == 5.f;
     QVERIFY(fives > 5);
     // The live area per class: the painted class has some, the other none.
-    QVERIFY(table->item(1, 4)->text().toDouble() > 0.0);
-    QCOMPARE(table->item(0, 4)->text().toDouble(), 0.0);
+    QVERIFY(table->item(1, 5)->text().toDouble() > 0.0);
+    QCOMPARE(table->item(0, 5)->text().toDouble(), 0.0);
     view->Render();
     QVERIFY(pixels_like(*w, blue) > 200);
     // Hidden, the class shows as unlabelled surface.
@@ -208,6 +209,8 @@ private Q_SLOTS:
     QVERIFY(view->AddLabelClass(5, "lesion", 0.1, 0.2, 1.0));
     panel->sync();
     QWidget* render = w->render_widget();
+    for (int k = 0; k < 4; ++k) // a brush wide enough that the fill's click lands well inside the stroke
+      QTest::keyClick(render, Qt::Key_BracketRight);
     const auto click_cell = [&](int row, int column) {
       QTest::mouseClick(table->viewport(), Qt::LeftButton, Qt::NoModifier,
                         table->visualItemRect(table->item(row, column)).center());
@@ -219,22 +222,25 @@ private Q_SLOTS:
       return out;
     };
     const auto count = [](const std::vector<float>& l, float id) { return std::count(l.begin(), l.end(), id); };
-    // Paint "lesion", lock it, then paint "bone" over the same place.
-    click_cell(1, 2);
+    // Paint "lesion", lock it, then paint "bone" across it.
+    click_cell(1, 3);
     drag(render, {0.4, 0.45}, {0.6, 0.55});
     const std::vector<float> lesion = labels();
     QVERIFY(count(lesion, 5.f) > 5);
-    click_cell(1, 5);
-    table->item(1, 5)->setCheckState(Qt::Checked); // the check box itself, as a click on it does
+    click_cell(1, 1);
+    table->item(1, 1)->setCheckState(Qt::Checked); // the check box itself, as a click on it does
     QCOMPARE(view->GetBrush()->locked_labels(), std::vector<int>{5});
-    click_cell(0, 2);
+    click_cell(0, 3);
     QCOMPARE(view->GetBrush()->label(), 2);
-    drag(render, {0.4, 0.45}, {0.6, 0.55});
+    drag(render, {0.3, 0.5}, {0.7, 0.5}); // across the lesion
     const std::vector<float> locked = labels();
+    QVERIFY(count(locked, 2.f) > 5); // the bone went on both sides
     for (std::size_t t = 0; t < lesion.size(); ++t)
       if (lesion[t] == 5.f)
         QCOMPARE(locked[t], 5.f);
     QCOMPARE(view->GetScene().history().back().paint().locked_labels, std::vector<int>{5});
+    if (const QByteArray shots = qgetenv("MESHPAINT_STUDIO_SHOTS"); !shots.isEmpty()) // pictures for the guide
+      w->grab().save(QString(shots) + "/studio_label_tools.png");
     // A fill on the lesion while it is locked changes nothing; unlocked,
     // the whole lesion becomes bone.
     QTest::mouseClick(panel->fill_button(), Qt::LeftButton);
@@ -244,7 +250,7 @@ private Q_SLOTS:
     QTest::mouseClick(render, Qt::LeftButton, Qt::NoModifier, centre);
     QCOMPARE(view->GetScene().history().back().tool, meshpaint::Tool::Fill);
     QVERIFY(labels() == locked);
-    table->item(1, 5)->setCheckState(Qt::Unchecked);
+    table->item(1, 1)->setCheckState(Qt::Unchecked);
     QVERIFY(view->GetBrush()->locked_labels().empty());
     QTest::qWait(20); // the item buffer is captured at rest
     QTest::mouseClick(render, Qt::LeftButton, Qt::NoModifier, centre);
@@ -270,18 +276,18 @@ private Q_SLOTS:
     QVERIFY2(std::abs(picked[0] - 0.8) < 0.01 && std::abs(picked[2] - 0.8) < 0.01, view->GetMessage()); // the unpainted grey
     const int history = int(view->GetScene().history().size());
     // Paint only over unlabelled surface: a stroke across the bone keeps it.
-    click_cell(1, 2);
+    click_cell(1, 3);
     panel->only_over()->setCurrentIndex(panel->only_over()->findData(0));
-    emit panel->only_over()->activated(panel->only_over()->currentIndex());
+    Q_EMIT panel->only_over()->activated(panel->only_over()->currentIndex());
     QCOMPARE(view->GetBrush()->only_over_label(), 0);
-    drag(render, {0.35, 0.5}, {0.65, 0.5});
+    drag(render, {0.5, 0.3}, {0.5, 0.7}); // across the bone
     const std::vector<float> over = labels();
     for (std::size_t t = 0; t < over.size(); ++t)
       if (filled[t] == 2.f)
         QCOMPARE(over[t], 2.f);
     QVERIFY(count(over, 5.f) > 0);
     // Merge: bone into lesion; bone leaves the table.
-    click_cell(0, 2);
+    click_cell(0, 3);
     panel->merge_into()->setCurrentIndex(panel->merge_into()->findData(5));
     QTest::mouseClick(panel->merge_button(), Qt::LeftButton);
     QCOMPARE(int(view->GetScene().history().size()), history + 2);

@@ -93,7 +93,7 @@ bool PaintSurface::fill_labels(const Vec3& point, float radius, const PaintSetti
       region.push_back(t);
       const std::size_t p = t / tile_texels, i = t % tile, j = t % tile_texels / tile;
       const std::size_t base = p * tile_texels;
-      for (const auto [di, dj] : {std::pair{-1, 0}, std::pair{1, 0}, std::pair{0, -1}, std::pair{0, 1}}) {
+      for (const auto& [di, dj] : {std::pair{-1, 0}, std::pair{1, 0}, std::pair{0, -1}, std::pair{0, 1}}) {
         const long ni = long(i) + di, nj = long(j) + dj;
         if (ni < 0 || nj < 0 || ni >= long(tile) || nj >= long(tile))
           continue;
