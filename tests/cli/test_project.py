@@ -87,7 +87,7 @@ LABEL_EDITS = [
     {"tool": "fill", "points": [[1, 2, 0]], "radius": 0.3, "channels": {"label": 3}},
     {"tool": "label", "points": [[1.5, 1, 0], [2.5, 1, 0]], "radius": 0.6, "channels": {"label": 4},
      "locked_labels": [2]},
-    {"tool": "label", "points": [[2, 3, 0]], "radius": 0.9, "channels": {"label": 5}, "only_over_label": 0},
+    {"tool": "label", "points": [[2.6, 3, 0]], "radius": 0.9, "channels": {"label": 5}, "only_over_label": 0},
     {"tool": "merge", "only_over_label": 3, "channels": {"label": 6}, "locked_labels": [4]},
 ]
 
