@@ -108,6 +108,8 @@ typedef struct {
   float centre_texel[2];          /* parameter: the centre in the texels of its patch */
   float texel_size;               /* parameter: world units per texel there */
   float side_sign;                /* 1 painting the outside, -1 the inside: the side a normal points to */
+  mp_int only_over_label;         /* label channel: the one class a dab may overwrite; -1 any */
+  mp_int locked_labels;           /* label channel: entries of the list of classes never overwritten */
 } BrushDab;
 
 /* What the culling kernel reports for a patch that reaches into the brush:

@@ -200,6 +200,18 @@ inline float4 paint_blend(__global const BrushDab *dab, int c, float4 surface, f
   return mix(surface, paint_op(dab->op, paint, paint.w, surface), a);
 }
 
+/* Whether a dab may overwrite class `label`: not locked (locked: the
+ * dab's list of locked classes), and the chosen class if one is. */
+inline int label_open(__global const BrushDab *dab, __global const int *locked, float label)
+{
+  if (dab->only_over_label >= 0 && label != (float)dab->only_over_label)
+    return 0;
+  for (int k = 0; k < dab->locked_labels; ++k)
+    if (label == (float)locked[k])
+      return 0;
+  return 1;
+}
+
 /* Range: (tile, tile * #active). Every texel of the active patches, all
  * stored copies included, so copies stay identical. unfold: a parameter
  * dab's maps, one per active patch (dab->unfolded; one unused entry for the
@@ -208,7 +220,7 @@ __kernel void paint_dab(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *
                         __global const BrushDab *restrict dab, __global const PatchUnfolding *restrict unfold,
                         __global const float *restrict raster, __global const float *restrict stamp,
                         __global float4 *restrict diffuse, __global float4 *restrict specular,
-                        __global float4 *restrict material)
+                        __global float4 *restrict material, __global const int *restrict locked)
 {
   const int i = get_global_id(0), y = get_global_id(1);
   const int a = y / g.x, j = y - a * g.x;
@@ -249,8 +261,9 @@ __kernel void paint_dab(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *
     m.x = clamp(paint_blend(dab, CHANNEL_ROUGHNESS, (float4)(m.x), w * dab->alpha[CHANNEL_ROUGHNESS], shade).x, 0.0f, 1.0f);
   if (dab->alpha[CHANNEL_DISPLACEMENT] > 0.0f)
     m.y = paint_blend(dab, CHANNEL_DISPLACEMENT, (float4)(m.y), w * dab->alpha[CHANNEL_DISPLACEMENT], shade).x;
-  /* Labels are class ids: they are set, never blended. */
-  if (dab->alpha[CHANNEL_LABEL] > 0.0f && w * dab->alpha[CHANNEL_LABEL] >= 0.5f)
+  /* Labels are class ids: they are set, never blended, and only where
+   * the class there is open to the dab. */
+  if (dab->alpha[CHANNEL_LABEL] > 0.0f && w * dab->alpha[CHANNEL_LABEL] >= 0.5f && label_open(dab, locked, m.z))
     m.z = dab->value[CHANNEL_LABEL][0];
   /* The mask protects the other channels, so it is painted without itself. */
   if (dab->alpha[CHANNEL_MASK] > 0.0f) {

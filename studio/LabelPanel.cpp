@@ -9,7 +9,13 @@
 #include "project/label_stats.h" // for meshpaint::label_stats
 #include "project/labels.h"      // for meshpaint::LabelClass
 
+#include "paint/stroke.h"        // for meshpaint::make_stroke, StrokeScript
+
 #include <QColorDialog>  // for QColorDialog
+#include <algorithm>     // for std::find, std::max
+#include <QComboBox>     // for QComboBox
+#include <QLabel>        // for QLabel
+#include <QMouseEvent>   // for QMouseEvent
 #include <QHBoxLayout>   // for QHBoxLayout
 #include <QHeaderView>   // for QHeaderView
 #include <QPushButton>   // for QPushButton
@@ -22,6 +28,7 @@ namespace {
 enum Column
 {
   kShown,
+  kLocked,
   kId,
   kName,
   kColour,
@@ -35,9 +42,9 @@ QColor qcolour(const Vec3& c) { return QColor::fromRgbF(c[0], c[1], c[2]); }
 LabelPanel::LabelPanel(vtkPaintView* view, QWidget* parent) : QWidget(parent), view_(view)
 {
   auto* layout = new QVBoxLayout(this);
-  table_ = new QTableWidget(0, 5);
+  table_ = new QTableWidget(0, 6);
   table_->setObjectName("label_classes");
-  table_->setHorizontalHeaderLabels({"shown", "id", "name", "colour", "area"});
+  table_->setHorizontalHeaderLabels({"shown", "lock", "id", "name", "colour", "area"});
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table_->horizontalHeader()->setSectionResizeMode(kName, QHeaderView::Stretch);
   table_->verticalHeader()->hide();
@@ -51,6 +58,50 @@ LabelPanel::LabelPanel(vtkPaintView* view, QWidget* parent) : QWidget(parent), v
   for (QPushButton* b : {add, recolour_button, remove})
     buttons->addWidget(b);
   layout->addLayout(buttons);
+  // Label strokes paint over one class only, or over any but the locked.
+  auto* over = new QHBoxLayout;
+  over->addWidget(new QLabel("Paint only over"));
+  only_over_ = new QComboBox;
+  only_over_->setObjectName("only_over");
+  over->addWidget(only_over_, 1);
+  layout->addLayout(over);
+  auto* tools = new QHBoxLayout;
+  fill_ = new QPushButton("Fill");
+  fill_->setObjectName("fill");
+  fill_->setCheckable(true);
+  fill_->setToolTip("A click on the surface fills the region of the class there with the chosen class");
+  pick_ = new QPushButton("Pick");
+  pick_->setObjectName("pick");
+  pick_->setCheckable(true);
+  pick_->setToolTip("Eyedropper: a click on the surface chooses the class there (key e: under the mouse)");
+  merge_ = new QPushButton("Merge into");
+  merge_->setObjectName("merge");
+  merge_->setToolTip("The selected class's surface becomes the class chosen beside; the class is removed");
+  merge_into_ = new QComboBox;
+  merge_into_->setObjectName("merge_into");
+  for (QWidget* w : {static_cast<QWidget*>(fill_), static_cast<QWidget*>(pick_), static_cast<QWidget*>(merge_)})
+    tools->addWidget(w);
+  tools->addWidget(merge_into_, 1);
+  layout->addLayout(tools);
+
+  connect(only_over_, QOverload<int>::of(&QComboBox::activated), [this](int k) {
+    if (BrushSettings* b = view_->GetBrush())
+      b->set_only_over_label(only_over_->itemData(k).toInt());
+    view_->UpdateText();
+  });
+  connect(fill_, &QPushButton::toggled, [this](bool on) {
+    if (on)
+      pick_->setChecked(false);
+  });
+  connect(pick_, &QPushButton::toggled, [this](bool on) {
+    if (on)
+      fill_->setChecked(false);
+  });
+  connect(merge_, &QPushButton::clicked, [this] {
+    const int row = table_->currentRow();
+    if (row >= 0 && merge_into_->currentIndex() >= 0)
+      merge(table_->item(row, kId)->text().toInt(), merge_into_->currentData().toInt());
+  });
 
   connect(add, &QPushButton::clicked, [this] { paint_class(add_class()); });
   connect(recolour_button, &QPushButton::clicked, [this] { recolour(table_->currentRow()); });
@@ -61,7 +112,7 @@ LabelPanel::LabelPanel(vtkPaintView* view, QWidget* parent) : QWidget(parent), v
     sync();
   });
   connect(table_, &QTableWidget::cellClicked, [this](int row, int column) {
-    if (column != kShown)
+    if (column != kShown && column != kLocked)
       paint_class(table_->item(row, kId)->text().toInt());
   });
   connect(table_, &QTableWidget::cellDoubleClicked, [this](int row, int column) {
@@ -74,6 +125,8 @@ LabelPanel::LabelPanel(vtkPaintView* view, QWidget* parent) : QWidget(parent), v
     const int id = table_->item(item->row(), kId)->text().toInt();
     if (item->column() == kShown) {
       view_->SetLabelClassVisible(id, item->checkState() == Qt::Checked);
+    } else if (item->column() == kLocked) {
+      update_locks();
     } else if (item->column() == kName) { // rename
       for (const LabelClass& c : view_->GetLabelClasses())
         if (c.id == id)
@@ -127,7 +180,14 @@ void LabelPanel::sync()
     auto* a = new QTableWidgetItem(QString::number(area == areas_.end() ? 0.0 : area->second, 'g', 4));
     a->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
     table_->setItem(row, kArea, a);
+    auto* locked = new QTableWidgetItem;
+    locked->setFlags(Qt::ItemIsUserCheckable | Qt::ItemIsEnabled | Qt::ItemIsSelectable);
+    const BrushSettings* b = view_->GetBrush();
+    const bool is_locked = b && std::find(b->locked_labels().begin(), b->locked_labels().end(), c.id) != b->locked_labels().end();
+    locked->setCheckState(is_locked ? Qt::Checked : Qt::Unchecked);
+    table_->setItem(row, kLocked, locked);
   }
+  sync_choices();
   if (selected >= 0 && selected < table_->rowCount())
     table_->selectRow(selected);
   syncing_ = false;
@@ -176,6 +236,99 @@ void LabelPanel::recolour(int row)
       break;
     }
   sync();
+}
+
+} // namespace meshpaint::studio
+
+namespace meshpaint::studio {
+
+void LabelPanel::sync_choices()
+{
+  const BrushSettings* b = view_->GetBrush();
+  const int over = b ? b->only_over_label() : -1, into = merge_into_->currentData().isValid() ? merge_into_->currentData().toInt() : -1;
+  only_over_->clear();
+  merge_into_->clear();
+  only_over_->addItem("any class", -1);
+  bool unlabelled = false;
+  for (const LabelClass& c : view_->GetLabelClasses()) {
+    const QString text = QString("%1 %2").arg(c.id).arg(QString::fromStdString(c.name));
+    only_over_->addItem(text, c.id);
+    merge_into_->addItem(text, c.id);
+    unlabelled = unlabelled || c.id == 0;
+  }
+  if (!unlabelled) // unlabelled surface counts as a class
+    only_over_->insertItem(1, "0 unlabelled", 0);
+  only_over_->setCurrentIndex(std::max(0, only_over_->findData(over)));
+  if (merge_into_->findData(into) >= 0)
+    merge_into_->setCurrentIndex(merge_into_->findData(into));
+}
+
+void LabelPanel::update_locks()
+{
+  BrushSettings* b = view_->GetBrush();
+  if (!b)
+    return;
+  std::vector<int> ids;
+  for (int row = 0; row < table_->rowCount(); ++row)
+    if (table_->item(row, kLocked) && table_->item(row, kLocked)->checkState() == Qt::Checked)
+      ids.push_back(table_->item(row, kId)->text().toInt());
+  b->set_locked_labels(ids);
+  view_->UpdateText();
+}
+
+bool LabelPanel::merge(int from, int into)
+{
+  const BrushSettings* b = view_->GetBrush();
+  if (!b || from == into)
+    return false;
+  const std::vector<int>& locked = b->locked_labels();
+  if (std::find(locked.begin(), locked.end(), from) != locked.end())
+    return false; // a locked class keeps its surface, and so its entry
+  StrokeScript script;
+  Stroke s = make_stroke(Tool::Merge);
+  s.paint().value[CHANNEL_LABEL] = {float(into), float(into), float(into), 1.f};
+  s.paint().alpha[CHANNEL_LABEL] = 1.f;
+  s.paint().only_over_label = from;
+  s.paint().locked_labels = locked;
+  script.strokes.push_back(s);
+  if (!view_->ApplyScript(script))
+    return false;
+  view_->RemoveLabelClass(from);
+  sync();
+  paint_class(into);
+  return true;
+}
+
+void LabelPanel::watch(QWidget* render)
+{
+  render_ = render;
+  render->installEventFilter(this);
+}
+
+bool LabelPanel::eventFilter(QObject* watched, QEvent* event)
+{
+  const bool press = event->type() == QEvent::MouseButtonPress, release = event->type() == QEvent::MouseButtonRelease;
+  if (watched != render_ || !(fill_->isChecked() || pick_->isChecked()) || !(press || release))
+    return QWidget::eventFilter(watched, event);
+  const auto* m = static_cast<QMouseEvent*>(event);
+  if (m->button() != Qt::LeftButton)
+    return QWidget::eventFilter(watched, event);
+  if (press) {
+    // VTK's display pixels: device pixels, origin bottom left.
+    const double scale = render_->devicePixelRatioF();
+    const int x = int(m->pos().x() * scale), y = int((render_->height() - m->pos().y() - 1) * scale);
+    if (fill_->isChecked()) {
+      view_->FillAt(x, y);
+    } else {
+      if (BrushSettings* b = view_->GetBrush())
+        b->set_tool("label");
+      if (view_->PickAt(x, y))
+        paint_class(view_->GetBrush()->label());
+      pick_->setChecked(false);
+    }
+    sync();
+  }
+  return true; // the click was the panel's, not a stroke's or the camera's
 }
 
 } // namespace meshpaint::studio

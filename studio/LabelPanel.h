@@ -1,6 +1,7 @@
 // The studio's label classes: names and colours from the project (or
-// labels.json) or added here; rename, recolour, hide, delete, and select a
-// class to paint it with the label tool.
+// labels.json) or added here; rename, recolour, hide, lock, delete, merge,
+// select a class to paint it with the label tool, paint only over one
+// class, fill a region and pick a class off the surface.
 #pragma once
 
 #include <QWidget> // for QWidget
@@ -9,6 +10,8 @@
 #include <map>     // for std::map
 #include <tuple>   // for std::tuple
 
+class QComboBox;
+class QPushButton;
 class QTableWidget;
 class vtkPaintView;
 
@@ -25,8 +28,25 @@ public:
   int add_class();
   //! Paints class `id` from now on: the label tool, that id, labels shown.
   void paint_class(int id);
+  //! Clicks on `render` fill or pick while the Fill or Pick button is down.
+  void watch(QWidget* render);
+  //! Merges class `from` into class `into` (one stroke, "tool": "merge")
+  //! and removes class `from`; false when `from` is locked or the merge fails.
+  bool merge(int from, int into);
+  QComboBox* only_over() { return only_over_; }
+  QComboBox* merge_into() { return merge_into_; }
+  QPushButton* fill_button() { return fill_; }
+  QPushButton* pick_button() { return pick_; }
+  QPushButton* merge_button() { return merge_; }
+
+protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
+  //! The brush's locked classes from the table's lock column.
+  void update_locks();
+  //! The combo boxes' lists of classes, their choice kept.
+  void sync_choices();
   void recolour(int row);
   //! Each class's area on the surface now, measured again when strokes
   //! were added or undone since (not while a stroke is drawn).
@@ -34,6 +54,10 @@ private:
 
   vtkPaintView* view_;
   QTableWidget* table_;
+  QComboBox* only_over_;  // any class, or one class (unlabelled among them)
+  QComboBox* merge_into_; // the class the selected one merges into
+  QPushButton *fill_, *pick_, *merge_;
+  QWidget* render_ = nullptr;
   bool syncing_ = false;
   std::map<int, double> areas_;            // class id to area, world units squared
   std::tuple<const void*, std::size_t, std::size_t> measured_{nullptr, 0, 0}; // surface, strokes done and undone then

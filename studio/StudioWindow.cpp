@@ -102,6 +102,7 @@ StudioWindow::StudioWindow(vtkPaintView* view, QWidget* parent)
   }
   brush_ = new BrushPanel(view_);
   labels_ = new LabelPanel(view_);
+  labels_->watch(widget_);
   history_ = new HistoryPanel(view_);
   levels_ = new LevelPanel(
     view_, [this](int level) { change_level(level); }, [this](bool on) { show_patch_borders(on); });

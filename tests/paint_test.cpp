@@ -320,7 +320,7 @@ TEST(StrokeScript, ErrorsNameTheStrokeAndKey)
             "stroke 0: \"radius\" must be a number from 1e-30 to 1e+30");
   EXPECT_EQ(message(R"({"strokes": [{"tool": "paint", "points": [[0,0,0]], "radius": 1, "strength": "lots", "channels": {"roughness": 1}}]})"),
             "stroke 0: \"strength\" must be a number from 0 to 1");
-  EXPECT_EQ(message(R"({"strokes": [{"tool": "spray"}]})"), "stroke 0: \"tool\" must be one of paint, label, wash, dip, smooth, blur, sculpt, inflate, flatten, smear, grab");
+  EXPECT_EQ(message(R"({"strokes": [{"tool": "spray"}]})"), "stroke 0: \"tool\" must be one of paint, label, wash, dip, smooth, blur, sculpt, inflate, flatten, smear, grab, fill, merge");
   EXPECT_EQ(message(R"({"strokes": [{"tool": "paint", "points": [[0,0,0]], "radius": 1, "edit_level": 2, "channels": {"roughness": 1}}]})"),
             "stroke 0: \"edit_level\" has no meaning for a paint stroke, which does not move the surface");
   EXPECT_EQ(message(R"({"strokes": [{"tool": "grab", "points": [[0,0,0]], "radius": 1, "mirror": "x"}]})"),

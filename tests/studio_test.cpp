@@ -1,9 +1,10 @@
 // The studio driven by real Qt mouse and key events under xvfb-run: drags
 // paint on meshes wound either way, a label class chosen in its list paints
-// its id in its colour, the history list undoes, and a saved session
-// replays to the same bits with `meshpaint paint`; exports, level changes
-// and the labelled scan run off the interface thread, preferences persist,
-// and a file dropped on the window opens.
+// its id in its colour, the label panel locks, fills, picks and merges, the
+// history list undoes, and a saved session replays to the same bits with
+// `meshpaint paint`; exports, level changes and the labelled scan run off
+// the interface thread, preferences persist, and a file dropped on the
+// window opens.
 
 #include "BackgroundTask.h"
 #include "BrushSettings.h"
@@ -52,6 +53,9 @@
 #include <vtkSmartPointer.h>       // for vtkSmartPointer
 #include <vtkXMLPolyDataReader.h>  // for vtkXMLPolyDataReader
 
+#include <algorithm> // for std::count
+#include <array>   // for std::array
+#include <cmath>   // for std::abs
 #include <cstring> // for std::memcmp
 #include <memory>  // for std::unique_ptr
 
@@ -212,7 +216,7 @@ private Q_SLOTS:
     const QColor blue = QColor::fromRgbF(0.1, 0.2, 1.0);
     QCOMPARE(pixels_like(*w, blue), 0);
     // Choose "lesion" in the list with the mouse.
-    const QRect cell = table->visualItemRect(table->item(1, 2));
+    const QRect cell = table->visualItemRect(table->item(1, 3));
     QTest::mouseClick(table->viewport(), Qt::LeftButton, Qt::NoModifier, cell.center());
     QCOMPARE(QString::fromStdString(view->GetBrush()->tool()), QString("label"));
     QCOMPARE(view->GetBrush()->label(), 5);
@@ -223,8 +227,8 @@ private Q_SLOTS:
       fives += m[2] == 5.f;
     QVERIFY(fives > 5);
     // The live area per class: the painted class has some, the other none.
-    QVERIFY(table->item(1, 4)->text().toDouble() > 0.0);
-    QCOMPARE(table->item(0, 4)->text().toDouble(), 0.0);
+    QVERIFY(table->item(1, 5)->text().toDouble() > 0.0);
+    QCOMPARE(table->item(0, 5)->text().toDouble(), 0.0);
     view->Render();
     QVERIFY(pixels_like(*w, blue) > 200);
     // Hidden, the class shows as unlabelled surface.
@@ -233,6 +237,116 @@ private Q_SLOTS:
     shown->setCheckState(Qt::Unchecked); // the check box itself, as a click on it does
     QVERIFY(!view->GetLabelClassVisible(5));
     QCOMPARE(pixels_like(*w, blue), 0);
+  }
+
+  void the_label_panel_locks_fills_picks_and_merges()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("session"));
+    meshpaint::studio::LabelPanel* panel = w->label_panel();
+    QTableWidget* table = panel->table();
+    QVERIFY(view->AddLabelClass(2, "bone", 0.9, 0.9, 0.2));
+    QVERIFY(view->AddLabelClass(5, "lesion", 0.1, 0.2, 1.0));
+    panel->sync();
+    QWidget* render = w->render_widget();
+    for (int k = 0; k < 4; ++k) // a brush wide enough that the fill's click lands well inside the stroke
+      QTest::keyClick(render, Qt::Key_BracketRight);
+    const auto click_cell = [&](int row, int column) {
+      QTest::mouseClick(table->viewport(), Qt::LeftButton, Qt::NoModifier,
+                        table->visualItemRect(table->item(row, column)).center());
+    };
+    const auto labels = [&] {
+      std::vector<float> out;
+      for (const meshpaint::Float4& m : view->GetScene().surface(0).read_channels().material)
+        out.push_back(m[2]);
+      return out;
+    };
+    const auto count = [](const std::vector<float>& l, float id) { return std::count(l.begin(), l.end(), id); };
+    // Paint "lesion", lock it, then paint "bone" across it.
+    click_cell(1, 3);
+    drag(render, {0.4, 0.45}, {0.6, 0.55});
+    const std::vector<float> lesion = labels();
+    QVERIFY(count(lesion, 5.f) > 5);
+    click_cell(1, 1);
+    table->item(1, 1)->setCheckState(Qt::Checked); // the check box itself, as a click on it does
+    QCOMPARE(view->GetBrush()->locked_labels(), std::vector<int>{5});
+    click_cell(0, 3);
+    QCOMPARE(view->GetBrush()->label(), 2);
+    drag(render, {0.3, 0.5}, {0.7, 0.5}); // across the lesion
+    const std::vector<float> locked = labels();
+    QVERIFY(count(locked, 2.f) > 5); // the bone went on both sides
+    for (std::size_t t = 0; t < lesion.size(); ++t)
+      if (lesion[t] == 5.f)
+        QCOMPARE(locked[t], 5.f);
+    QCOMPARE(view->GetScene().history().back().paint().locked_labels, std::vector<int>{5});
+    if (const QByteArray shots = qgetenv("MESHPAINT_STUDIO_SHOTS"); !shots.isEmpty()) // pictures for the guide
+      w->grab().save(QString(shots) + "/studio_label_tools.png");
+    // A fill on the lesion while it is locked changes nothing; unlocked,
+    // the whole lesion becomes bone.
+    QTest::mouseClick(panel->fill_button(), Qt::LeftButton);
+    QVERIFY(panel->fill_button()->isChecked());
+    const QPoint centre(render->width() / 2, render->height() / 2);
+    QTest::qWait(20); // the item buffer is captured at rest
+    QTest::mouseClick(render, Qt::LeftButton, Qt::NoModifier, centre);
+    QCOMPARE(view->GetScene().history().back().tool, meshpaint::Tool::Fill);
+    QVERIFY(labels() == locked);
+    table->item(1, 1)->setCheckState(Qt::Unchecked);
+    QVERIFY(view->GetBrush()->locked_labels().empty());
+    QTest::qWait(20); // the item buffer is captured at rest
+    QTest::mouseClick(render, Qt::LeftButton, Qt::NoModifier, centre);
+    const std::vector<float> filled = labels();
+    QCOMPARE(int(count(filled, 5.f)), 0);
+    QVERIFY(count(filled, 2.f) >= count(lesion, 5.f));
+    QTest::mouseClick(panel->fill_button(), Qt::LeftButton);
+    QVERIFY(!panel->fill_button()->isChecked());
+    // The eyedropper: the button picks the class under a click, the key e
+    // the colour under the mouse for the paint tool.
+    view->GetBrush()->set_label(9);
+    QTest::mouseClick(panel->pick_button(), Qt::LeftButton);
+    QTest::qWait(20); // the item buffer is captured at rest
+    QTest::mouseClick(render, Qt::LeftButton, Qt::NoModifier, centre);
+    QCOMPARE(view->GetBrush()->label(), 2);
+    QVERIFY(!panel->pick_button()->isChecked());
+    view->GetBrush()->set_tool("paint");
+    view->GetBrush()->set_colour({0.0, 0.0, 1.0});
+    mouse(render, QEvent::MouseMove, {render->width() / 8, render->height() / 2}, Qt::NoButton, Qt::NoButton);
+    mouse(render, QEvent::MouseMove, centre, Qt::NoButton, Qt::NoButton);
+    QTest::keyClick(render, Qt::Key_E);
+    const std::array<double, 3> picked = view->GetBrush()->colour();
+    QVERIFY2(std::abs(picked[0] - 0.8) < 0.01 && std::abs(picked[2] - 0.8) < 0.01, view->GetMessage()); // the unpainted grey
+    const int history = int(view->GetScene().history().size());
+    // Paint only over unlabelled surface: a stroke across the bone keeps it.
+    click_cell(1, 3);
+    panel->only_over()->setCurrentIndex(panel->only_over()->findData(0));
+    Q_EMIT panel->only_over()->activated(panel->only_over()->currentIndex());
+    QCOMPARE(view->GetBrush()->only_over_label(), 0);
+    drag(render, {0.5, 0.3}, {0.5, 0.7}); // across the bone
+    const std::vector<float> over = labels();
+    for (std::size_t t = 0; t < over.size(); ++t)
+      if (filled[t] == 2.f)
+        QCOMPARE(over[t], 2.f);
+    QVERIFY(count(over, 5.f) > 0);
+    // Merge: bone into lesion; bone leaves the table.
+    click_cell(0, 3);
+    panel->merge_into()->setCurrentIndex(panel->merge_into()->findData(5));
+    QTest::mouseClick(panel->merge_button(), Qt::LeftButton);
+    QCOMPARE(int(view->GetScene().history().size()), history + 2);
+    QCOMPARE(view->GetScene().history().back().tool, meshpaint::Tool::Merge);
+    QCOMPARE(int(count(labels(), 2.f)), 0);
+    QCOMPARE(table->rowCount(), 1);
+    // The recording replays to the same bits.
+    QVERIFY(view->Save());
+    const QString replayed = dir.filePath("replayed");
+    QProcess paint;
+    paint.start(MESHPAINT_BIN, {"paint", kCube, "--strokes", dir.filePath("session/strokes.json"), "-o", replayed, "--quiet"});
+    QVERIFY(paint.waitForFinished(120000));
+    QCOMPARE(paint.exitCode(), 0);
+    vtkSmartPointer<vtkPolyData> a = read_vtp(dir.filePath("session/surface.vtp")), b = read_vtp(replayed + "/surface.vtp");
+    vtkDataArray *la = a->GetPointData()->GetArray("label"), *lb = b->GetPointData()->GetArray("label");
+    QVERIFY(la && lb && la->GetNumberOfTuples() == lb->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < la->GetNumberOfTuples(); ++i)
+      QCOMPARE(la->GetTuple1(i), lb->GetTuple1(i));
   }
 
   void the_history_list_undoes_and_redoes()

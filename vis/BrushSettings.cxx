@@ -77,6 +77,34 @@ void BrushSettings::set_label(int id)
   label_ = id;
 }
 
+void BrushSettings::set_locked_labels(const std::vector<int>& ids)
+{
+  for (const int id : ids)
+    if (id < 0 || id > kMaxLabelId)
+      throw InputError("a label id must be 0 to " + std::to_string(kMaxLabelId) + ", not " + std::to_string(id));
+  locked_labels_ = ids;
+}
+
+void BrushSettings::set_only_over_label(int id)
+{
+  if (id < -1 || id > kMaxLabelId)
+    throw InputError("a label id must be 0 to " + std::to_string(kMaxLabelId) + ", not " + std::to_string(id));
+  only_over_label_ = id;
+}
+
+Stroke BrushSettings::fill_stroke(const Vec3& point) const
+{
+  Stroke s = make_stroke(Tool::Fill);
+  s.points = {point};
+  s.brush.radius = float(radius_);
+  s.paint().value[CHANNEL_LABEL] = {float(label_), float(label_), float(label_), 1.f};
+  s.paint().alpha[CHANNEL_LABEL] = 1.f;
+  s.paint().locked_labels = locked_labels_;
+  s.paint().only_over_label = only_over_label_;
+  check_stroke(s);
+  return s;
+}
+
 void BrushSettings::set_strength(double strength)
 {
   strength_ = std::clamp(strength, 0.0, 1.0);
@@ -176,6 +204,8 @@ Stroke BrushSettings::stroke(const std::vector<Vec3>& points) const
     s.paint().op = op_;
   } else if (tool == "label") {
     paint(CHANNEL_LABEL, label_, label_, label_);
+    s.paint().locked_labels = locked_labels_;
+    s.paint().only_over_label = only_over_label_;
   } else if (tool == "sculpt" || tool == "inflate") {
     s.move().amount = float((inwards_ ? -0.1 : 0.1) * radius_);
   } else if (tool == "flatten") {
@@ -200,8 +230,13 @@ std::string BrushSettings::describe() const
   if (is_paint(tool))
     out << "   channel " << kChannels[std::size_t(channel_)] << "   swatch " << swatch_ << "   op "
         << kOps[std::size_t(op_)];
-  else if (tool == "label")
+  else if (tool == "label") {
     out << "   label " << label_;
+    for (std::size_t k = 0; k < locked_labels_.size(); ++k)
+      out << (k == 0 ? "   locked " : ",") << locked_labels_[k];
+    if (only_over_label_ >= 0)
+      out << "   only over " << only_over_label_;
+  }
   else if (tool == "sculpt" || tool == "inflate")
     out << (inwards_ ? "   inwards" : "   outwards");
   if (moves(tool))

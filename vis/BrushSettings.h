@@ -32,6 +32,10 @@ public:
 
   //! One line per setting, for the window's status text.
   std::string describe() const;
+  //! The fill of the label channel at `point` with the label tool's class
+  //! and guards (a stroke of one point, the radius the distance it may lie
+  //! off the surface), checked as stroke() checks.
+  Stroke fill_stroke(const Vec3& point) const;
   //! The keys the brush reacts to, one per line.
   static std::string key_help();
 
@@ -60,6 +64,13 @@ public:
   //! The class id the label tool paints (the swatch's until set).
   int label() const { return label_; }
   void set_label(int id);
+  //! Label strokes and fills: classes never overwritten, and the one class
+  //! overwritten (-1: any), as the stroke keys locked_labels and
+  //! only_over_label.
+  const std::vector<int>& locked_labels() const { return locked_labels_; }
+  void set_locked_labels(const std::vector<int>& ids);
+  int only_over_label() const { return only_over_label_; }
+  void set_only_over_label(int id);
   double strength() const { return strength_; }
   void set_strength(double strength);
   std::string falloff() const;
@@ -102,6 +113,8 @@ private:
   int swatch_ = 1;     // 0..9, the value painted into the channel
   std::array<double, 3> colour_; // colour channels: the swatch's colour, or one set
   int label_ = 1;                // the label tool's class id
+  std::vector<int> locked_labels_; // label strokes: classes kept
+  int only_over_label_ = -1;       // label strokes: the one class painted over, -1 any
   double spacing_ = 0.25;
   bool backfaces_ = false;
   double radius_;

@@ -27,6 +27,8 @@ WindowKey window_key(const std::string& key, bool control)
     return WindowKey::shown_back;
   if (key == "r")
     return WindowKey::reset_camera;
+  if (key == "e")
+    return WindowKey::eyedropper;
   if (key == "q" || key == "Escape")
     return WindowKey::quit;
   return WindowKey::brush;
@@ -41,6 +43,7 @@ std::string window_help()
          "Ctrl+S       save strokes.json and surface.vtp\n"
          "Ctrl+E       export model.obj with texture maps\n"
          "r            reset the camera\n"
+         "e            eyedropper: the class (label tool) or colour under the mouse into the brush\n"
          "b            subsurface light at rest (on / off)\n"
          "v / V        show the next / previous channel (diffuse label specular roughness displacement mask)\n"
          "h, F1        this help;  q, Escape: quit";

@@ -21,6 +21,7 @@ enum class WindowKey
   shown_next,   //!< v: show the next channel (diffuse, label, ...)
   shown_back,   //!< V: the previous one
   reset_camera, //!< r
+  eyedropper,   //!< e: the class or colour under the mouse into the brush
   quit          //!< q, Escape
 };
 

@@ -335,6 +335,12 @@ int vtkPaintView::HandleKey(const char* keysym, bool control, bool shift)
     case meshpaint::WindowKey::reset_camera:
       meshpaint::set_camera(in.renderer, meshpaint::CameraView());
       break;
+    case meshpaint::WindowKey::eyedropper: {
+      const int* at = in.interactor->GetEventPosition();
+      if (!this->PickAt(at[0], at[1]))
+        this->Message = "nothing to pick: no surface under the mouse";
+      break;
+    }
     case meshpaint::WindowKey::quit:
       this->InvokeEvent(vtkCommand::ExitEvent); // a host window (the studio) closes itself on it
       if (in.initialized)

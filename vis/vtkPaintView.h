@@ -235,6 +235,17 @@ public:
   bool IsPainting() const;
   //@}
 
+  //@{
+  /// Label edits at display pixels (origin bottom left). FillAt fills the
+  /// connected region of the class under the pixel with the brush's class
+  /// (its locked classes and only-over class respected): one stroke of the
+  /// history, "tool": "fill". PickAt is the eyedropper: the class there
+  /// into the brush when its tool is label, else the diffuse colour. 0 when
+  /// no surface faces the viewer there.
+  int FillAt(int x, int y);
+  int PickAt(int x, int y);
+  //@}
+
   /// Puts the brush cursor on the surface under pixel (x, y), or hides it.
   void MoveCursor(int x, int y);
 
@@ -245,7 +256,7 @@ public:
 
   /// Acts on a key (VTK key symbol, e.g. "z", "bracketleft", "F1"): brush
   /// settings, undo/redo (Ctrl+Z, Ctrl+Y), save (Ctrl+S), export (Ctrl+E),
-  /// help (h, F1), camera reset (r), quit (q, Escape: ExitEvent, then the
+  /// help (h, F1), eyedropper under the mouse (e), camera reset (r), quit (q, Escape: ExitEvent, then the
   /// interactor's TerminateApp()). 1 when it was one.
   int HandleKey(const char* keysym, bool control, bool shift);
 

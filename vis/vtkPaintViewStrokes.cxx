@@ -1,13 +1,16 @@
 // vtkPaintView's strokes, all through the scene's StrokeSession: scripts
 // applied, the stroke drawn with the mouse (painted once, as its path grows),
-// undo and redo, and the recording.
+// the fill and the eyedropper at a pixel, undo and redo, and the recording.
 #include "vtkPaintView.h"
 #include "vtkPaintViewInternals.h"
 
 #include "CallGuard.h" // for meshpaint::guarded
 #include "RasterIO.h"  // for meshpaint::load_stroke_rasters
+#include "vtkSurfacePicker.h" // for vtkSurfacePicker
 
 #include "core/errors.h"  // for meshpaint::InputError
+#include "core/format.h"  // for meshpaint::format_fixed
+#include "paint/paint_surface.h" // for meshpaint::PaintSurface, PaintedVertices
 #include "paint/stroke.h" // for meshpaint::parse_stroke_script, stroke_script_json
 
 #include <vtkCamera.h> // for vtkCamera
@@ -115,6 +118,56 @@ int vtkPaintView::EndStroke()
   this->Message = ok ? "" : this->LastError;
   this->Refresh(true);
   return ok;
+}
+
+int vtkPaintView::FillAt(int x, int y)
+{
+  Internals& in = *this->Impl;
+  double p[3], n[3];
+  if (in.painting || !in.brush || !this->PickFacing(x, y, p, n))
+    return 0;
+  const meshpaint::Vec3 at{float(p[0]), float(p[1]), float(p[2])};
+  const int ok = meshpaint::guarded(this->LastError, [&] { in.session.apply(in.brush->fill_stroke(at)); });
+  this->Message = ok ? "filled with class " + std::to_string(in.brush->label()) : this->LastError;
+  this->Refresh(true);
+  return ok;
+}
+
+int vtkPaintView::PickAt(int x, int y)
+{
+  Internals& in = *this->Impl;
+  double p[3], n[3];
+  if (in.painting || !in.brush || !this->PickFacing(x, y, p, n))
+    return 0;
+  const int object = in.cursor.picker()->GetActorIndex();
+  if (object < 0 || std::size_t(object) >= in.scene.size())
+    return 0;
+  return meshpaint::guarded(this->LastError, [&] {
+    // The texel the brush would snap to, and its welded vertex's values.
+    meshpaint::PaintSurface& surface = in.scene.surface(std::size_t(object));
+    meshpaint::CullRecord closest{};
+    const meshpaint::Vec3 at{float(p[0]), float(p[1]), float(p[2])};
+    if (surface.brush_patches(at, float(in.brush->radius()), nullptr, nullptr, 0.f, &closest).empty())
+      throw meshpaint::InputError("nothing to pick: no surface under the mouse");
+    const meshpaint::PaintedVertices v = surface.painted_vertices({closest.patch});
+    const meshpaint::Vec3 snapped{closest.closest_position[0], closest.closest_position[1], closest.closest_position[2]};
+    std::size_t best = 0;
+    for (std::size_t k = 1; k < v.ids.size(); ++k)
+      if (meshpaint::length(meshpaint::sub(v.values.surface.points[k], snapped)) <
+          meshpaint::length(meshpaint::sub(v.values.surface.points[best], snapped)))
+        best = k;
+    if (in.brush->tool() == "label") {
+      in.brush->set_label(v.values.label[best]);
+      this->Message = "picked class " + std::to_string(v.values.label[best]);
+    } else {
+      const meshpaint::Vec3& c = v.values.diffuse[best];
+      in.brush->set_colour({c[0], c[1], c[2]});
+      this->Message = "picked colour " + meshpaint::format_fixed(c[0], 2) + " " + meshpaint::format_fixed(c[1], 2) +
+                      " " + meshpaint::format_fixed(c[2], 2);
+    }
+    this->UpdateText();
+    this->Render();
+  });
 }
 
 bool vtkPaintView::IsPainting() const { return this->Impl->painting; }

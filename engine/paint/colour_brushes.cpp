@@ -1,6 +1,6 @@
 // Colour brushes: the paint equation under a dab (paint, label, wash, dip),
-// spray droplets, and the smear brush's pick-up; the stroke's pattern and
-// brush image for the kernels.
+// spray droplets, and the smear brush's pick-up; the stroke's pattern,
+// brush image and label guards for the kernels.
 
 #include "paint/paint_device.h"
 
@@ -41,7 +41,7 @@ void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
   const auto tiles = range_tiles(l, int(patches.size()));
   launch(rt.queue(), d.paint_dab, tiles.first, tiles.second, atlas_->limit_positions_layer(),
          atlas_->limit_normals_layer(), grid(l), d.active, cl_int(patches.size()), d.dab, d.unfold, d.raster, d.stamp,
-         diffuse_buffer(), specular_buffer(), material_buffer());
+         diffuse_buffer(), specular_buffer(), material_buffer(), d.locked);
   rt.queue().finish();
   phase_done(&StepPhases::transform);
 }
@@ -172,6 +172,13 @@ void PaintSurface::upload_rasters(const Stroke& stroke, BrushDab& dab)
     dab.stamp_size[0] = dab.stamp_size[1] = 0;
   }
   d.stamp = upload(grey);
+  // The label guards: locked classes to the device, the chosen class in the dab.
+  const auto* p = std::get_if<PaintSettings>(&stroke.settings);
+  const std::vector<int> none{0}, &locked = p && !p->locked_labels.empty() ? p->locked_labels : none;
+  d.locked = cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(cl_int) * locked.size(),
+                        const_cast<int*>(locked.data()));
+  dab.locked_labels = p ? int(p->locked_labels.size()) : 0;
+  dab.only_over_label = p ? p->only_over_label : -1;
 }
 
 } // namespace meshpaint

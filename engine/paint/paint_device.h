@@ -57,6 +57,7 @@ struct PaintSurface::Device
   cl::Buffer diffuse, specular, material, channel_work;
   cl::Buffer inside_diffuse, inside_specular, inside_material; // two-sided surfaces
   cl::Buffer raster, stamp; // the stroke's pattern samples and brush image (one float when none)
+  cl::Buffer locked;        // the stroke's locked label classes (one int when none)
   cl::Memory position_work; // image storage: a scratch layer of the finest level for moves
   std::unique_ptr<WeldedSmoothing> smoothing;
 };

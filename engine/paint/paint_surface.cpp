@@ -195,6 +195,11 @@ void PaintSurface::prepare_dab(const Stroke& stroke)
   if (!stroke.brush.stamp_file.empty() && (!stroke.brush.stamp || stroke.brush.stamp->empty()))
     throw InputError("the stroke's brush image has no samples (load '" + stroke.brush.stamp_file + "' first)");
   upload_rasters(stroke, dab);
+  if (stroke.tool == Tool::Merge) {
+    merge_labels(p);
+    open_->report.dabs = open_->report.dabs_applied = 1;
+    return;
+  }
   if (covers_everything(stroke.tool)) {
     std::vector<int> all(std::size_t(atlas_->topology().patch_count));
     for (std::size_t p = 0; p < all.size(); ++p)
@@ -258,6 +263,12 @@ void PaintSurface::paint_sample(const DabSample& sample, bool may_end)
   dab.radius = stroke.brush.radius * sample.pressure;
   dab.strength = stroke.brush.strength * sample.pressure;
   bool on_surface = false;
+  if (stroke.tool == Tool::Fill) { // no brush: the region around one point
+    ++o.report.dabs;
+    on_surface = fill_labels(sample.centre, dab.radius, stroke.paint());
+    o.report.dabs_applied += on_surface ? 1 : 0;
+    dabs.clear();
+  }
   for (std::size_t side = 0; side < dabs.size(); ++side) {
     ++o.report.dabs;
     if (!(dab.radius > 0.f))

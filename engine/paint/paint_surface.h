@@ -216,6 +216,19 @@ private:
   void reach_sides(const Vec3& centre, float radius);
   bool step(bool back); // undo (back) or redo
   void paint(const std::vector<int>& patches, const BrushDab& dab);
+  //! Fill: the texels connected to the one closest to `point` (within
+  //! `radius`) through texels of its class, across patch sides and corners
+  //! (welded vertices), become class `id`. Nothing where that class is
+  //! locked or not the only-over class, or no surface is in reach.
+  //! \return whether a surface was in reach
+  bool fill_labels(const Vec3& point, float radius, const PaintSettings& settings);
+  //! Merge: every texel of class settings.only_over_label becomes class
+  //! settings.value[CHANNEL_LABEL], the mask notwithstanding; nothing where
+  //! that class is locked.
+  void merge_labels(const PaintSettings& settings);
+  //! Class `id` into the label channel at `texels` (patch-major indices into
+  //! `material`, the whole layer as read), one undo step's worth.
+  void write_labels(std::vector<Float4>& material, const std::vector<std::size_t>& texels, int id);
   //! One dab of spray paint: droplets at random points of the brush's disc
   //! on the screen (seeded by the stroke's seed and the dab's `index`).
   void spray(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke, std::uint64_t index);
@@ -261,7 +274,8 @@ private:
   //! One dab of the smear brush: lays down `carried`, then picks up the
   //! weighted mean colour under the dab into it.
   void smear(const std::vector<int>& patches, BrushDab dab, std::optional<std::array<Float4, 2>>& carried);
-  //! The stroke's pattern samples and brush image to the device, sizes into the dab.
+  //! The stroke's pattern samples, brush image and locked label classes to
+  //! the device, sizes and the only-over class into the dab.
   void upload_rasters(const Stroke& stroke, BrushDab& dab);
   //! The dab's brush space at its centre (camera axes, the centre's texel);
   //! false where a screen-space stroke meets a silhouette and ends.

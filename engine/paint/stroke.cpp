@@ -20,8 +20,8 @@ namespace {
 using nlohmann::json;
 
 //! Tool names in the order of enum Tool.
-const std::array<const char*, 11> kToolNames = {"paint",  "label",   "wash",  "dip",  "smooth", "blur",
-                                                "sculpt", "inflate", "flatten", "smear", "grab"};
+const std::array<const char*, 13> kToolNames = {"paint",  "label",   "wash",    "dip",   "smooth", "blur", "sculpt",
+                                                "inflate", "flatten", "smear", "grab", "fill",   "merge"};
 
 //! Reads one stroke, with errors that name it and the key.
 class StrokeReader
@@ -220,6 +220,36 @@ void read_pattern(const StrokeReader& r, Stroke& s)
     m = float(m * scale);
 }
 
+//! "locked_labels": [ids], "only_over_label": id: which classes a stroke
+//! that paints the label channel may overwrite (a merge: the class merged).
+void read_label_guards(const StrokeReader& r, Stroke& s, const std::string& tool)
+{
+  const auto* p = std::get_if<PaintSettings>(&s.settings);
+  for (const char* key : {"locked_labels", "only_over_label"})
+    if (r.has(key) && !(p && p->alpha[CHANNEL_LABEL] > 0.f))
+      r.fail(key, "has no meaning for a " + tool + " stroke that does not paint the label channel");
+  const auto id = [](const json& v) {
+    return v.is_number_integer() && v.get<long long>() >= 0 && v.get<long long>() <= (1 << 24);
+  };
+  if (r.has("locked_labels")) {
+    const json& v = r.at("locked_labels");
+    if (!v.is_array() || v.size() > 4096)
+      r.fail("locked_labels", "must be a list of at most 4096 class ids");
+    for (const json& e : v) {
+      if (!id(e))
+        r.fail("locked_labels", "must hold integer class ids from 0 to 16777216");
+      s.paint().locked_labels.push_back(e.get<int>());
+    }
+  }
+  if (r.has("only_over_label")) {
+    if (!id(r.at("only_over_label")))
+      r.fail("only_over_label", "must be an integer class id from 0 to 16777216 (0: unlabelled)");
+    s.paint().only_over_label = r.at("only_over_label").get<int>();
+  }
+  if (s.tool == Tool::Merge && !r.has("only_over_label"))
+    r.fail("only_over_label", "is required for a merge: the class whose texels become \"channels\" {\"label\": id}");
+}
+
 //! "camera": {"position": [x, y, z], "focal_point": [...], "view_up": [...], "view_angle": degrees}
 Camera read_camera(const StrokeReader& r)
 {
@@ -325,13 +355,14 @@ Stroke read_stroke(const json& j, std::size_t index)
   static const std::set<std::string> known = {
     "tool",   "points", "radius",   "strength",   "falloff", "spacing", "op",     "channels", "alphas",
     "pressure", "mirror", "amount", "iterations", "target", "method",  "lambda", "mu",
-    "mode",     "coefficient", "pattern", "stroke", "stamp", "edit_level", "space", "camera", "backfaces", "spray", "side"};
+    "mode",     "coefficient", "pattern", "stroke", "stamp", "edit_level", "space", "camera", "backfaces", "spray", "side",
+    "locked_labels", "only_over_label"};
   const StrokeReader r(j, index);
   for (const auto& item : j.items())
     if (!known.count(item.key()))
       r.fail(item.key(), "is not a stroke key (tool, points, radius, strength, falloff, spacing, op, "
                          "channels, alphas, pressure, mirror, amount, iterations, target, method, lambda, mu, "
-                         "mode, coefficient, pattern, stroke, stamp, edit_level, space, camera, backfaces, spray, side)");
+                         "mode, coefficient, pattern, stroke, stamp, edit_level, space, camera, backfaces, spray, side, locked_labels, only_over_label)");
   Stroke s;
   static const std::vector<std::string> tools(kToolNames.begin(), kToolNames.end());
   std::string tool = r.word("tool", "paint", tools);
@@ -345,7 +376,8 @@ Stroke read_stroke(const json& j, std::size_t index)
     if (r.has("channels"))
       r.fail("channels", "has no meaning for op " + tool + ", which moves the colours already there");
   }
-  const bool paints = s.tool == Tool::Paint || s.tool == Tool::Label || s.tool == Tool::Wash || s.tool == Tool::Dip;
+  const bool labels = s.tool == Tool::Label || s.tool == Tool::Fill || s.tool == Tool::Merge;
+  const bool paints = s.tool == Tool::Paint || s.tool == Tool::Wash || s.tool == Tool::Dip || labels;
   const bool everywhere = covers_everything(s.tool);
   const bool moves = s.tool == Tool::Sculpt || s.tool == Tool::Inflate || s.tool == Tool::Flatten;
   const bool smooths = s.tool == Tool::Smooth || s.tool == Tool::Blur;
@@ -418,6 +450,13 @@ Stroke read_stroke(const json& j, std::size_t index)
     s.points = r.points("points");
     if (s.points.empty())
       r.fail("points", "is empty: a stroke needs at least one point");
+    if (s.tool == Tool::Fill) {
+      if (s.points.size() != 1)
+        r.fail("points", "of a fill must be one point: where the region to fill is");
+      for (const char* key : {"mirror", "pressure", "stroke", "space"})
+        if (r.has(key))
+          r.fail(key, "has no meaning for a fill, which fills the region at one point");
+    }
     if (!r.has("radius"))
       r.fail("radius", "is required (world units)");
     s.brush.radius = float(r.number("radius", 0.0, 1e-30, 1e30));
@@ -462,20 +501,20 @@ Stroke read_stroke(const json& j, std::size_t index)
     }
   }
   if (r.has("stamp")) {
-    if (everywhere || s.tool == Tool::Label)
+    if (everywhere || labels)
       r.fail("stamp", "has no meaning for a " + tool + " stroke");
     if (!r.at("stamp").is_string() || r.at("stamp").get<std::string>().empty())
       r.fail("stamp", "must be the file name of a brush image");
     s.brush.stamp_file = r.at("stamp").get<std::string>();
   }
-  if (r.has("pattern") && !paints)
+  if (r.has("pattern") && (!paints || s.tool == Tool::Fill || s.tool == Tool::Merge))
     r.fail("pattern", "has no meaning for a " + tool + " stroke");
   if (r.has("pattern"))
     read_pattern(r, s);
   read_space(r, s, tool, everywhere);
   if (s.tool == Tool::Dip && s.paint().pattern.kind == PATTERN_NONE)
     r.fail("pattern", "is required for a dip: the 3D matte to dip through, e.g. {\"type\": \"bath\"}");
-  if (r.has("mode") && (!paints || s.tool == Tool::Label))
+  if (r.has("mode") && (!paints || labels))
     r.fail("mode", "has no meaning for a " + tool + " stroke");
   const std::string mode = r.word("mode", "", {"material", "remover", "dye", "polish", "sandpaper"});
   if (!r.has("mode") && r.has("coefficient"))
@@ -513,12 +552,13 @@ Stroke read_stroke(const json& j, std::size_t index)
     s.paint().alpha[CHANNEL_SPECULAR] = 1.f;
   }
   const bool has_paint = paints && (r.has("channels") || s.paint().remover || s.paint().specular_coefficient >= 0.f);
-  if (s.tool == Tool::Label) {
+  if (labels) {
     if (!r.has("channels") || r.at("channels").size() != 1 || !r.at("channels").contains("label"))
-      r.fail("channels", "of a label stroke must be exactly {\"label\": id}");
+      r.fail("channels", "of a " + tool + " stroke must be exactly {\"label\": id}");
   } else if (paints && !has_paint) {
     r.fail("channels", "is required: what to paint, e.g. {\"diffuse\": [1, 0, 0]}");
   }
+  read_label_guards(r, s, tool);
   return s;
 }
 
@@ -544,7 +584,9 @@ void check_stroke(const Stroke& stroke)
 ToolFamily tool_family(const Stroke& stroke)
 {
   switch (stroke.tool) {
-  case Tool::Label: return ToolFamily::Label;
+  case Tool::Label:
+  case Tool::Fill:
+  case Tool::Merge: return ToolFamily::Label;
   case Tool::Blur:
   case Tool::Smear: return ToolFamily::ColourFilter;
   case Tool::Smooth: {
@@ -578,7 +620,8 @@ bool operator==(const PaintSettings& a, const PaintSettings& b)
 {
   return a.op == b.op && a.value == b.value && a.alpha == b.alpha && a.remover == b.remover &&
          a.specular_coefficient == b.specular_coefficient && a.pattern == b.pattern && a.spray_drops == b.spray_drops &&
-         a.spray_size == b.spray_size && a.spray_seed == b.spray_seed;
+         a.spray_size == b.spray_size && a.spray_seed == b.spray_seed && a.locked_labels == b.locked_labels &&
+         a.only_over_label == b.only_over_label;
 }
 
 bool operator==(const SmoothSettings& a, const SmoothSettings& b)

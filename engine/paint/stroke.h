@@ -26,13 +26,15 @@ enum class Tool
   Inflate, //!< move along each point's own normal
   Flatten, //!< move towards the plane through the centre
   Smear,   //!< drag the colours along the stroke: each dab lays down what the previous one picked up
-  Grab     //!< pull the surface around the first point along the path
+  Grab,    //!< pull the surface around the first point along the path
+  Fill,    //!< a class id into the connected region of one class around a point
+  Merge    //!< every texel of one class becomes another class
 };
 
 //! Name of a tool as the stroke script writes it.
 const char* tool_name(Tool tool);
-//! Wash and dip: the paint equation everywhere at once, with no path or brush.
-inline bool covers_everything(Tool tool) { return tool == Tool::Wash || tool == Tool::Dip; }
+//! Wash, dip and merge: everywhere at once, with no path or brush.
+inline bool covers_everything(Tool tool) { return tool == Tool::Wash || tool == Tool::Dip || tool == Tool::Merge; }
 //! The tool of that name. \throw InputError for a name that is none.
 Tool tool_named(const std::string& name);
 
@@ -91,6 +93,8 @@ struct PaintSettings
   int spray_drops = 0;                       //!< screen space: droplets per dab (0: no spray)
   float spray_size = 0.f;                    //!< their radius on the surface, world units
   unsigned spray_seed = 0;
+  std::vector<int> locked_labels;            //!< label channel: classes never overwritten
+  int only_over_label = -1;                  //!< label channel: the one class overwritten (merge: the class merged); -1 any
 };
 
 //! Smooth and blur: Laplacian or Taubin passes.

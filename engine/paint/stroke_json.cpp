@@ -77,6 +77,10 @@ void write_settings(const PaintSettings& p, Tool, json& j)
   }
   if (p.pattern.kind != PATTERN_NONE)
     j["pattern"] = pattern_object(p.pattern);
+  if (!p.locked_labels.empty())
+    j["locked_labels"] = p.locked_labels;
+  if (p.only_over_label >= 0)
+    j["only_over_label"] = p.only_over_label;
 }
 
 void write_settings(const SmoothSettings& m, Tool tool, json& j)

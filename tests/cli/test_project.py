@@ -80,6 +80,42 @@ def test_continuing_a_project_paints_what_one_run_paints(plane, tmp_path):
     assert history_length(tmp_path / "q.meshpaint") == 3
 
 
+# Label edits with the guards: a band of class 2, a fill on either side,
+# class 4 painted with 2 locked, then only over unlabelled surface, a merge.
+LABEL_EDITS = [
+    {"tool": "label", "points": [[2, 0, 0], [2, 4, 0]], "radius": 0.4, "falloff": "constant", "channels": {"label": 2}},
+    {"tool": "fill", "points": [[1, 2, 0]], "radius": 0.3, "channels": {"label": 3}},
+    {"tool": "label", "points": [[1.5, 1, 0], [2.5, 1, 0]], "radius": 0.6, "channels": {"label": 4},
+     "locked_labels": [2]},
+    {"tool": "label", "points": [[2.6, 3, 0]], "radius": 0.9, "channels": {"label": 5}, "only_over_label": 0},
+    {"tool": "merge", "only_over_label": 3, "channels": {"label": 6}, "locked_labels": [4]},
+]
+
+
+def test_label_edits_replay_to_the_same_bits(plane, tmp_path):
+    # Once whole, and continued stroke by stroke from the saved project
+    # (whose history holds the new keys and tools): the same bits.
+    whole = script(tmp_path, "whole.json", LABEL_EDITS, level=3)
+    r = run("paint", str(plane), "--strokes", str(whole), "-o", str(tmp_path / "once"), "--quiet")
+    assert r.returncode == 0, r.stderr
+    project = tmp_path / "p.meshpaint"
+    first = script(tmp_path, "s0.json", LABEL_EDITS[:1], level=3)
+    r = run("paint", str(plane), "--strokes", str(first), "--save", str(project), "--quiet")
+    assert r.returncode == 0, r.stderr
+    for k, stroke in enumerate(LABEL_EDITS[1:], 1):
+        r = run("paint", str(project), "--strokes", str(script(tmp_path, f"s{k}.json", [stroke])),
+                "--save", str(project), "-o", str(tmp_path / "continued"), "--quiet")
+        assert r.returncode == 0, r.stderr
+    assert history_length(project) == len(LABEL_EDITS)
+    once = point_arrays(tmp_path / "once" / "surface.vtp")
+    continued = point_arrays(tmp_path / "continued" / "surface.vtp")
+    assert once[0] == continued[0]
+    assert once[1] == continued[1]
+    labels = {int(v[0]) for v in once[1]["label"]}
+    # 3 was filled in and merged into 6; 4 and 5 painted; 2 kept its band.
+    assert labels >= {2, 4, 5, 6} and 3 not in labels, labels
+
+
 def test_subdivide_and_stats_take_a_project(plane, tmp_path):
     strokes = script(tmp_path, "s.json", [SCULPT, LABEL], level=3)
     project = tmp_path / "p.meshpaint"
