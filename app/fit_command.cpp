@@ -141,6 +141,9 @@ int fit_command(const Argv& argv)
   std::cout << "saved      " << out << "\n";
   if (!report_path.empty()) {
     // One report, written only when the project is: a batch reads both.
+    nlohmann::json stage_faces = nlohmann::json::array();
+    for (int k = 0; decimation && k < decimation->stages; ++k)
+      stage_faces.push_back(decimation->stage_faces[k]);
     nlohmann::json j = {{"scan", path},
                         {"scan_vertices", scan.vertex_count()},
                         {"scan_faces", scan.face_count()},
@@ -149,6 +152,7 @@ int fit_command(const Argv& argv)
                         {"base_faces", base.face_count()},
                         {"budget", decimation ? nlohmann::json(decimation->budget) : nlohmann::json(nullptr)},
                         {"decimation_stages", decimation ? decimation->stages : 0},
+                        {"decimation_stage_faces", stage_faces},
                         {"level", level},
                         {"patches", surface.atlas().topology().patch_count},
                         {"points", fit.points},

@@ -160,6 +160,7 @@ nlohmann::json run_json(const FitRun& run)
           {"budget", r["budget"]},
           {"base_faces", r["base_faces"]},
           {"decimation_stages", r["decimation_stages"]},
+          {"decimation_stage_faces", r["decimation_stage_faces"]},
           {"scan_to_fit_rms_percent", r["scan_to_fit"]["rms_percent"]},
           {"scan_to_fit_max_percent", r["scan_to_fit"]["max_percent"]},
           {"fit_to_scan_rms_percent", r["fit_to_scan"]["rms_percent"]},
@@ -203,7 +204,7 @@ int bench_fit(const Args& args)
     if (entry.is_regular_file() || entry.is_symlink())
       scans.push_back(entry.path());
   std::sort(scans.begin(), scans.end());
-  Table scan_table({"scan", "triangles", "budget", "base faces", "stages", "wall s", "decimate s", "fit s", "peak MiB",
+  Table scan_table({"scan", "triangles", "budget", "faces after each stage", "wall s", "decimate s", "fit s", "peak MiB",
                     "scan->fit RMS %", "max %", "fit->scan RMS %", "max %", "folds"});
   nlohmann::json scan_rows = nlohmann::json::array();
   for (const fs::path& scan : scans) {
@@ -214,9 +215,11 @@ int bench_fit(const Args& args)
       continue;
     }
     const nlohmann::json& r = run.report;
+    std::string stages;
+    for (const auto& faces : r["decimation_stage_faces"])
+      stages += (stages.empty() ? "" : " > ") + grouped(faces.get<std::size_t>());
     std::vector<std::string> cells = {scan.stem().string(), grouped(r["scan_faces"].get<std::size_t>()),
-                                      grouped(r["budget"].get<std::size_t>()), grouped(r["base_faces"].get<std::size_t>()),
-                                      std::to_string(r["decimation_stages"].get<int>()), format_fixed(run.wall_s, 1),
+                                      grouped(r["budget"].get<std::size_t>()), stages, format_fixed(run.wall_s, 1),
                                       format_fixed(r["decimate_s"].get<double>(), 1), format_fixed(r["fit_s"].get<double>(), 1),
                                       format_fixed(run.peak_mib, 0)};
     for (const std::string& c : error_cells(r))

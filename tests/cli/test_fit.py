@@ -166,6 +166,7 @@ def noisy_bowl(path, sigma=0.01):
 
 
 REPORT_KEYS = {"scan", "scan_vertices", "scan_faces", "diagonal", "mode", "base_faces", "budget", "decimation_stages",
+               "decimation_stage_faces",
                "level", "patches", "points", "passes", "ray_misses", "scan_to_fit", "fit_to_scan", "folded_patches",
                "stretched_patches", "decimate_s", "fit_s", "save_s", "total_s", "project"}
 
@@ -181,7 +182,8 @@ def test_fit_reaches_its_budget_on_a_noisy_bordered_scan(tmp_path):
     # each collapse removes two faces, one at a border: the budget or one or two below it
     assert j["budget"] == 100 and 98 <= j["base_faces"] <= 100, j
     # the noise is what stops the first stage (its normal cones are wide from the start)
-    assert j["decimation_stages"] >= 2, j
+    assert j["decimation_stages"] == len(j["decimation_stage_faces"]) >= 2, j
+    assert j["decimation_stage_faces"][0] > 100 and j["decimation_stage_faces"][-1] == j["base_faces"], j
     assert "decimation stage 1 stopped at" in r.stderr
     # the surface still follows the scan: within three noise amplitudes (0.01 of the radius, 0.33% of the diagonal)
     assert j["scan_to_fit"]["rms_percent"] < 1.0 and j["fit_to_scan"]["rms_percent"] < 1.0, j
@@ -216,7 +218,8 @@ def test_fit_report_has_the_documented_keys_and_the_printed_values(tmp_path):
     assert run("fit", str(scan), "--direct", "--level", "1", "--report", str(direct), "-o",
                str(tmp_path / "d.meshpaint"), "--quiet").returncode == 0
     d = json.loads(direct.read_text())
-    assert (d["mode"], d["budget"], d["decimation_stages"], d["base_faces"]) == ("direct", None, 0, 5120)
+    assert (d["mode"], d["budget"], d["decimation_stages"], d["decimation_stage_faces"], d["base_faces"]) == (
+        "direct", None, 0, [], 5120)
 
 
 def test_fit_report_needs_a_json_name_and_is_not_written_on_failure(tmp_path):
