@@ -167,7 +167,8 @@ int fit_command(const Argv& argv)
                         {"save_s", save_ms / 1000},
                         {"total_s", total.ms() / 1000},
                         {"project", out}};
-    const std::string text = j.dump(2) + "\n";
+    // Paths need not be UTF-8: such bytes become U+FFFD rather than an exception.
+    const std::string text = j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
     write_bytes_atomically(report_path, {text});
     std::cout << "report     " << report_path << "\n";
   }

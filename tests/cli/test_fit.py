@@ -229,3 +229,13 @@ def test_fit_report_needs_a_json_name_and_is_not_written_on_failure(tmp_path):
     assert r.returncode == 2 and r.stderr.strip() == f"meshpaint fit: --report needs a file name ending in .json, not '{tmp_path}/fit.txt'"
     r = run("fit", str(tmp_path / "missing.ply"), "--report", str(tmp_path / "fit.json"), "-o", str(tmp_path / "f.meshpaint"))
     assert r.returncode == 2 and not (tmp_path / "fit.json").exists()
+
+
+def test_fit_report_of_a_scan_whose_name_is_not_utf8(tmp_path):
+    scan = tmp_path / os.fsdecode(b"scan\xff.ply")
+    noisy_sphere(tmp_path / "noisy.ply")
+    os.rename(tmp_path / "noisy.ply", scan)
+    report = tmp_path / "fit.json"
+    r = run("fit", str(scan), "--level", "1", "--report", str(report), "-o", str(tmp_path / "f.meshpaint"), "--quiet")
+    assert r.returncode == 0, r.stderr
+    assert json.loads(report.read_text())["scan"] == str(tmp_path / "scan\ufffd.ply")
