@@ -7,6 +7,7 @@
 
 #include "VtkSurfaceQuery.h"
 
+#include "core/atomic_file.h"
 #include "core/errors.h"
 #include "core/format.h"
 #include "core/timer.h"
@@ -14,7 +15,10 @@
 #include "project/project_surface.h"
 #include "project/scan_fit.h"
 
+#include <nlohmann/json.hpp> // for nlohmann::json
+
 #include <iostream> // for std::cout, std::cerr
+#include <optional> // for std::optional
 #include <sstream>  // for std::ostringstream
 
 namespace meshpaint::cli {
@@ -44,18 +48,29 @@ std::string patch_list(const std::vector<int>& patches, const Atlas& atlas, cons
   return out + (patches.size() > 5 ? ", ..." : "");
 }
 
+nlohmann::json error_json(const FitError& e, double diagonal)
+{
+  return {{"rms", e.rms}, {"max", e.max}, {"rms_percent", 100 * e.rms / diagonal}, {"max_percent", 100 * e.max / diagonal}};
+}
+
 } // namespace
 
 int fit_command(const Argv& argv)
 {
-  Args args("fit", argv, {"--direct", "--quiet", "--no-weld"}, {"--base-faces", "--level", "--passes", "-o", "--device", "--storage"});
-  args.expect_positionals(1, 1, "SCAN [--base-faces N] [--level L] [--direct] -o PROJECT.meshpaint");
+  Args args("fit", argv, {"--direct", "--quiet", "--no-weld"}, {"--base-faces", "--level", "--passes", "-o", "--report", "--device", "--storage"});
+  args.expect_positionals(1, 1, "SCAN [--base-faces N] [--level L] [--direct] [--report FILE.json] -o PROJECT.meshpaint");
   const std::string out = args.value("-o");
   if (out.empty())
     throw InputError("-o PROJECT.meshpaint is required");
   if (!is_project_path(out))
     throw InputError("-o needs a file name ending in .meshpaint, not '" + out + "'");
   check_output_folder(out);
+  const std::string report_path = args.value("--report");
+  if (args.has("--report")) {
+    if (lower_extension(report_path) != ".json")
+      throw InputError("--report needs a file name ending in .json, not '" + report_path + "'");
+    check_output_folder(report_path);
+  }
   if (args.flag("--direct") && args.has("--base-faces"))
     throw InputError("--base-faces and --direct exclude each other");
   const int base_faces = args.integer("--base-faces", 0, 4, 10000000);
@@ -73,14 +88,19 @@ int fit_command(const Argv& argv)
   t.restart();
   std::string mode;
   BaseMesh base;
+  std::optional<Decimation> decimation;
   if (args.flag("--direct")) {
     base = scan;
     mode = "direct: the scan is the base mesh";
   } else {
     const std::size_t budget = base_faces > 0 ? std::size_t(base_faces) : default_base_faces(scan.face_count());
     say("decimating to " + grouped(budget) + " faces");
-    base = decimate(scan, budget);
+    decimation = decimate(scan, budget);
+    base = decimation->base;
     mode = "decimated to " + grouped(base.face_count()) + " faces (budget " + grouped(budget) + ")";
+    for (int s = 0; s + 1 < decimation->stages; ++s)
+      say("decimation stage " + std::to_string(s + 1) + " stopped at " + grouped(decimation->stage_faces[s]) +
+          " faces; stage " + std::to_string(s + 2) + " goes on");
   }
   const double decimate_ms = t.ms();
   say(mode + " (" + format_fixed(decimate_ms, 0) + " ms)");
@@ -119,6 +139,39 @@ int fit_command(const Argv& argv)
   std::cout << "time       decimate " << format_fixed(decimate_ms, 0) << " ms, fit " << format_fixed(fit_ms, 0)
             << " ms, save " << format_fixed(save_ms, 0) << " ms, total " << format_fixed(total.ms(), 0) << " ms\n";
   std::cout << "saved      " << out << "\n";
+  if (!report_path.empty()) {
+    // One report, written only when the project is: a batch reads both.
+    nlohmann::json stage_faces = nlohmann::json::array();
+    for (int k = 0; decimation && k < decimation->stages; ++k)
+      stage_faces.push_back(decimation->stage_faces[k]);
+    nlohmann::json j = {{"scan", path},
+                        {"scan_vertices", scan.vertex_count()},
+                        {"scan_faces", scan.face_count()},
+                        {"diagonal", diagonal},
+                        {"mode", decimation ? "decimated" : "direct"},
+                        {"base_faces", base.face_count()},
+                        {"budget", decimation ? nlohmann::json(decimation->budget) : nlohmann::json(nullptr)},
+                        {"decimation_stages", decimation ? decimation->stages : 0},
+                        {"decimation_stage_faces", stage_faces},
+                        {"level", level},
+                        {"patches", surface.atlas().topology().patch_count},
+                        {"points", fit.points},
+                        {"passes", passes},
+                        {"ray_misses", fit.ray_misses},
+                        {"scan_to_fit", error_json(fit.scan_to_surface, diagonal)},
+                        {"fit_to_scan", error_json(fit.surface_to_scan, diagonal)},
+                        {"folded_patches", fit.folded.size()},
+                        {"stretched_patches", fit.stretched.size()},
+                        {"decimate_s", decimate_ms / 1000},
+                        {"fit_s", fit_ms / 1000},
+                        {"save_s", save_ms / 1000},
+                        {"total_s", total.ms() / 1000},
+                        {"project", out}};
+    // Paths need not be UTF-8: such bytes become U+FFFD rather than an exception.
+    const std::string text = j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+    write_bytes_atomically(report_path, {text});
+    std::cout << "report     " << report_path << "\n";
+  }
   const std::vector<Float4> limit = surface.atlas().read_limit_positions();
   if (!fit.folded.empty())
     std::cerr << "meshpaint fit: warning: " << fit.folded.size() << " patches fold (a quad faces against the "

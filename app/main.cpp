@@ -42,9 +42,10 @@ commands:
                                       recorded strokes and the surface into DIR
   stats MESH [--labels labels.json] [--json|--csv] [--level L]
                                       per-label area, centroid and bounds
-  fit SCAN [--base-faces N] [--level L] [--direct] [--passes P] [--quiet] -o PROJECT.meshpaint
+  fit SCAN [--base-faces N] [--level L] [--direct] [--passes P] [--report FILE.json] [--quiet] -o PROJECT.meshpaint
                                       a project from a scan: coarse base mesh (decimated),
                                       atlas at level L fitted onto the scan; fit error
+                                      (--report: also as JSON)
   transfer PROJECT --to SCAN -o OUT.{vtp,ply} [--geometry] [--quiet]
                                       the scan with the project's channels as point
                                       arrays (label, diffuse, ...); --geometry: moved

@@ -1,8 +1,9 @@
-// meshpaint bench fit: `meshpaint fit` against scan size. The scans are the
-// femur scan refined by Loop subdivision (OpenMesh's subdivider) until it
-// has 10^5 triangles and more, each with seeded Gaussian noise; every fit
-// runs as the meshpaint program in a child process, whose wall time and
-// peak resident memory (wait4's rusage) are what a user's run would take.
+// meshpaint bench fit: `meshpaint fit` on every scan in data/scans, then
+// against scan size: the femur scan refined by Loop subdivision (OpenMesh's
+// subdivider) until it has 10^5 triangles and more, each with seeded
+// Gaussian noise. Every fit runs as the meshpaint program in a child
+// process, whose wall time and peak resident memory (wait4's rusage) are
+// what a user's run would take; its numbers come from its JSON report.
 
 #include "benchmarks.h"
 #include "table.h"
@@ -11,17 +12,18 @@
 #include "core/format.h"
 #include "core/timer.h"
 
+#include <nlohmann/json.hpp>                     // for nlohmann::json
 #include <OpenMesh/Core/IO/MeshIO.hh>                   // for OpenMesh::IO::read_mesh, write_mesh
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>   // for TriMesh_ArrayKernelT
 #include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>   // for LoopT
 
 #include <cerrno>     // for errno
 #include <cstring>    // for std::strerror
+#include <algorithm>  // for std::sort
 #include <filesystem> // for std::filesystem
 #include <fstream>    // for std::ifstream
 #include <iostream>   // for std::cout, std::cerr
 #include <random>     // for std::mt19937, std::normal_distribution
-#include <regex>      // for std::regex
 #include <sstream>    // for std::ostringstream
 
 #include <csignal>        // for SIGKILL
@@ -48,7 +50,8 @@ struct FitRun
 {
   std::size_t triangles = 0, vertices = 0;
   double wall_s = 0, peak_mib = 0;
-  std::string report, warnings; //!< fit's stdout and stderr
+  std::string warnings;         //!< fit's stderr
+  nlohmann::json report;        //!< fit's --report
   std::string failure;          //!< empty when the fit succeeded
 };
 
@@ -94,7 +97,6 @@ FitRun run_measured(const std::vector<std::string>& argv, const fs::path& out, c
     throw ResourceError("lost the fit process: " + std::string(std::strerror(errno)));
   run.wall_s = wall.ms() / 1000;
   run.peak_mib = double(usage.ru_maxrss) / 1024; // kilobytes on Linux
-  run.report = read_text(out);
   run.warnings = read_text(err);
   if (WIFSIGNALED(status))
     run.failure = "killed by signal " + std::to_string(WTERMSIG(status)) +
@@ -121,19 +123,49 @@ void write_noisy(TriMesh& mesh, double sigma, unsigned seed, const fs::path& pat
     throw IOError("cannot write the made scan " + path.string());
 }
 
-//! A number of fit's report: the `group`th capture of `pattern`.
-double reported(const std::string& report, const std::string& pattern, int group)
+//! Fits `scan` with `meshpaint fit --report` in a child process.
+FitRun fit_scan(const std::string& program, const fs::path& scan, int level, const std::vector<std::string>& passed,
+                const fs::path& folder)
 {
-  std::smatch m;
-  if (!std::regex_search(report, m, std::regex(pattern)))
-    throw InputError("bench fit: the fit report has no line matching '" + pattern + "'");
-  return std::stod(m[group].str());
+  const fs::path report = folder / "fit.json";
+  fs::remove(report);
+  std::vector<std::string> argv = {program, "fit", scan.string(), "--level", std::to_string(level), "--quiet",
+                                   "--report", report.string(), "-o", (folder / "scan.meshpaint").string()};
+  argv.insert(argv.end(), passed.begin(), passed.end());
+  FitRun run = run_measured(argv, folder / "fit.txt", folder / "fit.err");
+  if (run.failure.empty())
+    run.report = nlohmann::json::parse(read_text(report));
+  return run;
 }
 
-std::size_t count_of(const std::string& text, const std::string& pattern)
+//! A row's error cells: RMS and max % both ways, and the folded patches.
+std::vector<std::string> error_cells(const nlohmann::json& r)
 {
-  std::smatch m;
-  return std::regex_search(text, m, std::regex(pattern)) ? std::stoul(m[1].str()) : 0;
+  return {format_fixed(r["scan_to_fit"]["rms_percent"].get<double>(), 4),
+          format_fixed(r["scan_to_fit"]["max_percent"].get<double>(), 4),
+          format_fixed(r["fit_to_scan"]["rms_percent"].get<double>(), 4),
+          format_fixed(r["fit_to_scan"]["max_percent"].get<double>(), 4), std::to_string(r["folded_patches"].get<int>())};
+}
+
+//! The run as one flat JSON object.
+nlohmann::json run_json(const FitRun& run)
+{
+  const nlohmann::json& r = run.report;
+  return {{"triangles", r["scan_faces"]},
+          {"vertices", r["scan_vertices"]},
+          {"wall_s", run.wall_s},
+          {"decimate_s", r["decimate_s"]},
+          {"fit_s", r["fit_s"]},
+          {"peak_mib", run.peak_mib},
+          {"budget", r["budget"]},
+          {"base_faces", r["base_faces"]},
+          {"decimation_stages", r["decimation_stages"]},
+          {"decimation_stage_faces", r["decimation_stage_faces"]},
+          {"scan_to_fit_rms_percent", r["scan_to_fit"]["rms_percent"]},
+          {"scan_to_fit_max_percent", r["scan_to_fit"]["max_percent"]},
+          {"fit_to_scan_rms_percent", r["fit_to_scan"]["rms_percent"]},
+          {"fit_to_scan_max_percent", r["fit_to_scan"]["max_percent"]},
+          {"folds", r["folded_patches"]}};
 }
 
 } // namespace
@@ -166,9 +198,41 @@ int bench_fit(const Args& args)
     if (args.has(option))
       passed.insert(passed.end(), {option, args.value(option)});
 
+  // Every scan as it is, at the default budget.
+  std::vector<fs::path> scans;
+  for (const auto& entry : fs::directory_iterator(scans_dir()))
+    if (entry.is_regular_file() || entry.is_symlink())
+      scans.push_back(entry.path());
+  std::sort(scans.begin(), scans.end());
+  Table scan_table({"scan", "triangles", "budget", "faces after each stage", "wall s", "decimate s", "fit s", "peak MiB",
+                    "scan->fit RMS %", "max %", "fit->scan RMS %", "max %", "folds"});
+  nlohmann::json scan_rows = nlohmann::json::array();
+  for (const fs::path& scan : scans) {
+    std::cerr << "meshpaint bench: fitting " << scan.filename().string() << " at level " << level << "\n";
+    const FitRun run = fit_scan(program, scan, level, passed, folder);
+    if (!run.failure.empty()) {
+      std::cerr << "meshpaint bench: the fit of " << scan.string() << " failed (" << run.failure << ")\n";
+      continue;
+    }
+    const nlohmann::json& r = run.report;
+    std::string stages;
+    for (const auto& faces : r["decimation_stage_faces"])
+      stages += (stages.empty() ? "" : " > ") + grouped(faces.get<std::size_t>());
+    std::vector<std::string> cells = {scan.stem().string(), grouped(r["scan_faces"].get<std::size_t>()),
+                                      grouped(r["budget"].get<std::size_t>()), stages, format_fixed(run.wall_s, 1),
+                                      format_fixed(r["decimate_s"].get<double>(), 1), format_fixed(r["fit_s"].get<double>(), 1),
+                                      format_fixed(run.peak_mib, 0)};
+    for (const std::string& c : error_cells(r))
+      cells.push_back(c);
+    scan_table.add(cells);
+    nlohmann::json j = run_json(run);
+    j["name"] = scan.stem().string();
+    scan_rows.push_back(j);
+  }
+
   Table table({"triangles", "vertices", "subdivisions", "wall s", "decimate s", "fit s", "peak MiB", "base faces",
                "scan->fit RMS %", "max %", "fit->scan RMS %", "max %", "folds"});
-  std::ostringstream rows;
+  nlohmann::json rows = nlohmann::json::array();
   OpenMesh::Subdivider::Uniform::LoopT<TriMesh> loop;
   for (int steps = 1; mesh.n_faces() * 4 <= max_triangles; ++steps) {
     loop.attach(mesh);
@@ -178,11 +242,8 @@ int bench_fit(const Args& args)
       continue;
     const fs::path scan = folder / "scan.ply";
     write_noisy(mesh, sigma, unsigned(steps), scan);
-    std::vector<std::string> argv = {program, "fit", scan.string(), "--level", std::to_string(level), "--quiet",
-                                     "-o", (folder / "scan.meshpaint").string()};
-    argv.insert(argv.end(), passed.begin(), passed.end());
     std::cerr << "meshpaint bench: fitting " << grouped(mesh.n_faces()) << " triangles at level " << level << "\n";
-    FitRun run = run_measured(argv, folder / "fit.txt", folder / "fit.err");
+    FitRun run = fit_scan(program, scan, level, passed, folder);
     run.triangles = mesh.n_faces();
     run.vertices = mesh.n_vertices();
     fs::remove(scan);
@@ -191,36 +252,32 @@ int bench_fit(const Args& args)
                 << "); larger scans are not tried\n";
       break;
     }
-    const std::string pct = R"(RMS [^ ]+ \(([0-9.]+)%\), max [^ ]+ \(([0-9.]+)%\))";
-    const double s2f_rms = reported(run.report, "scan->fit +" + pct, 1), s2f_max = reported(run.report, "scan->fit +" + pct, 2);
-    const double f2s_rms = reported(run.report, "fit->scan +" + pct, 1), f2s_max = reported(run.report, "fit->scan +" + pct, 2);
-    const double decimate_s = reported(run.report, R"(time +decimate ([0-9.]+) ms)", 1) / 1000;
-    const double fit_s = reported(run.report, R"(, fit ([0-9.]+) ms)", 1) / 1000;
-    std::smatch m;
-    std::string base_faces; // none with --direct; fit decimates here
-    if (std::regex_search(run.report, m, std::regex(R"(decimated to ([0-9,]+) faces)")))
-      base_faces = m[1].str();
-    const std::size_t folds = count_of(run.warnings, R"(warning: ([0-9]+) patches fold)");
+    const nlohmann::json& r = run.report;
     // Each fit can take minutes: its numbers as soon as it ends.
     std::cerr << "meshpaint bench: " << grouped(run.triangles) << " triangles: " << format_fixed(run.wall_s, 1)
-              << " s, peak " << format_fixed(run.peak_mib, 0) << " MiB, scan->fit RMS " << format_fixed(s2f_rms, 4)
-              << "%, max " << format_fixed(s2f_max, 4) << "%\n";
-    table.add({grouped(run.triangles), grouped(run.vertices), std::to_string(steps), format_fixed(run.wall_s, 1),
-               format_fixed(decimate_s, 1), format_fixed(fit_s, 1), format_fixed(run.peak_mib, 0), base_faces,
-               format_fixed(s2f_rms, 4), format_fixed(s2f_max, 4), format_fixed(f2s_rms, 4), format_fixed(f2s_max, 4),
-               std::to_string(folds)});
-    rows << (rows.tellp() > 0 ? "," : "") << "{\"triangles\":" << run.triangles << ",\"vertices\":" << run.vertices
-         << ",\"wall_s\":" << run.wall_s << ",\"decimate_s\":" << decimate_s << ",\"fit_s\":" << fit_s
-         << ",\"peak_mib\":" << run.peak_mib << ",\"scan_to_fit_rms_percent\":" << s2f_rms
-         << ",\"scan_to_fit_max_percent\":" << s2f_max << ",\"fit_to_scan_rms_percent\":" << f2s_rms
-         << ",\"fit_to_scan_max_percent\":" << f2s_max << ",\"folds\":" << folds << "}";
+              << " s, peak " << format_fixed(run.peak_mib, 0) << " MiB, scan->fit RMS "
+              << format_fixed(r["scan_to_fit"]["rms_percent"].get<double>(), 4) << "%, max "
+              << format_fixed(r["scan_to_fit"]["max_percent"].get<double>(), 4) << "%\n";
+    std::vector<std::string> cells = {grouped(run.triangles), grouped(run.vertices), std::to_string(steps),
+                                      format_fixed(run.wall_s, 1), format_fixed(r["decimate_s"].get<double>(), 1),
+                                      format_fixed(r["fit_s"].get<double>(), 1), format_fixed(run.peak_mib, 0),
+                                      grouped(r["base_faces"].get<std::size_t>()) + " (" +
+                                        grouped(r["budget"].get<std::size_t>()) + ")"};
+    const std::vector<std::string> errors = error_cells(r);
+    cells.insert(cells.end(), errors.begin(), errors.end());
+    table.add(cells);
+    rows.push_back(run_json(run));
   }
   fs::remove_all(folder);
   if (json) {
-    std::cout << "{\"scan\":\"femur\",\"level\":" << level << ",\"noise\":" << kNoise << ",\"fits\":[" << rows.str()
-              << "]}\n";
+    const nlohmann::json out = {{"scan", "femur"}, {"level", level}, {"noise", kNoise}, {"fits", rows},
+                                {"scans", scan_rows}};
+    std::cout << out.dump() << "\n";
     return 0;
   }
+  std::cout << "meshpaint fit on every scan in " << scans_dir() << ", default budget, level " << level << "\n";
+  scan_table.print(std::cout);
+  std::cout << "\n";
   std::cout << "meshpaint fit on femur refined by Loop subdivision, noise " << kNoise * 100
             << "% of the diagonal per coordinate, level " << level << "\n";
   table.print(std::cout);

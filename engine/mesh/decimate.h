@@ -11,12 +11,28 @@ namespace meshpaint {
 //! from 200 up to 20,000.
 std::size_t default_base_faces(std::size_t faces);
 
+//! How the decimation went.
+struct Decimation
+{
+  BaseMesh base;              //!< the decimated mesh
+  std::size_t budget = 0;     //!< the face budget asked for
+  int stages = 0;             //!< stages run, 1 to 3 (see decimate())
+  std::size_t stage_faces[3] = {0, 0, 0}; //!< triangles after each stage run
+};
+
 //! `mesh` (polygons fanned into triangles) decimated by edge collapses to
-//! at most `target_faces` triangles: OpenMesh's quadric error module orders
-//! the collapses, its normal-deviation module forbids those that turn a face
-//! by more than 60 degrees, and border vertices are locked, so borders keep
-//! their vertices. Stops earlier when no allowed collapse is left.
+//! at most `target_faces` triangles, OpenMesh's quadric error module
+//! ordering the collapses, in up to three stages that each go on from the
+//! last where it stopped above the budget:
+//! 1. the normal-deviation module forbids collapses that widen the cone of
+//!    normals a face stands for beyond 60 degrees, border vertices locked;
+//! 2. the normal-flipping module instead forbids only collapses that turn
+//!    a face by more than 60 degrees at once (on noisy scans the cones of
+//!    stage 1 are wide from the start, so stage 1 stops early there);
+//! 3. as stage 2 with border vertices free (they stay on border points:
+//!    OpenMesh moves a collapsed vertex onto its neighbour).
+//! Stops above the budget only when no allowed collapse is left.
 //! \throw InputError when the result is not a valid base mesh.
-BaseMesh decimate(const BaseMesh& mesh, std::size_t target_faces);
+Decimation decimate(const BaseMesh& mesh, std::size_t target_faces);
 
 } // namespace meshpaint

@@ -4,6 +4,7 @@ Run by CTest with PYTHONPATH=build/python and MESHPAINT_SOURCE_DIR set; the
 batch finds build/bin/meshpaint beside the package, as a user's would.
 """
 import csv
+import json
 import os
 import shutil
 import subprocess
@@ -106,8 +107,11 @@ def test_six_scans_on_two_workers_five_results_and_one_recorded_failure(cluster,
         triangles, vertices = triangles_and_vertices(scan)
         assert row["triangles"] == triangles
         # fit's own report (both directions) against the summary's figures
-        report = (folder / "fit.txt").read_text()
-        assert (row["fit_rms_percent"], row["fit_worst_percent"]) == scan_job.fit_errors(report)
+        report = json.loads((folder / "fit.json").read_text())
+        assert (row["fit_rms_percent"], row["fit_worst_percent"]) == scan_job.fit_errors(str(folder / "fit.json"))
+        assert row["fit_rms_percent"] == max(report["scan_to_fit"]["rms_percent"], report["fit_to_scan"]["rms_percent"])
+        assert row["fit_worst_percent"] == max(report["scan_to_fit"]["max_percent"], report["fit_to_scan"]["max_percent"])
+        assert report["mode"] == "decimated" and report["base_faces"] <= report["budget"]
         assert 0 < row["fit_rms_percent"] <= row["fit_worst_percent"]
         # the wash labelled everything 1, named by the labels file, on the surface and on the scan
         with open(folder / "stats.csv", newline="") as f:

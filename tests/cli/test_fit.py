@@ -145,3 +145,97 @@ def test_fit_arguments_are_checked(tmp_path, args, message):
     lines = r.stderr.strip().splitlines()
     assert r.returncode == 2 and len(lines) == 1, r.stderr
     assert re.search(message, lines[0]), lines[0]
+
+
+def noisy_bowl(path, sigma=0.01):
+    """The noisy sphere's lower half (a border along the cut), 2,560 triangles and more."""
+    noisy_sphere(path, sigma=sigma)
+    reader = vtk.vtkPLYReader()
+    reader.SetFileName(str(path))
+    plane = vtk.vtkPlane()
+    plane.SetNormal(0, 0, -1)
+    clip = vtk.vtkClipPolyData()
+    clip.SetInputConnection(reader.GetOutputPort())
+    clip.SetClipFunction(plane)
+    tri = vtk.vtkTriangleFilter()
+    tri.SetInputConnection(clip.GetOutputPort())
+    writer = vtk.vtkPLYWriter()
+    writer.SetFileName(str(path))
+    writer.SetInputConnection(tri.GetOutputPort())
+    writer.Write()
+
+
+REPORT_KEYS = {"scan", "scan_vertices", "scan_faces", "diagonal", "mode", "base_faces", "budget", "decimation_stages",
+               "decimation_stage_faces",
+               "level", "patches", "points", "passes", "ray_misses", "scan_to_fit", "fit_to_scan", "folded_patches",
+               "stretched_patches", "decimate_s", "fit_s", "save_s", "total_s", "project"}
+
+
+def test_fit_reaches_its_budget_on_a_noisy_bordered_scan(tmp_path):
+    scan = tmp_path / "bowl.ply"
+    noisy_bowl(scan)
+    report = tmp_path / "fit.json"
+    r = run("fit", str(scan), "--base-faces", "100", "--level", "2", "--report", str(report),
+            "-o", str(tmp_path / "f.meshpaint"))
+    assert r.returncode == 0, r.stderr
+    j = json.loads(report.read_text())
+    # each collapse removes two faces, one at a border: the budget or one or two below it
+    assert j["budget"] == 100 and 98 <= j["base_faces"] <= 100, j
+    # the noise is what stops the first stage (its normal cones are wide from the start)
+    assert j["decimation_stages"] == len(j["decimation_stage_faces"]) >= 2, j
+    assert j["decimation_stage_faces"][0] > 100 and j["decimation_stage_faces"][-1] == j["base_faces"], j
+    assert "decimation stage 1 stopped at" in r.stderr
+    # the surface still follows the scan: within three noise amplitudes (0.01 of the radius, 0.33% of the diagonal)
+    assert j["scan_to_fit"]["rms_percent"] < 1.0 and j["fit_to_scan"]["rms_percent"] < 1.0, j
+
+
+def test_fit_report_has_the_documented_keys_and_the_printed_values(tmp_path):
+    scan = tmp_path / "noisy.ply"
+    noisy_sphere(scan)
+    report = tmp_path / "fit.json"
+    project = tmp_path / "f.meshpaint"
+    r = run("fit", str(scan), "--level", "1", "--report", str(report), "-o", str(project), "--quiet")
+    assert r.returncode == 0, r.stderr
+    assert sorted(os.listdir(tmp_path)) == ["f.meshpaint", "fit.json", "noisy.ply"]  # no temporaries left
+    j = json.loads(report.read_text())
+    assert set(j) == REPORT_KEYS
+    assert (j["scan"], j["project"], j["mode"], j["level"], j["passes"]) == (str(scan), str(project), "decimated", 1, 2)
+    assert (j["scan_vertices"], j["scan_faces"]) == (2562, 5120)
+    assert j["budget"] == 200 and j["base_faces"] <= 200 and j["patches"] == 3 * j["base_faces"]
+    m = re.search(r"^atlas +level 1, ([0-9,]+) patches, ([0-9,]+) points", r.stdout, re.M)
+    assert (int(m[1].replace(",", "")), int(m[2].replace(",", ""))) == (j["patches"], j["points"])
+    printed = fit_numbers(r.stdout)
+    for key, name in (("scan->fit", "scan_to_fit"), ("fit->scan", "fit_to_scan")):
+        e = j[name]
+        assert set(e) == {"rms", "max", "rms_percent", "max_percent"}
+        assert printed[key] == (round(e["rms_percent"], 4), round(e["max_percent"], 4))
+        assert e["rms_percent"] == pytest.approx(100 * e["rms"] / j["diagonal"])
+        assert 0 < e["rms"] <= e["max"]
+    assert j["diagonal"] == pytest.approx(2.0 * math.sqrt(3), rel=0.05)
+    assert 0 <= j["decimate_s"] and 0 < j["fit_s"] and j["decimate_s"] + j["fit_s"] + j["save_s"] <= j["total_s"]
+
+    direct = tmp_path / "direct.json"
+    assert run("fit", str(scan), "--direct", "--level", "1", "--report", str(direct), "-o",
+               str(tmp_path / "d.meshpaint"), "--quiet").returncode == 0
+    d = json.loads(direct.read_text())
+    assert (d["mode"], d["budget"], d["decimation_stages"], d["decimation_stage_faces"], d["base_faces"]) == (
+        "direct", None, 0, [], 5120)
+
+
+def test_fit_report_needs_a_json_name_and_is_not_written_on_failure(tmp_path):
+    scan = tmp_path / "noisy.ply"
+    noisy_sphere(scan)
+    r = run("fit", str(scan), "--report", str(tmp_path / "fit.txt"), "-o", str(tmp_path / "f.meshpaint"))
+    assert r.returncode == 2 and r.stderr.strip() == f"meshpaint fit: --report needs a file name ending in .json, not '{tmp_path}/fit.txt'"
+    r = run("fit", str(tmp_path / "missing.ply"), "--report", str(tmp_path / "fit.json"), "-o", str(tmp_path / "f.meshpaint"))
+    assert r.returncode == 2 and not (tmp_path / "fit.json").exists()
+
+
+def test_fit_report_of_a_scan_whose_name_is_not_utf8(tmp_path):
+    scan = tmp_path / os.fsdecode(b"scan\xff.ply")
+    noisy_sphere(tmp_path / "noisy.ply")
+    os.rename(tmp_path / "noisy.ply", scan)
+    report = tmp_path / "fit.json"
+    r = run("fit", str(scan), "--level", "1", "--report", str(report), "-o", str(tmp_path / "f.meshpaint"), "--quiet")
+    assert r.returncode == 0, r.stderr
+    assert json.loads(report.read_text())["scan"] == str(tmp_path / "scan\ufffd.ply")

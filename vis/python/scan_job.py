@@ -10,8 +10,8 @@ Outputs are built in a hidden folder beside the scan's folder and swapped
 in whole when every step succeeded; a failed scan leaves the previous
 results as they were. The log of every run goes to logs/NAME.log.
 """
+import json
 import os
-import re
 import shutil
 import signal
 import subprocess
@@ -22,13 +22,11 @@ import uuid
 PROJECT = "project.meshpaint"
 TRANSFERRED = "scan.vtp"
 STATS = "stats.csv"
-FIT_REPORT = "fit.txt"
+FIT_REPORT = "fit.json"
 LOGS = "logs"
 
 #: Rows of the summary, in CSV column order.
 COLUMNS = ("scan", "status", "triangles", "fit_rms_percent", "fit_worst_percent", "seconds", "error", "path")
-
-_PERCENT = re.compile(r"\(([-+0-9.eE]+)%\)")
 
 
 class StepFailed(Exception):
@@ -49,17 +47,15 @@ def find_executable(executable=None):
     raise StepFailed("cannot find the meshpaint program (not beside the package, not on PATH)")
 
 
-def fit_errors(report):
-    """(RMS, worst) in % of the diagonal from fit's report: the larger of the two directions."""
-    rms, worst = [], []
-    for key in ("scan->fit", "fit->scan"):
-        line = next((l for l in report.splitlines() if l.startswith(key)), None)
-        numbers = _PERCENT.findall(line or "")
-        if len(numbers) != 2:
-            raise StepFailed(f"meshpaint fit: no '{key}' error in its report")
-        rms.append(float(numbers[0]))
-        worst.append(float(numbers[1]))
-    return max(rms), max(worst)
+def fit_errors(path):
+    """(RMS, worst) in % of the diagonal from fit's JSON report (`fit --report`): the larger of the two directions."""
+    try:
+        with open(path, encoding="utf-8") as f:
+            report = json.load(f)
+        errors = [report[key] for key in ("scan_to_fit", "fit_to_scan")]
+        return (max(float(e["rms_percent"]) for e in errors), max(float(e["max_percent"]) for e in errors))
+    except (OSError, ValueError, KeyError, TypeError) as e:
+        raise StepFailed(f"meshpaint fit: its report {os.path.basename(path)} is unreadable ({e})") from None
 
 
 def count_triangles(path):
@@ -170,9 +166,9 @@ def process_scan(scan, name, output, strokes, fit=False, labels=None, level=None
         project = os.path.join(built, PROJECT)
         level_args = [] if level is None else ["--level", str(level)]
         if fit:
-            report = steps.run("fit", scan, *level_args, "--quiet", "-o", project)
+            report = os.path.join(built, FIT_REPORT)
+            steps.run("fit", scan, *level_args, "--quiet", "--report", report, "-o", project)
             row["fit_rms_percent"], row["fit_worst_percent"] = fit_errors(report)
-            write_atomically(os.path.join(built, FIT_REPORT), report)
             source, level_args = project, []  # the project carries its level
         else:
             source = scan
