@@ -43,7 +43,7 @@ void decimate_stage(TriMesh& tm, std::size_t target_faces, int stage)
 
 } // namespace
 
-std::size_t default_base_faces(std::size_t faces) { return std::min<std::size_t>(20000, std::max<std::size_t>(200, faces / 50)); }
+std::size_t default_base_faces(std::size_t faces) { return std::min<std::size_t>(20000, std::max<std::size_t>(2500, faces / 50)); }
 
 Decimation decimate(const BaseMesh& mesh, std::size_t target_faces)
 {

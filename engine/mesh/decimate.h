@@ -8,7 +8,9 @@
 namespace meshpaint {
 
 //! The default face budget for a scan of `faces` triangles: a fiftieth,
-//! from 200 up to 20,000.
+//! from 2,500 up to 20,000. Below 2,500 faces the thin parts and borders of
+//! small scans (femur, lion head) fit with worst errors of 1 to 4% of the
+//! diagonal; at 2,500 under 0.8%.
 std::size_t default_base_faces(std::size_t faces);
 
 //! How the decimation went.

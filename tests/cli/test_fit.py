@@ -98,7 +98,9 @@ def test_taubin_smoothing_of_a_fitted_scan_keeps_its_volume_and_lowers_its_noise
     scan = tmp_path / "noisy.ply"
     noisy_sphere(scan)
     project = tmp_path / "sphere.meshpaint"
-    r = run("fit", str(scan), "-o", str(project), "--quiet")
+    # A coarse base (200 faces for 5,120 triangles), whose limit surface does
+    # not follow the noise, leaves the noise to the smoothing at level 3.
+    r = run("fit", str(scan), "--base-faces", "200", "-o", str(project), "--quiet")
     assert r.returncode == 0, r.stderr
     volume, noise = volume_and_noise(read_polydata(scan))
     assert noise == pytest.approx(0.01, rel=0.1)
@@ -201,7 +203,7 @@ def test_fit_report_has_the_documented_keys_and_the_printed_values(tmp_path):
     assert set(j) == REPORT_KEYS
     assert (j["scan"], j["project"], j["mode"], j["level"], j["passes"]) == (str(scan), str(project), "decimated", 1, 2)
     assert (j["scan_vertices"], j["scan_faces"]) == (2562, 5120)
-    assert j["budget"] == 200 and j["base_faces"] <= 200 and j["patches"] == 3 * j["base_faces"]
+    assert j["budget"] == 2500 and j["base_faces"] <= 2500 and j["patches"] == 3 * j["base_faces"]
     m = re.search(r"^atlas +level 1, ([0-9,]+) patches, ([0-9,]+) points", r.stdout, re.M)
     assert (int(m[1].replace(",", "")), int(m[2].replace(",", ""))) == (j["patches"], j["points"])
     printed = fit_numbers(r.stdout)
