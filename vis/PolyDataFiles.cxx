@@ -187,9 +187,11 @@ vtkSmartPointer<vtkPolyData> read_polydata_file(const std::string& path)
   return read_checked(r, path);
 }
 
-BaseMesh load_polydata_mesh(const std::string& path, const ImportOptions& options)
+BaseMesh import_polydata(vtkPolyData* poly, const std::string& name, const std::string& where,
+                         const ImportOptions& options)
 {
-  vtkSmartPointer<vtkPolyData> poly = read_polydata_file(path);
+  if (!poly)
+    throw InputError(where + "has no faces");
   PolygonSoup soup;
   soup.points.reserve(std::size_t(poly->GetNumberOfPoints()));
   for (vtkIdType v = 0; v < poly->GetNumberOfPoints(); ++v) {
@@ -197,24 +199,37 @@ BaseMesh load_polydata_mesh(const std::string& path, const ImportOptions& option
     poly->GetPoint(v, x);
     soup.points.push_back({float(x[0]), float(x[1]), float(x[2])});
   }
-  vtkCellArray* polys = poly->GetPolys();
-  vtkIdType n = 0;
-  const vtkIdType* ids = nullptr;
-  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-    soup.faces.emplace_back(ids, ids + n);
+  const vtkIdType points = poly->GetNumberOfPoints();
+  if (vtkCellArray* polys = poly->GetPolys()) {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    for (polys->InitTraversal(); polys->GetNextCell(n, ids);) {
+      for (vtkIdType k = 0; k < n; ++k)
+        if (ids[k] < 0 || ids[k] >= points)
+          throw InputError(where + "polygon " + std::to_string(soup.faces.size()) + " names point " +
+                           std::to_string(ids[k]) + ", but there are only " + std::to_string(points));
+      soup.faces.emplace_back(ids, ids + n);
+    }
+  }
   vtkDataArray* diffuse = poly->GetPointData()->GetArray("diffuse");
-  if (diffuse && diffuse->GetNumberOfComponents() == 3 && diffuse->GetNumberOfTuples() == poly->GetNumberOfPoints())
-    for (vtkIdType v = 0; v < poly->GetNumberOfPoints(); ++v) {
+  if (diffuse && diffuse->GetNumberOfComponents() == 3 && diffuse->GetNumberOfTuples() == points)
+    for (vtkIdType v = 0; v < points; ++v) {
       Vec3 c;
       for (int a = 0; a < 3; ++a) {
         const double value = diffuse->GetComponent(v, a);
         if (!(value >= 0 && value <= 1))
-          throw InputError("'" + path + "': point " + std::to_string(v) + " has a diffuse value outside 0-1");
+          throw InputError(where + "point " + std::to_string(v) + " has a diffuse value outside 0-1");
         c[std::size_t(a)] = float(value);
       }
       soup.colours.push_back(c);
     }
-  return import_mesh(std::move(soup), std::filesystem::path(path).stem().string(), "'" + path + "': ", options);
+  return import_mesh(std::move(soup), name, where, options);
+}
+
+BaseMesh load_polydata_mesh(const std::string& path, const ImportOptions& options)
+{
+  vtkSmartPointer<vtkPolyData> poly = read_polydata_file(path);
+  return import_polydata(poly, std::filesystem::path(path).stem().string(), "'" + path + "': ", options);
 }
 
 } // namespace meshpaint
