@@ -12,6 +12,8 @@
 #include <vtkPolyDataReader.h>    // for vtkPolyDataReader
 #include <vtkXMLPolyDataReader.h> // for vtkXMLPolyDataReader
 
+#include <algorithm>  // for std::transform
+#include <cctype>     // for std::tolower
 #include <cmath>      // for std::isfinite
 #include <cstdlib>    // for std::strtod, std::getenv
 #include <filesystem> // for std::filesystem::file_size, path
@@ -120,6 +122,26 @@ private:
   vtkLogger::Verbosity verbosity_;
 };
 
+//! Colours as ParaView, MeshLab's VTK export and Blender's VTK add-ons write
+//! them: 3 or 4 unsigned bytes per point (alpha ignored), as the point
+//! scalars or an array named Colors, RGB or RGBA (any case); null if none.
+vtkDataArray* byte_colours(vtkPolyData* poly)
+{
+  vtkPointData* pd = poly->GetPointData();
+  std::vector<vtkDataArray*> candidates{pd->GetScalars()};
+  for (int k = 0; k < pd->GetNumberOfArrays(); ++k) {
+    std::string name = pd->GetArrayName(k) ? pd->GetArrayName(k) : "";
+    std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (name == "colors" || name == "rgb" || name == "rgba")
+      candidates.push_back(pd->GetArray(k));
+  }
+  for (vtkDataArray* a : candidates)
+    if (a && a->GetDataType() == VTK_UNSIGNED_CHAR && (a->GetNumberOfComponents() == 3 || a->GetNumberOfComponents() == 4) &&
+        a->GetNumberOfTuples() == poly->GetNumberOfPoints())
+      return a;
+  return nullptr;
+}
+
 } // namespace
 
 bool is_polydata_path(const std::string& path)
@@ -212,7 +234,14 @@ BaseMesh import_polydata(vtkPolyData* poly, const std::string& name, const std::
     }
   }
   vtkDataArray* diffuse = poly->GetPointData()->GetArray("diffuse");
-  if (diffuse && diffuse->GetNumberOfComponents() == 3 && diffuse->GetNumberOfTuples() == points)
+  if (!(diffuse && diffuse->GetNumberOfComponents() == 3 && diffuse->GetNumberOfTuples() == points)) {
+    diffuse = nullptr;
+    if (vtkDataArray* bytes = byte_colours(poly))
+      for (vtkIdType v = 0; v < points; ++v)
+        soup.colours.push_back({float(bytes->GetComponent(v, 0) / 255.0), float(bytes->GetComponent(v, 1) / 255.0),
+                                float(bytes->GetComponent(v, 2) / 255.0)});
+  }
+  if (diffuse)
     for (vtkIdType v = 0; v < points; ++v) {
       Vec3 c;
       for (int a = 0; a < 3; ++a) {

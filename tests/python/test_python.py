@@ -414,3 +414,33 @@ def test_a_save_over_a_project_another_run_saved_meanwhile_is_refused(tmp_path):
         t.SaveProject(path)
     assert path.read_bytes() == before
     t.SaveProject(tmp_path / "elsewhere.meshpaint")  # saving under another name is fine
+
+
+@pytest.mark.parametrize("name,components", [("Colors", 3), ("RGBA", 4), (None, 3)])
+def test_rgb_bytes_as_other_tools_write_them_become_the_diffuse_channel(tmp_path, name, components):
+    # ParaView, MeshLab and Blender's VTK export: unsigned bytes per point,
+    # named Colors/RGB/RGBA or set as the point scalars.
+    poly = cube_soup()
+    colours = vtk.vtkUnsignedCharArray()
+    colours.SetName(name or "anything")
+    colours.SetNumberOfComponents(components)
+    for _ in range(poly.GetNumberOfPoints()):
+        colours.InsertNextTuple([51, 102, 204, 255][:components])
+    if name is None:
+        poly.GetPointData().SetScalars(colours)
+    else:
+        poly.GetPointData().AddArray(colours)
+    s = meshpaint.vtkPaintSurface()
+    s.SetInputData(poly)
+    s.SetLevel(2)
+    s.Update()
+    assert np.allclose(vtk_to_numpy(s.GetChannel("diffuse")), [0.2, 0.4, 0.8], atol=1e-6)
+    # The same written by VTK's XML writer, read by the command line.
+    writer = vtk.vtkXMLPolyDataWriter()
+    writer.SetInputData(poly)
+    writer.SetFileName(str(tmp_path / "coloured.vtp"))
+    writer.Write()
+    binary = os.path.join(os.path.dirname(meshpaint.__file__), "..", "..", "bin", "meshpaint")
+    r = subprocess.run([binary, "info", str(tmp_path / "coloured.vtp")], capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0, r.stderr
+    assert "took the file's colours as the diffuse channel" in r.stdout + r.stderr
