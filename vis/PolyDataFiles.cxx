@@ -53,6 +53,28 @@ void check_polydata_sizes(const std::string& path)
   }
 }
 
+//! VTK's legacy reader takes the layout of the cells from the header's
+//! version: a body in version 5's layout (OFFSETS, CONNECTIVITY) under an
+//! older or unreadable version makes it dereference a null array (a fuzz
+//! finding). The version must read as M.N, and below 5 no line of the file
+//! may start a version-5 cell section.
+void check_legacy_version(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string first;
+  std::getline(in, first);
+  static const std::regex version(R"(# vtk DataFile Version ([0-9]{1,4})\.[0-9]{1,4}\s*)");
+  std::smatch m;
+  if (!std::regex_match(first, m, version))
+    throw InputError("'" + path + "': not a legacy VTK file (its first line must be '# vtk DataFile Version M.N')");
+  if (std::stoi(m[1].str()) >= 5)
+    return;
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("OFFSETS ", 0) == 0 || line.rfind("CONNECTIVITY ", 0) == 0)
+      throw InputError("'" + path + "': cells in the layout of version 5 (OFFSETS, CONNECTIVITY) under a header of "
+                       "version " + m[1].str() + ".x");
+}
+
 //! VTK's messages while a reader runs, kept instead of printed: the output
 //! window and the logger's console output are swapped out for that time
 //! and restored after, whatever happens.
@@ -198,6 +220,7 @@ vtkSmartPointer<vtkPolyData> read_polydata_file(const std::string& path)
     throw InputError("'" + path + "' is empty");
   check_polydata_sizes(path);
   if (lower_extension(path) == ".vtk") {
+    check_legacy_version(path);
     auto r = vtkSmartPointer<vtkPolyDataReader>::New();
     r->SetFileName(path.c_str());
     r->ReadAllScalarsOn();
