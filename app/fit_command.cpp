@@ -9,6 +9,7 @@
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "core/file_lock.h"
 #include "core/format.h"
 #include "core/timer.h"
 #include "mesh/decimate.h"
@@ -124,7 +125,10 @@ int fit_command(const Argv& argv)
   capture_surface(surface, project);
   project.reference = project.positions;
   t.restart();
-  save_project(project, out);
+  {
+    const FileLock turn(out, nullptr); // as every project save: one run at a time replaces it
+    save_project(project, out);
+  }
   const double save_ms = t.ms();
 
   const double diagonal = fit.diagonal;

@@ -20,7 +20,8 @@ namespace {
 const char* const kUsage = R"(usage: meshpaint COMMAND [ARGS]
 
 commands:
-  demo [MESH] [--level L] [-o DIR]    subdivide the bunny scan (or MESH), write its limit
+  demo [MESH] [--level L] [-o DIR] [--quiet]
+                                      subdivide the bunny scan (or MESH), write its limit
                                       surface as DIR/NAME_levelL_limit.vtp, then paint the
                                       bundled strokes into DIR/painted/; print timings
   info MESH                           counts, genus, boundaries, valences, atlas per level
@@ -53,7 +54,8 @@ commands:
   bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases] [--quiet]
                                       brush step times as the paper's Table 1, and
                                       smoothing against VTK and OpenMesh
-  bench view [--steps N] [--studio]   the window's frame times while painting, with and
+  bench view [--steps N] [--studio] [--quiet]
+                                      the window's frame times while painting, with and
                                       without level of detail, and pick latency (needs X);
                                       --studio: the studio's own frames
   bench fit [--level L] [--max-triangles N] [--json]

@@ -198,7 +198,7 @@ int paint_command(const Argv& argv)
   if (args.has("--labels"))
     project.labels = new_labels;
   const std::size_t labels = project.labels.size();
-  save_painted_project(*surface, std::move(project), save);
+  save_painted_project(*surface, std::move(project), save, SaveTurn::held); // `turn` is held since reading
   std::cout << "saved      " << save << " (level " << level << ", " << labels << " labels)\n";
   return 0;
 }

@@ -3,6 +3,7 @@
 // draw a frame alone, and pick latency, offscreen at 800x600.
 
 #include "benchmarks.h"
+#include "progress_bar.h"
 #include "table.h"
 
 #include "vtkPaintView.h"
@@ -82,12 +83,15 @@ std::string gl_renderer(vtkPaintView* view)
 
 int bench_view(const Args& args)
 {
-  args.expect_positionals(1, 1, "view [--steps N]");
+  args.expect_positionals(1, 1, "view [--steps N] [--quiet]");
   const int steps = args.integer("--steps", 7, 1, 1000);
   open_device(args); // a bad --device fails here, before the window
   std::string renderer;
   Table table({"faces", "mesh", "LoD level", "paint frame ms", "paint frame LoD ms", "LoD, read back ms",
                "render ms", "render LoD ms", "capture ms", "pick ms"});
+  ProgressBar bar("meshpaint bench", args.flag("--quiet"));
+  ProgressTask task(&bar, "view on " + std::to_string(std::size(kViewRows)) + " meshes", std::size(kViewRows));
+  std::size_t row_done = 0;
   for (const ViewRow& row : kViewRows) {
     const auto open_view = [&](bool share) {
       vtkSmartPointer<vtkPaintView> view = vtkSmartPointer<vtkPaintView>::New();
@@ -138,6 +142,7 @@ int bench_view(const Args& args)
     table.add({grouped((unsigned long long)view->GetFaceCount()), name, std::to_string(lod_level), format_fixed(frame, 1),
                format_fixed(frame_lod, 1), frame_copy, format_fixed(full_render, 1), format_fixed(lod_render, 1),
                format_fixed(median(capture), 1), format_fixed(median(pick), 3)});
+    task.step(++row_done);
   }
   std::cout << "meshpaint bench view: offscreen " << kWidth << "x" << kHeight << " drawn by " << renderer
             << ", median of " << steps << " frames; a paint frame is one step of a drag (brush step, display update, render);\n"

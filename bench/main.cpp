@@ -15,7 +15,7 @@ namespace {
 
 const char* const kUsage = R"(usage: meshpaint bench subdivide MESH [--level L] [--json] [--repeats N] [--quiet]
        meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases] [--quiet]
-       meshpaint bench view [--steps N] [--studio]
+       meshpaint bench view [--steps N] [--studio] [--quiet]
        meshpaint bench fit [--level L] [--max-triangles N] [--json]
        (the same as meshpaint-bench ...)
 
@@ -27,7 +27,7 @@ const char* const kUsage = R"(usage: meshpaint bench subdivide MESH [--level L] 
   fit         fit's time, peak memory and error against scan size (noisy refined femur scans)
 
 options: --device SEL (gpu, cpu, P:D or part of a name), --storage buffer|image;
-subdivide and paint: --quiet (no progress on stderr)
+subdivide, paint and view: --quiet (no progress on stderr)
 more: docs/cli.md
 )";
 
@@ -48,7 +48,7 @@ int bench(const Argv& argv)
   const std::map<std::string, std::vector<std::string>> foreign = {
     {"subdivide", {"--phases", "--steps", "--tool", "--mesh", "--max-triangles", "--studio"}},
     {"paint", {"--level", "--repeats", "--max-triangles", "--studio"}},
-    {"view", {"--json", "--phases", "--level", "--repeats", "--tool", "--mesh", "--quiet", "--max-triangles"}},
+    {"view", {"--json", "--phases", "--level", "--repeats", "--tool", "--mesh", "--max-triangles"}},
     {"fit", {"--phases", "--repeats", "--steps", "--tool", "--mesh", "--quiet", "--studio"}}};
   if (const auto found = foreign.find(what); found != foreign.end())
     for (const std::string& option : found->second)
@@ -64,7 +64,7 @@ int bench(const Argv& argv)
     return bench_fit(args);
   throw InputError("usage: meshpaint bench subdivide MESH [--level L] [--json] [--repeats N] [--quiet] | "
                    "meshpaint bench paint [--json] [--steps N] [--tool sculpt|paint] [--mesh femur|armadillo] [--phases] [--quiet] | "
-                   "meshpaint bench view [--steps N] [--studio] | meshpaint bench fit [--level L] [--max-triangles N] [--json] "
+                   "meshpaint bench view [--steps N] [--studio] [--quiet] | meshpaint bench fit [--level L] [--max-triangles N] [--json] "
                    "(see meshpaint bench --help)");
 }
 

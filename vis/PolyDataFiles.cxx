@@ -12,6 +12,8 @@
 #include <vtkPolyDataReader.h>    // for vtkPolyDataReader
 #include <vtkXMLPolyDataReader.h> // for vtkXMLPolyDataReader
 
+#include <algorithm>  // for std::transform
+#include <cctype>     // for std::tolower
 #include <cmath>      // for std::isfinite
 #include <cstdlib>    // for std::strtod, std::getenv
 #include <filesystem> // for std::filesystem::file_size, path
@@ -49,6 +51,28 @@ void check_polydata_sizes(const std::string& path)
       throw InputError("'" + path + "': " + name + (xml ? "=\"" : " ") + value.substr(0, 20) +
                        (xml ? "\"" : "") + " is more than the file can hold");
   }
+}
+
+//! VTK's legacy reader takes the layout of the cells from the header's
+//! version: a body in version 5's layout (OFFSETS, CONNECTIVITY) under an
+//! older or unreadable version makes it dereference a null array (a fuzz
+//! finding). The version must read as M.N, and below 5 no line of the file
+//! may start a version-5 cell section.
+void check_legacy_version(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string first;
+  std::getline(in, first);
+  static const std::regex version(R"(# vtk DataFile Version ([0-9]{1,4})\.[0-9]{1,4}\s*)");
+  std::smatch m;
+  if (!std::regex_match(first, m, version))
+    throw InputError("'" + path + "': not a legacy VTK file (its first line must be '# vtk DataFile Version M.N')");
+  if (std::stoi(m[1].str()) >= 5)
+    return;
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("OFFSETS ", 0) == 0 || line.rfind("CONNECTIVITY ", 0) == 0)
+      throw InputError("'" + path + "': cells in the layout of version 5 (OFFSETS, CONNECTIVITY) under a header of "
+                       "version " + m[1].str() + ".x");
 }
 
 //! VTK's messages while a reader runs, kept instead of printed: the output
@@ -120,6 +144,26 @@ private:
   vtkLogger::Verbosity verbosity_;
 };
 
+//! Colours as ParaView, MeshLab's VTK export and Blender's VTK add-ons write
+//! them: 3 or 4 unsigned bytes per point (alpha ignored), as the point
+//! scalars or an array named Colors, RGB or RGBA (any case); null if none.
+vtkDataArray* byte_colours(vtkPolyData* poly)
+{
+  vtkPointData* pd = poly->GetPointData();
+  std::vector<vtkDataArray*> candidates{pd->GetScalars()};
+  for (int k = 0; k < pd->GetNumberOfArrays(); ++k) {
+    std::string name = pd->GetArrayName(k) ? pd->GetArrayName(k) : "";
+    std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (name == "colors" || name == "rgb" || name == "rgba")
+      candidates.push_back(pd->GetArray(k));
+  }
+  for (vtkDataArray* a : candidates)
+    if (a && a->GetDataType() == VTK_UNSIGNED_CHAR && (a->GetNumberOfComponents() == 3 || a->GetNumberOfComponents() == 4) &&
+        a->GetNumberOfTuples() == poly->GetNumberOfPoints())
+      return a;
+  return nullptr;
+}
+
 } // namespace
 
 bool is_polydata_path(const std::string& path)
@@ -176,6 +220,7 @@ vtkSmartPointer<vtkPolyData> read_polydata_file(const std::string& path)
     throw InputError("'" + path + "' is empty");
   check_polydata_sizes(path);
   if (lower_extension(path) == ".vtk") {
+    check_legacy_version(path);
     auto r = vtkSmartPointer<vtkPolyDataReader>::New();
     r->SetFileName(path.c_str());
     r->ReadAllScalarsOn();
@@ -187,9 +232,11 @@ vtkSmartPointer<vtkPolyData> read_polydata_file(const std::string& path)
   return read_checked(r, path);
 }
 
-BaseMesh load_polydata_mesh(const std::string& path, const ImportOptions& options)
+BaseMesh import_polydata(vtkPolyData* poly, const std::string& name, const std::string& where,
+                         const ImportOptions& options)
 {
-  vtkSmartPointer<vtkPolyData> poly = read_polydata_file(path);
+  if (!poly)
+    throw InputError(where + "has no faces");
   PolygonSoup soup;
   soup.points.reserve(std::size_t(poly->GetNumberOfPoints()));
   for (vtkIdType v = 0; v < poly->GetNumberOfPoints(); ++v) {
@@ -197,24 +244,44 @@ BaseMesh load_polydata_mesh(const std::string& path, const ImportOptions& option
     poly->GetPoint(v, x);
     soup.points.push_back({float(x[0]), float(x[1]), float(x[2])});
   }
-  vtkCellArray* polys = poly->GetPolys();
-  vtkIdType n = 0;
-  const vtkIdType* ids = nullptr;
-  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-    soup.faces.emplace_back(ids, ids + n);
+  const vtkIdType points = poly->GetNumberOfPoints();
+  if (vtkCellArray* polys = poly->GetPolys()) {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    for (polys->InitTraversal(); polys->GetNextCell(n, ids);) {
+      for (vtkIdType k = 0; k < n; ++k)
+        if (ids[k] < 0 || ids[k] >= points)
+          throw InputError(where + "polygon " + std::to_string(soup.faces.size()) + " names point " +
+                           std::to_string(ids[k]) + ", but there are only " + std::to_string(points));
+      soup.faces.emplace_back(ids, ids + n);
+    }
+  }
   vtkDataArray* diffuse = poly->GetPointData()->GetArray("diffuse");
-  if (diffuse && diffuse->GetNumberOfComponents() == 3 && diffuse->GetNumberOfTuples() == poly->GetNumberOfPoints())
-    for (vtkIdType v = 0; v < poly->GetNumberOfPoints(); ++v) {
+  if (!(diffuse && diffuse->GetNumberOfComponents() == 3 && diffuse->GetNumberOfTuples() == points)) {
+    diffuse = nullptr;
+    if (vtkDataArray* bytes = byte_colours(poly))
+      for (vtkIdType v = 0; v < points; ++v)
+        soup.colours.push_back({float(bytes->GetComponent(v, 0) / 255.0), float(bytes->GetComponent(v, 1) / 255.0),
+                                float(bytes->GetComponent(v, 2) / 255.0)});
+  }
+  if (diffuse)
+    for (vtkIdType v = 0; v < points; ++v) {
       Vec3 c;
       for (int a = 0; a < 3; ++a) {
         const double value = diffuse->GetComponent(v, a);
         if (!(value >= 0 && value <= 1))
-          throw InputError("'" + path + "': point " + std::to_string(v) + " has a diffuse value outside 0-1");
+          throw InputError(where + "point " + std::to_string(v) + " has a diffuse value outside 0-1");
         c[std::size_t(a)] = float(value);
       }
       soup.colours.push_back(c);
     }
-  return import_mesh(std::move(soup), std::filesystem::path(path).stem().string(), "'" + path + "': ", options);
+  return import_mesh(std::move(soup), name, where, options);
+}
+
+BaseMesh load_polydata_mesh(const std::string& path, const ImportOptions& options)
+{
+  vtkSmartPointer<vtkPolyData> poly = read_polydata_file(path);
+  return import_polydata(poly, std::filesystem::path(path).stem().string(), "'" + path + "': ", options);
 }
 
 } // namespace meshpaint

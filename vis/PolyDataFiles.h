@@ -31,9 +31,19 @@ MESHPAINTVIS_EXPORT vtkSmartPointer<vtkPolyData> read_checked(vtkAlgorithm* read
 //! \throw IOError when missing; InputError otherwise.
 MESHPAINTVIS_EXPORT vtkSmartPointer<vtkPolyData> read_polydata_file(const std::string& path);
 
+//! Polygons handed over in memory (Python, VTK pipelines) as a base mesh,
+//! through the same import steps and checks as a file's (import_mesh()): its
+//! points, its polygons, and as the mesh's colours a 3-component point array
+//! named `diffuse` (values 0-1), else RGB bytes as other tools write them (3
+//! or 4 unsigned chars per point, alpha ignored: the point scalars, or an
+//! array named Colors, RGB or RGBA). Messages start with `where`.
+//! \throw InputError when there are no polygons, a point is not
+//! finite, a polygon names a missing point, or the mesh is unusable.
+MESHPAINTVIS_EXPORT BaseMesh import_polydata(vtkPolyData* poly, const std::string& name, const std::string& where,
+                                             const ImportOptions& options = {});
+
 //! A .vtp or .vtk file as a base mesh: its polygons through the import
-//! steps of load_mesh() (import_mesh()); a 3-component point array named
-//! `diffuse` (values 0-1) becomes the mesh's colours.
+//! steps of load_mesh() through import_polydata(), colours included.
 //! \throw IOError, InputError as read_polydata_file() and import_mesh().
 MESHPAINTVIS_EXPORT BaseMesh load_polydata_mesh(const std::string& path, const ImportOptions& options = {});
 

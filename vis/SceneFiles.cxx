@@ -11,7 +11,7 @@ namespace meshpaint {
 
 std::string save_session(PaintScene& scene, const std::string& recording,
                          const std::function<vtkPolyData*(std::size_t)>& drawn, const Project* project,
-                         const std::string& dir)
+                         ProjectOrigin& origin, const std::string& dir)
 {
   // One recording for the scene; each object's surface in its own folder.
   make_directory(dir);
@@ -25,8 +25,11 @@ std::string save_session(PaintScene& scene, const std::string& recording,
     add_label_classes(surface, project ? project->labels : std::vector<LabelClass>());
     write_vtp(surface, folder + "/surface.vtp");
   }
-  if (project)
-    save_painted_project(scene.surface(0), *project, scene.folder(dir, 0) + "/surface.meshpaint");
+  if (project) {
+    Project base = *project;
+    base.origin = origin;
+    origin = save_painted_project(scene.surface(0), std::move(base), scene.folder(dir, 0) + "/surface.meshpaint");
+  }
   const std::string surfaces =
     scene.size() == 1 ? "surface.vtp" : std::to_string(scene.size()) + " objects' surface.vtp";
   return "saved " + dir + "/strokes.json, " + surfaces + (project ? " and surface.meshpaint" : "");

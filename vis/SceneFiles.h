@@ -14,16 +14,20 @@ namespace meshpaint {
 
 class PaintScene;
 struct Project;
+struct ProjectOrigin;
 
 //! Saves a session into `dir`, each file atomically: DIR/strokes.json (the
 //! recording), each object's drawn surface (`drawn(k)`, with its channel
 //! arrays) as surface.vtp in PaintScene::folder(dir, k), and with `project`
 //! (where the first object came from) that folder's surface.meshpaint, the
-//! project continued (save_painted_project()). Returns the status message.
-//! \throw IOError when a folder or file cannot be written.
+//! project continued (save_painted_project(), checked against `origin`, the
+//! file last loaded or saved, which becomes the file saved). Returns the
+//! status message.
+//! \throw IOError when a folder or file cannot be written; InputError as
+//! save_painted_project().
 MESHPAINTVIS_EXPORT std::string save_session(PaintScene& scene, const std::string& recording,
                          const std::function<vtkPolyData*(std::size_t)>& drawn, const Project* project,
-                         const std::string& dir);
+                         ProjectOrigin& origin, const std::string& dir);
 
 //! Writes each object's model at `model_level` (export_model()) into
 //! PaintScene::folder(dir, k). Returns the status message.

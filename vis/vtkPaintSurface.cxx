@@ -2,14 +2,16 @@
 
 #include "PaintingExport.h"    // for meshpaint::export_painting, default_model_level
 #include "CallGuard.h"         // for meshpaint::guarded
+#include "PolyDataFiles.h"     // for meshpaint::import_polydata
 #include "RasterIO.h"          // for meshpaint::load_stroke_rasters
 #include "SharedArrays.h"      // for meshpaint::share_arrays, refresh_shared_arrays
-#include "SurfaceConversion.h" // for meshpaint::to_base_mesh, to_polydata
+#include "SurfaceConversion.h" // for meshpaint::to_polydata
 
 #include "atlas/patch_layout.h"        // for meshpaint::kMaxLevel
 #include "core/errors.h"               // for meshpaint::InputError
 #include "paint/paint_surface.h"       // for meshpaint::PaintSurface
 #include "paint/stroke_session.h"      // for meshpaint::StrokeSession
+#include "project/imported_colours.h"  // for meshpaint::apply_imported_colours
 #include "project/project_surface.h"   // for meshpaint::open_project_surface, save_painted_project
 #include "project/vertex_channels.h"   // for meshpaint::vertex_channel, set_vertex_channel
 
@@ -50,10 +52,13 @@ struct vtkPaintSurface::Internals
   }
   vtkMTimeType built_from = 0; // input's modification time the surface was built from
   int built_level = 0;
+  bool built_welded = true;
   std::vector<meshpaint::Stroke> queued;
   //! The loaded project, without its layers: history, labels, scan and
   //! reference to carry into the next save.
   std::optional<meshpaint::Project> project;
+  //! The file this surface was last loaded from or saved to, as it was then.
+  meshpaint::ProjectOrigin origin;
   std::map<std::string, vtkSmartPointer<vtkDataArray>> channels; // arrays handed out by GetChannel
   std::string history_text;                                      // what GetHistoryJSON() returned
   // ShareArrays: the output's arrays over the surface's display arrays, the
@@ -258,7 +263,9 @@ int vtkPaintSurface::SaveProject(const char* path)
     return 0;
   return meshpaint::guarded(this->LastError, [&] {
     Internals& in = *this->Impl;
-    meshpaint::save_painted_project(*in.surface, in.project ? *in.project : meshpaint::Project(), path ? path : "");
+    meshpaint::Project base = in.project ? *in.project : meshpaint::Project();
+    base.origin = in.origin;
+    in.origin = meshpaint::save_painted_project(*in.surface, std::move(base), path ? path : "");
   });
 }
 
@@ -286,12 +293,14 @@ int vtkPaintSurface::LoadProject(const char* path)
     in.queued.clear();
     in.built_from = 0;
     in.built_level = p.level;
+    this->ImportReport.clear();
     this->Level = p.level;
     this->LevelSet = true;
     this->StrokeCount = 0;
     // Only what the next save carries over; the layers live in the surface.
     p.positions = {};
     p.channels = {};
+    in.origin = p.origin;
     in.project = std::move(p);
   });
   if (ok)
@@ -372,16 +381,29 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
     // Without an input, the surface is a loaded project's.
     if (!input && !in.surface)
       throw meshpaint::InputError("nothing to paint on: set an input or load a project");
-    if (!in.surface || (input && in.built_from != input->GetMTime()) || in.built_level != this->Level) {
+    if (!in.surface || (input && (in.built_from != input->GetMTime() || in.built_welded != this->Weld)) ||
+        in.built_level != this->Level) {
       if (!input)
         throw meshpaint::InputError("a loaded project keeps its level " + std::to_string(in.built_level) +
                                     "; set an input to paint at another");
+      meshpaint::ImportOptions import;
+      import.weld = this->Weld;
+      const meshpaint::BaseMesh mesh = meshpaint::import_polydata(input, "input", "input polygons: ", import);
+      std::string report;
+      for (const auto& lines : {mesh.report.step_lines(), mesh.report.lines()})
+        for (const std::string& line : lines)
+          report += (report.empty() ? "" : "\n") + line;
       auto runtime = meshpaint::Runtime::open(this->Device);
-      in.set_surface(std::make_shared<meshpaint::PaintSurface>(
-        runtime, meshpaint::to_base_mesh(input, "input"), this->Level, meshpaint::default_storage(runtime->info())));
+      auto surface =
+        std::make_shared<meshpaint::PaintSurface>(runtime, mesh, this->Level, meshpaint::default_storage(runtime->info()));
+      meshpaint::apply_imported_colours(*surface);
+      in.set_surface(std::move(surface));
+      this->ImportReport = report;
       in.built_from = input->GetMTime();
       in.built_level = this->Level;
+      in.built_welded = this->Weld;
       in.project.reset();
+      in.origin = {};
       this->StrokeCount = 0;
     }
     for (const meshpaint::Stroke& s : in.queued) {

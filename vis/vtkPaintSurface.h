@@ -2,7 +2,11 @@
  * @class vtkPaintSurface
  * @brief A polygon mesh painted with stroke scripts on an OpenCL device.
  *
- * Input: any polygonal vtkPolyData (its polygons are the base mesh).
+ * Input: any polygonal vtkPolyData. Its polygons become the base mesh
+ * through the import steps a mesh file goes through (coincident points
+ * welded unless WeldOff(), faces oriented consistently, closed components
+ * turned outward; GetImportReport() says what they did), and a 3-component
+ * point array `diffuse` (0-1) becomes the diffuse channel.
  * Output: the painted limit surface of the painting level, welded, with
  * point arrays diffuse, specular, roughness, displacement, mask, label and
  * Normals. Strokes are applied in order; every stroke is one undo step.
@@ -59,6 +63,20 @@ public:
   /// Whether the last output shares the engine's memory.
   vtkGetMacro(SharingArrays, bool);
   //@}
+
+  //@{
+  /// Whether the input's coincident points are welded (default on), as
+  /// `--no-weld` leaves them apart on the command line. Changing it starts over.
+  vtkSetMacro(Weld, bool);
+  vtkGetMacro(Weld, bool);
+  vtkBooleanMacro(Weld, bool);
+  //@}
+
+  /// What the import steps and repairs did to the input's polygons at the
+  /// last surface built from it, one line each as the command line prints
+  /// them ("welded 960 coincident vertices (tolerance 1e-05)"); empty when
+  /// they changed nothing or the surface is a loaded project's.
+  const char* GetImportReport() const { return this->ImportReport.c_str(); }
 
   //@{
   /// OpenCL device selector (see `meshpaint devices`); empty: default.
@@ -190,6 +208,8 @@ protected:
   int FailedUpdates = 0;
   bool ShareArrays = false;
   bool SharingArrays = false;
+  bool Weld = true;
+  std::string ImportReport;
 
 private:
   vtkPaintSurface(const vtkPaintSurface&) = delete;

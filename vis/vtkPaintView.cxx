@@ -361,7 +361,7 @@ int vtkPaintView::Save()
   const int ok = !in.scene.empty() && meshpaint::guarded(this->LastError, [&] {
     message = meshpaint::save_session(
       in.scene, this->GetRecording(), [&](std::size_t o) { return this->Surface(o, this->Level); },
-      in.project.get(), this->SaveDirectory);
+      in.project.get(), in.origin, this->SaveDirectory);
   });
   this->Message = ok ? message : this->LastError;
   this->UpdateText();
@@ -379,7 +379,8 @@ int vtkPaintView::SaveProject(const char* path)
       throw meshpaint::InputError("a project keeps one surface: this scene has " + std::to_string(in.scene.size()));
     meshpaint::Project base = in.project ? *in.project : meshpaint::Project();
     base.labels = in.labels;
-    meshpaint::save_painted_project(in.scene.surface(0), base, path ? path : "");
+    base.origin = in.origin;
+    in.origin = meshpaint::save_painted_project(in.scene.surface(0), std::move(base), path ? path : "");
   });
   this->Message = ok ? std::string("saved ") + path : this->LastError;
   this->UpdateText();

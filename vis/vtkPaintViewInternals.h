@@ -60,6 +60,7 @@ struct vtkPaintView::Internals
   meshpaint::StrokeSession session{scene}; // every stroke, drawn or scripted, goes through it
   std::vector<std::unique_ptr<meshpaint::ObjectDrawing>> drawings; // one per object, in the scene's order
   std::unique_ptr<meshpaint::Project> project; // where the first object came from, if from a project
+  meshpaint::ProjectOrigin origin;             // the project file last loaded or saved, as it was then
   std::unique_ptr<meshpaint::BrushSettings> brush;
   bool lit = false;    // drawn with the subsurface light
   meshpaint::ShownChannel shown = meshpaint::ShownChannel::diffuse;

@@ -4,7 +4,7 @@
 #include "vtkPaintViewInternals.h"
 
 #include "CallGuard.h"         // for meshpaint::guarded
-#include "SurfaceConversion.h" // for meshpaint::to_base_mesh
+#include "PolyDataFiles.h"     // for meshpaint::import_polydata
 #include "SurfaceRendering.h"  // for meshpaint::show_materials
 #include "vtkPaintSurface.h"   // for vtkPaintSurface
 
@@ -60,7 +60,7 @@ int vtkPaintView::InputObject(vtkPolyData* polygons, bool add)
   if (!meshpaint::guarded(this->LastError, [&] {
         if (!polygons)
           throw meshpaint::InputError("no input polygons");
-        mesh = meshpaint::to_base_mesh(polygons, "input");
+        mesh = meshpaint::import_polydata(polygons, "input", "input polygons: ");
       }))
     return 0;
   return this->MeshObject(mesh, add);
@@ -86,6 +86,7 @@ int vtkPaintView::MeshObject(const meshpaint::BaseMesh& mesh, bool add)
 void vtkPaintView::SetProject(const meshpaint::Project& project)
 {
   this->Impl->project = std::make_unique<meshpaint::Project>(project);
+  this->Impl->origin = project.origin;
   this->Impl->labels = project.labels; // shown in their colours, kept by a save
   // The layers live in the surface; a save takes them from there.
   this->Impl->project->positions.clear();
@@ -134,6 +135,7 @@ void vtkPaintView::RemoveObjects()
   in.drawings.clear();
   in.scene.clear();
   in.project.reset();
+  in.origin = {};
 }
 
 void vtkPaintView::AddObject(std::shared_ptr<meshpaint::PaintSurface> surface, const std::string& name)

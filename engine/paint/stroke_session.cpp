@@ -25,6 +25,9 @@ void StrokeSession::begin(const Stroke& stroke)
   ended_ = false;
   previews_ = 0;
   previewing_ = previews(stroke);
+  checked_.clear();
+  if (!previewing_ && moves_surface(stroke))
+    checked_ = change_counts();
   if (previewing_) {
     if (stroke.points.size() > 1) {
       try {
@@ -50,6 +53,7 @@ void StrokeSession::preview(const Stroke& piece)
   // A piece that fails halfway is still a step of the scene's history (as
   // every stroke is), which end() takes back with the others.
   const std::size_t before = scene_.history().size();
+  const std::vector<std::uint64_t> counts = change_counts();
   try {
     scene_.apply(piece);
   } catch (...) {
@@ -57,6 +61,16 @@ void StrokeSession::preview(const Stroke& piece)
     throw;
   }
   ++previews_;
+  for (std::size_t o = 0; o < scene_.size(); ++o) {
+    const std::string problem = surface_result_problem(scene_.surface(o), counts[o]);
+    if (problem.empty())
+      continue;
+    // The whole stroke so far is taken back, as apply() takes back one.
+    drawing_.reset();
+    for (; previews_ > 0 && scene_.surface(o).undo_log().recording() && scene_.undo(); --previews_) {
+    }
+    throw InputError("refused: " + problem);
+  }
 }
 
 void StrokeSession::paint_new_dabs()
@@ -70,6 +84,35 @@ void StrokeSession::paint_new_dabs()
     drawing_.reset(); // the scene has closed the stroke
     throw;
   }
+  check_drawn_result();
+}
+
+std::vector<std::uint64_t> StrokeSession::change_counts() const
+{
+  std::vector<std::uint64_t> counts;
+  for (std::size_t o = 0; o < scene_.size(); ++o)
+    counts.push_back(scene_.surface(o).change_count());
+  return counts;
+}
+
+void StrokeSession::check_drawn_result()
+{
+  if (checked_.empty())
+    return;
+  for (std::size_t o = 0; o < scene_.size(); ++o) {
+    const std::string problem = surface_result_problem(scene_.surface(o), checked_[o]);
+    if (problem.empty())
+      continue;
+    // Closed as one undo step, as a failure while painting is, and taken back.
+    const Stroke stroke = std::move(*drawing_);
+    drawing_.reset();
+    checked_.clear();
+    scene_.end_stroke(stroke);
+    if (scene_.surface(o).undo_log().recording())
+      scene_.undo();
+    throw InputError("refused: " + problem);
+  }
+  checked_ = change_counts();
 }
 
 bool StrokeSession::extend(const Vec3& point, float pressure)
@@ -112,10 +155,16 @@ std::vector<StrokeReport> StrokeSession::end()
       throw ResourceError("the undo budget is too small for this stroke: kept as " + std::to_string(previews_) +
                           " strokes");
     }
-    return scene_.apply(stroke);
+    return apply(stroke);
   }
   // The last dabs: those of the path's last piece, and a one-point path's.
   scene_.paint_dabs(stroke_samples(stroke));
+  if (!checked_.empty()) {
+    drawing_ = stroke;
+    check_drawn_result();
+    drawing_.reset();
+    checked_.clear();
+  }
   return scene_.end_stroke(stroke);
 }
 

@@ -7,6 +7,7 @@
 #include "paint/paint_scene.h"
 #include "paint/stroke.h"
 
+#include <cstdint>  // for std::uint64_t
 #include <optional> // for std::optional
 #include <vector>   // for std::vector
 
@@ -29,10 +30,16 @@ public:
   void begin(const Stroke& stroke);
   //! Adds a point to the path (with its pressure where the stroke has
   //! pressure) and paints the dabs it completes. False once the stroke has
-  //! left the surface: it takes no more points.
+  //! left the surface: it takes no more points. A stroke that moves the
+  //! surface is checked as apply() checks one after every piece painted:
+  //! with a result that is not finite or beyond kMaxCoordinate it ends,
+  //! taken back where the scene records undo steps.
+  //! \throw InputError ("refused: ...") for such a result; the stroke is
+  //! then no longer being drawn.
   bool extend(const Vec3& point, float pressure = 1.f);
   //! Ends the stroke being drawn: its last dabs are painted, and the stroke
   //! becomes one undo step and one stroke of the recording, painted once.
+  //! \throw InputError for a result refused as extend() refuses one.
   std::vector<StrokeReport> end();
   bool drawing() const { return drawing_.has_value(); }
   //! The stroke being drawn (its path so far). \pre drawing()
@@ -60,12 +67,19 @@ private:
   //! Applies a piece as a preview, counting it for end() to take back.
   void preview(const Stroke& piece);
   void paint_new_dabs();
+  //! Every object's change_count().
+  std::vector<std::uint64_t> change_counts() const;
+  //! A drawn stroke that moves the surface, after its newest piece: ends it,
+  //! takes it back and throws when that piece left a result that is not
+  //! finite; otherwise remembers the counts for the next check.
+  void check_drawn_result();
 
   PaintScene& scene_;
   std::optional<Stroke> drawing_;
   bool ended_ = false;
   bool previewing_ = false;
   int previews_ = 0; // pieces applied as previews, to take back at the end
+  std::vector<std::uint64_t> checked_; // a drawn stroke moving the surface: change counts at the last check
 };
 
 } // namespace meshpaint

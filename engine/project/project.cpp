@@ -296,7 +296,7 @@ bool is_project_path(const std::string& path)
   return ext == ".meshpaint";
 }
 
-void save_project(const Project& project, const std::string& path)
+std::uint32_t save_project(const Project& project, const std::string& path)
 {
   ByteWriter w;
   write_payload(project, w);
@@ -313,6 +313,7 @@ void save_project(const Project& project, const std::string& path)
   put_u32(&header[36], crc_of(header.data(), 36));
   write_bytes_atomically(path, {std::string_view(reinterpret_cast<const char*>(header.data()), header.size()),
                                std::string_view(reinterpret_cast<const char*>(payload.data()), payload.size())});
+  return get_u32(&header[36]);
 }
 
 Project load_project(const std::string& path)
@@ -360,7 +361,18 @@ Project load_project(const std::string& path)
   Project p;
   read_payload(r, p);
   check_project_content(p, path);
+  p.origin = {path, get_u32(&header[36])};
   return p;
+}
+
+std::uint32_t project_header_crc(const std::string& path)
+{
+  std::unique_ptr<std::FILE, FileCloser> f(std::fopen(path.c_str(), "rb"));
+  unsigned char header[kHeaderBytes];
+  if (!f || std::fread(header, 1, kHeaderBytes, f.get()) != kHeaderBytes ||
+      std::memcmp(header, kMagic, sizeof(kMagic)) != 0)
+    return 0;
+  return get_u32(&header[36]);
 }
 
 ScanReference scan_reference(const std::string& path)

@@ -23,6 +23,14 @@ struct ScanReference
   std::uint32_t crc32 = 0;  //!< zlib CRC-32 of the whole file
 };
 
+//! Which saved file a loaded project came from, so that a save over it can
+//! tell whether another run has saved there since (not itself saved).
+struct ProjectOrigin
+{
+  std::string path;            //!< as given to load_project(); empty: not loaded from a file
+  std::uint32_t header_crc = 0; //!< the header's own CRC-32 (it covers the payload's)
+};
+
 //! The state of a painted surface, as saved.
 struct Project
 {
@@ -36,6 +44,7 @@ struct Project
   std::vector<LabelClass> labels;
   std::string history;           //!< the strokes applied so far, as a stroke script (JSON)
   ScanReference scan;
+  ProjectOrigin origin; //!< set by load_project()
 };
 
 //! Whether a path names a project (extension .meshpaint, any case).
@@ -43,8 +52,9 @@ bool is_project_path(const std::string& path);
 
 //! Writes the project atomically: a crash or kill while saving leaves the
 //! previous file as it was.
+//! Returns the header CRC-32 written (what ProjectOrigin holds).
 //! \throw IOError when the file cannot be written.
-void save_project(const Project& project, const std::string& path);
+std::uint32_t save_project(const Project& project, const std::string& path);
 
 //! Reads and checks a project: magic, version, sizes, CRC-32 of the header
 //! and of the payload, and the shape of every section. Nothing is returned
@@ -53,6 +63,10 @@ void save_project(const Project& project, const std::string& path);
 //! naming the file and the problem (not a project, newer version, truncated,
 //! corrupt).
 Project load_project(const std::string& path);
+
+//! The header CRC-32 of the project file now at `path` (what ProjectOrigin
+//! holds), or 0 when there is none or it is not a readable project header.
+std::uint32_t project_header_crc(const std::string& path);
 
 //! Size and CRC-32 of a file, for ScanReference.
 //! \throw IOError when it cannot be read.

@@ -2,8 +2,11 @@
 
 #include "atlas/weld.h"
 #include "core/errors.h"
+#include "core/file_lock.h"
 
-#include <utility> // for std::move
+#include <filesystem> // for std::filesystem::equivalent
+#include <optional>   // for std::optional
+#include <utility>    // for std::move
 
 namespace meshpaint {
 
@@ -58,11 +61,20 @@ void capture_surface(PaintSurface& surface, Project& p)
   p.channels = surface.read_channels();
 }
 
-void save_painted_project(PaintSurface& surface, Project base, const std::string& path)
+ProjectOrigin save_painted_project(PaintSurface& surface, Project base, const std::string& path, SaveTurn turn)
 {
   base.history = continued_history(base.history, surface.history(), surface.level());
   capture_surface(surface, base);
-  save_project(base, path);
+  std::optional<FileLock> lock;
+  if (turn == SaveTurn::take)
+    lock.emplace(path, nullptr);
+  // Checked under the lock: a save between this check and the rename waits.
+  std::error_code ec;
+  if (!base.origin.path.empty() && std::filesystem::equivalent(base.origin.path, path, ec) &&
+      project_header_crc(path) != base.origin.header_crc)
+    throw InputError("'" + path + "' was saved by another run after this surface was loaded from or saved to it: "
+                     "saving would lose that run's strokes; save under another name");
+  return {path, save_project(base, path)};
 }
 
 } // namespace meshpaint

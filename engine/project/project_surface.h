@@ -35,13 +35,27 @@ std::string continued_history(const std::string& previous, const std::vector<Str
 //! surface; labels, history, reference and scan stay as they are.
 void capture_surface(PaintSurface& surface, Project& project);
 
+//! Whether save_painted_project() takes the file's lock itself or runs
+//! inside a FileLock its caller holds (from reading the project to saving it).
+enum class SaveTurn
+{
+  take,
+  held
+};
+
 //! Writes a painted surface as a project, atomically: `base` (what a loaded
 //! project carries on: labels, reference, scan and stroke history; an empty
 //! Project for a fresh surface) with the surface's strokes appended to its
 //! history and the surface's mesh, level and layers captured. The one way
-//! the command line, vtkPaintSurface and vtkPaintView save projects.
-//! \throw InputError when `base.history` is not a valid stroke script;
-//! IOError when the file cannot be written.
-void save_painted_project(PaintSurface& surface, Project base, const std::string& path);
+//! the command line, vtkPaintSurface and vtkPaintView save projects: with
+//! the exclusive FileLock on `path` (runs saving one project take turns),
+//! and, where `base.origin` names the same file, only if no other run has
+//! saved there since (its strokes would be lost). Returns the origin a next
+//! save of this surface to `path` passes in `base.origin`.
+//! \throw InputError when `base.history` is not a valid stroke script or
+//! another run saved `path` since it was loaded or saved from here; IOError
+//! when the file cannot be locked or written.
+ProjectOrigin save_painted_project(PaintSurface& surface, Project base, const std::string& path,
+                                   SaveTurn turn = SaveTurn::take);
 
 } // namespace meshpaint

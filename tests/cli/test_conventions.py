@@ -176,6 +176,24 @@ def test_progress_is_plain_lines_when_stderr_is_not_a_terminal(tmp_path):
             assert re.fullmatch(r"meshpaint fit: pass \d of 2: \d+% \(\d+:\d\d left\)", line), line
 
 
+def test_transfer_and_demo_show_progress(tmp_path):
+    project = tmp_path / "p.meshpaint"
+    r = run("paint", CUBE, "--strokes", STROKES, "--save", str(project), "--quiet")
+    assert r.returncode == 0, r.stderr
+    for args, finished in [
+        (["transfer", str(project), "--to", CUBE, "-o", str(tmp_path / "t.vtp")],
+         r"meshpaint transfer: transferring onto .*cube\.obj: 100% \([0-9.]+ s\)"),
+        (["demo", CUBE, "--level", "2", "-o", str(tmp_path / "demo")],
+         r"meshpaint demo: subdividing .*cube\.obj to level 2: 100% \([0-9.]+ s\)"),
+    ]:
+        r = run(*args)
+        assert r.returncode == 0, r.stderr
+        assert any(re.fullmatch(finished, line) for line in r.stderr.splitlines()), r.stderr
+        r = run(*args, "--quiet")
+        assert r.returncode == 0, r.stderr
+        assert r.stderr == ""
+
+
 @pytest.mark.parametrize("command", [
     ["paint", CUBE, "--strokes", STROKES, "-o", "{tmp}/painted"],
     ["fit", CUBE, "--level", "2", "-o", "{tmp}/p.meshpaint"],

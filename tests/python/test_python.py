@@ -300,3 +300,147 @@ def test_shared_arrays_follow_the_strokes_in_place():
     # the array read after the first update is the same memory, now painted
     assert (first[:, 1] == 0).any()
     assert first.tobytes() == vtk_to_numpy(copied.GetOutput().GetPointData().GetArray("diffuse")).tobytes()
+
+
+def cube_soup(inward=False):
+    """A unit cube as many exporters write it: every quad with its own four
+    points (24 points, 6 quads), wound outward or, with `inward`, inward."""
+    corners = [(x, y, z) for x in (0, 1) for y in (0, 1) for z in (0, 1)]
+    quads = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
+    points, cells = vtk.vtkPoints(), vtk.vtkCellArray()
+    for quad in quads:
+        ids = [points.InsertNextPoint(*corners[c]) for c in quad]
+        cells.InsertNextCell(4, list(reversed(ids)) if inward else ids)
+    poly = vtk.vtkPolyData()
+    poly.SetPoints(points)
+    poly.SetPolys(cells)
+    return poly
+
+
+def test_polydata_input_goes_through_the_import_steps():
+    # Welded and turned outward, as the same polygons read from a file are.
+    s = meshpaint.vtkPaintSurface()
+    s.SetInputData(cube_soup(inward=True))
+    s.SetLevel(2)
+    s.Update()
+    report = s.GetImportReport()
+    assert "welded 16 coincident vertices" in report, report
+    assert "turned 1 closed component wound inwards outward" in report, report
+    out = s.GetOutput()
+    welded_points = out.GetNumberOfPoints()
+    # One closed surface: every limit normal points away from the centre.
+    points = vtk_to_numpy(out.GetPoints().GetData())
+    normals = vtk_to_numpy(out.GetPointData().GetArray("Normals"))
+    assert (np.einsum("ij,ij->i", points - 0.5, normals) > 0).all()
+
+    # WeldOff keeps the quads apart: six open sheets, more points, no weld reported.
+    s.WeldOff()
+    s.Update()
+    assert "welded" not in s.GetImportReport(), s.GetImportReport()
+    assert s.GetOutput().GetNumberOfPoints() > welded_points
+
+    # The file's form and the polydata's give the same surface.
+    poly_file = meshpaint.vtkPaintSurface()
+    poly_file.SetInputData(cube_soup(inward=False))
+    poly_file.SetLevel(2)
+    poly_file.Update()
+    assert poly_file.GetOutput().GetNumberOfPoints() == welded_points
+    assert "outward" not in poly_file.GetImportReport()
+
+
+def test_polydata_input_with_a_diffuse_array_starts_with_those_colours():
+    poly = cube_soup()
+    colours = vtk.vtkFloatArray()
+    colours.SetName("diffuse")
+    colours.SetNumberOfComponents(3)
+    for _ in range(poly.GetNumberOfPoints()):
+        colours.InsertNextTuple3(0.2, 0.4, 0.6)
+    poly.GetPointData().AddArray(colours)
+    s = meshpaint.vtkPaintSurface()
+    s.SetInputData(poly)
+    s.SetLevel(2)
+    s.Update()
+    diffuse = vtk_to_numpy(s.GetChannel("diffuse"))
+    assert np.allclose(diffuse, [0.2, 0.4, 0.6], atol=1e-6)
+
+
+def test_bad_polydata_input_raises():
+    poly = cube_soup()
+    poly.GetPoints().SetPoint(3, float("nan"), 0, 0)
+    s = meshpaint.vtkPaintSurface()
+    s.SetInputData(poly)
+    with pytest.raises(meshpaint.Error, match="input polygons: vertex 3 has a non-finite coordinate"):
+        s.Update()
+
+
+def test_saves_take_the_project_lock(tmp_path):
+    source, s = painted_sphere()
+    path = tmp_path / "p.meshpaint"
+    s.SaveProject(path)
+    marker = tmp_path / "released"
+    # Another process in the middle of continuing the project: it holds the
+    # lock, then notes that it lets go.
+    holder = subprocess.Popen([sys.executable, "-c", (
+        "import fcntl, sys, time\n"
+        "f = open(sys.argv[1], 'rb')\n"
+        "fcntl.flock(f, fcntl.LOCK_EX)\n"
+        "print('locked', flush=True)\n"
+        "time.sleep(1)\n"
+        "open(sys.argv[2], 'w').close()\n"), str(path), str(marker)], stdout=subprocess.PIPE, text=True)
+    assert holder.stdout.readline().strip() == "locked"
+    s.SaveProject(path)  # waits for its turn
+    assert marker.exists()
+    holder.wait(timeout=60)
+
+
+def test_a_save_over_a_project_another_run_saved_meanwhile_is_refused(tmp_path):
+    source, s = painted_sphere()
+    path = tmp_path / "p.meshpaint"
+    s.SaveProject(path)
+    t = meshpaint.vtkPaintSurface()
+    t.LoadProject(path)
+    t.ApplyStrokes('{"strokes": [{"tool": "label", "points": [[0, 0, -0.5]], "radius": 0.2, "channels": {"label": 2}}]}')
+    t.SaveProject(path)  # its own earlier save is no obstacle
+    t.SaveProject(path)
+    # Another run continues the project meanwhile: its stroke is in the file now.
+    script = tmp_path / "more.json"
+    script.write_text('{"strokes": [{"points": [[0, 0, 0.5]], "radius": 0.2, "channels": {"diffuse": [0, 1, 0]}}]}')
+    bin_dir = os.path.join(os.path.dirname(meshpaint.__file__), "..", "..", "bin", "meshpaint")
+    r = subprocess.run([bin_dir, "paint", str(path), "--strokes", str(script), "--save", str(path), "--quiet"],
+                       capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0, r.stderr
+    before = path.read_bytes()
+    with pytest.raises(meshpaint.Error, match="was saved by another run"):
+        t.SaveProject(path)
+    assert path.read_bytes() == before
+    t.SaveProject(tmp_path / "elsewhere.meshpaint")  # saving under another name is fine
+
+
+@pytest.mark.parametrize("name,components", [("Colors", 3), ("RGBA", 4), (None, 3)])
+def test_rgb_bytes_as_other_tools_write_them_become_the_diffuse_channel(tmp_path, name, components):
+    # ParaView, MeshLab and Blender's VTK export: unsigned bytes per point,
+    # named Colors/RGB/RGBA or set as the point scalars.
+    poly = cube_soup()
+    colours = vtk.vtkUnsignedCharArray()
+    colours.SetName(name or "anything")
+    colours.SetNumberOfComponents(components)
+    for _ in range(poly.GetNumberOfPoints()):
+        colours.InsertNextTuple([51, 102, 204, 255][:components])
+    if name is None:
+        poly.GetPointData().SetScalars(colours)
+    else:
+        poly.GetPointData().AddArray(colours)
+    s = meshpaint.vtkPaintSurface()
+    s.SetInputData(poly)
+    s.SetLevel(2)
+    s.Update()
+    assert np.allclose(vtk_to_numpy(s.GetChannel("diffuse")), [0.2, 0.4, 0.8], atol=1e-6)
+    # The same written by VTK's XML writer, read by the command line.
+    writer = vtk.vtkXMLPolyDataWriter()
+    writer.SetInputData(poly)
+    writer.SetFileName(str(tmp_path / "coloured.vtp"))
+    writer.Write()
+    binary = os.path.join(os.path.dirname(meshpaint.__file__), "..", "..", "bin", "meshpaint")
+    r = subprocess.run([binary, "info", str(tmp_path / "coloured.vtp")], capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0, r.stderr
+    assert "took the file's colours as the diffuse channel" in r.stdout + r.stderr
