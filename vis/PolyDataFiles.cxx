@@ -1,7 +1,7 @@
 #include "PolyDataFiles.h"
 
 #include "core/errors.h" // for meshpaint::IOError, InputError
-#include "core/format.h" // for meshpaint::lower_extension
+#include "core/format.h" // for meshpaint::lower_extension, excerpt
 
 #include <vtkCellArray.h>         // for vtkCellArray
 #include <vtkDataArray.h>         // for vtkDataArray
@@ -19,6 +19,7 @@
 #include <filesystem> // for std::filesystem::file_size, path
 #include <fstream>    // for std::ifstream
 #include <regex>      // for std::regex, std::sregex_iterator
+#include <sstream>    // for std::istringstream
 
 namespace meshpaint {
 namespace {
@@ -73,6 +74,45 @@ void check_legacy_version(const std::string& path)
     if (line.rfind("OFFSETS ", 0) == 0 || line.rfind("CONNECTIVITY ", 0) == 0)
       throw InputError("'" + path + "': cells in the layout of version 5 (OFFSETS, CONNECTIVITY) under a header of "
                        "version " + m[1].str() + ".x");
+}
+
+//! VTK's legacy reader crashes (a null array in ReadMeshSimple) on an ASCII
+//! POINTS section cut short by other words (a fuzz finding): in an ASCII
+//! file, every POINTS line must be followed by its 3 n numbers.
+void check_legacy_points(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  for (int k = 0; k < 3 && std::getline(in, line); ++k) {
+  }
+  if (line.rfind("ASCII", 0) != 0)
+    return; // binary bodies: left to the size checks above
+  long number = 3;
+  while (std::getline(in, line)) {
+    ++number;
+    if (line.rfind("POINTS ", 0) != 0)
+      continue;
+    std::istringstream words(line.substr(7));
+    double declared = -1;
+    words >> declared;
+    const long at = number;
+    const long count = long(declared) * 3;
+    for (long read = 0; read < count;) {
+      std::string word;
+      if (!(in >> word))
+        throw InputError("'" + path + "': POINTS on line " + std::to_string(at) + " declares " +
+                         std::to_string(count / 3) + " points, but the file ends after " + std::to_string(read) +
+                         " of their " + std::to_string(count) + " coordinates");
+      char* end = nullptr;
+      std::strtod(word.c_str(), &end);
+      if (end == word.c_str() || *end != '\0')
+        throw InputError("'" + path + "': POINTS on line " + std::to_string(at) + " declares " +
+                         std::to_string(count / 3) + " points, but coordinate " + std::to_string(read + 1) + " is '" +
+                         excerpt(word) + "'");
+      ++read;
+    }
+    return;
+  }
 }
 
 //! VTK's messages while a reader runs, kept instead of printed: the output
@@ -221,6 +261,7 @@ vtkSmartPointer<vtkPolyData> read_polydata_file(const std::string& path)
   check_polydata_sizes(path);
   if (lower_extension(path) == ".vtk") {
     check_legacy_version(path);
+    check_legacy_points(path);
     auto r = vtkSmartPointer<vtkPolyDataReader>::New();
     r->SetFileName(path.c_str());
     r->ReadAllScalarsOn();
