@@ -2,6 +2,7 @@
 
 #include "core/errors.h"     // for meshpaint::InputError
 #include "core/format.h"     // for meshpaint::format_fixed
+#include "paint/stroke_schema.h" // for meshpaint::stroke_key
 #include "project/labels.h"  // for meshpaint::kMaxLabelId
 
 #include <algorithm> // for std::clamp
@@ -15,9 +16,34 @@ namespace {
 const std::vector<std::string> kTools = {"paint", "smooth", "blur", "sculpt", "inflate", "flatten", "grab",
                                          "smear", "label"};
 const std::vector<std::string> kChannels = {"diffuse", "specular", "roughness", "displacement", "mask", "material"};
-const std::vector<std::string> kFalloffs = {"constant", "linear", "smoothstep", "gaussian"};
-const std::vector<std::string> kOps = {"copy", "over", "max", "add", "subtract"};
-const std::vector<std::string> kSpaces = {"object", "tangent", "screen", "parameter"};
+//! The names of a stroke key whose values are a member's (for a word key
+//! such as "falloff", in the order of their values).
+std::vector<std::string> member_names(const char* key)
+{
+  std::vector<std::string> out;
+  for (const KeyName& n : stroke_key(key).names)
+    if (n.value >= 0) // op "blur" and "smear" are tools of their own
+      out.emplace_back(n.name);
+  return out;
+}
+
+const std::vector<std::string>& falloff_names()
+{
+  static const std::vector<std::string> names = member_names("falloff");
+  return names;
+}
+
+const std::vector<std::string>& op_names()
+{
+  static const std::vector<std::string> names = member_names("op");
+  return names;
+}
+
+const std::vector<std::string>& space_names()
+{
+  static const std::vector<std::string> names = member_names("space");
+  return names;
+}
 // Swatches 0..9 for the colour channels.
 const std::array<std::array<double, 3>, 10> kPalette = {{{0.05, 0.05, 0.05}, {0.85, 0.1, 0.1}, {0.95, 0.55, 0.1},
                                                          {0.95, 0.9, 0.2}, {0.2, 0.7, 0.2}, {0.1, 0.6, 0.7},
@@ -48,19 +74,19 @@ BrushSettings::BrushSettings(double size, int level)
 
 const std::vector<std::string>& BrushSettings::tools() { return kTools; }
 const std::vector<std::string>& BrushSettings::channels() { return kChannels; }
-const std::vector<std::string>& BrushSettings::falloffs() { return kFalloffs; }
-const std::vector<std::string>& BrushSettings::ops() { return kOps; }
-const std::vector<std::string>& BrushSettings::spaces() { return kSpaces; }
+const std::vector<std::string>& BrushSettings::falloffs() { return falloff_names(); }
+const std::vector<std::string>& BrushSettings::ops() { return op_names(); }
+const std::vector<std::string>& BrushSettings::spaces() { return space_names(); }
 std::string BrushSettings::tool() const { return kTools[std::size_t(tool_)]; }
 void BrushSettings::set_tool(const std::string& tool) { tool_ = index_of_name(kTools, tool, "the tool"); }
 std::string BrushSettings::channel() const { return kChannels[std::size_t(channel_)]; }
 void BrushSettings::set_channel(const std::string& channel) { channel_ = index_of_name(kChannels, channel, "the channel"); }
-std::string BrushSettings::falloff() const { return kFalloffs[std::size_t(falloff_)]; }
-void BrushSettings::set_falloff(const std::string& falloff) { falloff_ = index_of_name(kFalloffs, falloff, "the falloff"); }
-std::string BrushSettings::op() const { return kOps[std::size_t(op_)]; }
-void BrushSettings::set_op(const std::string& op) { op_ = index_of_name(kOps, op, "the op"); }
-std::string BrushSettings::space() const { return kSpaces[std::size_t(space_)]; }
-void BrushSettings::set_space(const std::string& space) { space_ = index_of_name(kSpaces, space, "the brush space"); }
+std::string BrushSettings::falloff() const { return falloff_names()[std::size_t(falloff_)]; }
+void BrushSettings::set_falloff(const std::string& falloff) { falloff_ = index_of_name(falloff_names(), falloff, "the falloff"); }
+std::string BrushSettings::op() const { return op_names()[std::size_t(op_)]; }
+void BrushSettings::set_op(const std::string& op) { op_ = index_of_name(op_names(), op, "the op"); }
+std::string BrushSettings::space() const { return space_names()[std::size_t(space_)]; }
+void BrushSettings::set_space(const std::string& space) { space_ = index_of_name(space_names(), space, "the brush space"); }
 std::array<double, 3> BrushSettings::swatch_colour(int k) { return kPalette[std::size_t(std::clamp(k, 0, 9))]; }
 
 void BrushSettings::set_swatch(int k)
@@ -146,15 +172,15 @@ bool BrushSettings::handle_key(const std::string& key, bool shift)
   else if (key == "minus" || key == "KP_Subtract")
     strength_ = std::clamp(strength_ - 0.1, 0.1, 1.0);
   else if (key == "f" || key == "F")
-    falloff_ = cycle(falloff_, kFalloffs, shift || key == "F");
+    falloff_ = cycle(falloff_, falloff_names(), shift || key == "F");
   else if (key == "o" || key == "O")
-    op_ = cycle(op_, kOps, shift || key == "O");
+    op_ = cycle(op_, op_names(), shift || key == "O");
   else if (key == "m" || key == "M")
     mirror_ = mirror_ == 2 ? -1 : mirror_ + 1;
   else if (key == "i" || key == "I")
     inwards_ = !inwards_;
   else if (key == "p" || key == "P")
-    space_ = cycle(space_, kSpaces, shift || key == "P");
+    space_ = cycle(space_, space_names(), shift || key == "P");
   else if (key == "l" && !shift)
     edit_level_ = std::max(1, edit_level_ - 1);
   else if (key == "L" || (key == "l" && shift))
@@ -229,7 +255,7 @@ std::string BrushSettings::describe() const
   out << "tool " << tool;
   if (is_paint(tool))
     out << "   channel " << kChannels[std::size_t(channel_)] << "   swatch " << swatch_ << "   op "
-        << kOps[std::size_t(op_)];
+        << op_names()[std::size_t(op_)];
   else if (tool == "label") {
     out << "   label " << label_;
     for (std::size_t k = 0; k < locked_labels_.size(); ++k)
@@ -242,8 +268,8 @@ std::string BrushSettings::describe() const
   if (moves(tool))
     out << "   edit level " << edit_level_ << (edit_level_ < level_ ? " (coarse)" : "");
   out << "\nradius " << format_fixed(radius_, 4) << "   strength " << format_fixed(strength_, 1) << "   falloff "
-      << kFalloffs[std::size_t(falloff_)] << "   mirror " << (mirror_ < 0 ? std::string("off") : std::string(1, char('x' + mirror_)))
-      << "   space " << kSpaces[std::size_t(space_)];
+      << falloff_names()[std::size_t(falloff_)] << "   mirror " << (mirror_ < 0 ? std::string("off") : std::string(1, char('x' + mirror_)))
+      << "   space " << space_names()[std::size_t(space_)];
   return out.str();
 }
 

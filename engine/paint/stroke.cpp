@@ -1,5 +1,7 @@
 #include "paint/stroke.h"
 
+#include "paint/stroke_schema.h"
+
 #include "core/errors.h"
 #include "core/format.h"     // for meshpaint::excerpt
 #include "core/input_file.h" // for meshpaint::read_input_file
@@ -18,10 +20,6 @@ namespace meshpaint {
 namespace {
 
 using nlohmann::json;
-
-//! Tool names in the order of enum Tool.
-const std::array<const char*, 13> kToolNames = {"paint",  "label",   "wash",    "dip",   "smooth", "blur", "sculpt",
-                                                "inflate", "flatten", "smear", "grab", "fill",   "merge"};
 
 //! Reads one stroke, with errors that name it and the key.
 class StrokeReader
@@ -46,6 +44,23 @@ public:
     return v.get<double>();
   }
 
+  //! A number key within the schema's range.
+  double number(const StrokeKey& key, double fallback) const { return number(key.name, fallback, key.min, key.max); }
+  //! The same, with the schema's default.
+  double number(const StrokeKey& key) const { return number(key, std::stod(key.fallback)); }
+
+  //! A word key: one of the schema's names.
+  std::string word(const StrokeKey& key, const std::string& fallback) const
+  {
+    return word(key.name, fallback, key_names(key));
+  }
+
+  //! The member value of a word key's name (the fallback's when absent).
+  int value(const StrokeKey& key, const std::string& fallback) const { return value_of(key, word(key, fallback)); }
+
+  //! The key is given although the schema says it means nothing for `tool`.
+  bool meaningless(const StrokeKey& key, Tool tool) const { return has(key.name) && !applies_to(key, tool); }
+
   std::string word(const std::string& key, const std::string& fallback,
                    const std::vector<std::string>& allowed) const
   {
@@ -56,10 +71,7 @@ public:
       for (const std::string& a : allowed)
         if (v.get<std::string>() == a)
           return a;
-    std::string list;
-    for (const std::string& a : allowed)
-      list += (list.empty() ? "" : ", ") + a;
-    fail(key, "must be one of " + list);
+    fail(key, "must be one of " + join_names(allowed));
   }
 
   std::vector<Vec3> points(const std::string& key) const
@@ -97,9 +109,13 @@ private:
   std::string where_;
 };
 
-const std::map<std::string, int> kChannels = {{"diffuse", CHANNEL_DIFFUSE},   {"specular", CHANNEL_SPECULAR},
-                                              {"roughness", CHANNEL_ROUGHNESS}, {"displacement", CHANNEL_DISPLACEMENT},
-                                              {"label", CHANNEL_LABEL},         {"mask", CHANNEL_MASK}};
+//! The channel of that name, or -1.
+int channel_named(const std::string& name)
+{
+  const std::vector<std::string>& names = channel_names();
+  const auto it = std::find(names.begin(), names.end(), name);
+  return it == names.end() ? -1 : int(it - names.begin());
+}
 
 //! "channels": {"diffuse": [r, g, b] or [r, g, b, coverage], "roughness": v, "label": id, ...}
 //! "alphas": {"diffuse": a, ...} (default 1 for every channel given)
@@ -111,11 +127,9 @@ void read_channels(const StrokeReader& r, Stroke& s)
   if (!ch.is_object())
     r.fail("channels", "must be an object such as {\"diffuse\": [1, 0, 0]}");
   for (const auto& [name, v] : ch.items()) {
-    const auto it = kChannels.find(name);
-    if (it == kChannels.end())
-      r.fail("channels", "has an unknown channel \"" + excerpt(name) +
-                           "\" (diffuse, specular, roughness, displacement, label, mask)");
-    const int c = it->second;
+    const int c = channel_named(name);
+    if (c < 0)
+      r.fail("channels", "has an unknown channel \"" + excerpt(name) + "\" (" + join_names(channel_names()) + ")");
     Float4 value{0.f, 0.f, 0.f, 1.f};
     if (c == CHANNEL_DIFFUSE || c == CHANNEL_SPECULAR) {
       if (!v.is_array() || (v.size() != 3 && v.size() != 4))
@@ -143,12 +157,12 @@ void read_channels(const StrokeReader& r, Stroke& s)
     if (!al.is_object())
       r.fail("alphas", "must be an object such as {\"diffuse\": 0.5}");
     for (const auto& [name, v] : al.items()) {
-      const auto it = kChannels.find(name);
-      if (it == kChannels.end() || !ch.contains(name))
+      const int c = channel_named(name);
+      if (c < 0 || !ch.contains(name))
         r.fail("alphas", "names \"" + name + "\", which \"channels\" does not paint");
       if (!v.is_number() || v.get<double>() < 0 || v.get<double>() > 1)
         r.fail("alphas", "\"" + name + "\" must be a number from 0 to 1");
-      s.paint().alpha[it->second] = v.get<float>();
+      s.paint().alpha[std::size_t(c)] = v.get<float>();
     }
   }
 }
@@ -160,26 +174,25 @@ void read_pattern(const StrokeReader& r, Stroke& s)
   const json& p = r.at("pattern");
   if (!p.is_object())
     r.fail("pattern", "must be an object such as {\"type\": \"marble\", \"scale\": 4}");
-  static const std::set<std::string> keys = {"type", "coord", "matte", "scale", "octaves", "transform", "file"};
-  for (const auto& item : p.items())
-    if (!keys.count(item.key()))
-      r.fail("pattern", "has an unknown key \"" + excerpt(item.key()) + "\" (type, coord, matte, scale, octaves, transform, file)");
-  static const std::vector<std::string> types = {"noise", "turbulence", "marble", "bath", "image", "volume"};
-  const auto word = [&](const char* key, const std::vector<std::string>& allowed, const std::string& fallback) {
-    if (!p.contains(key))
-      return fallback;
-    if (p[key].is_string())
-      for (const std::string& a : allowed)
-        if (p[key].get<std::string>() == a)
-          return a;
-    std::string list;
-    for (const std::string& a : allowed)
-      list += (list.empty() ? "" : ", ") + a;
-    r.fail("pattern", std::string("\"") + key + "\" must be one of " + list);
+  for (const auto& item : p.items()) {
+    const auto& keys = pattern_keys();
+    if (std::none_of(keys.begin(), keys.end(), [&](const StrokeKey& k) { return item.key() == k.name; }))
+      r.fail("pattern", "has an unknown key \"" + excerpt(item.key()) + "\" (" + key_list(keys) + ")");
+  }
+  // A word of the pattern object: its member value (the fallback's when absent).
+  const auto value = [&](const char* name, const std::string& fallback) {
+    const StrokeKey& key = pattern_key(name);
+    if (!p.contains(name))
+      return value_of(key, fallback);
+    if (p[name].is_string())
+      for (const KeyName& n : key.names)
+        if (p[name].get<std::string>() == n.name)
+          return n.value;
+    r.fail("pattern", std::string("\"") + name + "\" must be one of " + name_list(key));
   };
   if (!p.contains("type"))
-    r.fail("pattern", "needs a \"type\" (noise, turbulence, marble, bath, image, volume)");
-  s.paint().pattern.kind = 1 + int(std::find(types.begin(), types.end(), word("type", types, "")) - types.begin());
+    r.fail("pattern", "needs a \"type\" (" + name_list(pattern_key("type")) + ")");
+  s.paint().pattern.kind = value("type", "");
   const bool sampled = s.paint().pattern.kind == PATTERN_IMAGE || s.paint().pattern.kind == PATTERN_VOLUME;
   if (sampled != p.contains("file"))
     r.fail("pattern", sampled ? "of type image or volume needs a \"file\"" : "\"file\" belongs to image and volume patterns");
@@ -188,9 +201,8 @@ void read_pattern(const StrokeReader& r, Stroke& s)
       r.fail("pattern", "\"file\" must be a file name");
     s.paint().pattern.file = p["file"].get<std::string>();
   }
-  const std::string coord = word("coord", {"position", "uv", "screen"}, "position");
-  s.paint().pattern.coord = coord == "uv" ? PATTERN_COORD_UV : coord == "screen" ? PATTERN_COORD_SCREEN : PATTERN_COORD_POSITION;
-  s.paint().pattern.matte = word("matte", {"self", "opaque"}, "self") == "opaque" ? MATTE_OPAQUE : MATTE_SELF;
+  s.paint().pattern.coord = value("coord", pattern_key("coord").fallback);
+  s.paint().pattern.matte = value("matte", pattern_key("matte").fallback);
   double scale = 1.0;
   if (p.contains("scale")) {
     if (!p["scale"].is_number() || !(p["scale"].get<double>() > 0) || !std::isfinite(p["scale"].get<double>()))
@@ -198,8 +210,10 @@ void read_pattern(const StrokeReader& r, Stroke& s)
     scale = p["scale"].get<double>();
   }
   if (p.contains("octaves")) {
-    if (!p["octaves"].is_number_integer() || p["octaves"].get<int>() < 1 || p["octaves"].get<int>() > 12)
-      r.fail("pattern", "\"octaves\" must be an integer from 1 to 12");
+    const StrokeKey& octaves = pattern_key("octaves");
+    if (!p["octaves"].is_number_integer() || p["octaves"].get<int>() < octaves.min || p["octaves"].get<int>() > octaves.max)
+      r.fail("pattern", "\"octaves\" must be an integer from " + StrokeReader::text(octaves.min) + " to " +
+                          StrokeReader::text(octaves.max));
     s.paint().pattern.octaves = p["octaves"].get<int>();
   }
   if (p.contains("transform")) {
@@ -296,11 +310,10 @@ Camera read_camera(const StrokeReader& r)
 //! "space", "camera", "backfaces" and "spray": how the brush meets the surface.
 void read_space(const StrokeReader& r, Stroke& s, const std::string& tool, bool everywhere)
 {
-  const std::string space = r.word("space", "object", {"object", "tangent", "screen", "parameter"});
+  const StrokeKey& space = stroke_key("space");
+  s.brush.space = r.value(space, space.fallback);
   if (everywhere && r.has("space"))
     r.fail("space", "has no meaning for a " + tool + ", which covers everything at once");
-  s.brush.space = space == "tangent" ? SPACE_TANGENT : space == "screen" ? SPACE_SCREEN
-            : space == "parameter" ? SPACE_PARAMETER : SPACE_OBJECT;
   const bool screen =
     s.brush.space == SPACE_SCREEN || (s.pattern() && s.pattern()->coord == PATTERN_COORD_SCREEN);
   if (screen && !r.has("camera"))
@@ -314,18 +327,17 @@ void read_space(const StrokeReader& r, Stroke& s, const std::string& tool, bool 
   if (r.has("backfaces")) {
     if (s.brush.space != SPACE_SCREEN && s.brush.space != SPACE_TANGENT)
       r.fail("backfaces", "has no meaning unless \"space\" is \"screen\" or \"tangent\"");
-    s.brush.paint_backfaces = r.word("backfaces", "skip", {"skip", "paint"}) == "paint";
+    s.brush.paint_backfaces = r.value(stroke_key("backfaces"), stroke_key("backfaces").fallback) == 1;
   }
   if (r.has("side")) {
     const ToolFamily family = tool_family(s);
     const bool colours = family == ToolFamily::Paint || family == ToolFamily::ColourFilter;
     if (!colours)
       r.fail("side", "has no meaning for a " + tool + " stroke: only colours and roughness have two sides");
-    const std::string side = r.word("side", "auto", {"auto", "outside", "inside"});
-    s.brush.side = side == "outside" ? 1 : side == "inside" ? 2 : 0;
+    s.brush.side = r.value(stroke_key("side"), stroke_key("side").fallback);
   }
   if (r.has("spray")) {
-    if (s.brush.space != SPACE_SCREEN || (s.tool != Tool::Paint && s.tool != Tool::Label))
+    if (s.brush.space != SPACE_SCREEN || !applies_to(stroke_key("spray"), s.tool))
       r.fail("spray", "has no meaning unless a paint or label stroke is in screen space");
     const json& sp = r.at("spray");
     if (!sp.is_object())
@@ -352,97 +364,92 @@ Stroke read_stroke(const json& j, std::size_t index)
 {
   if (!j.is_object())
     throw InputError("stroke " + std::to_string(index) + ": must be an object");
-  static const std::set<std::string> known = {
-    "tool",   "points", "radius",   "strength",   "falloff", "spacing", "op",     "channels", "alphas",
-    "pressure", "mirror", "amount", "iterations", "target", "method",  "lambda", "mu",
-    "mode",     "coefficient", "pattern", "stroke", "stamp", "edit_level", "space", "camera", "backfaces", "spray", "side",
-    "locked_labels", "only_over_label"};
   const StrokeReader r(j, index);
-  for (const auto& item : j.items())
-    if (!known.count(item.key()))
-      r.fail(item.key(), "is not a stroke key (tool, points, radius, strength, falloff, spacing, op, "
-                         "channels, alphas, pressure, mirror, amount, iterations, target, method, lambda, mu, "
-                         "mode, coefficient, pattern, stroke, stamp, edit_level, space, camera, backfaces, spray, side, locked_labels, only_over_label)");
-  Stroke s;
-  static const std::vector<std::string> tools(kToolNames.begin(), kToolNames.end());
-  std::string tool = r.word("tool", "paint", tools);
-  s = make_stroke(tool_named(tool));
+  for (const auto& item : j.items()) {
+    const auto& keys = stroke_keys();
+    if (std::none_of(keys.begin(), keys.end(), [&](const StrokeKey& k) { return item.key() == k.name; }))
+      r.fail(item.key(), "is not a stroke key (" + key_list(keys) + ")");
+  }
+  const StrokeKey& tool_key = stroke_key("tool");
+  std::string tool = r.word(tool_key, tool_key.fallback);
+  Stroke s = make_stroke(tool_named(tool));
   // The paint equation's filtering ops are brushes of their own: "op":
   // "blur" filters the colours under the brush, "op": "smear" drags them.
   if (s.tool == Tool::Paint && r.has("op") && r.at("op").is_string() &&
       (r.at("op").get<std::string>() == "blur" || r.at("op").get<std::string>() == "smear")) {
     tool = r.at("op").get<std::string>();
-    s = make_stroke(tool == "blur" ? Tool::Blur : Tool::Smear);
+    s = make_stroke(tool_named(tool));
     if (r.has("channels"))
       r.fail("channels", "has no meaning for op " + tool + ", which moves the colours already there");
   }
   const bool labels = s.tool == Tool::Label || s.tool == Tool::Fill || s.tool == Tool::Merge;
-  const bool paints = s.tool == Tool::Paint || s.tool == Tool::Wash || s.tool == Tool::Dip || labels;
+  const bool paints = applies_to(stroke_key("channels"), s.tool);
   const bool everywhere = covers_everything(s.tool);
-  const bool moves = s.tool == Tool::Sculpt || s.tool == Tool::Inflate || s.tool == Tool::Flatten;
-  const bool smooths = s.tool == Tool::Smooth || s.tool == Tool::Blur;
+  const bool moves = applies_to(stroke_key("amount"), s.tool);
+  const bool smooths = applies_to(stroke_key("iterations"), s.tool);
   for (const char* key : {"channels", "alphas"})
-    if (!paints && r.has(key))
+    if (r.meaningless(stroke_key(key), s.tool))
       r.fail(key, std::string("has no meaning for a ") + tool + " stroke");
+  // A blur or smear stroke may name itself as its op, and nothing else.
   const bool filter_op = s.tool == Tool::Blur || s.tool == Tool::Smear;
   if (!paints && r.has("op") && !(filter_op && r.at("op").is_string() && r.at("op").get<std::string>() == tool))
     r.fail("op", "has no meaning for a " + tool + " stroke");
-  if (!moves && r.has("amount"))
-    r.fail("amount", "has no meaning for a " + tool + " stroke");
-  for (const char* key : {"iterations", "method", "lambda", "mu"})
-    if (!smooths && r.has(key))
+  for (const char* key : {"amount", "iterations", "method", "lambda", "mu", "target"})
+    if (r.meaningless(stroke_key(key), s.tool))
       r.fail(key, std::string("has no meaning for a ") + tool + " stroke");
-  if (s.tool != Tool::Smooth && r.has("target"))
-    r.fail("target", "has no meaning for a " + tool + " stroke");
   if (moves) {
     const bool flatten = s.tool == Tool::Flatten;
-    s.move().amount = float(flatten ? r.number("amount", 0.5, 0.0, 1.0) : r.number("amount", 0.0, -1e30, 1e30));
+    // flatten moves a fraction of the way to the plane; the others world units
+    s.move().amount = float(flatten ? r.number("amount", 0.5, 0.0, 1.0) : r.number(stroke_key("amount"), 0.0));
     if (!flatten && !r.has("amount"))
       r.fail("amount", "is required: how far a dab moves the surface, in world units");
   }
   if (smooths) {
-    s.smooth().iterations = int(r.number("iterations", 1, 1, 1000));
+    const StrokeKey& iterations = stroke_key("iterations");
+    s.smooth().iterations = int(r.number(iterations));
     if (r.has("iterations") && !r.at("iterations").is_number_integer())
-      r.fail("iterations", "must be an integer from 1 to 1000");
-    s.smooth().target_colour = s.tool == Tool::Blur || r.word("target", "position", {"position", "color"}) == "color";
-    s.smooth().taubin = r.word("method", s.smooth().target_colour ? "laplacian" : "taubin", {"laplacian", "taubin"}) == "taubin";
+      r.fail("iterations", "must be an integer from " + StrokeReader::text(iterations.min) + " to " +
+                             StrokeReader::text(iterations.max));
+    const StrokeKey& target = stroke_key("target");
+    s.smooth().target_colour = s.tool == Tool::Blur || r.value(target, target.fallback) == 1;
+    s.smooth().taubin = r.value(stroke_key("method"), s.smooth().target_colour ? "laplacian" : "taubin") == 1;
     if (s.smooth().taubin && s.smooth().target_colour)
       r.fail("method", "taubin is for positions; colours are smoothed with laplacian");
-    s.smooth().lambda = float(r.number("lambda", 0.5, 0.0, 1.0));
-    s.smooth().mu = float(r.number("mu", -0.53, -1.0, 0.0));
+    s.smooth().lambda = float(r.number(stroke_key("lambda")));
+    s.smooth().mu = float(r.number(stroke_key("mu")));
     if (!s.smooth().target_colour && r.has("mu") && !s.smooth().taubin)
       r.fail("mu", "belongs to Taubin smoothing (\"method\": \"taubin\")");
     if (s.smooth().taubin && !(-s.smooth().mu > s.smooth().lambda))
       r.fail("mu", "must be more negative than -lambda for Taubin smoothing (e.g. lambda 0.5, mu -0.53)");
   }
   if (r.has("edit_level")) {
+    const StrokeKey& edit_level = stroke_key("edit_level");
     const bool shapes = tool_family(s) == ToolFamily::Move || tool_family(s) == ToolFamily::Smooth;
     if (!shapes)
       r.fail("edit_level", "has no meaning for a " + tool + " stroke, which does not move the surface");
-    if (!r.at("edit_level").is_number_integer() || r.at("edit_level").get<long long>() < 1 ||
-        r.at("edit_level").get<long long>() > 12)
-      r.fail("edit_level", "must be an integer from 1 to 12");
+    if (!r.at("edit_level").is_number_integer() || r.at("edit_level").get<long long>() < edit_level.min ||
+        r.at("edit_level").get<long long>() > edit_level.max)
+      r.fail("edit_level", "must be an integer from " + StrokeReader::text(edit_level.min) + " to " +
+                             StrokeReader::text(edit_level.max));
     s.set_edit_level(r.at("edit_level").get<int>());
   }
-  s.brush.strength = float(r.number("strength", 1.0, 0.0, 1.0));
-  const std::string falloff = r.word("falloff", "smoothstep", {"constant", "linear", "smoothstep", "gaussian"});
-  s.brush.falloff = falloff == "constant" ? FALLOFF_CONSTANT : falloff == "linear" ? FALLOFF_LINEAR
-              : falloff == "gaussian" ? FALLOFF_GAUSSIAN : FALLOFF_SMOOTHSTEP;
-  const std::string op =
-    paints ? r.word("op", "copy", {"copy", "over", "max", "add", "subtract", "blur", "smear"}) : "copy";
-  if (paints)
-    s.paint().op = op == "over" ? PAINT_OP_OVER : op == "max" ? PAINT_OP_MAX : op == "add" ? PAINT_OP_ADD
-         : op == "subtract" ? PAINT_OP_SUBTRACT : PAINT_OP_COPY;
-  s.brush.spacing = float(r.number("spacing", 0.25, 0.01, 100.0));
+  s.brush.strength = float(r.number(stroke_key("strength")));
+  s.brush.falloff = r.value(stroke_key("falloff"), stroke_key("falloff").fallback);
+  if (paints) {
+    // "blur" and "smear" on a label, wash or dip stroke have always meant copy.
+    const int op = r.value(stroke_key("op"), stroke_key("op").fallback);
+    s.paint().op = op < 0 ? PAINT_OP_COPY : op;
+  }
+  s.brush.spacing = float(r.number(stroke_key("spacing")));
   if (r.has("mirror") && s.tool == Tool::Grab)
     r.fail("mirror", "has no meaning for a grab stroke, which pulls one region");
   if (r.has("mirror"))
-    s.brush.mirror_axis = r.word("mirror", "x", {"x", "y", "z"})[0] - 'x';
+    s.brush.mirror_axis = r.value(stroke_key("mirror"), "x");
   read_channels(r, s);
 
   if (everywhere) {
     for (const char* key : {"points", "radius", "pressure", "mirror", "spacing", "falloff", "stroke"})
-      if (r.has(key))
+      if (r.meaningless(stroke_key(key), s.tool))
         r.fail(key, "has no meaning for a " + tool + ", which covers everything at once");
   } else {
     if (!r.has("points"))
@@ -459,7 +466,7 @@ Stroke read_stroke(const json& j, std::size_t index)
     }
     if (!r.has("radius"))
       r.fail("radius", "is required (world units)");
-    s.brush.radius = float(r.number("radius", 0.0, 1e-30, 1e30));
+    s.brush.radius = float(r.number(stroke_key("radius"), 0.0));
     if (r.has("pressure")) {
       const json& p = r.at("pressure");
       if (!p.is_array() || p.size() != s.points.size())
@@ -489,7 +496,7 @@ Stroke read_stroke(const json& j, std::size_t index)
   if (r.has("stroke")) {
     // rubberband: a straight line from the first point to the last;
     // rubberstamp: the first point only; interpolated: every point.
-    const std::string kind = r.word("stroke", "interpolated", {"interpolated", "rubberband", "rubberstamp"});
+    const std::string kind = r.word(stroke_key("stroke"), stroke_key("stroke").fallback);
     if (kind == "rubberband" && s.points.size() > 2) {
       s.points = {s.points.front(), s.points.back()};
       if (!s.pressure.empty())
@@ -501,22 +508,22 @@ Stroke read_stroke(const json& j, std::size_t index)
     }
   }
   if (r.has("stamp")) {
-    if (everywhere || labels)
+    if (!applies_to(stroke_key("stamp"), s.tool))
       r.fail("stamp", "has no meaning for a " + tool + " stroke");
     if (!r.at("stamp").is_string() || r.at("stamp").get<std::string>().empty())
       r.fail("stamp", "must be the file name of a brush image");
     s.brush.stamp_file = r.at("stamp").get<std::string>();
   }
-  if (r.has("pattern") && (!paints || s.tool == Tool::Fill || s.tool == Tool::Merge))
+  if (r.meaningless(stroke_key("pattern"), s.tool))
     r.fail("pattern", "has no meaning for a " + tool + " stroke");
   if (r.has("pattern"))
     read_pattern(r, s);
   read_space(r, s, tool, everywhere);
   if (s.tool == Tool::Dip && s.paint().pattern.kind == PATTERN_NONE)
     r.fail("pattern", "is required for a dip: the 3D matte to dip through, e.g. {\"type\": \"bath\"}");
-  if (r.has("mode") && (!paints || labels))
+  if (r.meaningless(stroke_key("mode"), s.tool))
     r.fail("mode", "has no meaning for a " + tool + " stroke");
-  const std::string mode = r.word("mode", "", {"material", "remover", "dye", "polish", "sandpaper"});
+  const std::string mode = r.word(stroke_key("mode"), "");
   if (!r.has("mode") && r.has("coefficient"))
     r.fail("coefficient", "belongs to the polish and sandpaper modes");
   if (mode == "material") {
@@ -547,7 +554,7 @@ Stroke read_stroke(const json& j, std::size_t index)
       s.paint().value[CHANNEL_ROUGHNESS] = {rough, rough, rough, 1.f};
       s.paint().alpha[CHANNEL_ROUGHNESS] = 1.f;
     }
-    s.paint().specular_coefficient = float(r.number("coefficient", polish ? 0.9 : 0.05, 0.0, 1.0));
+    s.paint().specular_coefficient = float(r.number(stroke_key("coefficient"), polish ? 0.9 : 0.05));
     s.paint().value[CHANNEL_SPECULAR] = {0.f, 0.f, 0.f, 1.f};
     s.paint().alpha[CHANNEL_SPECULAR] = 1.f;
   }
@@ -564,13 +571,13 @@ Stroke read_stroke(const json& j, std::size_t index)
 
 } // namespace
 
-const char* tool_name(Tool tool) { return kToolNames[std::size_t(tool)]; }
+const char* tool_name(Tool tool) { return name_of(stroke_key("tool"), int(tool)); }
 
 Tool tool_named(const std::string& name)
 {
-  for (std::size_t k = 0; k < kToolNames.size(); ++k)
-    if (name == kToolNames[k])
-      return Tool(k);
+  for (const KeyName& n : stroke_key("tool").names)
+    if (name == n.name)
+      return Tool(n.value);
   throw InputError("'" + excerpt(name) + "' is not a tool");
 }
 
@@ -731,6 +738,23 @@ std::string drop_meaningless_keys(const std::string& stroke_object)
   } catch (const json::parse_error&) {
     return stroke_object;
   }
+  if (stroke.is_object()) {
+    // The schema says which keys a tool reads; the rest belong to other tools.
+    Tool tool = Tool::Paint;
+    const std::vector<std::string> tools = key_names(stroke_key("tool"));
+    if (stroke.contains("tool") && stroke["tool"].is_string() &&
+        std::count(tools.begin(), tools.end(), stroke["tool"].get<std::string>()))
+      tool = tool_named(stroke["tool"].get<std::string>());
+    else if (stroke.contains("tool"))
+      return stroke.dump(); // parse_stroke_script() says what is wrong
+    if (tool == Tool::Paint && stroke.contains("op") && (stroke["op"] == "blur" || stroke["op"] == "smear"))
+      tool = tool_named(stroke["op"].get<std::string>());
+    for (const StrokeKey& key : stroke_keys())
+      if (!applies_to(key, tool))
+        stroke.erase(key.name);
+  }
+  // Whether a key means something may depend on others ("camera" on "space"):
+  // the parser says, one key at a time.
   for (std::size_t tries = 0; stroke.is_object() && tries <= stroke.size(); ++tries) {
     try {
       read_stroke(stroke, 0);

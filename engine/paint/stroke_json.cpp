@@ -1,5 +1,7 @@
 #include "paint/stroke.h"
 
+#include "paint/stroke_schema.h"
+
 #include <nlohmann/json.hpp> // for nlohmann::json
 
 #include <variant> // for std::visit
@@ -8,8 +10,6 @@ namespace meshpaint {
 namespace {
 
 using nlohmann::json;
-
-const char* const kChannelNames[CHANNEL_COUNT] = {"diffuse", "specular", "roughness", "displacement", "label", "mask"};
 
 json point_list(const std::vector<Vec3>& points)
 {
@@ -23,18 +23,19 @@ json point_list(const std::vector<Vec3>& points)
 //! coverage, scalars as one number, labels as integers.
 void write_channels(const PaintSettings& p, json& j)
 {
+  const std::vector<std::string>& names = channel_names();
   json channels = json::object(), alphas = json::object();
   for (int c = 0; c < CHANNEL_COUNT; ++c) {
     const Float4& v = p.value[std::size_t(c)];
     if (p.alpha[std::size_t(c)] == 0.f && v[0] == 0.f && v[1] == 0.f && v[2] == 0.f && v[3] == 0.f)
       continue;
     if (c == CHANNEL_DIFFUSE || c == CHANNEL_SPECULAR)
-      channels[kChannelNames[c]] = {v[0], v[1], v[2], v[3]};
+      channels[names[std::size_t(c)]] = {v[0], v[1], v[2], v[3]};
     else if (c == CHANNEL_LABEL)
-      channels[kChannelNames[c]] = static_cast<long long>(v[0]);
+      channels[names[std::size_t(c)]] = static_cast<long long>(v[0]);
     else
-      channels[kChannelNames[c]] = v[0];
-    alphas[kChannelNames[c]] = p.alpha[std::size_t(c)];
+      channels[names[std::size_t(c)]] = v[0];
+    alphas[names[std::size_t(c)]] = p.alpha[std::size_t(c)];
   }
   j["channels"] = channels;
   j["alphas"] = alphas;
@@ -42,11 +43,9 @@ void write_channels(const PaintSettings& p, json& j)
 
 json pattern_object(const Pattern& pattern)
 {
-  static const char* const types[] = {"", "noise", "turbulence", "marble", "bath", "image", "volume"};
-  static const char* const coords[] = {"position", "uv", "screen"};
-  json p = {{"type", types[pattern.kind]},
-            {"coord", coords[pattern.coord]},
-            {"matte", pattern.matte == MATTE_OPAQUE ? "opaque" : "self"},
+  json p = {{"type", name_of(pattern_key("type"), pattern.kind)},
+            {"coord", name_of(pattern_key("coord"), pattern.coord)},
+            {"matte", name_of(pattern_key("matte"), pattern.matte)},
             {"octaves", pattern.octaves}};
   json rows = json::array();
   for (int r = 0; r < 3; ++r)
@@ -60,10 +59,9 @@ json pattern_object(const Pattern& pattern)
 
 void write_settings(const PaintSettings& p, Tool, json& j)
 {
-  static const char* const ops[] = {"copy", "over", "max", "add", "subtract"};
   if (p.spray_drops > 0)
     j["spray"] = {{"drops", p.spray_drops}, {"size", p.spray_size}, {"seed", p.spray_seed}};
-  j["op"] = ops[p.op];
+  j["op"] = name_of(stroke_key("op"), p.op);
   if (p.remover) {
     j["mode"] = "remover";
   } else if (p.specular_coefficient >= 0.f) {
@@ -86,10 +84,10 @@ void write_settings(const PaintSettings& p, Tool, json& j)
 void write_settings(const SmoothSettings& m, Tool tool, json& j)
 {
   j["iterations"] = m.iterations;
-  j["method"] = m.taubin ? "taubin" : "laplacian";
+  j["method"] = name_of(stroke_key("method"), m.taubin ? 1 : 0);
   j["lambda"] = m.lambda;
   if (tool == Tool::Smooth)
-    j["target"] = m.target_colour ? "color" : "position";
+    j["target"] = name_of(stroke_key("target"), m.target_colour ? 1 : 0);
   if (m.taubin || m.target_colour)
     j["mu"] = m.mu;
 }
@@ -104,33 +102,31 @@ void write_settings(const SmearSettings&, Tool, json&) {}
 
 json stroke_object(const Stroke& s)
 {
-  static const char* const falloffs[] = {"constant", "linear", "smoothstep", "gaussian"};
   json j = {{"tool", tool_name(s.tool)}, {"strength", s.brush.strength}};
   const bool everywhere = covers_everything(s.tool);
   if (!everywhere) {
     j["points"] = point_list(s.points);
     j["radius"] = s.brush.radius;
     j["spacing"] = s.brush.spacing;
-    j["falloff"] = falloffs[s.brush.falloff];
+    j["falloff"] = name_of(stroke_key("falloff"), s.brush.falloff);
     if (!s.pressure.empty())
       j["pressure"] = s.pressure;
     if (s.brush.mirror_axis >= 0)
-      j["mirror"] = std::string(1, char('x' + s.brush.mirror_axis));
+      j["mirror"] = name_of(stroke_key("mirror"), s.brush.mirror_axis);
   }
   if (s.edit_level() > 0)
     j["edit_level"] = s.edit_level();
-  static const char* const spaces[] = {"object", "tangent", "screen", "parameter"};
   if (s.brush.space != SPACE_OBJECT)
-    j["space"] = spaces[s.brush.space];
+    j["space"] = name_of(stroke_key("space"), s.brush.space);
   if (s.brush.has_camera)
     j["camera"] = {{"position", {s.brush.camera.position[0], s.brush.camera.position[1], s.brush.camera.position[2]}},
                    {"focal_point", {s.brush.camera.focal_point[0], s.brush.camera.focal_point[1], s.brush.camera.focal_point[2]}},
                    {"view_up", {s.brush.camera.view_up[0], s.brush.camera.view_up[1], s.brush.camera.view_up[2]}},
                    {"view_angle", s.brush.camera.view_angle}};
   if (s.brush.paint_backfaces)
-    j["backfaces"] = "paint";
+    j["backfaces"] = name_of(stroke_key("backfaces"), 1);
   if (s.brush.side > 0)
-    j["side"] = s.brush.side == 1 ? "outside" : "inside";
+    j["side"] = name_of(stroke_key("side"), s.brush.side);
   std::visit([&](const auto& settings) { write_settings(settings, s.tool, j); }, s.settings);
   if (!s.brush.stamp_file.empty())
     j["stamp"] = s.brush.stamp_file;
