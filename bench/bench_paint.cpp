@@ -3,13 +3,16 @@
 // and OpenMesh on the same surface, all in one run.
 
 #include "benchmarks.h"
+#include "device_bandwidth.h"
 #include "host_memory.h"
+#include "kernel_traffic.h"
 #include "progress_bar.h"
 #include "table.h"
 
 #include "SurfaceConversion.h"
 
 #include "atlas/weld.h"
+#include "cl/kernel_clock.h"
 #include "core/errors.h"
 #include "core/format.h"
 #include "core/timer.h"
@@ -133,6 +136,19 @@ std::vector<double> phase_times(PaintSurface& surface, Stroke s, const std::vect
   return out;
 }
 
+//! Device time per kernel family of the limit over the whole surface (the
+//! update of a step runs the same kernels on the patches it touched): `runs`
+//! evaluations after one untimed, with the bytes each family moves.
+std::vector<FamilyRate> limit_family_times(Runtime& runtime, Atlas& atlas, int runs)
+{
+  atlas.compute_limit();
+  atlas.finish();
+  KernelClock clock(runtime);
+  for (int r = 0; r < runs; ++r)
+    atlas.compute_limit();
+  return family_rates(limit_traffic(atlas.topology(), atlas.max_level()), clock.take(), runs);
+}
+
 std::string json_list(const std::array<double, 3>& v)
 {
   return "[" + std::to_string(v[0]) + "," + std::to_string(v[1]) + "," + std::to_string(v[2]) + "]";
@@ -251,6 +267,9 @@ int bench_paint(const Args& args)
     phase_header.push_back(std::string(name) + " ms");
   phase_header.push_back("whole ms");
   Table phase_table(phase_header);
+  Table limit_rates({"mesh", "kernels", "device ms", "GB/s", "of copy"});
+  std::string json_limit;
+  const DeviceBandwidth copy = probe_device_bandwidth(*runtime);
   std::string json_rows, json_smooth, json_coarse, json_phases;
   const auto add_phases = [&](const std::string& name, const std::string& step, const std::vector<double>& ms) {
     std::vector<std::string> cells{name, step};
@@ -293,6 +312,10 @@ int bench_paint(const Args& args)
     }
     const std::array<double, 3> ms = step_times(surface, s, texels, steps);
     const std::string name = row.mesh.substr(0, row.mesh.find('.')) + " L" + std::to_string(row.level);
+    const std::vector<FamilyRate> limit = limit_family_times(*runtime, surface.atlas(), steps);
+    add_family_rows(limit_rates, name, limit, copy.best());
+    json_limit += std::string(json_limit.empty() ? "" : ",") + "{\"mesh\":" + json_string(name) +
+                  ",\"families\":" + family_json(limit) + "}";
     if (phases)
       add_phases(name, tool + " 50%", phase_times(surface, s, texels, steps));
     table.add({grouped(faces), name, format_fixed(ms[0], 2), format_fixed(ms[1], 2), format_fixed(ms[2], 2),
@@ -344,7 +367,8 @@ int bench_paint(const Args& args)
     std::cout << "{\"tool\":" << json_string(tool) << ",\"steps\":" << steps << ",\"device\":"
               << json_string(runtime->info().name) << ",\"host_memory_ns\":" << host.json() << ",\"brush\":["
               << json_rows << "],\"smoothing\":[" << json_smooth << "],\"coarse_edit\":[" << json_coarse << "]"
-              << (phases ? ",\"phases\":[" + json_phases + "]" : std::string()) << "}\n";
+              << (phases ? ",\"phases\":[" + json_phases + "]" : std::string())
+              << ",\"device_copy_gb_per_s\":" << copy.json() << ",\"limit_families\":[" << json_limit << "]}\n";
     return 0;
   }
   std::cout << "meshpaint bench paint: one " << tool << " brush step (culling, weights, transformation"
@@ -354,6 +378,11 @@ int bench_paint(const Args& args)
             << "  " << host.text() << "\n\n";
   table.print(std::cout);
   std::cout << "\n  the paper's figures (GeForce 7800) include rendering at 800x600\n\n"
+            << "limit positions and normals over the whole surface, device time per kernel family\n"
+            << "(profiling events, mean of " << steps << " runs) and bytes read + written per time\n  "
+            << copy.text() << "\n\n";
+  limit_rates.print(std::cout);
+  std::cout << "\n"
             << "full-surface Laplacian smoothing, per iteration: runs of 10 and of 10 + N iterations (medians\n"
             << "of 5; N = " << further_iterations(0) << " below 250,000 vertices, else " << further_iterations(250000)
             << "), the difference over N, so that each method's set-up\n"

@@ -2,12 +2,15 @@
 // in one run on the same mesh and level, with the results compared.
 
 #include "benchmarks.h"
+#include "device_bandwidth.h"
 #include "host_memory.h"
+#include "kernel_traffic.h"
 #include "progress_bar.h"
 #include "table.h"
 
 #include "atlas/atlas.h"
 #include "atlas/weld.h"
+#include "cl/kernel_clock.h"
 #include "core/errors.h"
 #include "core/format.h"
 #include "core/timer.h"
@@ -36,6 +39,18 @@ std::vector<double> time_repeats(int repeats, F&& run)
 }
 
 double min_of(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }
+
+//! Device time per kernel family of `runs` subdivisions from level `from`
+//! to `to`, after one untimed, with the bytes each family moves.
+std::vector<FamilyRate> family_times(Runtime& runtime, Atlas& atlas, int from, int to, int runs)
+{
+  atlas.subdivide(from, to);
+  atlas.finish();
+  KernelClock clock(runtime);
+  for (int r = 0; r < runs; ++r)
+    atlas.subdivide(from, to);
+  return family_rates(subdivide_traffic(atlas.topology(), from, to), clock.take(), runs);
+}
 
 } // namespace
 
@@ -105,6 +120,22 @@ int bench_subdivide(const Args& args)
   const auto mverts = [&](double ms) { return double(verts) / (ms * 1e3); };
   const auto gbps = [](std::size_t bytes, double ms) { return double(bytes) / (ms * 1e6); };
 
+  // Where the device time goes, per family and per step, against what the
+  // device can copy: separate runs with profiling events, after the timed ones.
+  const DeviceBandwidth copy = probe_device_bandwidth(*runtime);
+  const std::vector<FamilyRate> families = family_times(*runtime, atlas, 1, level, repeats);
+  std::vector<FamilyRate> steps;
+  for (int l = 1; l < level; ++l) {
+    FamilyRate all = family_times(*runtime, atlas, l, l + 1, repeats).back();
+    all.family = "level " + std::to_string(l) + "->" + std::to_string(l + 1);
+    steps.push_back(all);
+  }
+  std::string json_steps;
+  for (std::size_t k = 0; k < steps.size(); ++k)
+    json_steps += std::string(k ? "," : "") + "{\"from\":" + std::to_string(k + 1) + ",\"to\":" +
+                  std::to_string(k + 2) + ",\"ms\":" + std::to_string(steps[k].ms) + ",\"gb_per_s\":" +
+                  std::to_string(steps[k].gbps) + "}";
+
   const HostMemory host = probe_host_memory();
   if (json) {
     std::cout << "{\"mesh\":" << json_string(path) << ",\"level\":" << level << ",\"vertices\":" << verts
@@ -117,7 +148,9 @@ int bench_subdivide(const Args& args)
               << ",\"engine_gb_per_s\":" << gbps(engine_bytes, e_ms)
               << ",\"opensubdiv_gb_per_s\":" << gbps(peer.bytes_moved(), o_ms)
               << ",\"atlas_setup_ms\":" << atlas_ms << ",\"stencil_build_ms\":" << peer.build_ms()
-              << ",\"max_deviation\":" << deviation << ",\"host_memory_ns\":" << host.json() << "}\n";
+              << ",\"max_deviation\":" << deviation << ",\"host_memory_ns\":" << host.json()
+              << ",\"device_copy_gb_per_s\":" << copy.json() << ",\"kernel_families\":" << family_json(families)
+              << ",\"level_steps\":[" << json_steps << "]}\n";
     return 0;
   }
   std::ostream& os = std::cout;
@@ -142,7 +175,13 @@ int bench_subdivide(const Args& args)
   os << "  one-off set-up (not timed above): atlas " << format_fixed(atlas_ms, 1)
      << " ms (first step, tables, upload, kernel build); stencil table " << format_fixed(peer.build_ms(), 1)
      << " ms\n";
-  os << "  results agree: max distance " << deviation << " of the bounding-box diagonal\n";
+  os << "  results agree: max distance " << deviation << " of the bounding-box diagonal\n\n";
+  os << "device time per kernel family (profiling events, mean of " << repeats
+     << " further runs) and bytes read + written per time\n  " << copy.text() << "\n\n";
+  Table rates({"subdivision", "kernels", "device ms", "GB/s", "of copy"});
+  add_family_rows(rates, "levels 1->" + std::to_string(level), families, copy.best());
+  add_family_rows(rates, "per step", steps, copy.best());
+  rates.print(os);
   return 0;
 }
 

@@ -1,6 +1,8 @@
 // The OpenCL runtime: device choice and kernel builds.
 
+#include "cl/kernel_clock.h"
 #include "cl/kernel_programs.h"
+#include "cl/launch.h"
 #include "cl/program.h"
 #include "core/errors.h"
 #include "support/runtime.h"
@@ -66,6 +68,40 @@ TEST(Runtime, ProgramsAreBuiltOncePerOptions)
   const cl::Program& a = kernel_program(rt, KernelProgram::Detail, "-cl-std=CL1.2");
   EXPECT_EQ(kernel_program(rt, KernelProgram::Detail, "-cl-std=CL1.2")(), a());
   EXPECT_NE(kernel_program(rt, KernelProgram::Detail, "-cl-std=CL1.2 -D ATLAS_PREFETCH")(), a());
+}
+
+// A clock names each kernel launched while it runs, leaves the results
+// alone, and gives the queue back without profiling.
+TEST(Runtime, KernelClockTimesLaunchesByName)
+{
+  Runtime& rt = *test::runtime();
+  cl::Kernel copy(kernel_program(rt, KernelProgram::Copy, "-cl-std=CL1.2"), "copy_float4");
+  const std::vector<cl_float4> values = {{{1, 2, 3, 4}}, {{5, 6, 7, 8}}, {{9, 10, 11, 12}}};
+  cl::Buffer src(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(cl_float4) * values.size(),
+                 const_cast<cl_float4*>(values.data()));
+  cl::Buffer dst(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_float4) * values.size());
+  const cl_int count = cl_int(values.size());
+  launch(rt.queue(), copy, cl::NDRange(count), cl::NullRange, src, dst, count); // before: not timed
+  std::map<std::string, double> ms;
+  {
+    KernelClock clock(rt);
+    EXPECT_THROW(KernelClock{rt}, std::logic_error);
+    EXPECT_EQ(KernelClock::of(rt.queue()), &clock);
+    launch(rt.queue(), copy, cl::NDRange(count), cl::NullRange, src, dst, count);
+    launch(rt.queue(), copy, cl::NDRange(count), cl::NullRange, src, dst, count);
+    ms = clock.take();
+    EXPECT_TRUE(clock.take().empty()) << "take() starts afresh";
+  }
+  ASSERT_EQ(ms.size(), 1u);
+  EXPECT_EQ(ms.begin()->first, "copy_float4");
+  EXPECT_GE(ms.begin()->second, 0.0);
+  EXPECT_EQ(KernelClock::of(rt.queue()), nullptr);
+  EXPECT_EQ(rt.queue().getInfo<CL_QUEUE_PROPERTIES>() & CL_QUEUE_PROFILING_ENABLE, 0u);
+  std::vector<cl_float4> out(values.size());
+  rt.queue().enqueueReadBuffer(dst, CL_TRUE, 0, sizeof(cl_float4) * out.size(), out.data());
+  for (std::size_t k = 0; k < out.size(); ++k)
+    for (int c = 0; c < 4; ++c)
+      EXPECT_EQ(out[k].s[c], values[k].s[c]);
 }
 
 TEST(Runtime, DeviceSelectors)

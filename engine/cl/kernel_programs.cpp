@@ -31,6 +31,7 @@ const std::vector<KernelFile>& registry()
     {"geometry.cl", {"brush_space.cl"}},
     {"lighting.cl", {"atlas_access.cl"}},
     {"display.cl", {"atlas_access.cl"}},
+    {"copy.cl", {}},
   };
   return files;
 }
@@ -42,6 +43,7 @@ std::vector<std::string> program_roots(KernelProgram program)
   case KernelProgram::Detail: return {"detail.cl"};
   case KernelProgram::Brush: return {"brush.cl", "geometry.cl", "lighting.cl"};
   case KernelProgram::Display: return {"display.cl"};
+  case KernelProgram::Copy: return {"copy.cl"};
   }
   return {};
 }

@@ -16,7 +16,8 @@ enum class KernelProgram
   Atlas,   //!< subdivide.cl, limit.cl, select.cl, reduce.cl (AtlasEvaluator)
   Detail,  //!< detail.cl (Multires)
   Brush,   //!< brush.cl, geometry.cl, lighting.cl (PaintSurface)
-  Display  //!< display.cl (PaintSurface's display arrays)
+  Display, //!< display.cl (PaintSurface's display arrays)
+  Copy     //!< copy.cl (the benchmarks' copy-bandwidth probe)
 };
 
 //! The files `file` needs, then `file`: what it compiles from on its own.

@@ -1,6 +1,7 @@
 // Enqueueing kernels: arguments in order, ranges rounded to whole groups.
 #pragma once
 
+#include "cl/kernel_clock.h"
 #include "cl/opencl.h"
 
 #include <algorithm> // for std::max
@@ -11,13 +12,20 @@ namespace meshpaint {
 
 inline std::size_t round_up(std::size_t x, std::size_t multiple) { return (x + multiple - 1) / multiple * multiple; }
 
-//! Sets the kernel's arguments in order and enqueues it.
+//! Sets the kernel's arguments in order and enqueues it (timed on the
+//! device while a KernelClock runs on the queue).
 template <typename... Args>
 void launch(cl::CommandQueue& queue, cl::Kernel& kernel, const cl::NDRange& global, const cl::NDRange& local,
             const Args&... args)
 {
   cl_uint index = 0;
   (kernel.setArg(index++, args), ...);
+  if (KernelClock* clock = KernelClock::of(queue)) {
+    cl::Event done;
+    queue.enqueueNDRangeKernel(kernel, cl::NullRange, global, local, nullptr, &done);
+    clock->record(kernel, done);
+    return;
+  }
   queue.enqueueNDRangeKernel(kernel, cl::NullRange, global, local);
 }
 

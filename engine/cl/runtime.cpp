@@ -189,6 +189,12 @@ Runtime::Runtime(const cl::Device& device, const DeviceInfo& info)
 {
 }
 
+void Runtime::set_profiling(bool on)
+{
+  queue_.finish();
+  queue_ = cl::CommandQueue(context_, device_, on ? cl::QueueProperties::Profiling : cl::QueueProperties::None);
+}
+
 std::shared_ptr<Runtime> Runtime::open(const std::string& selector)
 {
   std::string sel = selector;

@@ -58,6 +58,9 @@ public:
   const cl::Context& context() const { return context_; }
   const cl::Device& device() const { return device_; }
   cl::CommandQueue& queue() { return queue_; }
+  //! Replaces the queue, once the device has finished its work, by one that
+  //! keeps profiling timestamps (on) or a plain one (off): for KernelClock.
+  void set_profiling(bool on);
   const DeviceInfo& info() const { return info_; }
   //! Programs built for this device, by program and build options: the
   //! store of kernel_program() (cl/kernel_programs.h).

@@ -227,6 +227,25 @@ def test_bench_json_line(tmp_path, cube):
     assert result["vertices"] == 386
     assert result["max_deviation"] <= 1e-5
     assert_host_memory(result)
+    assert_copy_probe(result)
+    assert_families(result["kernel_families"], {"subdivide edges", "subdivide corners", "subdivide tiles"})
+    assert [(s["from"], s["to"]) for s in result["level_steps"]] == [(1, 2), (2, 3)]
+    assert all(s["ms"] > 0 and s["gb_per_s"] > 0 for s in result["level_steps"]), result["level_steps"]
+
+
+def assert_copy_probe(result):
+    # the device's copy bandwidth, the ceiling the family columns are read against
+    probe = result["device_copy_gb_per_s"]
+    assert set(probe) == {"enqueue_copy", "copy_kernel", "mib"}
+    assert probe["mib"] > 0 and probe["enqueue_copy"] > 0 and probe["copy_kernel"] > 0, probe
+
+
+def assert_families(families, expected):
+    # every family that ran, then "all": their times add up, and each moved bytes
+    names = [f["family"] for f in families]
+    assert names[-1] == "all" and set(names[:-1]) == expected, names
+    assert all(f["ms"] > 0 and f["gb_per_s"] > 0 for f in families), families
+    assert abs(sum(f["ms"] for f in families[:-1]) - families[-1]["ms"]) <= 1e-3 * families[-1]["ms"] + 1e-6
 
 
 def assert_host_memory(result):
@@ -241,6 +260,12 @@ def test_bench_paint_phases_account_for_the_step():
     assert r.returncode == 0, r.stderr
     result = json.loads(r.stdout.strip().splitlines()[-1])
     assert_host_memory(result)
+    assert_copy_probe(result)
+    assert [m["mesh"] for m in result["limit_families"]] == ["femur L2"]
+    # buffer storage on a CPU device makes the bounds inside limit_patches; elsewhere a kernel of their own
+    families = result["limit_families"][0]["families"]
+    base = {"limit edges", "limit corners", "limit tiles"}
+    assert_families(families, base | ({"patch bounds"} if "patch bounds" in [f["family"] for f in families] else set()))
     rows = {row["step"]: row for row in result["phases"]}
     assert set(rows) == {"sculpt 50%", "coarse sculpt 50%"}
     names = ("place", "record", "weights", "transform", "rebuild", "lists", "limit")
