@@ -18,6 +18,8 @@
 #include <cstdlib>    // for std::strtod, std::getenv
 #include <filesystem> // for std::filesystem::file_size, path
 #include <fstream>    // for std::ifstream
+#include <iterator>   // for std::istreambuf_iterator
+#include <limits>     // for std::numeric_limits
 #include <regex>      // for std::regex, std::sregex_iterator
 #include <sstream>    // for std::istringstream
 
@@ -113,6 +115,27 @@ void check_legacy_points(const std::string& path)
     }
     return;
   }
+}
+
+//! The legacy file's bytes without its METADATA blocks (each from its
+//! keyword line to the next empty line, as VTK writes them). They hold only
+//! component names and array information, which nothing here reads, and
+//! VTK's parser of them hangs or reads past its buffers on damaged ones
+//! (fuzz findings).
+std::string legacy_without_metadata(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (std::size_t at = text.find("\nMETADATA"); at != std::string::npos; at = text.find("\nMETADATA", at)) {
+    const std::size_t start = at + 1, after = start + 8;
+    if (after < text.size() && text[after] != '\n' && text[after] != '\r') {
+      at = after; // a longer word
+      continue;
+    }
+    const std::size_t end = text.find("\n\n", start);
+    text.erase(start, end == std::string::npos ? std::string::npos : end + 2 - start);
+  }
+  return text;
 }
 
 //! VTK's messages while a reader runs, kept instead of printed: the output
@@ -262,8 +285,13 @@ vtkSmartPointer<vtkPolyData> read_polydata_file(const std::string& path)
   if (lower_extension(path) == ".vtk") {
     check_legacy_version(path);
     check_legacy_points(path);
+    // VTK's reader takes the bytes' count as an int.
+    if (std::filesystem::file_size(path, ec) > std::uintmax_t(std::numeric_limits<int>::max()))
+      throw InputError("'" + path + "': a legacy .vtk file of 2 GiB or more (write it as .vtp)");
     auto r = vtkSmartPointer<vtkPolyDataReader>::New();
-    r->SetFileName(path.c_str());
+    const std::string text = legacy_without_metadata(path);
+    r->ReadFromInputStringOn();
+    r->SetBinaryInputString(text.data(), int(text.size()));
     r->ReadAllScalarsOn();
     r->ReadAllColorScalarsOn();
     return read_checked(r, path);
