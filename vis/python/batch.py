@@ -172,11 +172,26 @@ def _parser():
     return p
 
 
+def _quiet_cluster_logs():
+    """The command's stderr carries its own lines only. Dask's warnings on a
+    loaded machine (an event loop slow to answer, a close that timed out
+    after every result was in) are about the cluster, not the scans: kept
+    to errors, in this process and in the workers it starts (which read
+    the environment). asyncio's report of a future nobody awaited, left by
+    such a close, is dropped."""
+    import logging
+
+    os.environ.setdefault("DASK_LOGGING__DISTRIBUTED", "error")
+    logging.getLogger("distributed").setLevel(logging.ERROR)
+    logging.getLogger("asyncio").setLevel(logging.CRITICAL)
+
+
 def main(argv=None):
     parser = _parser()
     # argparse's own errors: one line and exit 2, as the command line's.
     parser.error = lambda message: _fail(EXIT_INPUT, message)
     args = parser.parse_args(argv)
+    _quiet_cluster_logs()
     total = len(args.scans)
     done = []
 
@@ -203,7 +218,7 @@ def main(argv=None):
         _fail(EXIT_INPUT, str(e))
     finally:
         if client is not None:
-            client.close()
+            client.close(timeout=60)
     failed = sum(row["status"] != "ok" for row in rows)
     summary = os.path.join(args.output, SUMMARY)
     if failed:
