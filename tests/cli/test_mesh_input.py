@@ -4,6 +4,7 @@ The files come from tests/bad_input/mesh_inputs.py (generated here, not stored),
 VTK's own writers, and Geomview's OFF models where the package is installed.
 """
 import glob
+import json
 import math
 import os
 import subprocess
@@ -270,3 +271,35 @@ def test_damaged_vtk_files_give_one_line(tmp_path, name, text, message):
     assert len(lines) == 1, r.stderr
     import re
     assert re.search(message, lines[0]), lines[0]
+
+
+def test_a_scan_wound_every_which_way_paints_every_dab_in_screen_and_tangent_space(tmp_path):
+    """Every other face of a sphere turned over: the import turns them to
+    agree, so a screen brush and a tangent brush land every dab where the
+    path goes, on the side the camera sees."""
+    sphere = vtk.vtkSphereSource()
+    sphere.SetThetaResolution(40)
+    sphere.SetPhiResolution(40)
+    sphere.Update()
+    poly = sphere.GetOutput()
+    lines = ["v %r %r %r" % poly.GetPoint(i) for i in range(poly.GetNumberOfPoints())]
+    ids = numpy_support.vtk_to_numpy(poly.GetPolys().GetConnectivityArray()).reshape(-1, 3) + 1
+    for k, face in enumerate(ids):
+        corners = face[::-1] if k % 2 == 0 else face
+        lines.append("f %d %d %d" % tuple(corners))
+    mesh = tmp_path / "every-which-way.obj"
+    mesh.write_text("\n".join(lines) + "\n")
+    path = [[-0.3, 0, 0.4], [0, 0.05, 0.5], [0.3, 0.1, 0.4]]
+    script = tmp_path / "strokes.json"
+    script.write_text(json.dumps({"strokes": [
+        {"tool": "paint", "space": "screen", "points": path, "radius": 0.08, "channels": {"diffuse": [1, 0, 0]},
+         "camera": {"position": [0, 0, 5], "focal_point": [0, 0, 0], "view_up": [0, 1, 0]}},
+        {"tool": "paint", "space": "tangent", "points": path, "radius": 0.08, "channels": {"diffuse": [0, 1, 0]}}]}))
+    r = run("paint", str(mesh), "--strokes", str(script), "--level", "2", "-o", str(tmp_path / "out"), "--quiet")
+    assert r.returncode == 0, r.stderr
+    assert f"turned {len(ids) // 2} faces to agree with their neighbours" in r.stderr
+    rows = [line.split() for line in r.stdout.splitlines() if line.split()[:2] in (["0", "paint"], ["1", "paint"])]
+    assert len(rows) == 2, r.stdout
+    for row in rows:
+        dabs, on_surface = int(row[2]), int(row[3])
+        assert dabs > 10 and on_surface == dabs, r.stdout
