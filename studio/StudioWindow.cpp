@@ -41,6 +41,7 @@
 #include <QLabel>                   // for QLabel
 #include <QMenu>                    // for QMenu
 #include <QMenuBar>                 // for QMenuBar
+#include <QMessageBox>              // for QMessageBox::question
 #include <QScrollArea>              // for QScrollArea
 #include <QSettings>                // for QSettings
 #include <QStatusBar>               // for QStatusBar
@@ -185,8 +186,15 @@ void StudioWindow::build_menus()
       return;
     const QString out = QFileDialog::getSaveFileName(this, "The labelled scan to write", QString(),
                                                      "VTK polygons (*.vtp);;PLY (*.ply)");
-    if (!out.isEmpty())
-      export_labelled_scan(scan, out.endsWith(".vtp") || out.endsWith(".ply") ? out : out + ".vtp");
+    if (out.isEmpty())
+      return;
+    // As `transfer --geometry`: the scan's vertices follow the sculpting and smoothing.
+    const bool geometry =
+      QMessageBox::question(this, "The labelled scan",
+                            "Move the scan's vertices as the surface was sculpted and smoothed?\n"
+                            "(No: the scan keeps its shape and takes the labels and paint only.)",
+                            QMessageBox::Yes | QMessageBox::No, QMessageBox::No) == QMessageBox::Yes;
+    export_labelled_scan(scan, out.endsWith(".vtp") || out.endsWith(".ply") ? out : out + ".vtp", geometry);
   }));
   file->addAction("Screens&hot...", [this] {
     const QString path = QFileDialog::getSaveFileName(this, "Screenshot", QString(), "PNG pictures (*.png)");
@@ -449,7 +457,7 @@ BackgroundTask* StudioWindow::change_level(int level)
     true);
 }
 
-BackgroundTask* StudioWindow::export_labelled_scan(const QString& scan, const QString& out)
+BackgroundTask* StudioWindow::export_labelled_scan(const QString& scan, const QString& out, bool geometry)
 {
   if (view_->GetNumberOfObjects() != 1) {
     statusBar()->showMessage("the labelled scan comes from one surface: this scene has several", 10000);
@@ -467,7 +475,7 @@ BackgroundTask* StudioWindow::export_labelled_scan(const QString& scan, const QS
       capture_surface(surface, project); // the surface's mesh and level: the reference is made from them
       const std::shared_ptr<Runtime>& runtime = surface.atlas().shared_runtime();
       const WeldedSurface reference = reference_surface(runtime, project, surface.atlas().storage());
-      const TransferReport r = transfer_to_scan(surface.painted_surface(), reference, points, false);
+      const TransferReport r = transfer_to_scan(surface.painted_surface(), reference, points, geometry);
       write_transferred_scan(points, out_path, labels);
       return QString("wrote %1: %2 scan vertices, at most %3 from the surface")
         .arg(out)

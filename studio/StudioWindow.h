@@ -78,7 +78,7 @@ public:
   BackgroundTask* change_level(int level);
   //! The labelled scan (`meshpaint transfer`): the channels and labels
   //! carried onto the vertices of `scan`, written to `out` (.vtp or .ply).
-  BackgroundTask* export_labelled_scan(const QString& scan, const QString& out);
+  BackgroundTask* export_labelled_scan(const QString& scan, const QString& out, bool geometry = false);
   //! Whether such work runs now.
   bool busy() const { return task_ != nullptr; }
   //! The work running, null when none.

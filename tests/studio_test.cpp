@@ -637,6 +637,30 @@ private Q_SLOTS:
     QVERIFY(labelled > 0);
     QVERIFY(labelled < a->GetNumberOfTuples());
     QVERIFY(mine->GetFieldData()->GetAbstractArray("label_names") != nullptr);
+
+    // Sculpted, and written with the geometry: the scan's points move as
+    // `transfer --geometry` moves them.
+    view->GetBrush()->set_tool("sculpt");
+    drag(w->render_widget(), {0.4, 0.5}, {0.6, 0.5});
+    const QString moved = dir.filePath("moved.vtp");
+    QVERIFY(w->export_labelled_scan(scan, moved, true) != nullptr);
+    QTRY_VERIFY_WITH_TIMEOUT(!w->busy(), 120000);
+    QVERIFY(w->save_project(project));
+    const QString cli_moved = dir.filePath("cli-moved.vtp");
+    QCOMPARE(run_meshpaint({"transfer", project, "--to", scan, "-o", cli_moved, "--geometry", "--quiet"}), 0);
+    const auto studio_points = read_vtp(moved), cli_points = read_vtp(cli_moved);
+    QCOMPARE(studio_points->GetNumberOfPoints(), cli_points->GetNumberOfPoints());
+    int differ_from_labels_only = 0;
+    for (vtkIdType k = 0; k < cli_points->GetNumberOfPoints(); ++k) {
+      double p[3], q[3], r[3];
+      studio_points->GetPoint(k, p);
+      cli_points->GetPoint(k, q);
+      mine->GetPoint(k, r);
+      for (int c = 0; c < 3; ++c)
+        QCOMPARE(p[c], q[c]);
+      differ_from_labels_only += p[0] != r[0] || p[1] != r[1] || p[2] != r[2];
+    }
+    QVERIFY(differ_from_labels_only > 0);
   }
 };
 
