@@ -153,8 +153,39 @@ void LabelPanel::measure()
     areas_[l.id] = l.area;
 }
 
+void LabelPanel::follow_merges()
+{
+  const PaintScene& scene = view_->GetScene();
+  const std::vector<Stroke>& done = scene.history();
+  const std::vector<Stroke>& undone = scene.undone(); // the next to redo last
+  for (auto it = merged_.begin(); it != merged_.end();) {
+    const std::size_t p = it->position;
+    const Stroke* at = p < done.size() ? &done[p]
+                       : p < done.size() + undone.size() ? &undone[done.size() + undone.size() - 1 - p]
+                                                         : nullptr;
+    const bool kept = at && at->tool == Tool::Merge && at->paint().only_over_label == it->entry.id;
+    if (!kept) { // a new stroke after an undo dropped the merge for good
+      it = merged_.erase(it);
+      continue;
+    }
+    const bool applied = p < done.size();
+    if (applied != it->applied) {
+      // The view's change event comes back to sync(): state first, one change per call.
+      it->applied = applied;
+      const LabelClass c = it->entry;
+      if (applied)
+        view_->RemoveLabelClass(c.id);
+      else
+        view_->AddLabelClass(c.id, c.name.c_str(), c.colour[0], c.colour[1], c.colour[2]);
+      return;
+    }
+    ++it;
+  }
+}
+
 void LabelPanel::sync()
 {
+  follow_merges();
   measure();
   syncing_ = true;
   const std::vector<LabelClass>& labels = view_->GetLabelClasses();
@@ -291,8 +322,12 @@ bool LabelPanel::merge(int from, int into)
   s.paint().only_over_label = from;
   s.paint().locked_labels = locked;
   script.strokes.push_back(s);
+  const std::vector<LabelClass>& classes = view_->GetLabelClasses();
+  const auto entry = std::find_if(classes.begin(), classes.end(), [&](const LabelClass& c) { return c.id == from; });
+  const LabelClass removed = entry != classes.end() ? *entry : LabelClass{from, "class " + std::to_string(from), {}};
   if (!view_->ApplyScript(script))
     return false;
+  merged_.push_back({view_->GetScene().history().size() - 1, removed});
   view_->RemoveLabelClass(from);
   sync();
   paint_class(into);

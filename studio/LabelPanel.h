@@ -4,11 +4,14 @@
 // class, fill a region and pick a class off the surface.
 #pragma once
 
+#include "project/labels.h" // for meshpaint::LabelClass
+
 #include <QWidget> // for QWidget
 
 #include <cstddef> // for std::size_t
 #include <map>     // for std::map
 #include <tuple>   // for std::tuple
+#include <vector>  // for std::vector
 
 class QComboBox;
 class QPushButton;
@@ -52,6 +55,17 @@ private:
   //! were added or undone since (not while a stroke is drawn).
   void measure();
 
+  //! A class a merge took out of the table: an undo past the merge puts its
+  //! entry back (its texels come back with it), a redo takes it out again.
+  struct MergedAway
+  {
+    std::size_t position;     //!< the merge's index in the history
+    LabelClass entry;
+    bool applied = true;      //!< the merge done, as of the last sync
+  };
+  void follow_merges();
+
+  std::vector<MergedAway> merged_;
   vtkPaintView* view_;
   QTableWidget* table_;
   QComboBox* only_over_;  // any class, or one class (unlabelled among them)

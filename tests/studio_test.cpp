@@ -335,6 +335,14 @@ private Q_SLOTS:
     QCOMPARE(view->GetScene().history().back().tool, meshpaint::Tool::Merge);
     QCOMPARE(int(count(labels(), 2.f)), 0);
     QCOMPARE(table->rowCount(), 1);
+    // Undo brings bone's surface and its entry back, redo takes them away again.
+    QTest::keyClick(w->render_widget(), Qt::Key_Z, Qt::ControlModifier);
+    QVERIFY(count(labels(), 2.f) > 0);
+    QCOMPARE(table->rowCount(), 2);
+    QVERIFY(!table->findItems("bone", Qt::MatchExactly).isEmpty());
+    QTest::keyClick(w->render_widget(), Qt::Key_Y, Qt::ControlModifier);
+    QCOMPARE(int(count(labels(), 2.f)), 0);
+    QCOMPARE(table->rowCount(), 1);
     // The recording replays to the same bits.
     QVERIFY(view->Save());
     const QString replayed = dir.filePath("replayed");
