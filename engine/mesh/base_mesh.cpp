@@ -13,6 +13,7 @@
 
 #include <algorithm>  // for std::transform, std::min, std::max, std::min_element
 #include <cmath>      // for std::isfinite, std::sqrt, std::fabs
+#include <cstdint>    // for std::int32_t, std::uint8_t, std::int8_t, std::int16_t, std::uint16_t
 #include <filesystem> // for std::filesystem
 #include <map>        // for std::map
 #include <numeric>    // for std::iota
@@ -184,6 +185,8 @@ void split_nonmanifold_vertices(BaseMesh& mesh)
         mesh.points.push_back(mesh.points[v]);
         if (!mesh.colours.empty())
           mesh.colours.push_back(mesh.colours[v]);
+        if (!mesh.labels.empty())
+          mesh.labels.push_back(mesh.labels[v]);
         ++mesh.report.nonmanifold_vertices_split;
       }
       mesh.face_vertices[mesh.face_offsets[cs[c].first] + cs[c].second] = it->second;
@@ -194,7 +197,8 @@ void split_nonmanifold_vertices(BaseMesh& mesh)
 //! Takes the faces out of OpenMesh, checks coordinates, drops unused vertices
 //! and splits non-manifold ones.
 BaseMesh finish(const PolyMesh& om, const ImportReport& report, const std::string& name,
-                const std::string& where, const std::vector<Vec3>& colours, const std::map<int, int>& copied_from)
+                const std::string& where, const std::vector<Vec3>& colours, const std::vector<int>& labels,
+                const std::map<int, int>& copied_from)
 {
   BaseMesh mesh;
   mesh.name = name;
@@ -218,6 +222,10 @@ BaseMesh finish(const PolyMesh& om, const ImportReport& report, const std::strin
     if (!colours.empty()) {
       const auto copy = copied_from.find(int(v));
       mesh.colours.push_back(colours[std::size_t(copy == copied_from.end() ? int(v) : copy->second)]);
+    }
+    if (!labels.empty()) {
+      const auto copy = copied_from.find(int(v));
+      mesh.labels.push_back(labels[std::size_t(copy == copied_from.end() ? int(v) : copy->second)]);
     }
   }
   mesh.face_offsets.push_back(0);
@@ -293,6 +301,9 @@ std::vector<std::string> ImportReport::step_lines() const
                   " open at " + count(vertices_cut, "vertex copy", "vertex copies") + " to orient them");
   if (coloured)
     out.push_back("took the file's colours as the diffuse channel");
+  if (!label_array.empty())
+    out.push_back("took the file's '" + label_array + "' array as the label channel (" +
+                  count(label_classes, "class", "classes") + ")");
   return out;
 }
 
@@ -311,7 +322,7 @@ namespace {
 
 //! make_base_mesh() with the prefix its messages carry.
 BaseMesh build(const std::vector<Vec3>& points, const std::vector<std::vector<int>>& faces, const std::string& name,
-               const std::string& where, const std::vector<Vec3>& colours)
+               const std::string& where, const std::vector<Vec3>& colours, const std::vector<int>& labels = {})
 {
   if (points.empty() || faces.empty())
     throw InputError(where + "has no faces");
@@ -328,7 +339,7 @@ BaseMesh build(const std::vector<Vec3>& points, const std::vector<std::vector<in
     if (!importer.problem_.empty())
       throw InputError(where + importer.problem_);
   }
-  BaseMesh mesh = finish(om, importer.report, name, where, colours, importer.copied_from);
+  BaseMesh mesh = finish(om, importer.report, name, where, colours, labels, importer.copied_from);
   if (!(mesh.diagonal() >= kMinDiagonal)) {
     std::ostringstream size;
     size << mesh.diagonal();
@@ -379,6 +390,36 @@ void normalise_ply_list_types(std::string& bytes)
   bytes = out + bytes.substr(end);
 }
 
+//! The ids of the custom vertex property `name` if OpenMesh's PLY reader made
+//! it with integer type T; false otherwise.
+template <typename T>
+bool integer_property(const PolyMesh& om, const std::string& name, std::vector<int>& ids)
+{
+  OpenMesh::VPropHandleT<T> handle;
+  if (!om.get_property_handle(handle, name))
+    return false;
+  ids.clear();
+  for (const auto vh : om.vertices())
+    ids.push_back(int(om.property(handle, vh)));
+  return true;
+}
+
+//! The first integer vertex property named as label_array_names() lists,
+//! as the soup's labels (a float property of that name is not labels).
+void read_ply_labels(const PolyMesh& om, PolygonSoup& soup)
+{
+  for (const std::string& name : label_array_names()) {
+    std::vector<int> ids;
+    if (integer_property<std::int32_t>(om, name, ids) || integer_property<std::uint8_t>(om, name, ids) ||
+        integer_property<std::int8_t>(om, name, ids) || integer_property<std::int16_t>(om, name, ids) ||
+        integer_property<std::uint16_t>(om, name, ids)) {
+      soup.labels = std::move(ids);
+      soup.label_array = name;
+      return;
+    }
+  }
+}
+
 //! A file through OpenMesh's reader for its format, after the census: the
 //! vertices with their colours, the faces as listed.
 PolygonSoup read_through_openmesh(const std::string& path, const std::string& ext, const std::string& where)
@@ -398,6 +439,8 @@ PolygonSoup read_through_openmesh(const std::string& path, const std::string& ex
   OpenMesh::IO::Options options = OpenMesh::IO::Options::VertexColor;
   if (census.binary)
     options += OpenMesh::IO::Options::Binary;
+  if (ext == ".ply") // scalar vertex properties, for the label channel
+    options += OpenMesh::IO::Options::Custom;
   bool ok = false;
   {
     // From memory, past a UTF-8 byte-order mark, which OpenMesh would read
@@ -435,6 +478,8 @@ PolygonSoup read_through_openmesh(const std::string& path, const std::string& ex
       const auto& c = om.color(vh);
       soup.colours.push_back({c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f});
     }
+  if (ext == ".ply")
+    read_ply_labels(om, soup);
   soup.faces = std::move(importer.faces);
   soup.faces_skipped = faces_skipped;
   return soup;
@@ -493,7 +538,8 @@ BaseMesh import_mesh(PolygonSoup soup, const std::string& name, const std::strin
   const SoupSteps steps = import_soup(soup, import.weld);
   if (soup.faces.empty())
     throw InputError(where + "has no faces (every face is degenerate)");
-  BaseMesh mesh = build(soup.points, soup.faces, name, where, soup.colours);
+  check_label_ids(soup.labels, where);
+  BaseMesh mesh = build(soup.points, soup.faces, name, where, soup.colours, soup.labels);
   ImportReport& r = mesh.report;
   r.faces_skipped_by_reader = faces_skipped;
   r.degenerate_faces_dropped += steps.degenerate_faces_dropped;
@@ -505,6 +551,10 @@ BaseMesh import_mesh(PolygonSoup soup, const std::string& name, const std::strin
   r.nonorientable_components = steps.nonorientable_components;
   r.vertices_cut = steps.vertices_cut;
   r.coloured = !mesh.colours.empty();
+  if (!mesh.labels.empty()) {
+    r.label_array = soup.label_array;
+    r.label_classes = std::set<int>(mesh.labels.begin(), mesh.labels.end()).size();
+  }
   return mesh;
 }
 
