@@ -361,12 +361,15 @@ bool binary_off(const std::string& path)
 //! OpenMesh's PLY reader takes only some spellings of a list's types
 //! (uchar, uint16, int): each list type becomes the one of its size that it
 //! takes. The census has bounded every count and index, so the values read
-//! the same either way.
-void normalise_ply_list_types(std::string& bytes)
+//! the same either way. In a text file, a one-byte label property becomes
+//! int, which OpenMesh reads as a number rather than a character. Returns
+//! whether a property is named as labels are (label_array_names()).
+bool normalise_ply_types(std::string& bytes, bool text)
 {
+  bool labelled = false;
   const std::size_t end = bytes.find("end_header");
   if (end == std::string::npos)
-    return;
+    return false;
   std::istringstream header(bytes.substr(0, end));
   std::string out, line;
   while (std::getline(header, line)) {
@@ -385,9 +388,18 @@ void normalise_ply_list_types(std::string& bytes)
       }
       line = "property list " + w[2] + " " + w[3] + " " + w[4];
     }
+    if (w.size() == 3 && w[0] == "property") {
+      const auto& names = label_array_names();
+      const bool label = std::find(names.begin(), names.end(), w[2]) != names.end();
+      static const std::set<std::string> bytes_wide = {"char", "uchar", "int8", "uint8"};
+      if (label && text && bytes_wide.count(w[1]))
+        line = "property int " + w[2];
+      labelled = labelled || label;
+    }
     out += line + "\n";
   }
   bytes = out + bytes.substr(end);
+  return labelled;
 }
 
 //! The ids of the custom vertex property `name` if OpenMesh's PLY reader made
@@ -439,8 +451,6 @@ PolygonSoup read_through_openmesh(const std::string& path, const std::string& ex
   OpenMesh::IO::Options options = OpenMesh::IO::Options::VertexColor;
   if (census.binary)
     options += OpenMesh::IO::Options::Binary;
-  if (ext == ".ply") // scalar vertex properties, for the label channel
-    options += OpenMesh::IO::Options::Custom;
   bool ok = false;
   {
     // From memory, past a UTF-8 byte-order mark, which OpenMesh would read
@@ -449,8 +459,8 @@ PolygonSoup read_through_openmesh(const std::string& path, const std::string& ex
     std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
     if (census.text && bytes.compare(0, 3, "\xEF\xBB\xBF") == 0)
       bytes.erase(0, 3);
-    if (ext == ".ply")
-      normalise_ply_list_types(bytes);
+    if (ext == ".ply" && normalise_ply_types(bytes, census.text))
+      options += OpenMesh::IO::Options::Custom; // the file's own properties, for the label channel
     std::istringstream in(std::move(bytes), std::ios::binary);
     QuietOpenMesh quiet;
     ok = ext == ".off" ? OpenMesh::IO::IOManager().read(path, importer, options)
