@@ -6,6 +6,7 @@
 #include "mesh/base_mesh.h" // for meshpaint::readable_mesh_extensions
 #include "PolyDataFiles.h"
 #include "project/imported_colours.h"
+#include "project/imported_labels.h"
 #include "project/project_surface.h"
 
 #include <algorithm>    // for std::find
@@ -147,6 +148,7 @@ std::unique_ptr<PaintSurface> open_paint_surface(const std::shared_ptr<Runtime>&
     return open_project_surface(runtime, *input.project, storage);
   auto surface = std::make_unique<PaintSurface>(runtime, input.loaded, level, storage);
   apply_imported_colours(*surface);
+  apply_imported_labels(*surface);
   return surface;
 }
 

@@ -17,6 +17,7 @@
 #include "core/file_lock.h"
 #include "core/format.h"
 #include "core/timer.h"
+#include "project/imported_labels.h"
 #include "project/project_surface.h"
 
 #include "paint/paint_scene.h"
@@ -170,8 +171,10 @@ int paint_command(const Argv& argv)
   if (!args.flag("--quiet"))
     std::cerr << "meshpaint paint: " << (inputs.size() == 1 ? "surface" : "surfaces") << " ready in "
               << format_fixed(setup.ms(), 1) << " ms\n";
+  // A mesh file's own label ids come with a class each, unless --labels names them.
+  const std::vector<LabelClass> imported = imported_label_classes(input.mesh());
   const std::vector<LabelClass>& classes =
-    args.has("--labels") ? new_labels : input.project ? input.project->labels : std::vector<LabelClass>();
+    args.has("--labels") ? new_labels : input.project ? input.project->labels : imported;
   paint_job(scene, script, model_level, dir, args.flag("--quiet"), lod, classes);
   if (!gltf.empty()) {
     export_gltf(scene.surface(0), model_level, gltf);
@@ -187,7 +190,7 @@ int paint_command(const Argv& argv)
     }
     all->Update();
     const std::vector<LabelClass>& labels =
-      args.has("--labels") || !input.project ? new_labels : input.project->labels;
+      args.has("--labels") ? new_labels : input.project ? input.project->labels : imported;
     render_screenshot(all->GetOutput(), picture.camera, picture.width, picture.height, screenshot, shown, labels);
     std::cout << "wrote      " << screenshot << " (" << picture.width << "x" << picture.height << ")\n";
   }
@@ -197,6 +200,8 @@ int paint_command(const Argv& argv)
   Project project = input.project ? *input.project : Project();
   if (args.has("--labels"))
     project.labels = new_labels;
+  else if (!input.project)
+    project.labels = imported;
   const std::size_t labels = project.labels.size();
   save_painted_project(*surface, std::move(project), save, SaveTurn::held); // `turn` is held since reading
   std::cout << "saved      " << save << " (level " << level << ", " << labels << " labels)\n";

@@ -5,6 +5,7 @@
 
 #include "core/errors.h"
 #include "core/format.h"
+#include "project/imported_labels.h"
 #include "project/label_stats.h"
 
 #include <nlohmann/json.hpp> // for nlohmann::json
@@ -66,7 +67,9 @@ int stats_command(const Argv& argv)
   const std::vector<LabelClass> table_labels =
     args.has("--labels") ? load_labels(args.value("--labels")) : std::vector<LabelClass>();
   const MeshOrProject input = open_mesh_or_project(args.positionals()[0], import_options(args));
-  const std::vector<LabelClass>& classes = args.has("--labels") || !input.project ? table_labels : input.project->labels;
+  const std::vector<LabelClass> imported = imported_label_classes(input.mesh());
+  const std::vector<LabelClass>& classes =
+    args.has("--labels") ? table_labels : input.project ? input.project->labels : imported;
   const int level = input_level(args, input, 3);
   auto runtime = open_device(args);
   const auto surface = open_paint_surface(runtime, chosen_storage(args, *runtime), input, level);

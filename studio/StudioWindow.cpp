@@ -24,6 +24,7 @@
 #include "paint/paint_scene.h"          // for meshpaint::PaintScene
 #include "paint/paint_surface.h"        // for meshpaint::PaintSurface
 #include "project/imported_colours.h"   // for meshpaint::apply_imported_colours
+#include "project/imported_labels.h"   // for meshpaint::apply_imported_labels
 #include "project/project_surface.h"    // for meshpaint::capture_surface, reference_surface
 
 #include <QAction>                  // for QAction
@@ -431,6 +432,7 @@ BackgroundTask* StudioWindow::change_level(int level)
       for (std::size_t k = 0; k < meshes.size() && !cancelled; ++k) {
         auto surface = std::make_shared<PaintSurface>(runtime, meshes[k], level, chosen);
         apply_imported_colours(*surface);
+        apply_imported_labels(*surface);
         rebuilt->add(std::move(surface), names[k]);
       }
       for (std::size_t k = 0; k < strokes.size() && !cancelled; ++k) {

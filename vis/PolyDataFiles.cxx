@@ -344,6 +344,22 @@ BaseMesh import_polydata(vtkPolyData* poly, const std::string& name, const std::
       }
       soup.colours.push_back(c);
     }
+  // The first integer, one-component point array named as labels are.
+  for (const std::string& label : label_array_names()) {
+    vtkDataArray* ids = poly->GetPointData()->GetArray(label.c_str());
+    const bool integral = ids && ids->GetDataType() != VTK_FLOAT && ids->GetDataType() != VTK_DOUBLE;
+    if (!integral || ids->GetNumberOfComponents() != 1 || ids->GetNumberOfTuples() != points)
+      continue;
+    for (vtkIdType v = 0; v < points; ++v) {
+      const double id = ids->GetComponent(v, 0);
+      if (!(id >= 0 && id <= double(1 << 24)))
+        throw InputError(where + "point " + std::to_string(v) + " has " + label + " " + std::to_string((long long)id) +
+                         ", outside 0 to " + std::to_string(1 << 24));
+      soup.labels.push_back(int(id));
+    }
+    soup.label_array = label;
+    break;
+  }
   return import_mesh(std::move(soup), name, where, options);
 }
 

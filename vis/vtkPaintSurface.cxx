@@ -12,6 +12,7 @@
 #include "paint/paint_surface.h"       // for meshpaint::PaintSurface
 #include "paint/stroke_session.h"      // for meshpaint::StrokeSession
 #include "project/imported_colours.h"  // for meshpaint::apply_imported_colours
+#include "project/imported_labels.h"  // for meshpaint::apply_imported_labels
 #include "project/project_surface.h"   // for meshpaint::open_project_surface, save_painted_project
 #include "project/vertex_channels.h"   // for meshpaint::vertex_channel, set_vertex_channel
 
@@ -397,6 +398,7 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
       auto surface =
         std::make_shared<meshpaint::PaintSurface>(runtime, mesh, this->Level, meshpaint::default_storage(runtime->info()));
       meshpaint::apply_imported_colours(*surface);
+      meshpaint::apply_imported_labels(*surface);
       in.set_surface(std::move(surface));
       this->ImportReport = report;
       in.built_from = input->GetMTime();

@@ -12,6 +12,7 @@
 #include "mesh/base_mesh.h"      // for meshpaint::BaseMesh, load_mesh
 #include "paint/paint_surface.h" // for meshpaint::PaintSurface
 #include "project/imported_colours.h" // for meshpaint::apply_imported_colours
+#include "project/imported_labels.h" // for meshpaint::apply_imported_labels
 
 #include <vtkBoundingBox.h> // for vtkBoundingBox
 #include <vtkPolyData.h>    // for vtkPolyData
@@ -77,6 +78,7 @@ int vtkPaintView::MeshObject(const meshpaint::BaseMesh& mesh, bool add)
                                                                   : meshpaint::parse_storage(this->Storage);
     auto surface = std::make_shared<meshpaint::PaintSurface>(runtime, mesh, level, storage);
     meshpaint::apply_imported_colours(*surface);
+    meshpaint::apply_imported_labels(*surface);
     if (!add)
       this->RemoveObjects();
     this->AddObject(std::move(surface), mesh.name);

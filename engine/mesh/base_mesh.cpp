@@ -13,6 +13,7 @@
 
 #include <algorithm>  // for std::transform, std::min, std::max, std::min_element
 #include <cmath>      // for std::isfinite, std::sqrt, std::fabs
+#include <cstdint>    // for std::int32_t, std::uint8_t, std::int8_t, std::int16_t, std::uint16_t
 #include <filesystem> // for std::filesystem
 #include <map>        // for std::map
 #include <numeric>    // for std::iota
@@ -184,6 +185,8 @@ void split_nonmanifold_vertices(BaseMesh& mesh)
         mesh.points.push_back(mesh.points[v]);
         if (!mesh.colours.empty())
           mesh.colours.push_back(mesh.colours[v]);
+        if (!mesh.labels.empty())
+          mesh.labels.push_back(mesh.labels[v]);
         ++mesh.report.nonmanifold_vertices_split;
       }
       mesh.face_vertices[mesh.face_offsets[cs[c].first] + cs[c].second] = it->second;
@@ -194,7 +197,8 @@ void split_nonmanifold_vertices(BaseMesh& mesh)
 //! Takes the faces out of OpenMesh, checks coordinates, drops unused vertices
 //! and splits non-manifold ones.
 BaseMesh finish(const PolyMesh& om, const ImportReport& report, const std::string& name,
-                const std::string& where, const std::vector<Vec3>& colours, const std::map<int, int>& copied_from)
+                const std::string& where, const std::vector<Vec3>& colours, const std::vector<int>& labels,
+                const std::map<int, int>& copied_from)
 {
   BaseMesh mesh;
   mesh.name = name;
@@ -218,6 +222,10 @@ BaseMesh finish(const PolyMesh& om, const ImportReport& report, const std::strin
     if (!colours.empty()) {
       const auto copy = copied_from.find(int(v));
       mesh.colours.push_back(colours[std::size_t(copy == copied_from.end() ? int(v) : copy->second)]);
+    }
+    if (!labels.empty()) {
+      const auto copy = copied_from.find(int(v));
+      mesh.labels.push_back(labels[std::size_t(copy == copied_from.end() ? int(v) : copy->second)]);
     }
   }
   mesh.face_offsets.push_back(0);
@@ -293,6 +301,9 @@ std::vector<std::string> ImportReport::step_lines() const
                   " open at " + count(vertices_cut, "vertex copy", "vertex copies") + " to orient them");
   if (coloured)
     out.push_back("took the file's colours as the diffuse channel");
+  if (!label_array.empty())
+    out.push_back("took the file's '" + label_array + "' array as the label channel (" +
+                  count(label_classes, "class", "classes") + ")");
   return out;
 }
 
@@ -311,7 +322,7 @@ namespace {
 
 //! make_base_mesh() with the prefix its messages carry.
 BaseMesh build(const std::vector<Vec3>& points, const std::vector<std::vector<int>>& faces, const std::string& name,
-               const std::string& where, const std::vector<Vec3>& colours)
+               const std::string& where, const std::vector<Vec3>& colours, const std::vector<int>& labels = {})
 {
   if (points.empty() || faces.empty())
     throw InputError(where + "has no faces");
@@ -328,7 +339,7 @@ BaseMesh build(const std::vector<Vec3>& points, const std::vector<std::vector<in
     if (!importer.problem_.empty())
       throw InputError(where + importer.problem_);
   }
-  BaseMesh mesh = finish(om, importer.report, name, where, colours, importer.copied_from);
+  BaseMesh mesh = finish(om, importer.report, name, where, colours, labels, importer.copied_from);
   if (!(mesh.diagonal() >= kMinDiagonal)) {
     std::ostringstream size;
     size << mesh.diagonal();
@@ -350,12 +361,15 @@ bool binary_off(const std::string& path)
 //! OpenMesh's PLY reader takes only some spellings of a list's types
 //! (uchar, uint16, int): each list type becomes the one of its size that it
 //! takes. The census has bounded every count and index, so the values read
-//! the same either way.
-void normalise_ply_list_types(std::string& bytes)
+//! the same either way. In a text file, a one-byte label property becomes
+//! int, which OpenMesh reads as a number rather than a character. Returns
+//! whether a property is named as labels are (label_array_names()).
+bool normalise_ply_types(std::string& bytes, bool text)
 {
+  bool labelled = false;
   const std::size_t end = bytes.find("end_header");
   if (end == std::string::npos)
-    return;
+    return false;
   std::istringstream header(bytes.substr(0, end));
   std::string out, line;
   while (std::getline(header, line)) {
@@ -374,9 +388,48 @@ void normalise_ply_list_types(std::string& bytes)
       }
       line = "property list " + w[2] + " " + w[3] + " " + w[4];
     }
+    if (w.size() == 3 && w[0] == "property") {
+      const auto& names = label_array_names();
+      const bool label = std::find(names.begin(), names.end(), w[2]) != names.end();
+      static const std::set<std::string> bytes_wide = {"char", "uchar", "int8", "uint8"};
+      if (label && text && bytes_wide.count(w[1]))
+        line = "property int " + w[2];
+      labelled = labelled || label;
+    }
     out += line + "\n";
   }
   bytes = out + bytes.substr(end);
+  return labelled;
+}
+
+//! The ids of the custom vertex property `name` if OpenMesh's PLY reader made
+//! it with integer type T; false otherwise.
+template <typename T>
+bool integer_property(const PolyMesh& om, const std::string& name, std::vector<int>& ids)
+{
+  OpenMesh::VPropHandleT<T> handle;
+  if (!om.get_property_handle(handle, name))
+    return false;
+  ids.clear();
+  for (const auto vh : om.vertices())
+    ids.push_back(int(om.property(handle, vh)));
+  return true;
+}
+
+//! The first integer vertex property named as label_array_names() lists,
+//! as the soup's labels (a float property of that name is not labels).
+void read_ply_labels(const PolyMesh& om, PolygonSoup& soup)
+{
+  for (const std::string& name : label_array_names()) {
+    std::vector<int> ids;
+    if (integer_property<std::int32_t>(om, name, ids) || integer_property<std::uint8_t>(om, name, ids) ||
+        integer_property<std::int8_t>(om, name, ids) || integer_property<std::int16_t>(om, name, ids) ||
+        integer_property<std::uint16_t>(om, name, ids)) {
+      soup.labels = std::move(ids);
+      soup.label_array = name;
+      return;
+    }
+  }
 }
 
 //! A file through OpenMesh's reader for its format, after the census: the
@@ -406,8 +459,8 @@ PolygonSoup read_through_openmesh(const std::string& path, const std::string& ex
     std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
     if (census.text && bytes.compare(0, 3, "\xEF\xBB\xBF") == 0)
       bytes.erase(0, 3);
-    if (ext == ".ply")
-      normalise_ply_list_types(bytes);
+    if (ext == ".ply" && normalise_ply_types(bytes, census.text))
+      options += OpenMesh::IO::Options::Custom; // the file's own properties, for the label channel
     std::istringstream in(std::move(bytes), std::ios::binary);
     QuietOpenMesh quiet;
     ok = ext == ".off" ? OpenMesh::IO::IOManager().read(path, importer, options)
@@ -435,6 +488,8 @@ PolygonSoup read_through_openmesh(const std::string& path, const std::string& ex
       const auto& c = om.color(vh);
       soup.colours.push_back({c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f});
     }
+  if (ext == ".ply")
+    read_ply_labels(om, soup);
   soup.faces = std::move(importer.faces);
   soup.faces_skipped = faces_skipped;
   return soup;
@@ -493,7 +548,8 @@ BaseMesh import_mesh(PolygonSoup soup, const std::string& name, const std::strin
   const SoupSteps steps = import_soup(soup, import.weld);
   if (soup.faces.empty())
     throw InputError(where + "has no faces (every face is degenerate)");
-  BaseMesh mesh = build(soup.points, soup.faces, name, where, soup.colours);
+  check_label_ids(soup.labels, where);
+  BaseMesh mesh = build(soup.points, soup.faces, name, where, soup.colours, soup.labels);
   ImportReport& r = mesh.report;
   r.faces_skipped_by_reader = faces_skipped;
   r.degenerate_faces_dropped += steps.degenerate_faces_dropped;
@@ -505,6 +561,16 @@ BaseMesh import_mesh(PolygonSoup soup, const std::string& name, const std::strin
   r.nonorientable_components = steps.nonorientable_components;
   r.vertices_cut = steps.vertices_cut;
   r.coloured = !mesh.colours.empty();
+  // Id 0 is unlabelled surface: an array of zeros only (meshpaint's own
+  // output before any label stroke) brings nothing to import.
+  std::set<int> ids(mesh.labels.begin(), mesh.labels.end());
+  ids.erase(0);
+  if (ids.empty())
+    mesh.labels.clear();
+  else {
+    r.label_array = soup.label_array;
+    r.label_classes = ids.size();
+  }
   return mesh;
 }
 

@@ -28,6 +28,8 @@ struct ImportReport
   std::size_t nonorientable_components = 0;    //!< cut open (or split at non-manifold vertices) to orient
   std::size_t vertices_cut = 0;                //!< vertex copies made for those cuts
   bool coloured = false;                       //!< the file's colours became the diffuse channel
+  std::string label_array;                     //!< the file's array that became the label channel, or empty
+  std::size_t label_classes = 0;               //!< distinct ids in it
 
   //! Whether a repair changed the file's mesh (the import steps do not count).
   bool changed() const;
@@ -49,6 +51,7 @@ struct BaseMesh
   std::vector<int> face_offsets;  //!< #faces + 1, into face_vertices
   std::vector<int> face_vertices; //!< sum(face_sizes), counter-clockwise
   std::vector<Vec3> colours;      //!< #vertices RGB in [0, 1] from the file, or empty
+  std::vector<int> labels;        //!< #vertices label ids from the file, or empty
   ImportReport report;
 
   std::size_t vertex_count() const { return points.size(); }
@@ -90,7 +93,8 @@ struct ImportOptions
 };
 
 //! Reads OBJ, OFF, PLY or STL through read_mesh_file(), then the import steps of import_soup() and the checks and repairs of
-//! make_base_mesh(). Vertex or face colours become `colours`.
+//! make_base_mesh(). Vertex or face colours become `colours`, an integer
+//! vertex property named as label_array_names() says `labels`.
 //! \throw IOError when the file is missing or unreadable.
 //! \throw InputError when the format is unknown or the file is malformed,
 //! truncated, or disagrees with its header, or the mesh is unusable.

@@ -3,7 +3,24 @@
 #include <algorithm> // for std::min, std::max
 #include <cmath>     // for std::sqrt
 
+#include "core/errors.h"
+
 namespace meshpaint {
+
+const std::vector<std::string>& label_array_names()
+{
+  static const std::vector<std::string> names = {"label", "labels", "class", "segment"};
+  return names;
+}
+
+void check_label_ids(const std::vector<int>& labels, const std::string& where)
+{
+  constexpr int kLargest = 1 << 24; // kMaxLabelId: the label channel stores floats
+  for (std::size_t v = 0; v < labels.size(); ++v)
+    if (labels[v] < 0 || labels[v] > kLargest)
+      throw InputError(where + "vertex " + std::to_string(v) + " has label " + std::to_string(labels[v]) +
+                       ", outside 0 to " + std::to_string(kLargest));
+}
 
 void colours_from_faces(PolygonSoup& soup)
 {

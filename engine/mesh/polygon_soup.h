@@ -4,6 +4,7 @@
 
 #include "core/vec.h"
 
+#include <string> // for std::string
 #include <vector> // for std::vector
 
 namespace meshpaint {
@@ -16,8 +17,18 @@ struct PolygonSoup
   std::vector<std::vector<int>> faces;  //!< #faces, vertex indices each
   std::vector<Vec3> colours;            //!< #vertices RGB in [0, 1], or empty
   std::vector<Vec3> face_colours;       //!< #faces RGB in [0, 1], or empty
+  std::vector<int> labels;              //!< #vertices label ids from the file, or empty
+  std::string label_array;              //!< the file's name for `labels` (one of label_array_names())
   std::size_t faces_skipped = 0;        //!< OBJ faces the reader could not use (repeated vertices)
 };
+
+//! Names of an integer vertex property (PLY) or point array (VTK) taken as
+//! the label channel, in the order they are looked for.
+const std::vector<std::string>& label_array_names();
+
+//! Checks label ids read from a file (0..kMaxLabelId); `where` starts the
+//! message. \throw InputError naming the first vertex outside.
+void check_label_ids(const std::vector<int>& labels, const std::string& where);
 
 //! Per-vertex colours from face colours where the file gave only those:
 //! each vertex takes the mean of its faces' colours.

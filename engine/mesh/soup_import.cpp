@@ -58,6 +58,7 @@ SoupSteps import_soup(PolygonSoup& soup, bool weld)
     return steps;
   colours_from_faces(soup);
   const bool coloured = !soup.colours.empty();
+  const bool labelled = !soup.labels.empty();
 
   std::vector<Point> points;
   points.reserve(soup.points.size());
@@ -69,6 +70,7 @@ SoupSteps import_soup(PolygonSoup& soup, bool weld)
     polygons.emplace_back(f.begin(), f.end());
   std::map<Point, Vec3> colour_sum; // by position: colours of the vertices merged there
   std::map<Point, int> colour_count;
+  std::map<Point, std::map<int, int>> label_votes; // by position: label ids of the vertices merged there
 
   if (weld) {
     steps.weld_tolerance = kWeldTolerance * diagonal_of(soup.points);
@@ -80,6 +82,9 @@ SoupSteps import_soup(PolygonSoup& soup, bool weld)
           s[a] += soup.colours[v][a];
         ++colour_count[points[v]];
       }
+    if (labelled)
+      for (std::size_t v = 0; v < points.size(); ++v)
+        ++label_votes[points[v]][soup.labels[v]];
     steps.vertices_welded = PMP::merge_duplicate_points_in_polygon_soup(points, polygons);
   }
 
@@ -173,6 +178,24 @@ SoupSteps import_soup(PolygonSoup& soup, bool weld)
       colours[v] = {s[0] / n, s[1] / n, s[2] / n};
     }
     soup.colours = std::move(colours);
+  }
+  if (labelled) {
+    std::vector<int> labels(points.size());
+    for (std::size_t v = 0; v < points.size(); ++v) {
+      if (!weld) {
+        labels[v] = soup.labels[origin(v)];
+        continue;
+      }
+      // The most frequent id among the merged vertices; ties go to the smallest.
+      int best = -1, votes = 0;
+      for (const auto& [id, n] : label_votes.at(points[v]))
+        if (n > votes) {
+          best = id;
+          votes = n;
+        }
+      labels[v] = best;
+    }
+    soup.labels = std::move(labels);
   }
   soup.faces.assign(polygons.size(), {});
   for (std::size_t f = 0; f < polygons.size(); ++f)

@@ -28,7 +28,8 @@ constexpr double kWeldTolerance = 1e-6;
 //! Merges vertices closer than kWeldTolerance times the diagonal (with
 //! `weld`), drops degenerate and duplicate faces, orients every connected
 //! component consistently and turns closed ones outward. Colours follow
-//! their vertices (merged vertices take the mean).
+//! their vertices (merged vertices take the mean), and so do labels (merged
+//! vertices take the most frequent id, the smallest of a tie).
 SoupSteps import_soup(PolygonSoup& soup, bool weld);
 
 } // namespace meshpaint

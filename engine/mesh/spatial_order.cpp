@@ -62,6 +62,8 @@ BaseMesh spatially_ordered(const BaseMesh& mesh, std::vector<int>* face_order)
         out.points.push_back(mesh.points[mesh.face_vertices[mesh.face_offsets[f] + k]]);
         if (!mesh.colours.empty())
           out.colours.push_back(mesh.colours[mesh.face_vertices[mesh.face_offsets[f] + k]]);
+        if (!mesh.labels.empty())
+          out.labels.push_back(mesh.labels[mesh.face_vertices[mesh.face_offsets[f] + k]]);
       }
       out.face_vertices.push_back(v);
     }

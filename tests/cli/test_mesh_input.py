@@ -232,6 +232,8 @@ def test_meshpaint_reads_its_own_vtp_output_with_its_colours(tmp_path):
     r = run("info", str(tmp_path / "out" / "surface.vtp"))
     assert r.returncode == 0, r.stderr
     assert "took the file's colours as the diffuse channel" in r.stdout
+    # Its label array holds zeros only (nothing labelled): unlabelled, no class.
+    assert "label channel" not in r.stdout + r.stderr
     # The read-back surface starts from the painted one's colours: the same range.
     assert abs(diffuse_back.max() - diffuse.max()) < 0.1 and abs(diffuse_back.min() - diffuse.min()) < 0.1
 
@@ -303,3 +305,100 @@ def test_a_scan_wound_every_which_way_paints_every_dab_in_screen_and_tangent_spa
     for row in rows:
         dabs, on_surface = int(row[2]), int(row[3])
         assert dabs > 10 and on_surface == dabs, r.stdout
+
+
+def label_grid():
+    """A 2x2 grid of quads in z=0, as a soup (every quad its own 4 corners);
+    the corners at x <= 1 are labelled 3, those at x = 2 labelled 7."""
+    points, faces = [], []
+    for y in range(2):
+        for x in range(2):
+            corners = [(x, y), (x + 1, y), (x + 1, y + 1), (x, y + 1)]
+            faces.append(list(range(len(points), len(points) + 4)))
+            points += [(cx, cy, 0.0) for cx, cy in corners]
+    labels = [3 if p[0] <= 1 else 7 for p in points]
+    return points, faces, labels
+
+
+def label_ply(name, kind, binary=False):
+    import struct
+    points, faces, labels = label_grid()
+    text = (f"ply\nformat {'binary_little_endian' if binary else 'ascii'} 1.0\nelement vertex {len(points)}\nproperty float x\nproperty float y\n"
+            f"property float z\nproperty {kind} {name}\nelement face {len(faces)}\n"
+            "property list uchar int vertex_indices\nend_header\n")
+    if binary:
+        code = {"int": "<i", "uchar": "<B", "short": "<h"}[kind]
+        body = b"".join(struct.pack("<3f", *p) + struct.pack(code, l) for p, l in zip(points, labels))
+        body += b"".join(struct.pack("<B4i", 4, *f) for f in faces)
+        return text.encode() + body
+    text += "".join(f"{p[0]} {p[1]} {p[2]} {l}\n" for p, l in zip(points, labels))
+    text += "".join("4 " + " ".join(map(str, f)) + "\n" for f in faces)
+    return text.encode()
+
+
+def label_vtp(tmp_path, array_type):
+    points, faces, labels = label_grid()
+    poly = vtk.vtkPolyData()
+    pts = vtk.vtkPoints()
+    for p in points:
+        pts.InsertNextPoint(p)
+    poly.SetPoints(pts)
+    cells = vtk.vtkCellArray()
+    for f in faces:
+        cells.InsertNextCell(len(f), f)
+    poly.SetPolys(cells)
+    ids = array_type()
+    ids.SetName("label")
+    for l in labels:
+        ids.InsertNextValue(l)
+    poly.GetPointData().AddArray(ids)
+    w = vtk.vtkXMLPolyDataWriter()
+    w.SetFileName(str(tmp_path / "grid.vtp"))
+    w.SetInputData(poly)
+    assert w.Write() == 1
+    return str(tmp_path / "grid.vtp")
+
+
+def check_label_channel(tmp_path, mesh, array):
+    """The label channel of `paint` has only the file's ids, each where its
+    vertices are, and the import says which array it took."""
+    import numpy as np
+    info = run("info", mesh)
+    assert info.returncode == 0, info.stderr
+    assert f"took the file's '{array}' array as the label channel (2 classes)" in info.stdout, info.stdout
+    poly, _ = diffuse_of(tmp_path, mesh)
+    label = numpy_support.vtk_to_numpy(poly.GetPointData().GetArray("label"))
+    x = numpy_support.vtk_to_numpy(poly.GetPoints().GetData())[:, 0]
+    assert set(np.unique(label).tolist()) == {3, 7}
+    assert (label[x < 1.25] == 3).all() and (label[x > 1.75] == 7).all()
+    stats = run("stats", mesh, "--json")
+    assert stats.returncode == 0, stats.stderr
+    assert f"imported: took the file's '{array}' array as the label channel (2 classes)" in stats.stderr
+    import json
+    rows = {row["id"]: row for row in json.loads(stats.stdout)["labels"]}
+    assert sorted(rows) == [3, 7] and rows[7]["name"] == "label 7" and rows[7]["colour"] is not None
+    # The x = 2 column's label holds about the quarter of the grid nearest to it.
+    assert 0.15 < rows[7]["area_fraction"] < 0.35, rows[7]
+
+
+@pytest.mark.parametrize("binary", [False, True])
+@pytest.mark.parametrize("name, kind", [("label", "int"), ("class", "uchar"), ("segment", "short")])
+def test_ply_label_property_becomes_the_label_channel(tmp_path, name, kind, binary):
+    check_label_channel(tmp_path, write(tmp_path, "grid.ply", label_ply(name, kind, binary)), name)
+
+
+@pytest.mark.parametrize("array_type", [vtk.vtkIntArray, vtk.vtkUnsignedCharArray])
+def test_vtp_label_array_becomes_the_label_channel(tmp_path, array_type):
+    check_label_channel(tmp_path, label_vtp(tmp_path, array_type), "label")
+
+
+def test_float_label_property_is_not_taken_as_labels(tmp_path):
+    r = run("info", write(tmp_path, "grid.ply", label_ply("label", "float")))
+    assert r.returncode == 0, r.stderr
+    assert "label channel" not in r.stdout
+
+
+def test_negative_label_is_refused(tmp_path):
+    data = label_ply("label", "int").replace(b"0.0 3\n", b"0.0 -3\n", 1)
+    r = run("info", write(tmp_path, "grid.ply", data))
+    assert r.returncode == 2 and "has label -3, outside 0 to 16777216" in r.stderr, r.stderr

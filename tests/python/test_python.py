@@ -348,6 +348,27 @@ def test_polydata_input_goes_through_the_import_steps():
     assert "outward" not in poly_file.GetImportReport()
 
 
+def test_polydata_label_array_becomes_the_label_channel():
+    # The cube soup with a "label" point array: the top's points 5, the rest 2;
+    # welded points keep their ids, the top face's surface takes 5.
+    poly = cube_soup()
+    ids = vtk.vtkIntArray()
+    ids.SetName("label")
+    for i in range(poly.GetNumberOfPoints()):
+        ids.InsertNextValue(5 if poly.GetPoint(i)[2] > 0.5 else 2)
+    poly.GetPointData().AddArray(ids)
+    s = meshpaint.vtkPaintSurface()
+    s.SetInputData(poly)
+    s.SetLevel(2)
+    s.Update()
+    assert "took the file's 'label' array as the label channel (2 classes)" in s.GetImportReport()
+    out = s.GetOutput()
+    label = vtk_to_numpy(out.GetPointData().GetArray("label"))
+    z = vtk_to_numpy(out.GetPoints().GetData())[:, 2]
+    assert set(np.unique(label).tolist()) == {2, 5}
+    assert (label[z > z.max() - 0.05] == 5).all() and (label[z < z.min() + 0.05] == 2).all()
+
+
 def test_polydata_input_with_a_diffuse_array_starts_with_those_colours():
     poly = cube_soup()
     colours = vtk.vtkFloatArray()
