@@ -263,11 +263,15 @@ vtkSmartPointer<vtkPolyData> read_checked(vtkAlgorithm* reader, const std::strin
     vtkIdType n = 0;
     const vtkIdType* ids = nullptr;
     vtkIdType cell = 0;
-    for (cells->InitTraversal(); cells->GetNextCell(n, ids); ++cell)
+    for (cells->InitTraversal(); cells->GetNextCell(n, ids); ++cell) {
+      if (n < 0) // offsets that decrease (a fuzz finding)
+        throw InputError(where + "cell " + std::to_string(cell) + " has " + std::to_string(n) +
+                         " points: the file's cell offsets decrease");
       for (vtkIdType k = 0; k < n; ++k)
         if (ids[k] < 0 || ids[k] >= points)
           throw InputError(where + "cell " + std::to_string(cell) + " names point " + std::to_string(ids[k]) +
                            ", but there are only " + std::to_string(points));
+    }
   }
   auto copy = vtkSmartPointer<vtkPolyData>::New();
   copy->ShallowCopy(out);
@@ -318,6 +322,9 @@ BaseMesh import_polydata(vtkPolyData* poly, const std::string& name, const std::
     vtkIdType n = 0;
     const vtkIdType* ids = nullptr;
     for (polys->InitTraversal(); polys->GetNextCell(n, ids);) {
+      if (n < 0)
+        throw InputError(where + "polygon " + std::to_string(soup.faces.size()) + " has " + std::to_string(n) +
+                         " points: its cell offsets decrease");
       for (vtkIdType k = 0; k < n; ++k)
         if (ids[k] < 0 || ids[k] >= points)
           throw InputError(where + "polygon " + std::to_string(soup.faces.size()) + " names point " +
