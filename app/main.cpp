@@ -59,7 +59,8 @@ commands:
                                       without level of detail, and pick latency (needs X);
                                       --studio: the studio's own frames
   bench fit [--level L] [--max-triangles N] [--json]
-                                      fit's time, peak memory and error against scan size
+                                      fit's time, peak memory and error on every scan and
+                                      against scan size; decimation against VTK and CGAL
   devices                             the OpenCL devices (for --device / MESHPAINT_DEVICE)
   help [COMMAND]                      this text, or one command's (also COMMAND --help, -h)
   --version                           the version of meshpaint

@@ -6,11 +6,15 @@
 // what a user's run would take; its numbers come from its JSON report.
 
 #include "benchmarks.h"
+#include "decimation_peers.h"
 #include "table.h"
+
+#include "PolyDataFiles.h"
 
 #include "core/errors.h"
 #include "core/format.h"
 #include "core/timer.h"
+#include "mesh/decimate.h"
 
 #include <nlohmann/json.hpp>                     // for nlohmann::json
 #include <OpenMesh/Core/IO/MeshIO.hh>                   // for OpenMesh::IO::read_mesh, write_mesh
@@ -45,6 +49,8 @@ using TriMesh = OpenMesh::TriMesh_ArrayKernelT<>;
 constexpr double kNoise = 1e-4;
 //! Smallest scan measured.
 constexpr std::size_t kSmallest = 100000;
+//! Runs of each decimation method; the median's time is reported.
+constexpr int kDecimationRepeats = 3;
 
 struct FitRun
 {
@@ -230,6 +236,29 @@ int bench_fit(const Args& args)
     scan_rows.push_back(j);
   }
 
+  // The decimation step alone against its peers, on the scan as fit imports
+  // it and at fit's default budget.
+  Table peer_table({"scan", "budget", "method", "faces", "median s", "scan->decimated RMS %", "max %"});
+  nlohmann::json peer_rows = nlohmann::json::array();
+  for (const fs::path& scan : scans) {
+    std::cerr << "meshpaint bench: decimating " << scan.filename().string() << " by each method\n";
+    const BaseMesh mesh = is_polydata_path(scan.string()) ? load_polydata_mesh(scan.string()) : load_mesh(scan.string());
+    const std::size_t budget = default_base_faces(mesh.face_count());
+    const double diagonal = mesh.diagonal();
+    for (const DecimationPeer& peer : decimation_peers(mesh, budget, kDecimationRepeats)) {
+      const double rms = 100 * peer.scan_to_mesh.rms / diagonal, max = 100 * peer.scan_to_mesh.max / diagonal;
+      peer_table.add({scan.stem().string(), grouped(budget), peer.method, grouped(peer.faces),
+                      format_fixed(peer.seconds, 3), format_fixed(rms, 4), format_fixed(max, 4)});
+      peer_rows.push_back({{"name", scan.stem().string()},
+                           {"budget", budget},
+                           {"method", peer.method},
+                           {"faces", peer.faces},
+                           {"time_s", peer.seconds},
+                           {"scan_to_decimated_rms_percent", rms},
+                           {"scan_to_decimated_max_percent", max}});
+    }
+  }
+
   Table table({"triangles", "vertices", "subdivisions", "wall s", "decimate s", "fit s", "peak MiB", "base faces",
                "scan->fit RMS %", "max %", "fit->scan RMS %", "max %", "folds"});
   nlohmann::json rows = nlohmann::json::array();
@@ -271,12 +300,15 @@ int bench_fit(const Args& args)
   fs::remove_all(folder);
   if (json) {
     const nlohmann::json out = {{"scan", "femur"}, {"level", level}, {"noise", kNoise}, {"fits", rows},
-                                {"scans", scan_rows}};
+                                {"scans", scan_rows}, {"decimation", peer_rows}};
     std::cout << out.dump() << "\n";
     return 0;
   }
   std::cout << "meshpaint fit on every scan in " << scans_dir() << ", default budget, level " << level << "\n";
   scan_table.print(std::cout);
+  std::cout << "\n";
+  std::cout << "decimation alone at fit's default budget, median of " << kDecimationRepeats << " runs\n";
+  peer_table.print(std::cout);
   std::cout << "\n";
   std::cout << "meshpaint fit on femur refined by Loop subdivision, noise " << kNoise * 100
             << "% of the diagonal per coordinate, level " << level << "\n";

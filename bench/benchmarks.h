@@ -14,7 +14,8 @@ int bench_paint(const Args& args);
 int bench_view(const Args& args);
 //! bench view --studio: the studio's own frame times while painting.
 int bench_view_studio(const Args& args);
-//! bench fit: `meshpaint fit`'s time, peak memory and error against scan size.
+//! bench fit: `meshpaint fit`'s time, peak memory and error on every scan and
+//! against scan size; its decimation against VTK's and CGAL's.
 int bench_fit(const Args& args);
 
 } // namespace meshpaint::cli

@@ -24,7 +24,8 @@ const char* const kUsage = R"(usage: meshpaint bench subdivide MESH [--level L] 
   view        the window's frame times while painting, with and without level of detail,
               and pick latency (needs X); --studio: the studio's own frames, its view
               driven by Qt mouse events
-  fit         fit's time, peak memory and error against scan size (noisy refined femur scans)
+  fit         fit's time, peak memory and error on every scan and against scan size (noisy
+              refined femur scans); the decimation against VTK's and CGAL's at fit's budget
 
 options: --device SEL (gpu, cpu, P:D or part of a name), --storage buffer|image;
 subdivide, paint and view: --quiet (no progress on stderr)

@@ -77,6 +77,19 @@ double scan_area(const BaseMesh& scan)
   return area;
 }
 
+FitError surface_distance(const SurfaceQuery& to, const std::vector<Vec3>& from)
+{
+  FitError e;
+  double sum2 = 0;
+  for (const Vec3& p : from) {
+    const double d = length(sub(to.closest_point(p), p));
+    sum2 += d * d;
+    e.max = std::max(e.max, d);
+  }
+  e.rms = from.empty() ? 0.0 : std::sqrt(sum2 / double(from.size()));
+  return e;
+}
+
 FitReport fit_atlas(Atlas& atlas, const BaseMesh& scan, const SurfaceQueryFactory& make_query,
                     const FitOptions& options)
 {
@@ -155,19 +168,8 @@ FitReport fit_atlas(Atlas& atlas, const BaseMesh& scan, const SurfaceQueryFactor
     triangles.push_back({q[0], q[2], q[3]});
   }
   const std::unique_ptr<SurfaceQuery> surface_query = make_query(fitted.points, triangles);
-  const auto measure = [](const SurfaceQuery& to, const std::vector<Vec3>& from) {
-    FitError e;
-    double sum2 = 0;
-    for (const Vec3& p : from) {
-      const double d = length(sub(to.closest_point(p), p));
-      sum2 += d * d;
-      e.max = std::max(e.max, d);
-    }
-    e.rms = from.empty() ? 0.0 : std::sqrt(sum2 / double(from.size()));
-    return e;
-  };
-  report.scan_to_surface = measure(*surface_query, scan.points);
-  report.surface_to_scan = measure(*scan_query, fitted.points);
+  report.scan_to_surface = surface_distance(*surface_query, scan.points);
+  report.surface_to_scan = surface_distance(*scan_query, fitted.points);
 
   const std::vector<Float4> normals = atlas.read_limit_normals();
   const std::vector<double> area_after = patch_areas(l, limit);

@@ -37,6 +37,9 @@ struct FitError
   double max = 0;
 };
 
+//! RMS and largest distance from each of `from` to the closest point of `to`.
+FitError surface_distance(const SurfaceQuery& to, const std::vector<Vec3>& from);
+
 struct FitReport
 {
   FitError scan_to_surface;   //!< from every scan vertex to the fitted limit surface

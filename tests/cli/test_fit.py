@@ -241,3 +241,30 @@ def test_fit_report_of_a_scan_whose_name_is_not_utf8(tmp_path):
     r = run("fit", str(scan), "--level", "1", "--report", str(report), "-o", str(tmp_path / "f.meshpaint"), "--quiet")
     assert r.returncode == 0, r.stderr
     assert json.loads(report.read_text())["scan"] == str(tmp_path / "scan\ufffd.ply")
+
+
+def test_bench_fit_decimation_rows_agree_with_fit(tmp_path):
+    """bench fit's decimation table: every scan, every method, within the
+    budget, and meshpaint's row the base mesh fit itself reached."""
+    if not os.path.exists(os.path.join(SCANS, "femur.off")):
+        pytest.skip("data/scans missing (scripts/fetch-scans.sh)")
+    r = run("bench", "fit", "--max-triangles", "1000", "--json")
+    assert r.returncode == 0, r.stderr
+    out = json.loads(r.stdout)
+    methods = {"meshpaint decimate()", "vtkQuadricDecimation", "vtkQuadricDecimation, volume preservation",
+               "CGAL edge collapse, Garland-Heckbert planes"}
+    fits = {s["name"]: s for s in out["scans"]}
+    rows = out["decimation"]
+    assert {row["name"] for row in rows} == set(fits)
+    for row in rows:
+        assert set(row) == {"name", "budget", "method", "faces", "time_s", "scan_to_decimated_rms_percent",
+                            "scan_to_decimated_max_percent"}, row
+        assert row["method"] in methods, row
+        assert row["budget"] == fits[row["name"]]["budget"], row
+        # a decimation that stopped far short of its budget, or overshot it, is not comparable
+        assert 0.5 * row["budget"] <= row["faces"] <= row["budget"], row
+        assert row["time_s"] > 0, row
+        assert 0 < row["scan_to_decimated_rms_percent"] <= row["scan_to_decimated_max_percent"] < 10, row
+        if row["method"] == "meshpaint decimate()":
+            assert row["faces"] == fits[row["name"]]["base_faces"], row
+    assert len(rows) == len(methods) * len(fits)
