@@ -183,8 +183,10 @@ inline int tile_texel(int2 g, __global const int *list, int count, int *p, int2 
  * tables once and spends nothing on working out its patch and texel.
  * The body of a *_patches kernel: runs the
  * statement given last for each texel ij of patch p (list[k] for item k, or
- * k when list is null), row by row; k is `patch_item`. */
-#define FOR_EACH_PATCH_TEXEL(g, list, count, ...)         \
+ * k when list is null), row by row; k is `patch_item`. Not variadic: OpenCL C
+ * has no variadic macros (NVIDIA's compiler refuses them), and a call's
+ * commas sit inside its own parentheses. */
+#define FOR_EACH_PATCH_TEXEL(g, list, count, statement)   \
   do {                                                    \
     const int patch_item = get_global_id(0);              \
     if (patch_item >= (count))                            \
@@ -193,7 +195,7 @@ inline int tile_texel(int2 g, __global const int *list, int count, int *p, int2 
     for (int j_ = 0; j_ < (g).x; ++j_)                    \
       for (int i_ = 0; i_ < (g).x; ++i_) {                \
         const int2 ij = (int2)(i_, j_);                   \
-        __VA_ARGS__;                                      \
+        statement;                                        \
       }                                                   \
   } while (0)
 

@@ -2,6 +2,7 @@
 
 #include "cl/kernel_clock.h"
 #include "cl/kernel_programs.h"
+#include "cl/kernel_sources.h"
 #include "cl/launch.h"
 #include "cl/program.h"
 #include "core/errors.h"
@@ -60,6 +61,14 @@ TEST(Runtime, EveryKernelFileBuildsFromItsNeeds)
   EXPECT_EQ(kernel_file_with_needs("geometry.cl"),
             (std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "brush_space.cl", "geometry.cl"}));
   EXPECT_THROW(kernel_file_with_needs("missing.cl"), DeviceError);
+}
+
+// OpenCL C has no variadic macros. PoCL's compiler takes them anyway;
+// NVIDIA's refuses the whole program, so nothing here may rely on them.
+TEST(Runtime, KernelsUseNoVariadicMacros)
+{
+  for (const std::string& file : kernel_files())
+    EXPECT_EQ(kernel_source(file).find("__VA_ARGS__"), std::string::npos) << file;
 }
 
 TEST(Runtime, ProgramsAreBuiltOncePerOptions)
