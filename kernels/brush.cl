@@ -70,6 +70,20 @@ __kernel void brush_cull(ATLAS_IN pos, ATLAS_IN nrm, int2 g, int patches, __glob
   records[k] = r;
 }
 
+/* Range: 1. Lowers brush_cull's starting distance (counters[1]) to that of
+ * texel `texel` of patch `p`, a texel the host expects near `centre` (the
+ * previous dab's centre, or the picked one). Any texel gives brush_cull the
+ * same records to choose from: the nearest is no further than this one, so
+ * it and its ties still append. The distance is patch_distances' own, plus
+ * a few units in the last place so that no rounding can leave it short. */
+__kernel void brush_cull_seed(ATLAS_IN pos, int2 g, int p, int texel, float4 centre, volatile __global int *counters)
+{
+  if (get_global_id(0) != 0)
+    return;
+  const float d = distance(ATLAS_LOAD(pos, g, p, (int2)(texel % g.x, texel / g.x)).xyz, centre.xyz);
+  atomic_min(&counters[1], as_int(d) + 4);
+}
+
 /* Range: #patches. Per patch, in `open`: the sides that come within
  * `reach` of `centre` (bits 0-3) when a texel of it does, else
  * REACH_NONE; from these the host finds the patches connected to the

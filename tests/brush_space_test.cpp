@@ -150,15 +150,6 @@ TEST(BrushSpace, ParameterIsASquareOfTexelsInThePatchUnderTheCentre)
   EXPECT_EQ(painted, 25u); // 5 x 5 texels: a square, not a disc
 }
 
-//! The storages a test runs under: buffers, and images where the device has them.
-std::vector<AtlasStorage> storages()
-{
-  std::vector<AtlasStorage> s{AtlasStorage::Buffer};
-  if (test::runtime()->info().images)
-    s.push_back(AtlasStorage::Image);
-  return s;
-}
-
 //! What a dab painted: the welded vertices and the patches with painted texels.
 struct Painted
 {
@@ -201,7 +192,7 @@ TEST(BrushSpace, ParameterSquaresContinueAcrossPatchSides)
   };
   const float texel = 0.0625f;
   std::vector<std::vector<Float4>> first; // per case, under the first storage
-  for (const AtlasStorage storage : storages())
+  for (const AtlasStorage storage : test::storages())
     for (std::size_t k = 0; k < std::size(cases); ++k) {
       const Case& c = cases[k];
       SCOPED_TRACE(std::string(c.what) + (storage == AtlasStorage::Image ? ", images" : ", buffers"));
@@ -241,7 +232,7 @@ TEST(BrushSpace, ParameterSquaresAtExtraordinaryVertices)
   };
   const int level = 4, half = 2;
   for (const Case& v : {Case{"cube", {1.f, 1.f, 1.f}, 3}, Case{"high_valence", {0.f, 0.f, 1.f}, 12}})
-    for (const AtlasStorage storage : storages()) {
+    for (const AtlasStorage storage : test::storages()) {
       SCOPED_TRACE(std::string(v.shape) + (storage == AtlasStorage::Image ? ", images" : ", buffers"));
       PaintSurface surface(test::runtime(), test::shape(v.shape), level, storage);
       const LevelLayout l = surface.atlas().layout(level);

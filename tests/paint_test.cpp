@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm> // for std::min
+#include <array>     // for std::array
 #include <cmath>   // for std::sqrt
 #include <cstring> // for std::memcmp
 
@@ -117,6 +118,46 @@ TEST(Paint, BrushCentreSnapsToTheNearestTexelFromNearAndFar)
     // Beyond the radius nothing is reached.
     EXPECT_TRUE(surface.brush_patches(point, float(nearest) * 0.99f).empty()) << "point moved out by " << out;
   }
+}
+
+// A hint (the picker's patch and (u, v), or the last dab's texel) only
+// starts the search lower: wherever it points, every dab gets the centre,
+// normal, texel and patches it gets without one, ties to the lowest patch
+// included (a grid corner is a texel of four patches).
+TEST(Paint, AHintAnywhereSnapsAsWithoutOne)
+{
+  for (const AtlasStorage storage : test::storages())
+    for (const bool grid : {false, true}) {
+      const BaseMesh mesh = grid ? test::flat_grid(6) : test::noisy_sphere(8, 0.05f);
+      PaintSurface hinted(test::runtime(), mesh, 3, storage), plain(test::runtime(), mesh, 3, storage);
+      const int patches = hinted.atlas().layout(3).patches;
+      const std::vector<Vec3> points =
+        grid ? std::vector<Vec3>{{2.f, 3.f, 0.1f}, {3.f, 3.f, 0.f}, {2.5f, 2.f, -0.3f}, {0.f, 0.f, 0.5f}}
+             : std::vector<Vec3>{{0.3f, 0.5f, 0.81f}, {0.f, 0.f, 1.2f}, {-0.7f, 0.1f, -0.6f}, {0.f, 1.f, 0.f}};
+      for (const Vec3& point : points) {
+        plain.hint_snap(-1, 0.0, 0.0);
+        Vec3 c0, n0;
+        CullRecord r0{};
+        const std::vector<int> p0 = plain.brush_patches(point, 1.5f, &c0, &n0, 0.f, &r0);
+        ASSERT_FALSE(p0.empty());
+        const int tile = hinted.atlas().layout(3).tile, n = tile - 1;
+        const double u0 = double(r0.closest_texel % tile) / n, v0 = double(r0.closest_texel / tile) / n;
+        // The nearest texel itself, the same place in the last patch, a far
+        // patch, and a corner of the first.
+        const std::vector<std::array<double, 3>> hints = {
+          {double(r0.patch), u0, v0}, {double(patches - 1), u0, v0}, {double(patches / 2), 0.5, 0.5}, {0.0, 1.0, 1.0}};
+        for (const auto& h : hints) {
+          hinted.hint_snap(int(h[0]), h[1], h[2]);
+          Vec3 c1, n1;
+          CullRecord r1{};
+          EXPECT_EQ(hinted.brush_patches(point, 1.5f, &c1, &n1, 0.f, &r1), p0);
+          EXPECT_EQ(std::memcmp(&c1, &c0, sizeof c0), 0);
+          EXPECT_EQ(std::memcmp(&n1, &n0, sizeof n0), 0);
+          EXPECT_EQ(r1.patch, r0.patch);
+          EXPECT_EQ(r1.closest_texel, r0.closest_texel);
+        }
+      }
+    }
 }
 
 TEST(Paint, DoesNotBleedThroughTheAir)

@@ -380,6 +380,8 @@ private:
   vtkPolyData* Surface(std::size_t object, int level);
   //! Hands the actors the level that fits the moment.
   void Show();
+  //! Hands the surface under the last pick the picked patch and (u, v).
+  void HintSnap();
 
   struct Internals;
   std::unique_ptr<Internals> Impl;

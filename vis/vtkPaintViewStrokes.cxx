@@ -17,6 +17,16 @@
 
 #include <chrono> // for std::chrono::steady_clock
 
+// The picker knows the patch and (u, v) under the cursor: the dab's search
+// for its centre starts there instead of at the brush radius.
+void vtkPaintView::HintSnap()
+{
+  Internals& in = *this->Impl;
+  vtkSurfacePicker* picker = in.cursor.picker();
+  const int object = picker->GetActorIndex();
+  if (object >= 0 && std::size_t(object) < in.scene.size() && picker->GetPatch() >= 0)
+    in.scene.surface(std::size_t(object)).hint_snap(int(picker->GetPatch()), picker->GetU(), picker->GetV());
+}
 
 int vtkPaintView::ApplyStrokes(const char* json)
 {
@@ -67,6 +77,7 @@ int vtkPaintView::BeginStroke(int x, int y)
     in.brush->set_camera(camera);
   }
   const meshpaint::Vec3 at{float(p[0]), float(p[1]), float(p[2])};
+  this->HintSnap();
   if (!meshpaint::guarded(this->LastError, [&] { in.session.begin(in.brush->stroke({at})); })) {
     this->Message = this->LastError;
     this->UpdateText();
@@ -96,6 +107,7 @@ int vtkPaintView::ContinueStroke(int x, int y)
     return 1;
   bool on = true;
   const auto start = std::chrono::steady_clock::now();
+  this->HintSnap();
   if (!meshpaint::guarded(this->LastError, [&] { on = in.session.extend(q); }))
     on = false; // the session has closed the stroke; EndStroke() says why
   in.ended = !on;

@@ -22,11 +22,13 @@ struct AppendBuffer
 //! appends records of type Record (its last three arguments: the records,
 //! two counters and the capacity) and reads back what it appended, in no
 //! particular order. The counters start each run at `start`; the first
-//! counts the records, the second is the kernel's own. A buffer found too
-//! small grows and the kernel runs once more.
-template <typename Record, typename... Args>
+//! counts the records, the second is the kernel's own, which `prepare()`
+//! may change by enqueueing work after they are set and before the kernel
+//! runs. A buffer found too small grows and the kernel runs once more.
+template <typename Record, typename Prepare, typename... Args>
 std::vector<Record> run_appending(Runtime& rt, cl::Kernel& kernel, int items, std::size_t group, AppendBuffer& out,
-                                  const cl::Buffer& counters, cl_int2 start, const Args&... args)
+                                  const cl::Buffer& counters, cl_int2 start, const Prepare& prepare,
+                                  const Args&... args)
 {
   cl_int count = 0;
   for (int attempt = 0; attempt < 2; ++attempt) {
@@ -35,6 +37,7 @@ std::vector<Record> run_appending(Runtime& rt, cl::Kernel& kernel, int items, st
       out.records = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(Record) * out.capacity);
     }
     rt.queue().enqueueFillBuffer(counters, start, 0, sizeof start); // no wait: the queue is in order
+    prepare();
     launch(rt.queue(), kernel, cl::NDRange(round_up(std::size_t(items), group)), cl::NDRange(group), args...,
            out.records, counters, cl_int(out.capacity));
     rt.queue().enqueueReadBuffer(counters, CL_TRUE, 0, sizeof count, &count);

@@ -8,7 +8,7 @@
 #include "atlas/unfolding.h"
 #include "paint/brush_space.h"
 
-#include <cmath>   // for std::sqrt
+#include <cmath>   // for std::sqrt, std::lround
 #include <cstring> // for std::memcpy
 #include <limits>  // for std::numeric_limits
 
@@ -20,10 +20,20 @@ std::vector<CullRecord> PaintSurface::cull(const Vec3& centre, float radius)
   const LevelLayout l = atlas_->layout(level_);
   cl_int radius_bits;
   std::memcpy(&radius_bits, &radius, sizeof radius_bits); // brush_cull's nearest distance so far
+  const cl_float4 at{{centre[0], centre[1], centre[2], 0.f}};
+  // Brushes move little between dabs: the last centre's texel bounds the
+  // search from the start, so that far patches stop at their bounds.
+  const bool seeded = snap_hint_.patch >= 0 && snap_hint_.patch < l.patches && snap_hint_.texel >= 0 &&
+                      snap_hint_.texel < l.tile * l.tile;
+  const auto seed = [&] {
+    if (seeded)
+      launch(atlas_->runtime().queue(), d.brush_cull_seed, cl::NDRange(1), cl::NullRange,
+             atlas_->limit_positions_layer(), grid(l), cl_int(snap_hint_.patch), cl_int(snap_hint_.texel), at,
+             d.counters);
+  };
   return run_appending<CullRecord>(atlas_->runtime(), d.brush_cull, l.patches, kGroup, d.culled, d.counters,
-                                   cl_int2{{0, radius_bits}}, atlas_->limit_positions_layer(),
-                                   atlas_->limit_normals_layer(), grid(l), l.patches, atlas_->limit_bounds(),
-                                   cl_float4{{centre[0], centre[1], centre[2], 0.f}});
+                                   cl_int2{{0, radius_bits}}, seed, atlas_->limit_positions_layer(),
+                                   atlas_->limit_normals_layer(), grid(l), l.patches, atlas_->limit_bounds(), at);
 }
 
 void PaintSurface::reach_sides(const Vec3& centre, float radius)
@@ -51,6 +61,7 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
     if (c.distance < best->distance ||
         (c.distance == best->distance && c.patch < best->patch))
       best = &c;
+  snap_hint_ = {best->patch, best->closest_texel};
   const float* snapped = best->closest_position;
   const Vec3 centre{snapped[0], snapped[1], snapped[2]};
   if (centre_out)
@@ -88,6 +99,17 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
   }
   queue.resize(tail);
   return marked_in_order(std::move(queue), reached_, open_sides_.size());
+}
+
+void PaintSurface::hint_snap(int patch, double u, double v)
+{
+  const LevelLayout l = atlas_->layout(level_);
+  if (patch < 0 || patch >= l.patches || !(u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0)) {
+    snap_hint_ = {};
+    return;
+  }
+  const int i = int(std::lround(u * l.n)), j = int(std::lround(v * l.n));
+  snap_hint_ = {patch, j * l.tile + i};
 }
 
 float PaintSurface::distance_to(const Vec3& point, float radius)

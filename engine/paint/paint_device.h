@@ -46,7 +46,7 @@ struct PaintSurface::LayerKernels
 struct PaintSurface::Device
 {
   LayerKernels positions, channels;
-  cl::Kernel brush_cull, brush_reach, paint_dab, dab_weights, move_points, move_dab, move_dab_patches;
+  cl::Kernel brush_cull, brush_cull_seed, brush_reach, paint_dab, dab_weights, move_points, move_dab, move_dab_patches;
   cl::Kernel dab_pickup;
   cl::Kernel spray_pick, spray_points;
   cl::Buffer counters, active, dab, weights;

@@ -35,6 +35,7 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     else
       d.channels.build(rt, AtlasStorage::Buffer);
     d.brush_cull = cl::Kernel(d.positions.program, "brush_cull");
+    d.brush_cull_seed = cl::Kernel(d.positions.program, "brush_cull_seed");
     d.brush_reach = cl::Kernel(d.positions.program, "brush_reach");
     d.paint_dab = cl::Kernel(d.positions.program, "paint_dab");
     d.dab_weights = cl::Kernel(d.positions.program, "dab_weights");

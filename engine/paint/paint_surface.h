@@ -89,6 +89,14 @@ struct StrokeReport
   StepPhases phases;               //!< with PaintSurface::time_phases() on
 };
 
+//! A texel of the atlas at the painting level (CullRecord's patch and
+//! closest_texel, row-major in the tile); none while patch < 0.
+struct SnapHint
+{
+  int patch = -1;
+  int texel = -1;
+};
+
 //! Default material of unpainted surface.
 struct BaseMaterial
 {
@@ -155,6 +163,12 @@ public:
   //! (tangent and screen brushes); `closest` receives the centre's texel.
   std::vector<int> brush_patches(const Vec3& point, float radius, Vec3* centre = nullptr,
                                  Vec3* centre_normal = nullptr, float reach = 0.f, CullRecord* closest = nullptr);
+
+  //! Where the next dab is expected to snap: patch `patch` at (u, v) in
+  //! [0, 1]^2, as a picker reports it. Only the search gets cheaper: any
+  //! texel gives every dab the same centre and patches. Out of range (a
+  //! patch < 0): no hint.
+  void hint_snap(int patch, double u, double v);
 
   //! After positions were written from outside (Atlas::write_positions):
   //! recomputes the limit surface and patch bounds everywhere.
@@ -346,6 +360,7 @@ private:
   std::vector<char> in_stroke_;       // per patch: already in stroke_before_
   std::vector<std::array<int, 4>> neighbours_; // per patch side: the patch across, -1 on a border
   Marks reached_;                        // per patch: reached by this dab's flood
+  SnapHint snap_hint_;                   // the texel the last dab snapped to: where cull() starts
   std::vector<std::uint8_t> open_sides_; // per patch: bit s set if side s comes within the dab's reach, or REACH_NONE
   std::unique_ptr<OpenStroke> open_; // the stroke being drawn
   bool two_sided_ = false;

@@ -8,4 +8,12 @@ std::shared_ptr<Runtime> runtime()
   return rt;
 }
 
+std::vector<AtlasStorage> storages()
+{
+  std::vector<AtlasStorage> s{AtlasStorage::Buffer};
+  if (runtime()->info().images)
+    s.push_back(AtlasStorage::Image);
+  return s;
+}
+
 } // namespace meshpaint::test
