@@ -175,7 +175,10 @@ FitError surface_distance(const SurfaceQuery& to, const std::vector<Vec3>& from)
   for (const Vec3& p : from) {
     const double d = length(sub(to.closest_point(p), p));
     sum2 += d * d;
-    e.max = std::max(e.max, d);
+    if (d > e.max) {
+      e.max = d;
+      e.worst = p;
+    }
   }
   e.rms = from.empty() ? 0.0 : std::sqrt(sum2 / double(from.size()));
   return e;

@@ -35,9 +35,11 @@ struct FitError
 {
   double rms = 0;
   double max = 0;
+  Vec3 worst{};  //!< the point of `from` farthest from `to`
 };
 
-//! RMS and largest distance from each of `from` to the closest point of `to`.
+//! RMS and largest distance from each of `from` to the closest point of
+//! `to`, and the point of `from` at that largest distance.
 FitError surface_distance(const SurfaceQuery& to, const std::vector<Vec3>& from);
 
 struct FitReport
