@@ -14,7 +14,7 @@ Vec3 xyz(const Float4& t) { return {t[0], t[1], t[2]}; }
 
 //! Halvings of a folding step before it is dropped.
 constexpr int kMaxShortenings = 4;
-//! Rounds of dropping the steps of still folding patches.
+//! Rounds of dropping the steps that still fold a quad.
 constexpr int kDropRounds = 3;
 
 //! Where the normal line through `p` meets the scan: the closer hit of the
@@ -241,9 +241,9 @@ FitReport fit_atlas(Atlas& atlas, const BaseMesh& scan, const SurfaceQueryFactor
     // A step longer than the quads it moves can turn them over (where the
     // scan bends more sharply than the limit surface, or the normal line
     // hits it far off): such steps are halved until no quad folds that did
-    // not fold before, and after kMaxShortenings halvings dropped over the
-    // patches that still fold (kDropRounds times, as the control points of
-    // the neighbouring patches reach into each patch).
+    // not fold before, and after kMaxShortenings halvings dropped around
+    // the quads that still fold (up to kDropRounds times, as each limit
+    // point depends on the control points one ring around it).
     const std::vector<char> was_folded = folded_quads(l, limit, normals);
     std::vector<float> step(welded, 1.f);
     const std::vector<Float4> start = control;
