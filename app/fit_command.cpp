@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp> // for nlohmann::json
 
+#include <algorithm> // for std::min
 #include <iostream> // for std::cout, std::cerr
 #include <optional> // for std::optional
 #include <sstream>  // for std::ostringstream
@@ -47,6 +48,41 @@ std::string patch_list(const std::vector<int>& patches, const Atlas& atlas, cons
     out += (k ? ", " : "") + os.str();
   }
   return out + (patches.size() > 5 ? ", ..." : "");
+}
+
+//! The error the fit aims for, % of the scan's diagonal, scan->fit.
+constexpr double kRmsBoundPercent = 0.05;
+constexpr double kMaxBoundPercent = 0.5;
+
+//! A warning line when scan->fit misses a bound: by how much, where the
+//! worst scan point lies, and a finer level or a larger base (up to the
+//! scan's own `scan_triangles`) to try.
+std::string bounds_warning(const FitError& e, double diagonal, int level, std::size_t base_faces,
+                           std::size_t scan_triangles)
+{
+  const double rms = 100 * e.rms / diagonal, max = 100 * e.max / diagonal;
+  if (rms <= kRmsBoundPercent && max <= kMaxBoundPercent)
+    return "";
+  std::ostringstream os;
+  os.precision(4);
+  os << "meshpaint fit: warning: the fit misses its bounds (scan->fit RMS " << format_fixed(kRmsBoundPercent, 2)
+     << "%, max " << format_fixed(kMaxBoundPercent, 1) << "% of the diagonal): RMS " << format_fixed(rms, 4) << "%";
+  if (rms > kRmsBoundPercent)
+    os << " (" << format_fixed(rms - kRmsBoundPercent, 4) << "% over)";
+  os << ", max " << format_fixed(max, 4) << "%";
+  if (max > kMaxBoundPercent)
+    os << " (" << format_fixed(max - kMaxBoundPercent, 4) << "% over)";
+  os << " at the scan point (" << e.worst[0] << ", " << e.worst[1] << ", " << e.worst[2] << "); ";
+  std::vector<std::string> tries;
+  if (level < kMaxLevel)
+    tries.push_back("--level " + std::to_string(level + 1));
+  if (base_faces < scan_triangles)
+    tries.push_back("--base-faces " + std::to_string(std::min(2 * base_faces, scan_triangles)));
+  if (tries.empty())
+    os << "no finer level and no larger base mesh is left to try";
+  else
+    os << "try " << tries[0] << (tries.size() > 1 ? " or " + tries[1] : "");
+  return os.str();
 }
 
 nlohmann::json error_json(const FitError& e, double diagonal)
@@ -176,6 +212,10 @@ int fit_command(const Argv& argv)
     write_bytes_atomically(report_path, {text});
     std::cout << "report     " << report_path << "\n";
   }
+  const std::string missed = bounds_warning(fit.scan_to_surface, diagonal, level, triangles_of(base).size(),
+                                             triangles_of(scan).size());
+  if (!missed.empty())
+    std::cerr << missed << "\n";
   const std::vector<Float4> limit = surface.atlas().read_limit_positions();
   if (!fit.folded.empty())
     std::cerr << "meshpaint fit: warning: " << fit.folded.size() << " patches fold (a quad faces against the "

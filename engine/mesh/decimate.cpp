@@ -1,10 +1,10 @@
 #include "mesh/decimate.h"
 
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>       // for TriMesh_ArrayKernelT
-#include <OpenMesh/Tools/Decimater/DecimaterT.hh>           // for DecimaterT
-#include <OpenMesh/Tools/Decimater/ModNormalDeviationT.hh>  // for ModNormalDeviationT
-#include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>   // for ModNormalFlippingT
-#include <OpenMesh/Tools/Decimater/ModQuadricT.hh>          // for ModQuadricT
+#include <CGAL/Simple_cartesian.h> // for CGAL::Simple_cartesian
+#include <CGAL/Surface_mesh.h>     // for CGAL::Surface_mesh
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Bounded_normal_change_filter.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_plane_policies.h>
+#include <CGAL/Surface_mesh_simplification/edge_collapse.h> // for edge_collapse
 
 #include <algorithm> // for std::min, std::max
 #include <vector>    // for std::vector
@@ -12,33 +12,33 @@
 namespace meshpaint {
 namespace {
 
-using TriMesh = OpenMesh::TriMesh_ArrayKernelT<>;
+using Kernel = CGAL::Simple_cartesian<double>;
+using CgalMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+namespace SMS = CGAL::Surface_mesh_simplification;
 
-//! Largest normal change, degrees, that the stages allow.
-constexpr double kMaxNormalDegrees = 60.0;
-
-//! One stage: collapses in quadric order until `target_faces` or until no
-//! collapse is allowed; stage 1 bounds normal cones, later ones normal flips.
-void decimate_stage(TriMesh& tm, std::size_t target_faces, int stage)
+//! Stops the collapses once the mesh has at most `budget` faces.
+struct FaceBudget
 {
-  for (const auto vh : tm.vertices())
-    tm.status(vh).set_locked(stage < 3 && tm.is_boundary(vh));
-  OpenMesh::Decimater::DecimaterT<TriMesh> decimater(tm);
-  OpenMesh::Decimater::ModQuadricT<TriMesh>::Handle quadric;
-  decimater.add(quadric);
-  decimater.module(quadric).unset_max_err();
-  OpenMesh::Decimater::ModNormalDeviationT<TriMesh>::Handle deviation;
-  OpenMesh::Decimater::ModNormalFlippingT<TriMesh>::Handle flipping;
-  if (stage == 1) {
-    decimater.add(deviation);
-    decimater.module(deviation).set_normal_deviation(kMaxNormalDegrees);
-  } else {
-    decimater.add(flipping);
-    decimater.module(flipping).set_max_normal_deviation(kMaxNormalDegrees);
+  const CgalMesh* mesh;
+  std::size_t budget;
+  template <typename Cost, typename Profile>
+  bool operator()(const Cost&, const Profile&, std::size_t, std::size_t) const
+  {
+    return mesh->number_of_faces() <= budget;
   }
-  decimater.initialize();
-  decimater.decimate_to_faces(0, target_faces);
-  tm.garbage_collection();
+};
+
+//! One stage: Garland-Heckbert plane quadrics order and place the
+//! collapses until the budget or until none is allowed; stage 1 refuses a
+//! collapse that turns any face of its star by more than 90 degrees.
+void decimate_stage(CgalMesh& mesh, std::size_t target_faces, int stage)
+{
+  SMS::GarlandHeckbert_plane_policies<CgalMesh, Kernel> policies(mesh);
+  const auto params = CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement());
+  if (stage == 1)
+    SMS::edge_collapse(mesh, FaceBudget{&mesh, target_faces}, params.filter(SMS::Bounded_normal_change_filter<>()));
+  else
+    SMS::edge_collapse(mesh, FaceBudget{&mesh, target_faces}, params);
 }
 
 } // namespace
@@ -47,42 +47,40 @@ std::size_t default_base_faces(std::size_t faces) { return std::min<std::size_t>
 
 Decimation decimate(const BaseMesh& mesh, std::size_t target_faces)
 {
-  TriMesh tm;
-  tm.reserve(mesh.vertex_count(), 3 * mesh.face_count(), 2 * mesh.face_count());
+  CgalMesh cm;
+  cm.reserve(CgalMesh::size_type(mesh.vertex_count()), CgalMesh::size_type(3 * mesh.face_count()),
+             CgalMesh::size_type(2 * mesh.face_count()));
   for (const Vec3& p : mesh.points)
-    tm.add_vertex(TriMesh::Point(p[0], p[1], p[2]));
+    cm.add_vertex(Kernel::Point_3(p[0], p[1], p[2]));
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     const int* v = &mesh.face_vertices[std::size_t(mesh.face_offsets[f])];
     for (int k = 1; k + 1 < mesh.face_sizes[f]; ++k)
-      tm.add_face(TriMesh::VertexHandle(v[0]), TriMesh::VertexHandle(v[k]), TriMesh::VertexHandle(v[k + 1]));
+      cm.add_face(CgalMesh::Vertex_index(CgalMesh::size_type(v[0])), CgalMesh::Vertex_index(CgalMesh::size_type(v[k])),
+                  CgalMesh::Vertex_index(CgalMesh::size_type(v[k + 1])));
   }
-  tm.request_vertex_status();
-  tm.request_edge_status();
-  tm.request_face_status();
-  tm.request_face_normals();
-  tm.update_face_normals();
 
   Decimation result;
   result.budget = target_faces;
-  for (int stage = 1; stage <= 3 && (stage == 1 || tm.n_faces() > target_faces); ++stage) {
-    decimate_stage(tm, target_faces, stage);
-    result.stage_faces[stage - 1] = tm.n_faces();
+  for (int stage = 1; stage <= 2 && (stage == 1 || cm.number_of_faces() > target_faces); ++stage) {
+    decimate_stage(cm, target_faces, stage);
+    result.stage_faces[stage - 1] = cm.number_of_faces();
     result.stages = stage;
   }
+  cm.collect_garbage();
 
   std::vector<Vec3> points;
-  points.reserve(tm.n_vertices());
-  for (const auto vh : tm.vertices()) {
-    const auto& p = tm.point(vh);
-    points.push_back({p[0], p[1], p[2]});
+  points.reserve(cm.number_of_vertices());
+  for (const CgalMesh::Vertex_index v : cm.vertices()) {
+    const Kernel::Point_3& p = cm.point(v);
+    points.push_back({float(p.x()), float(p.y()), float(p.z())});
   }
   std::vector<std::vector<int>> faces;
-  faces.reserve(tm.n_faces());
-  for (const auto fh : tm.faces()) {
-    std::vector<int> f;
-    for (const auto vh : tm.fv_range(fh))
-      f.push_back(vh.idx());
-    faces.push_back(f);
+  faces.reserve(cm.number_of_faces());
+  for (const CgalMesh::Face_index f : cm.faces()) {
+    std::vector<int> face;
+    for (const CgalMesh::Vertex_index v : vertices_around_face(cm.halfedge(f), cm))
+      face.push_back(int(v));
+    faces.push_back(face);
   }
   result.base = make_base_mesh(std::move(points), faces, mesh.name);
   return result;

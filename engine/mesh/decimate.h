@@ -1,4 +1,4 @@
-// A coarse base mesh from a dense scan, by OpenMesh's decimater.
+// A coarse base mesh from a dense scan, by CGAL's surface-mesh simplification.
 #pragma once
 
 #include "mesh/base_mesh.h"
@@ -18,22 +18,19 @@ struct Decimation
 {
   BaseMesh base;              //!< the decimated mesh
   std::size_t budget = 0;     //!< the face budget asked for
-  int stages = 0;             //!< stages run, 1 to 3 (see decimate())
-  std::size_t stage_faces[3] = {0, 0, 0}; //!< triangles after each stage run
+  int stages = 0;             //!< stages run, 1 or 2 (see decimate())
+  std::size_t stage_faces[2] = {0, 0}; //!< triangles after each stage run
 };
 
 //! `mesh` (polygons fanned into triangles) decimated by edge collapses to
-//! at most `target_faces` triangles, OpenMesh's quadric error module
-//! ordering the collapses, in up to three stages that each go on from the
-//! last where it stopped above the budget:
-//! 1. the normal-deviation module forbids collapses that widen the cone of
-//!    normals a face stands for beyond 60 degrees, border vertices locked;
-//! 2. the normal-flipping module instead forbids only collapses that turn
-//!    a face by more than 60 degrees at once (on noisy scans the cones of
-//!    stage 1 are wide from the start, so stage 1 stops early there);
-//! 3. as stage 2 with border vertices free (they stay on border points:
-//!    OpenMesh moves a collapsed vertex onto its neighbour).
-//! Stops above the budget only when no allowed collapse is left.
+//! at most `target_faces` triangles, CGAL's Garland-Heckbert plane
+//! quadrics ordering the collapses and placing the new vertices (borders
+//! weighted, so that they stay on the scan's borders), in up to two stages,
+//! the second going on from where the first stopped above the budget:
+//! 1. CGAL's bounded-normal-change filter forbids collapses that turn a
+//!    face of the star by more than 90 degrees;
+//! 2. without the filter.
+//! Stops above the budget only when no collapse keeps the mesh a manifold.
 //! \throw InputError when the result is not a valid base mesh.
 Decimation decimate(const BaseMesh& mesh, std::size_t target_faces);
 

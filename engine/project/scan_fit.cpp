@@ -12,6 +12,11 @@ namespace {
 
 Vec3 xyz(const Float4& t) { return {t[0], t[1], t[2]}; }
 
+//! Halvings of a folding step before it is dropped.
+constexpr int kMaxShortenings = 4;
+//! Rounds of dropping the steps that still fold a quad.
+constexpr int kDropRounds = 3;
+
 //! Where the normal line through `p` meets the scan: the closer hit of the
 //! two directions within `reach`, else the closest point `fallback`.
 Vec3 normal_target(const SurfaceQuery& scan, const Vec3& p, const Vec3& n, const Vec3& closest, float reach,
@@ -46,6 +51,92 @@ std::vector<double> patch_areas(const LevelLayout& l, const std::vector<Float4>&
         area[std::size_t(p)] += 0.5 * length(cross(sub(c, a), sub(d, b)));
       }
   return area;
+}
+
+//! Whether the finest quad (i, j) of patch p faces, by its diagonals,
+//! against the sum of its corners' limit normals.
+bool quad_folds(const LevelLayout& l, const std::vector<Float4>& limit, const std::vector<Float4>& normals, int p,
+                int i, int j)
+{
+  const std::size_t a = l.index(p, i, j), b = l.index(p, i + 1, j), c = l.index(p, i + 1, j + 1),
+                    d = l.index(p, i, j + 1);
+  const Vec3 face = cross(sub(xyz(limit[c]), xyz(limit[a])), sub(xyz(limit[d]), xyz(limit[b])));
+  const Vec3 n{normals[a][0] + normals[b][0] + normals[c][0] + normals[d][0],
+               normals[a][1] + normals[b][1] + normals[c][1] + normals[d][1],
+               normals[a][2] + normals[b][2] + normals[c][2] + normals[d][2]};
+  return dot(face, n) < 0;
+}
+
+//! The patches with a folded finest quad.
+std::vector<int> folded_patches(const LevelLayout& l, const std::vector<Float4>& limit,
+                                const std::vector<Float4>& normals)
+{
+  std::vector<int> folded;
+  for (int p = 0; p < l.patches; ++p) {
+    bool fold = false;
+    for (int j = 0; j < l.n && !fold; ++j)
+      for (int i = 0; i < l.n && !fold; ++i)
+        fold = quad_folds(l, limit, normals, p, i, j);
+    if (fold)
+      folded.push_back(p);
+  }
+  return folded;
+}
+
+//! Grows the marked welded vertices by the quads they touch.
+void grow_marks(const LevelLayout& l, const std::vector<int>& map, std::vector<char>& marked)
+{
+  const std::vector<char> seed = marked;
+  for (int p = 0; p < l.patches; ++p)
+    for (int j = 0; j < l.n; ++j)
+      for (int i = 0; i < l.n; ++i) {
+        const std::size_t c[4] = {std::size_t(map[l.index(p, i, j)]), std::size_t(map[l.index(p, i + 1, j)]),
+                                  std::size_t(map[l.index(p, i + 1, j + 1)]), std::size_t(map[l.index(p, i, j + 1)])};
+        if (seed[c[0]] || seed[c[1]] || seed[c[2]] || seed[c[3]])
+          for (const std::size_t w : c)
+            marked[w] = 1;
+      }
+}
+
+//! Shortens the steps that turn over a finest quad that did not fold
+//! before them (`was_folded`, per quad): halves them within one quad of
+//! it, or with `drop` sets them to zero within two. False when no quad
+//! newly folds.
+bool shorten_folding_steps(const LevelLayout& l, const std::vector<int>& map, const std::vector<Float4>& limit,
+                           const std::vector<Float4>& normals, const std::vector<char>& was_folded, bool drop,
+                           std::vector<float>& step)
+{
+  std::vector<char> marked(step.size(), 0);
+  bool any = false;
+  for (int p = 0; p < l.patches; ++p)
+    for (int j = 0; j < l.n; ++j)
+      for (int i = 0; i < l.n; ++i) {
+        const std::size_t q = (std::size_t(p) * std::size_t(l.n) + std::size_t(j)) * std::size_t(l.n) + std::size_t(i);
+        if (was_folded[q] || !quad_folds(l, limit, normals, p, i, j))
+          continue;
+        any = true;
+        for (const std::size_t t : {l.index(p, i, j), l.index(p, i + 1, j), l.index(p, i + 1, j + 1), l.index(p, i, j + 1)})
+          marked[std::size_t(map[t])] = 1;
+      }
+  for (int ring = 0; ring < (drop ? 2 : 1); ++ring)
+    grow_marks(l, map, marked);
+  for (std::size_t w = 0; w < step.size(); ++w)
+    if (marked[w])
+      step[w] *= drop ? 0.f : 0.5f;
+  return any;
+}
+
+//! Per finest quad (patch-major, row by row), whether it folds.
+std::vector<char> folded_quads(const LevelLayout& l, const std::vector<Float4>& limit,
+                               const std::vector<Float4>& normals)
+{
+  std::vector<char> folded(std::size_t(l.patches) * std::size_t(l.n) * std::size_t(l.n));
+  for (int p = 0; p < l.patches; ++p)
+    for (int j = 0; j < l.n; ++j)
+      for (int i = 0; i < l.n; ++i)
+        folded[(std::size_t(p) * std::size_t(l.n) + std::size_t(j)) * std::size_t(l.n) + std::size_t(i)] =
+          quad_folds(l, limit, normals, p, i, j);
+  return folded;
 }
 
 } // namespace
@@ -84,7 +175,10 @@ FitError surface_distance(const SurfaceQuery& to, const std::vector<Vec3>& from)
   for (const Vec3& p : from) {
     const double d = length(sub(to.closest_point(p), p));
     sum2 += d * d;
-    e.max = std::max(e.max, d);
+    if (d > e.max) {
+      e.max = d;
+      e.worst = p;
+    }
   }
   e.rms = from.empty() ? 0.0 : std::sqrt(sum2 / double(from.size()));
   return e;
@@ -144,15 +238,32 @@ FitReport fit_atlas(Atlas& atlas, const BaseMesh& scan, const SurfaceQueryFactor
     }
     task->step(welded);
     task.reset();
-    for (std::size_t t = 0; t < map.size(); ++t)
-      for (int a = 0; a < 3; ++a)
-        control[t][a] += delta[std::size_t(map[t])][a];
-    for (const Float4& c : control)
-      for (int a = 0; a < 3; ++a)
-        if (!std::isfinite(c[a]) || std::abs(c[a]) > kMaxCoordinate)
-          throw InputError(scan.name + ": the fit does not converge to finite positions (pass " +
-                           std::to_string(pass + 1) + ")");
-    atlas.write_positions(level, control);
+    // A step longer than the quads it moves can turn them over (where the
+    // scan bends more sharply than the limit surface, or the normal line
+    // hits it far off): such steps are halved until no quad folds that did
+    // not fold before, and after kMaxShortenings halvings dropped around
+    // the quads that still fold (up to kDropRounds times, as each limit
+    // point depends on the control points one ring around it).
+    const std::vector<char> was_folded = folded_quads(l, limit, normals);
+    std::vector<float> step(welded, 1.f);
+    const std::vector<Float4> start = control;
+    for (int round = 0;; ++round) {
+      for (std::size_t t = 0; t < map.size(); ++t) {
+        const std::size_t w = std::size_t(map[t]);
+        for (int a = 0; a < 3; ++a)
+          control[t][a] = start[t][a] + step[w] * delta[w][a];
+      }
+      for (const Float4& c : control)
+        for (int a = 0; a < 3; ++a)
+          if (!std::isfinite(c[a]) || std::abs(c[a]) > kMaxCoordinate)
+            throw InputError(scan.name + ": the fit does not converge to finite positions (pass " +
+                             std::to_string(pass + 1) + ")");
+      atlas.write_positions(level, control);
+      if (round == kMaxShortenings + kDropRounds ||
+          !shorten_folding_steps(l, map, atlas.read_limit_positions(), atlas.read_limit_normals(), was_folded,
+                                 round >= kMaxShortenings, step))
+        break;
+    }
     say("pass " + std::to_string(pass + 1) + " of " + std::to_string(options.passes) + ": " + std::to_string(welded) +
         " points moved, " + std::to_string(report.ray_misses) + " to the closest point (the normal missed the scan)");
   }
@@ -171,22 +282,9 @@ FitReport fit_atlas(Atlas& atlas, const BaseMesh& scan, const SurfaceQueryFactor
   report.scan_to_surface = surface_distance(*surface_query, scan.points);
   report.surface_to_scan = surface_distance(*scan_query, fitted.points);
 
-  const std::vector<Float4> normals = atlas.read_limit_normals();
+  report.folded = folded_patches(l, limit, atlas.read_limit_normals());
   const std::vector<double> area_after = patch_areas(l, limit);
   for (int p = 0; p < l.patches; ++p) {
-    bool folded = false;
-    for (int j = 0; j < l.n && !folded; ++j)
-      for (int i = 0; i < l.n && !folded; ++i) {
-        const std::size_t a = l.index(p, i, j), b = l.index(p, i + 1, j), c = l.index(p, i + 1, j + 1),
-                          d = l.index(p, i, j + 1);
-        const Vec3 face = cross(sub(xyz(limit[c]), xyz(limit[a])), sub(xyz(limit[d]), xyz(limit[b])));
-        const Vec3 n{normals[a][0] + normals[b][0] + normals[c][0] + normals[d][0],
-                     normals[a][1] + normals[b][1] + normals[c][1] + normals[d][1],
-                     normals[a][2] + normals[b][2] + normals[c][2] + normals[d][2]};
-        folded = dot(face, n) < 0;
-      }
-    if (folded)
-      report.folded.push_back(p);
     const double ratio = area_after[std::size_t(p)] / std::max(area_before[std::size_t(p)], 1e-300);
     if (ratio > 4 || ratio < 0.25)
       report.stretched.push_back(p);

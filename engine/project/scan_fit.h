@@ -35,9 +35,11 @@ struct FitError
 {
   double rms = 0;
   double max = 0;
+  Vec3 worst{};  //!< the point of `from` farthest from `to`
 };
 
-//! RMS and largest distance from each of `from` to the closest point of `to`.
+//! RMS and largest distance from each of `from` to the closest point of
+//! `to`, and the point of `from` at that largest distance.
 FitError surface_distance(const SurfaceQuery& to, const std::vector<Vec3>& from);
 
 struct FitReport
@@ -73,8 +75,10 @@ std::vector<std::array<int, 3>> triangles_of(const BaseMesh& mesh);
 //! the normal line through P (the closer hit of the two directions, within
 //! four times the distance to the closest scan point), takes the closest
 //! scan point where the line misses, and moves the control points by the
-//! difference, so that the limit surface converges onto the scan. Then it
-//! measures the distances both ways and flags folded and stretched patches.
+//! difference, so that the limit surface converges onto the scan; a pass's
+//! steps that turn over a finest quad that was not folded before are
+//! shortened until none does (halved, then dropped). Then it measures the
+//! distances both ways and flags folded and stretched patches.
 //! The atlas's coarser levels are left as subdivided.
 //! \throw InputError when the scan has no area (kMinScanArea), or when a
 //! pass would move the surface to non-finite positions or beyond

@@ -205,7 +205,8 @@ def test_quiet_prints_no_progress(command, tmp_path):
     assert r.returncode == 0 and "100%" in r.stderr, r.stderr
     r = run(*args, "--quiet")
     assert r.returncode == 0, r.stderr
-    assert r.stderr == ""
+    # warnings stay (fit's cube misses its error bounds: a cube's corners are sharp)
+    assert all(": warning: " in line for line in r.stderr.splitlines()), r.stderr
 
 
 def test_progress_is_a_bar_on_a_terminal(tmp_path):

@@ -22,21 +22,61 @@ def fit_numbers(stdout):
     return out
 
 
+CGAL_SCANS = ["ChineseDragon-10kv.off", "armadillo.off", "bunny00.off", "femur.off", "lion-head.off",
+              "refined_elephant.off"]
+BOUNDS_WARNING = re.compile(r"^meshpaint fit: warning: the fit misses its bounds \(scan->fit RMS 0\.05%, max 0\.5% of "
+                            r"the diagonal\): RMS ([0-9.]+)%.*, max ([0-9.]+)%.* at the scan point \(([^)]*)\); "
+                            r"try --level (\d+) or --base-faces (\d+)$", re.M)
+
+
 @pytest.mark.parametrize("scan", ["bunny00.off", "refined_elephant.off"])
 def test_fit_error_of_real_scans_is_within_the_targets(tmp_path, scan):
     path = os.path.join(SCANS, scan)
     if not os.path.exists(path):
         pytest.skip(f"data/scans/{scan} missing (scripts/fetch-scans.sh)")
-    r = run("fit", path, "-o", str(tmp_path / "f.meshpaint"))
+    report = tmp_path / "fit.json"
+    r = run("fit", path, "--report", str(report), "-o", str(tmp_path / "f.meshpaint"))
     assert r.returncode == 0, r.stderr
     assert "decimated to" in r.stdout
     assert "meshpaint fit: pass 2 of 2" in r.stderr  # progress
     errors = fit_numbers(r.stdout)
     for key in ("scan->fit", "fit->scan"):
         rms, worst = errors[key]
-        assert rms <= 0.1 and worst <= 0.5, (key, rms, worst)
+        assert rms <= 0.05 and worst <= 0.5, (key, rms, worst)
+    assert json.loads(report.read_text())["folded_patches"] == 0
+    assert "warning" not in r.stderr, r.stderr
     info = run("info", str(tmp_path / "f.meshpaint")).stdout
     assert re.search(r"^scan +" + re.escape(path) + r", [0-9,]+ bytes, CRC-32 [0-9a-f]{8}$", info, re.M), info
+
+
+@pytest.mark.parametrize("scan", CGAL_SCANS)
+def test_fit_of_every_cgal_scan_at_level_2_is_within_bounds_and_never_folds(tmp_path, scan):
+    """Level 2, the fast one: within 0.085% RMS and 0.8% max of the diagonal
+    and no folded patch on every scan (level 3, the default, reaches 0.05%
+    and 0.5%: docs/benchmarks.md). Where a scan misses 0.05% / 0.5%, one
+    warning says by how much, where, and what to try."""
+    path = os.path.join(SCANS, scan)
+    if not os.path.exists(path):
+        pytest.skip(f"data/scans/{scan} missing (scripts/fetch-scans.sh)")
+    report = tmp_path / "fit.json"
+    r = run("fit", path, "--level", "2", "--quiet", "--report", str(report), "-o", str(tmp_path / "f.meshpaint"))
+    assert r.returncode == 0, r.stderr
+    j = json.loads(report.read_text())
+    assert j["base_faces"] <= j["budget"] == 2500 and j["base_faces"] >= 2490, j
+    e = j["scan_to_fit"]
+    assert e["rms_percent"] <= 0.085 and e["max_percent"] <= 0.8, e
+    assert j["fit_to_scan"]["rms_percent"] <= 0.02 and j["fit_to_scan"]["max_percent"] <= 0.2, j["fit_to_scan"]
+    assert j["folded_patches"] == 0, j
+    assert "fold" not in r.stderr, r.stderr
+    m = BOUNDS_WARNING.search(r.stderr)
+    if e["rms_percent"] > 0.05 or e["max_percent"] > 0.5:
+        assert m, r.stderr
+        assert (float(m[1]), float(m[2])) == (round(e["rms_percent"], 4), round(e["max_percent"], 4))
+        assert (int(m[4]), int(m[5])) == (3, 2 * j["base_faces"]), m[0]
+        # the scan point named is a vertex of the scan at the worst distance
+        assert len(m[3].split(",")) == 3
+    else:
+        assert not m and "misses its bounds" not in r.stderr, r.stderr
 
 
 def noisy_sphere(path, sigma=0.01, seed=3):
@@ -183,10 +223,8 @@ def test_fit_reaches_its_budget_on_a_noisy_bordered_scan(tmp_path):
     j = json.loads(report.read_text())
     # each collapse removes two faces, one at a border: the budget or one or two below it
     assert j["budget"] == 100 and 98 <= j["base_faces"] <= 100, j
-    # the noise is what stops the first stage (its normal cones are wide from the start)
-    assert j["decimation_stages"] == len(j["decimation_stage_faces"]) >= 2, j
-    assert j["decimation_stage_faces"][0] > 100 and j["decimation_stage_faces"][-1] == j["base_faces"], j
-    assert "decimation stage 1 stopped at" in r.stderr
+    assert j["decimation_stages"] == len(j["decimation_stage_faces"]) in (1, 2), j
+    assert j["decimation_stage_faces"][-1] == j["base_faces"], j
     # the surface still follows the scan: within three noise amplitudes (0.01 of the radius, 0.33% of the diagonal)
     assert j["scan_to_fit"]["rms_percent"] < 1.0 and j["fit_to_scan"]["rms_percent"] < 1.0, j
 
