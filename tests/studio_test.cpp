@@ -28,8 +28,13 @@
 #include <QDragEnterEvent>          // for QDragEnterEvent
 #include <QDropEvent>               // for QDropEvent
 #include <QFile>                    // for QFile
+#include <QFileInfo>                // for QFileInfo
+#include <QMap>                     // for QMap
 #include <QMimeData>                // for QMimeData
+#include <QSemaphore>               // for QSemaphore
 #include <QSettings>                // for QSettings
+#include <QStatusBar>               // for QStatusBar
+#include <QThreadPool>              // for QThreadPool
 #include <QSpinBox>                 // for QSpinBox
 #include <QTimer>                   // for QTimer
 #include <QUrl>                     // for QUrl
@@ -37,6 +42,7 @@
 #include <QListWidget>              // for QListWidget
 #include <QMouseEvent>              // for QMouseEvent
 #include <QProcess>                 // for QProcess
+#include <QProgressDialog>          // for QProgressDialog
 #include <QPushButton>              // for QPushButton
 #include <QTableWidget>             // for QTableWidget
 #include <QTemporaryDir>            // for QTemporaryDir
@@ -160,6 +166,49 @@ vtkSmartPointer<vtkPolyData> read_vtp(const QString& path)
   return reader->GetOutput();
 }
 
+QByteArray file_bytes(const QString& path)
+{
+  QFile f(path);
+  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+//! Every file of `folder` (hidden ones too: temporaries start with a dot) and its bytes.
+QMap<QString, QByteArray> folder_bytes(const QString& folder)
+{
+  QMap<QString, QByteArray> files;
+  for (const QString& name : QDir(folder).entryList(QDir::Files | QDir::Hidden, QDir::Name))
+    files[name] = file_bytes(folder + "/" + name);
+  return files;
+}
+
+//! Keeps every worker of Qt's global thread pool busy while it lives: work
+//! QtConcurrent starts meanwhile waits in the queue.
+class PoolHold
+{
+public:
+  PoolHold()
+  {
+    QThreadPool* pool = QThreadPool::globalInstance();
+    workers_ = pool->maxThreadCount();
+    for (int k = 0; k < workers_; ++k)
+      pool->start([this] {
+        started_.release();
+        release_.acquire();
+        ended_.release();
+      });
+    started_.acquire(workers_);
+  }
+  ~PoolHold()
+  {
+    release_.release(workers_);
+    ended_.acquire(workers_); // the workers are done with the semaphores
+  }
+
+private:
+  int workers_ = 0;
+  QSemaphore started_, release_, ended_;
+};
+
 //! Counts the turns of the event loop while it runs.
 struct LoopTicks
 {
@@ -182,6 +231,26 @@ int run_meshpaint(const QStringList& args)
   if (p.exitCode() != 0)
     qWarning("%s", p.readAllStandardError().constData());
   return p.exitCode();
+}
+
+//! `meshpaint paint MESH ARGS --strokes SESSION/strokes.json -o OUT`; what
+//! differs between OUT/surface.vtp and SESSION/surface.vtp ("" when every
+//! channel array is equal bit for bit).
+QString replay_differs(const QString& session, const QStringList& mesh_and_args, const QString& out)
+{
+  if (run_meshpaint(QStringList{"paint"} + mesh_and_args +
+                    QStringList{"--strokes", session + "/strokes.json", "-o", out, "--quiet"}) != 0)
+    return "the replay failed";
+  const auto live = read_vtp(session + "/surface.vtp"), again = read_vtp(out + "/surface.vtp");
+  if (live->GetNumberOfPoints() != again->GetNumberOfPoints())
+    return "points differ";
+  for (const char* name : {"diffuse", "label", "specular", "roughness", "displacement", "mask"}) {
+    vtkDataArray *a = live->GetPointData()->GetArray(name), *b = again->GetPointData()->GetArray(name);
+    if (!a || !b || a->GetDataSize() != b->GetDataSize() ||
+        std::memcmp(a->GetVoidPointer(0), b->GetVoidPointer(0), std::size_t(a->GetDataSize()) * 4) != 0)
+      return name;
+  }
+  return QString();
 }
 
 } // namespace
@@ -357,6 +426,65 @@ private Q_SLOTS:
       QCOMPARE(la->GetTuple1(i), lb->GetTuple1(i));
   }
 
+  void the_fill_key_fills_under_the_mouse_and_connects_diagonally_on_request()
+  {
+    QTemporaryDir dir;
+    const QString session = dir.filePath("session");
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, session);
+    QWidget* r = w->render_widget();
+    const auto labels = [&] {
+      std::vector<float> out;
+      for (const meshpaint::Float4& m : view->GetScene().surface(0).read_channels().material)
+        out.push_back(m[2]);
+      return out;
+    };
+    // A band of class 2 across the front, then g over the surface with class 3 chosen.
+    QTest::keyClick(r, Qt::Key_T, Qt::ShiftModifier); // the label tool
+    QTest::keyClick(r, Qt::Key_2);
+    drag(r, {0.5, 0.4}, {0.5, 0.6});
+    const std::vector<float> banded = labels();
+    QTest::keyClick(r, Qt::Key_3);
+    QTest::qWait(20);
+    mouse(r, QEvent::MouseMove, QPoint(r->width() / 8, r->height() / 2), Qt::NoButton, Qt::NoButton);
+    mouse(r, QEvent::MouseMove, QPoint(r->width() * 4 / 10, r->height() / 2), Qt::NoButton, Qt::NoButton);
+    QVERIFY(!w->label_panel()->fill_diagonals()->isChecked());
+    QTest::keyClick(r, Qt::Key_G);
+    QVERIFY2(view->GetScene().history().size() == 2,
+             qPrintable(QString("%1 strokes: %2").arg(view->GetScene().history().size()).arg(view->GetMessage())));
+    QCOMPARE(view->GetScene().history().back().tool, meshpaint::Tool::Fill);
+    QVERIFY(!view->GetScene().history().back().paint().fill_diagonals);
+    std::vector<float> filled = labels();
+    std::size_t threes = 0;
+    for (std::size_t t = 0; t < filled.size(); ++t) {
+      QVERIFY(filled[t] == (banded[t] == 2.f ? 2.f : 3.f) || (banded[t] == 0.f && filled[t] == 0.f));
+      threes += filled[t] == 3.f;
+    }
+    QVERIFY(threes > filled.size() / 4);
+    // G: fills connect across corners (the panel's box follows), g again with class 4.
+    QTest::keyClick(r, Qt::Key_G, Qt::ShiftModifier);
+    QVERIFY(view->GetBrush()->fill_diagonals());
+    QVERIFY(w->label_panel()->fill_diagonals()->isChecked());
+    QTest::keyClick(r, Qt::Key_4);
+    QTest::keyClick(r, Qt::Key_G);
+    QCOMPARE(int(view->GetScene().history().size()), 3);
+    QVERIFY(view->GetScene().history().back().paint().fill_diagonals);
+    filled = labels();
+    for (std::size_t t = 0; t < filled.size(); ++t)
+      if (banded[t] != 2.f)
+        QVERIFY(filled[t] == 4.f || filled[t] == 0.f);
+    // The box unticked: the brush's fills go along sides again.
+    QTest::mouseClick(w->label_panel()->fill_diagonals(), Qt::LeftButton);
+    QVERIFY(!view->GetBrush()->fill_diagonals());
+    // The recording replays the fills to the same labels.
+    QTest::keyClick(r, Qt::Key_S, Qt::ControlModifier);
+    QFile recording(session + "/strokes.json");
+    QVERIFY(recording.open(QIODevice::ReadOnly));
+    QVERIFY(recording.readAll().contains("\"connect\": \"diagonals\""));
+    const QString differs = replay_differs(session, {kCube}, dir.filePath("replay"));
+    QVERIFY2(differs.isEmpty(), qPrintable(differs));
+  }
+
   void the_history_list_undoes_and_redoes()
   {
     QTemporaryDir dir;
@@ -393,17 +521,8 @@ private Q_SLOTS:
     QVERIFY(QFile::exists(session + "/strokes.json"));
     const QString project = dir.filePath("cube.meshpaint");
     QVERIFY(w->save_project(project));
-    QProcess paint;
-    paint.start(MESHPAINT_BIN, {"paint", kCube, "--strokes", session + "/strokes.json", "-o", dir.filePath("replay"),
-                                "--quiet"});
-    QVERIFY(paint.waitForFinished(600000));
-    QCOMPARE(paint.exitCode(), 0);
-    const auto live = read_vtp(session + "/surface.vtp"), again = read_vtp(dir.filePath("replay/surface.vtp"));
-    for (const char* name : {"diffuse", "label", "specular", "roughness", "displacement", "mask"}) {
-      vtkDataArray *a = live->GetPointData()->GetArray(name), *b = again->GetPointData()->GetArray(name);
-      QVERIFY2(a && b && a->GetDataSize() == b->GetDataSize(), name);
-      QVERIFY2(std::memcmp(a->GetVoidPointer(0), b->GetVoidPointer(0), std::size_t(a->GetDataSize()) * 4) == 0, name);
-    }
+    const QString differs = replay_differs(session, {kCube}, dir.filePath("replay"));
+    QVERIFY2(differs.isEmpty(), qPrintable(differs));
     // Reopened, the project has the painted channels.
     const std::vector<meshpaint::Float4> before = view->GetScene().surface(0).read_channels().diffuse;
     QVERIFY(w->open_path(project));
@@ -490,6 +609,71 @@ private Q_SLOTS:
     QFile glb(dir.filePath("cube.glb"));
     QVERIFY(glb.open(QIODevice::ReadOnly));
     QCOMPARE(glb.read(4), QByteArray("glTF"));
+  }
+
+  void a_cancelled_export_leaves_the_previous_files_whole()
+  {
+    QTemporaryDir dir;
+    const QString session = dir.filePath("session");
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, session);
+    drag(w->render_widget(), {0.4, 0.45}, {0.6, 0.55});
+    QTest::keyClick(w->render_widget(), Qt::Key_E, Qt::ControlModifier);
+    QTRY_VERIFY_WITH_TIMEOUT(!w->busy(), 120000);
+    const QString glb = dir.filePath("cube.glb");
+    QVERIFY(w->export_gltf(glb) != nullptr);
+    QTRY_VERIFY_WITH_TIMEOUT(!w->busy(), 120000);
+    const QMap<QString, QByteArray> before = folder_bytes(session);
+    const QByteArray glb_before = file_bytes(glb);
+    QVERIFY(before.contains("model.obj") && before.contains("diffuse.png") && !glb_before.isEmpty());
+    // A second stroke: a finished export now writes other maps.
+    drag(w->render_widget(), {0.3, 0.6}, {0.6, 0.3});
+    // The work waits for a worker while the pool's are held, so the Cancel
+    // button is pressed before it ends, however quick it is.
+    std::unique_ptr<PoolHold> hold;
+    const auto cancel_now = [&] {
+      QVERIFY(w->busy());
+      QProgressDialog* dialog = w->task()->dialog();
+      dialog->show(); // it shows by itself after a moment; the click comes before that
+      QPushButton* cancel = dialog->findChild<QPushButton*>();
+      QVERIFY2(cancel, qPrintable(dialog->labelText()));
+      QTest::mouseClick(cancel, Qt::LeftButton);
+      hold.reset();
+      QTRY_VERIFY_WITH_TIMEOUT(!w->busy(), 120000);
+      QVERIFY(!view->GetLocked());
+      QVERIFY2(w->statusBar()->currentMessage() == "cancelled", qPrintable(w->statusBar()->currentMessage()));
+      hold = std::make_unique<PoolHold>();
+    };
+    hold = std::make_unique<PoolHold>();
+    // Ctrl+E, cancelled: every file as before, no temporary beside them.
+    QTest::keyClick(w->render_widget(), Qt::Key_E, Qt::ControlModifier);
+    cancel_now();
+    QCOMPARE(folder_bytes(session), before);
+    // The glTF file, cancelled: as before.
+    QVERIFY(w->export_gltf(glb) != nullptr);
+    cancel_now();
+    QCOMPARE(file_bytes(glb), glb_before);
+    // Into folders and files that were not there: none appears.
+    view->SetSaveDirectory(dir.filePath("new/session").toStdString().c_str());
+    QTest::keyClick(w->render_widget(), Qt::Key_E, Qt::ControlModifier);
+    cancel_now();
+    QVERIFY(!QFileInfo::exists(dir.filePath("new")));
+    QVERIFY(w->export_gltf(dir.filePath("new.gltf")) != nullptr);
+    cancel_now();
+    const QString scan = dir.filePath("scan.ply");
+    QCOMPARE(run_meshpaint({"subdivide", kCube, "--level", "3", "--quiet", "-o", scan}), 0);
+    QVERIFY(w->export_labelled_scan(scan, dir.filePath("labelled.vtp")) != nullptr);
+    cancel_now();
+    hold.reset();
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden | QDir::Dirs | QDir::NoDotAndDotDot, QDir::Name),
+             QStringList({"cube.glb", "scan.ply", "session"}));
+    // Not cancelled, the same export writes the second stroke's maps.
+    view->SetSaveDirectory(session.toStdString().c_str());
+    QTest::keyClick(w->render_widget(), Qt::Key_E, Qt::ControlModifier);
+    QTRY_VERIFY_WITH_TIMEOUT(!w->busy(), 120000);
+    const QMap<QString, QByteArray> after = folder_bytes(session);
+    QCOMPARE(after.keys(), before.keys());
+    QVERIFY(after["diffuse.png"] != before["diffuse.png"]);
   }
 
   void the_level_panel_changes_the_level_in_the_background()

@@ -256,7 +256,8 @@ public:
 
   /// Acts on a key (VTK key symbol, e.g. "z", "bracketleft", "F1"): brush
   /// settings, undo/redo (Ctrl+Z, Ctrl+Y), save (Ctrl+S), export (Ctrl+E),
-  /// help (h, F1), eyedropper under the mouse (e), camera reset (r), quit (q, Escape: ExitEvent, then the
+  /// help (h, F1), eyedropper under the mouse (e), fill under the mouse (g;
+  /// G: fills connect diagonally or not), camera reset (r), quit (q, Escape: ExitEvent, then the
   /// interactor's TerminateApp()). 1 when it was one.
   int HandleKey(const char* keysym, bool control, bool shift);
 
