@@ -26,7 +26,8 @@
 #include "paint/paint_surface.h"        // for meshpaint::PaintSurface
 #include "project/imported_colours.h"   // for meshpaint::apply_imported_colours
 #include "project/imported_labels.h"   // for meshpaint::apply_imported_labels
-#include "project/project_surface.h"    // for meshpaint::capture_surface, reference_surface
+#include "project/project_surface.h"    // for meshpaint::capture_surface, reference_surface, stroke_history
+#include "RasterIO.h"                   // for meshpaint::load_stroke_rasters
 
 #include <QAction>                  // for QAction
 #include <QCheckBox>                // for QCheckBox
@@ -417,10 +418,6 @@ BackgroundTask* StudioWindow::export_gltf(const QString& path)
 
 BackgroundTask* StudioWindow::change_level(int level)
 {
-  if (view_->GetProject()) {
-    statusBar()->showMessage("a project keeps its level: meshpaint subdivide refines or reduces it", 10000);
-    return nullptr;
-  }
   // What the work needs, taken here: the view's state is the interface thread's.
   PaintScene& scene = view_->GetScene();
   std::vector<BaseMesh> meshes;
@@ -429,7 +426,25 @@ BackgroundTask* StudioWindow::change_level(int level)
     meshes.push_back(scene.surface(k).atlas().base_mesh());
     names.push_back(scene.name(k));
   }
-  const std::vector<Stroke> strokes = scene.history();
+  std::vector<Stroke> strokes = scene.history();
+  // A project's surface is where its own history led from its start (its
+  // reference, else the mesh): that history is replayed first, and the
+  // project continues at the new level with it in the surface's strokes.
+  std::shared_ptr<Project> continued;
+  if (const Project* project = view_->GetProject()) {
+    continued = std::make_shared<Project>(*project);
+    try {
+      StrokeScript earlier = stroke_history(project->history);
+      load_stroke_rasters(earlier);
+      strokes.insert(strokes.begin(), earlier.strokes.begin(), earlier.strokes.end());
+    } catch (const std::exception& e) {
+      statusBar()->showMessage(QString("cannot replay the project's strokes: ") + e.what(), 10000);
+      return nullptr;
+    }
+    continued->history.clear();
+    continued->origin = view_->GetProjectOrigin();
+    continued->labels = view_->GetLabelClasses();
+  }
   const std::string device = view_->GetDevice(), storage = view_->GetStorage();
   auto rebuilt = std::make_shared<PaintScene>();
   return run_locked(
@@ -442,6 +457,11 @@ BackgroundTask* StudioWindow::change_level(int level)
         auto surface = std::make_shared<PaintSurface>(runtime, meshes[k], level, chosen);
         apply_imported_colours(*surface);
         apply_imported_labels(*surface);
+        if (continued && !continued->reference.empty()) { // a fitted project starts from its fit
+          continued->reference = reference_at_level(runtime, *continued, level, chosen);
+          surface->atlas().write_positions(level, continued->reference);
+          surface->geometry_changed();
+        }
         rebuilt->add(std::move(surface), names[k]);
       }
       for (std::size_t k = 0; k < strokes.size(); ++k) {
@@ -453,13 +473,18 @@ BackgroundTask* StudioWindow::change_level(int level)
       }
       return QString("level %1: %2 strokes replayed").arg(level).arg(strokes.size());
     },
-    [this, rebuilt](bool ok) {
+    [this, rebuilt, continued, level](bool ok) {
       if (!ok)
         return; // cancelled or failed: the scene stays as it was
       const BrushSettings brush = *view_->GetBrush();
       view_->SetSurface(rebuilt->shared(0), rebuilt->name(0));
       for (std::size_t k = 1; k < rebuilt->size(); ++k)
         view_->AddSurface(rebuilt->shared(k), rebuilt->name(k));
+      if (continued) { // saves continue the project, at the new level
+        continued->level = level;
+        view_->SetProject(*continued);
+        project_ = nullptr; // the filter's surface is the old level's
+      }
       *view_->GetBrush() = brush; // the same brush, on the new level
       view_->GetBrush()->set_level(view_->GetLevel());
       borders_of_.clear();

@@ -20,11 +20,15 @@
 #include "atlas/atlas.h"
 #include "paint/paint_scene.h"
 #include "paint/paint_surface.h"
+#include "project/project.h"
 
 #include <QApplication>             // for QApplication
 #include <QCheckBox>                // for QCheckBox
 #include <QComboBox>                // for QComboBox
 #include <QDir>                     // for QDir
+#include <QDockWidget>              // for QDockWidget
+#include <QGuiApplication>          // for QGuiApplication::primaryScreen
+#include <QScreen>                  // for QScreen
 #include <QDragEnterEvent>          // for QDragEnterEvent
 #include <QDropEvent>               // for QDropEvent
 #include <QFile>                    // for QFile
@@ -251,6 +255,18 @@ QString replay_differs(const QString& session, const QStringList& mesh_and_args,
       return name;
   }
   return QString();
+}
+
+//! Class 3 "defect" added, and a label stroke of it across the middle.
+bool label_a_defect(StudioWindow& w, vtkPaintView* view)
+{
+  if (!view->AddLabelClass(3, "defect", 1, 0.5, 0))
+    return false;
+  QTest::keyClick(w.render_widget(), Qt::Key_T, Qt::ShiftModifier); // the label tool
+  QTest::keyClick(w.render_widget(), Qt::Key_3);
+  const std::size_t before = view->GetScene().history().size();
+  drag(w.render_widget(), {0.35, 0.45}, {0.65, 0.55});
+  return view->GetScene().history().size() == before + 1;
 }
 
 } // namespace
@@ -717,6 +733,99 @@ private Q_SLOTS:
     QCOMPARE(int(view->GetScene().history().size()), 2);
   }
 
+  void a_projects_level_changes_and_saves_at_the_new_level()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("first"));
+    // A project of the cube at level 4 with a class and a label stroke.
+    QVERIFY(label_a_defect(*w, view));
+    const QString project = dir.filePath("cube.meshpaint");
+    QVERIFY(w->save_project(project));
+    // Opened, painted on, then changed to level 3 with the Level panel.
+    QVERIFY(w->open_path(project));
+    const QString session = dir.filePath("session");
+    view->SetSaveDirectory(session.toStdString().c_str());
+    QCOMPARE(int(view->GetScene().history().size()), 0);
+    for (int k = 0; k < 3; ++k) // the new surface's brush: wider than its texel spacing, as open_studio's
+      QTest::keyClick(w->render_widget(), Qt::Key_BracketRight);
+    drag(w->render_widget(), {0.42, 0.52}, {0.58, 0.45});
+    QVERIFY2(view->GetScene().history().size() == 1, view->GetMessage());
+    const vtkIdType faces = view->GetFaceCount();
+    meshpaint::studio::LevelPanel* panel = w->level_panel();
+    QVERIFY(panel->apply()->isEnabled() || panel->level()->value() == 4);
+    panel->level()->setValue(3);
+    QVERIFY(panel->apply()->isEnabled());
+    QTest::mouseClick(panel->apply(), Qt::LeftButton);
+    QVERIFY(w->busy());
+    QTRY_VERIFY_WITH_TIMEOUT(!w->busy(), 120000);
+    QCOMPARE(view->GetLevel(), 3);
+    QCOMPARE(view->GetFaceCount(), faces / 4);
+    // Still the project, its class kept; the project's stroke and this session's replayed.
+    QVERIFY(view->GetProject() != nullptr);
+    QCOMPARE(view->GetProject()->level, 3);
+    QCOMPARE(int(view->GetLabelClasses().size()), 1);
+    QCOMPARE(view->GetLabelClasses()[0].name, std::string("defect"));
+    QCOMPARE(int(view->GetScene().history().size()), 2);
+    QCOMPARE(view->GetScene().history()[0].tool, meshpaint::Tool::Label);
+    const std::vector<meshpaint::Float4> material = view->GetScene().surface(0).read_channels().material;
+    QVERIFY(std::count_if(material.begin(), material.end(), [](const meshpaint::Float4& m) { return m[2] == 3.f; }) > 0);
+    QVERIFY(red_texels(view) > 0);
+    // Saved (Ctrl+S, and over the project itself), then reopened: level 3, the class and the labels.
+    QTest::keyClick(w->render_widget(), Qt::Key_S, Qt::ControlModifier);
+    QVERIFY(QFile::exists(session + "/surface.meshpaint"));
+    QVERIFY2(w->save_project(project), view->GetLastError());
+    const std::vector<meshpaint::Float4> diffuse = view->GetScene().surface(0).read_channels().diffuse;
+    QVERIFY(w->open_path(project));
+    QCOMPARE(view->GetLevel(), 3);
+    QCOMPARE(view->GetProject()->level, 3);
+    QCOMPARE(int(view->GetLabelClasses().size()), 1);
+    QCOMPARE(view->GetLabelClasses()[0].id, 3);
+    const meshpaint::PaintChannels reopened = view->GetScene().surface(0).read_channels();
+    QVERIFY(reopened.material.size() == material.size() &&
+            std::memcmp(reopened.material.data(), material.data(), material.size() * sizeof(meshpaint::Float4)) == 0);
+    QVERIFY(std::memcmp(reopened.diffuse.data(), diffuse.data(), diffuse.size() * sizeof(meshpaint::Float4)) == 0);
+    // The recording (both strokes, at level 3) replays on the mesh to the same bits.
+    const QString differs = replay_differs(session, {kCube, "--level", "3"}, dir.filePath("replay"));
+    QVERIFY2(differs.isEmpty(), qPrintable(differs));
+  }
+
+  void a_view_wider_than_the_screen_keeps_the_window_on_it_with_its_panels()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    view->SetLevel(4);
+    view->SetSize(3000, 2000); // --size 3000x2000
+    view->SetSaveDirectory(dir.filePath("session").toStdString().c_str());
+    QVERIFY(view->LoadMesh(kCube.toStdString().c_str()));
+    const QRect screen = QGuiApplication::primaryScreen()->availableGeometry();
+    QVERIFY(3000 + 640 > screen.width() && 2000 + 90 > screen.height()); // else this shows nothing
+    StudioWindow w(view);
+    QVERIFY(w.ready());
+    w.show();
+    QApplication::setActiveWindow(&w);
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.grab().save(dir.filePath("wide.png"));
+    if (const char* shots = std::getenv("MESHPAINT_STUDIO_SHOTS"))
+      w.grab().save(QString(shots) + "/studio_small_screen.png");
+    QVERIFY2(w.frameGeometry().width() <= screen.width() && w.frameGeometry().height() <= screen.height(),
+             qPrintable(QString("%1x%2 on %3x%4").arg(w.width()).arg(w.height()).arg(screen.width()).arg(screen.height())));
+    // Every panel shown and inside the window, the view between them.
+    const QList<QDockWidget*> docks = w.findChildren<QDockWidget*>();
+    QCOMPARE(docks.size(), 4);
+    for (QDockWidget* d : docks) {
+      QVERIFY2(d->isVisible() && d->width() > 100, qPrintable(d->windowTitle()));
+      QVERIFY2(w.rect().contains(d->geometry()), qPrintable(d->windowTitle()));
+    }
+    QWidget* r = w.render_widget();
+    QVERIFY(r->width() > 100 && r->height() > 100);
+    // The view paints where it is: the left-drag over the cube is a stroke.
+    for (int k = 0; k < 3; ++k)
+      QTest::keyClick(r, Qt::Key_BracketRight);
+    drag(r, {0.45, 0.5}, {0.55, 0.48});
+    QCOMPARE(int(view->GetScene().history().size()), 1);
+  }
+
   void patch_borders_show_over_the_surface()
   {
     QTemporaryDir dir;
@@ -800,10 +909,7 @@ private Q_SLOTS:
     QTemporaryDir dir;
     vtkNew<vtkPaintView> view;
     auto w = open_studio(view, kCube, dir.filePath("session"));
-    QVERIFY(view->AddLabelClass(3, "defect", 1, 0.5, 0));
-    QTest::keyClick(w->render_widget(), Qt::Key_T, Qt::ShiftModifier); // the label tool
-    QTest::keyClick(w->render_widget(), Qt::Key_3);
-    drag(w->render_widget(), {0.35, 0.45}, {0.65, 0.55});
+    QVERIFY(label_a_defect(*w, view));
     // A scan with many vertices: the cube subdivided.
     const QString scan = dir.filePath("scan.ply");
     QCOMPARE(run_meshpaint({"subdivide", kCube, "--level", "4", "--quiet", "-o", scan}), 0);

@@ -517,3 +517,5 @@ meshpaint::BrushSettings* vtkPaintView::GetBrush() { return this->Impl->brush.ge
 meshpaint::PaintScene& vtkPaintView::GetScene() { return this->Impl->scene; }
 
 const meshpaint::Project* vtkPaintView::GetProject() const { return this->Impl->project.get(); }
+
+const meshpaint::ProjectOrigin& vtkPaintView::GetProjectOrigin() const { return this->Impl->origin; }

@@ -52,6 +52,7 @@ struct LabelClass;
 class PaintScene;
 class PaintSurface;
 struct Project;
+struct ProjectOrigin;
 struct StrokeScript;
 }
 
@@ -314,6 +315,8 @@ public:
   meshpaint::PaintScene& GetScene();
   /// The project the first object came from, null when from a mesh.
   const meshpaint::Project* GetProject() const;
+  /// The project file last loaded or saved here (what a save over it checks).
+  const meshpaint::ProjectOrigin& GetProjectOrigin() const;
 #endif
   /// Brings the status line up to date, and tells observers (UpdateDataEvent)
   /// that the view's state changed: strokes, undo, brush, messages.
