@@ -4,6 +4,8 @@
 #include <QProgressDialog>    // for QProgressDialog
 #include <QtConcurrent>       // for QtConcurrent::run
 
+#include "core/cancellation.h" // for meshpaint::Cancelled
+
 #include <exception> // for std::exception
 
 namespace meshpaint::studio {
@@ -23,8 +25,8 @@ BackgroundTask::BackgroundTask(QWidget* parent, const QString& what, Work work, 
     dialog_->setLabelText(dialog_->labelText() + " (cancelling)");
   });
   connect(watcher_, &QFutureWatcher<QString>::finished, [this] {
-    const bool ok = error_.isEmpty() && !cancelled_;
-    const QString line = cancelled_ ? "cancelled" : ok ? watcher_->result() : error_;
+    const bool ok = error_.isEmpty() && !stopped_;
+    const QString line = stopped_ ? "cancelled" : ok ? watcher_->result() : error_;
     dialog_->hide();
     if (done_)
       done_(ok, line);
@@ -45,6 +47,8 @@ void BackgroundTask::start()
   watcher_->setFuture(QtConcurrent::run([this]() -> QString {
     try {
       return work_(cancelled_);
+    } catch (const Cancelled&) {
+      stopped_ = true; // read after the future finished
     } catch (const std::exception& e) {
       error_ = QString::fromStdString(e.what());
     } catch (...) {

@@ -11,6 +11,7 @@
 
 #include "paint/stroke.h"        // for meshpaint::make_stroke, StrokeScript
 
+#include <QCheckBox>     // for QCheckBox
 #include <QColorDialog>  // for QColorDialog
 #include <algorithm>     // for std::find, std::max
 #include <QComboBox>     // for QComboBox
@@ -69,7 +70,11 @@ LabelPanel::LabelPanel(vtkPaintView* view, QWidget* parent) : QWidget(parent), v
   fill_ = new QPushButton("Fill");
   fill_->setObjectName("fill");
   fill_->setCheckable(true);
-  fill_->setToolTip("A click on the surface fills the region of the class there with the chosen class");
+  fill_->setToolTip("A click on the surface fills the region of the class there with the chosen class (key g: under "
+                    "the mouse)");
+  diagonals_ = new QCheckBox("Diagonals");
+  diagonals_->setObjectName("fill_diagonals");
+  diagonals_->setToolTip("Fills connect texels that touch at a corner too, not only along a side (key G)");
   pick_ = new QPushButton("Pick");
   pick_->setObjectName("pick");
   pick_->setCheckable(true);
@@ -79,7 +84,8 @@ LabelPanel::LabelPanel(vtkPaintView* view, QWidget* parent) : QWidget(parent), v
   merge_->setToolTip("The selected class's surface becomes the class chosen beside; the class is removed");
   merge_into_ = new QComboBox;
   merge_into_->setObjectName("merge_into");
-  for (QWidget* w : {static_cast<QWidget*>(fill_), static_cast<QWidget*>(pick_), static_cast<QWidget*>(merge_)})
+  for (QWidget* w : {static_cast<QWidget*>(fill_), static_cast<QWidget*>(diagonals_), static_cast<QWidget*>(pick_),
+                     static_cast<QWidget*>(merge_)})
     tools->addWidget(w);
   tools->addWidget(merge_into_, 1);
   layout->addLayout(tools);
@@ -88,6 +94,14 @@ LabelPanel::LabelPanel(vtkPaintView* view, QWidget* parent) : QWidget(parent), v
     if (BrushSettings* b = view_->GetBrush())
       b->set_only_over_label(only_over_->itemData(k).toInt());
     view_->UpdateText();
+  });
+  connect(diagonals_, &QCheckBox::toggled, [this](bool on) {
+    BrushSettings* b = view_->GetBrush();
+    if (syncing_ || !b)
+      return;
+    b->set_fill_diagonals(on);
+    view_->UpdateText();
+    view_->Render();
   });
   connect(fill_, &QPushButton::toggled, [this](bool on) {
     if (on)
@@ -188,6 +202,8 @@ void LabelPanel::sync()
   follow_merges();
   measure();
   syncing_ = true;
+  if (const BrushSettings* b = view_->GetBrush())
+    diagonals_->setChecked(b->fill_diagonals());
   const std::vector<LabelClass>& labels = view_->GetLabelClasses();
   const int selected = table_->currentRow();
   table_->setRowCount(int(labels.size()));

@@ -13,6 +13,7 @@
 #include <tuple>   // for std::tuple
 #include <vector>  // for std::vector
 
+class QCheckBox;
 class QComboBox;
 class QPushButton;
 class QTableWidget;
@@ -39,6 +40,7 @@ public:
   QComboBox* only_over() { return only_over_; }
   QComboBox* merge_into() { return merge_into_; }
   QPushButton* fill_button() { return fill_; }
+  QCheckBox* fill_diagonals() { return diagonals_; }
   QPushButton* pick_button() { return pick_; }
   QPushButton* merge_button() { return merge_; }
 
@@ -71,6 +73,7 @@ private:
   QComboBox* only_over_;  // any class, or one class (unlabelled among them)
   QComboBox* merge_into_; // the class the selected one merges into
   QPushButton *fill_, *pick_, *merge_;
+  QCheckBox* diagonals_; // fills connect across corners too
   QWidget* render_ = nullptr;
   bool syncing_ = false;
   std::map<int, double> areas_;            // class id to area, world units squared

@@ -96,9 +96,7 @@ void LevelPanel::show_level_choice()
   const int level = view_->GetLevel();
   const double quads = double(view_->GetFaceCount()) * std::pow(4.0, level_->value() - level);
   quads_->setText(QString("%L1 quads at level %2").arg(quads, 0, 'f', 0).arg(level_->value()));
-  apply_->setEnabled(!busy_ && level_->value() != level && view_->GetProject() == nullptr);
-  apply_->setToolTip(view_->GetProject() ? "A project keeps its level (meshpaint subdivide refines or reduces it)"
-                                         : "Subdivides the meshes again at this level and replays the strokes on them");
+  apply_->setEnabled(!busy_ && level_->value() != level);
 }
 
 void LevelPanel::sync()

@@ -19,13 +19,15 @@
 
 #include "atlas/atlas_storage.h"        // for meshpaint::default_storage, parse_storage
 #include "cl/runtime.h"                 // for meshpaint::Runtime
+#include "core/cancellation.h"          // for meshpaint::stop_if_cancelled
 #include "core/errors.h"                // for meshpaint::InputError
 #include "mesh/base_mesh.h"             // for meshpaint::BaseMesh
 #include "paint/paint_scene.h"          // for meshpaint::PaintScene
 #include "paint/paint_surface.h"        // for meshpaint::PaintSurface
 #include "project/imported_colours.h"   // for meshpaint::apply_imported_colours
 #include "project/imported_labels.h"   // for meshpaint::apply_imported_labels
-#include "project/project_surface.h"    // for meshpaint::capture_surface, reference_surface
+#include "project/project_surface.h"    // for meshpaint::capture_surface, reference_surface, stroke_history
+#include "RasterIO.h"                   // for meshpaint::load_stroke_rasters
 
 #include <QAction>                  // for QAction
 #include <QCheckBox>                // for QCheckBox
@@ -38,6 +40,8 @@
 #include <QUrl>                     // for QUrl
 #include <QFileDialog>              // for QFileDialog
 #include <QFileInfo>                // for QFileInfo
+#include <QGuiApplication>          // for QGuiApplication::primaryScreen
+#include <QScreen>                  // for QScreen::availableGeometry
 #include <QKeySequence>             // for QKeySequence
 #include <QLabel>                   // for QLabel
 #include <QMenu>                    // for QMenu
@@ -127,8 +131,13 @@ StudioWindow::StudioWindow(vtkPaintView* view, QWidget* parent)
   setAcceptDrops(true);
   widget_->setAcceptDrops(false);
   widget_->installEventFilter(this);
-  const int* size = view_->GetSize(); // the view's, with the panels around it
-  resize(size[0] + 640, size[1] + 90);
+  // The view's size (--size) with the panels around it, but no larger than
+  // the screen leaves free: there the view gives way and the docks stay.
+  const int* size = view_->GetSize();
+  QSize wanted(size[0] + 640, size[1] + 90);
+  if (const QScreen* screen = QGuiApplication::primaryScreen())
+    wanted = wanted.boundedTo(screen->availableGeometry().size());
+  resize(wanted);
   show_status();
 }
 
@@ -385,10 +394,10 @@ BackgroundTask* StudioWindow::export_model()
   const int model_level = default_model_level(view_->GetLevel());
   return run_locked(
     "exporting the model into " + QString::fromStdString(dir),
-    [this, dir, model_level](const std::atomic<bool>&) {
-      return QString::fromStdString(export_scene(view_->GetScene(), model_level, dir));
+    [this, dir, model_level](const std::atomic<bool>& cancelled) {
+      return QString::fromStdString(export_scene(view_->GetScene(), model_level, dir, &cancelled));
     },
-    nullptr, false);
+    nullptr, true);
 }
 
 BackgroundTask* StudioWindow::export_gltf(const QString& path)
@@ -397,22 +406,18 @@ BackgroundTask* StudioWindow::export_gltf(const QString& path)
   const int model_level = default_model_level(view_->GetLevel());
   return run_locked(
     "exporting " + path,
-    [this, out, path, model_level](const std::atomic<bool>&) {
+    [this, out, path, model_level](const std::atomic<bool>& cancelled) {
       PaintScene& scene = view_->GetScene();
       if (scene.size() != 1)
         throw InputError("glTF keeps one surface: this scene has " + std::to_string(scene.size()));
-      meshpaint::export_gltf(scene.surface(0), model_level, out);
+      meshpaint::export_gltf(scene.surface(0), model_level, out, &cancelled);
       return "exported " + path;
     },
-    nullptr, false);
+    nullptr, true);
 }
 
 BackgroundTask* StudioWindow::change_level(int level)
 {
-  if (view_->GetProject()) {
-    statusBar()->showMessage("a project keeps its level: meshpaint subdivide refines or reduces it", 10000);
-    return nullptr;
-  }
   // What the work needs, taken here: the view's state is the interface thread's.
   PaintScene& scene = view_->GetScene();
   std::vector<BaseMesh> meshes;
@@ -421,7 +426,25 @@ BackgroundTask* StudioWindow::change_level(int level)
     meshes.push_back(scene.surface(k).atlas().base_mesh());
     names.push_back(scene.name(k));
   }
-  const std::vector<Stroke> strokes = scene.history();
+  std::vector<Stroke> strokes = scene.history();
+  // A project's surface is where its own history led from its start (its
+  // reference, else the mesh): that history is replayed first, and the
+  // project continues at the new level with it in the surface's strokes.
+  std::shared_ptr<Project> continued;
+  if (const Project* project = view_->GetProject()) {
+    continued = std::make_shared<Project>(*project);
+    try {
+      StrokeScript earlier = stroke_history(project->history);
+      load_stroke_rasters(earlier);
+      strokes.insert(strokes.begin(), earlier.strokes.begin(), earlier.strokes.end());
+    } catch (const std::exception& e) {
+      statusBar()->showMessage(QString("cannot replay the project's strokes: ") + e.what(), 10000);
+      return nullptr;
+    }
+    continued->history.clear();
+    continued->origin = view_->GetProjectOrigin();
+    continued->labels = view_->GetLabelClasses();
+  }
   const std::string device = view_->GetDevice(), storage = view_->GetStorage();
   auto rebuilt = std::make_shared<PaintScene>();
   return run_locked(
@@ -429,13 +452,20 @@ BackgroundTask* StudioWindow::change_level(int level)
     [=](const std::atomic<bool>& cancelled) {
       auto runtime = Runtime::open(device);
       const AtlasStorage chosen = storage.empty() ? default_storage(runtime->info()) : parse_storage(storage);
-      for (std::size_t k = 0; k < meshes.size() && !cancelled; ++k) {
+      for (std::size_t k = 0; k < meshes.size(); ++k) {
+        stop_if_cancelled(&cancelled);
         auto surface = std::make_shared<PaintSurface>(runtime, meshes[k], level, chosen);
         apply_imported_colours(*surface);
         apply_imported_labels(*surface);
+        if (continued && !continued->reference.empty()) { // a fitted project starts from its fit
+          continued->reference = reference_at_level(runtime, *continued, level, chosen);
+          surface->atlas().write_positions(level, continued->reference);
+          surface->geometry_changed();
+        }
         rebuilt->add(std::move(surface), names[k]);
       }
-      for (std::size_t k = 0; k < strokes.size() && !cancelled; ++k) {
+      for (std::size_t k = 0; k < strokes.size(); ++k) {
+        stop_if_cancelled(&cancelled);
         if (strokes[k].edit_level() > level)
           throw InputError("stroke " + std::to_string(k + 1) + " edits level " +
                            std::to_string(strokes[k].edit_level()) + ", finer than level " + std::to_string(level));
@@ -443,13 +473,18 @@ BackgroundTask* StudioWindow::change_level(int level)
       }
       return QString("level %1: %2 strokes replayed").arg(level).arg(strokes.size());
     },
-    [this, rebuilt](bool ok) {
+    [this, rebuilt, continued, level](bool ok) {
       if (!ok)
         return; // cancelled or failed: the scene stays as it was
       const BrushSettings brush = *view_->GetBrush();
       view_->SetSurface(rebuilt->shared(0), rebuilt->name(0));
       for (std::size_t k = 1; k < rebuilt->size(); ++k)
         view_->AddSurface(rebuilt->shared(k), rebuilt->name(k));
+      if (continued) { // saves continue the project, at the new level
+        continued->level = level;
+        view_->SetProject(*continued);
+        project_ = nullptr; // the filter's surface is the old level's
+      }
       *view_->GetBrush() = brush; // the same brush, on the new level
       view_->GetBrush()->set_level(view_->GetLevel());
       borders_of_.clear();
@@ -470,21 +505,24 @@ BackgroundTask* StudioWindow::export_labelled_scan(const QString& scan, const QS
   const std::string scan_path = scan.toStdString(), out_path = out.toStdString();
   return run_locked(
     "writing the labelled scan " + out,
-    [=](const std::atomic<bool>&) {
+    [=](const std::atomic<bool>& cancelled) {
       vtkSmartPointer<vtkPolyData> points = read_scan(scan_path);
+      stop_if_cancelled(&cancelled);
       PaintSurface& surface = view_->GetScene().surface(0);
       Project project = base;
       capture_surface(surface, project); // the surface's mesh and level: the reference is made from them
       const std::shared_ptr<Runtime>& runtime = surface.atlas().shared_runtime();
       const WeldedSurface reference = reference_surface(runtime, project, surface.atlas().storage());
+      stop_if_cancelled(&cancelled);
       const TransferReport r = transfer_to_scan(surface.painted_surface(), reference, points, geometry);
+      stop_if_cancelled(&cancelled); // the last boundary: the write renames its file into place
       write_transferred_scan(points, out_path, labels);
       return QString("wrote %1: %2 scan vertices, at most %3 from the surface")
         .arg(out)
         .arg(points->GetNumberOfPoints())
         .arg(r.max_distance);
     },
-    nullptr, false);
+    nullptr, true);
 }
 
 void StudioWindow::show_patch_borders(bool on)

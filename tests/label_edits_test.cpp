@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>  // for std::sqrt
+#include <cmath>  // for std::sqrt, std::lround
 #include <string> // for std::string
 
 namespace meshpaint {
@@ -138,6 +138,40 @@ TEST_P(LabelEdits, FillCoversAClosedSurfaceThroughEveryCorner)
     ASSERT_EQ(l, 5.f);
 }
 
+TEST_P(LabelEdits, ADiagonalFillCrossesALineOfTexelsTouchingAtCorners)
+{
+  // A staircase of class 2 along the grid's diagonal (texel x index equal
+  // to texel y index) touches itself only at corners: it splits the surface
+  // for a fill along sides, and lets a fill across corners through.
+  PaintSurface surface(test::runtime(), test::flat_grid(6), 4, GetParam());
+  const auto pos = surface.atlas().read_limit_positions();
+  const auto on_line = [&](std::size_t t) {
+    return std::lround(pos[t][0] * 16.f) == std::lround(pos[t][1] * 16.f);
+  };
+  PaintChannels channels = surface.read_channels();
+  std::size_t line = 0;
+  for (std::size_t t = 0; t < pos.size(); ++t)
+    if (on_line(t)) {
+      channels.material[t][2] = 2.f;
+      ++line;
+    }
+  ASSERT_GT(line, 0u);
+  surface.write_channels(channels);
+  const std::vector<float> before = labels_of(surface);
+  apply_script(surface, R"({"strokes": [{"tool": "fill", "points": [[4, 1, 0]], "radius": 0.5, "channels": {"label": 5}}]})");
+  std::vector<float> after = labels_of(surface);
+  for (std::size_t t = 0; t < after.size(); ++t)
+    ASSERT_EQ(after[t], before[t] == 0.f && pos[t][0] > pos[t][1] ? 5.f : before[t]) << "texel " << t;
+  ASSERT_TRUE(surface.undo());
+  EXPECT_EQ(labels_of(surface), before);
+  apply_script(surface, R"({"strokes": [{"tool": "fill", "points": [[4, 1, 0]], "radius": 0.5, "channels": {"label": 5},
+    "connect": "diagonals"}]})");
+  after = labels_of(surface);
+  for (std::size_t t = 0; t < after.size(); ++t)
+    ASSERT_EQ(after[t], on_line(t) ? 2.f : 5.f) << "texel " << t;
+  EXPECT_TRUE(surface.history().back().paint().fill_diagonals);
+}
+
 TEST_P(LabelEdits, MergeTurnsOneClassIntoAnother)
 {
   PaintSurface surface(test::runtime(), test::flat_grid(6), 4, GetParam());
@@ -190,6 +224,18 @@ TEST(LabelEditScripts, KeysReadBackAndAreRefusedWhereMeaningless)
   EXPECT_TRUE(refused(R"({"strokes": [{"tool": "fill", "points": [[0, 0, 0], [1, 0, 0]], "radius": 1,
     "channels": {"label": 1}}]})", "one point"));
   EXPECT_TRUE(refused(R"({"strokes": [{"tool": "merge", "channels": {"label": 1}}]})", "is required for a merge"));
+  EXPECT_TRUE(refused(R"({"strokes": [{"tool": "label", "points": [[0, 0, 0]], "radius": 1,
+    "channels": {"label": 1}, "connect": "diagonals"}]})", "connect"));
+  EXPECT_TRUE(refused(R"({"strokes": [{"tool": "fill", "points": [[0, 0, 0]], "radius": 1,
+    "channels": {"label": 1}, "connect": "corners"}]})", "sides, diagonals"));
+  // The default is not written, so recordings without the key read and write the same.
+  const std::string sides = stroke_script_json(parse_stroke_script(R"({"strokes": [{"tool": "fill",
+    "points": [[0, 0, 0]], "radius": 1, "channels": {"label": 1}, "connect": "sides"}]})"));
+  EXPECT_EQ(sides.find("connect"), std::string::npos);
+  const StrokeScript diagonal = parse_stroke_script(R"({"strokes": [{"tool": "fill", "points": [[0, 0, 0]],
+    "radius": 1, "channels": {"label": 1}, "connect": "diagonals"}]})");
+  EXPECT_EQ(parse_stroke_script(stroke_script_json(diagonal)).strokes.at(0), diagonal.strokes.at(0));
+  EXPECT_TRUE(diagonal.strokes.at(0).paint().fill_diagonals);
   EXPECT_TRUE(refused(R"({"strokes": [{"tool": "merge", "only_over_label": 2, "points": [[0, 0, 0]],
     "channels": {"label": 1}}]})", "has no meaning"));
 }

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>      // for std::nanf
+#include <cmath>      // for std::nanf, std::isfinite
 #include <cstdio>     // for std::remove
 #include <cstring>    // for std::memcmp
 #include <filesystem> // for std::filesystem
@@ -165,6 +165,38 @@ TEST_F(ProjectTest, RebuildsTheAtlasOfAnUnorderedInput)
   save_project(captured(s), path.string());
   auto reopened = open_project_surface(test::runtime(), load_project(path.string()), AtlasStorage::Buffer);
   EXPECT_TRUE(same_texels(reopened->atlas().read_limit_positions(), s.atlas().read_limit_positions()));
+}
+
+TEST(ReferenceAtLevel, RefinesAndReducesAFitAsTheSurfaceItStandsFor)
+{
+  // A "fit" that is the cube's level-2 subdivision moved by 0.5 along x:
+  // refined to level 3 it is the level-3 subdivision moved the same
+  // (subdivision is affine), where the unmoved one would not be.
+  PaintSurface surface(test::runtime(), test::cube(), 2, AtlasStorage::Buffer);
+  Project project;
+  capture_surface(surface, project);
+  project.reference = surface.atlas().read_positions(2);
+  for (Float4& q : project.reference)
+    q[0] += 0.5f;
+  const std::vector<Float4> finer = reference_at_level(test::runtime(), project, 3, AtlasStorage::Buffer);
+  PaintSurface fine(test::runtime(), project.mesh, 3, AtlasStorage::Buffer);
+  const std::vector<Float4> expected = fine.atlas().read_positions(3);
+  ASSERT_EQ(finer.size(), expected.size());
+  std::size_t moved = 0;
+  for (std::size_t t = 0; t < finer.size(); ++t) {
+    if (expected[t][0] == 0.f && expected[t][1] == 0.f && expected[t][2] == 0.f)
+      continue; // no texel of a patch
+    ASSERT_NEAR(finer[t][0], expected[t][0] + 0.5f, 1e-5f) << "texel " << t;
+    ASSERT_NEAR(finer[t][1], expected[t][1], 1e-5f) << "texel " << t;
+    ASSERT_NEAR(finer[t][2], expected[t][2], 1e-5f) << "texel " << t;
+    ++moved;
+  }
+  EXPECT_GT(moved, finer.size() / 2);
+  // Reduced: the coarser level's texels, all finite.
+  const std::vector<Float4> coarser = reference_at_level(test::runtime(), project, 1, AtlasStorage::Buffer);
+  EXPECT_EQ(coarser.size(), surface.atlas().layout(1).texels());
+  for (const Float4& q : coarser)
+    ASSERT_TRUE(std::isfinite(q[0]) && std::isfinite(q[1]) && std::isfinite(q[2]));
 }
 
 TEST_F(ProjectTest, TruncatedFilesAreRefused)

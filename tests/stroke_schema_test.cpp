@@ -107,7 +107,8 @@ const json kValues = {{"tool", "paint"},
                       {"spray", {{"drops", 4}, {"size", 0.1}}},
                       {"side", "outside"},
                       {"locked_labels", {2}},
-                      {"only_over_label", 0}};
+                      {"only_over_label", 0},
+                      {"connect", "diagonals"}};
 
 TEST(StrokeSchema, TheParserRefusesAKeyForTheToolsTheSchemaLeavesOut)
 {

@@ -20,16 +20,25 @@
 #include "atlas/atlas.h"
 #include "paint/paint_scene.h"
 #include "paint/paint_surface.h"
+#include "project/project.h"
 
 #include <QApplication>             // for QApplication
 #include <QCheckBox>                // for QCheckBox
 #include <QComboBox>                // for QComboBox
 #include <QDir>                     // for QDir
+#include <QDockWidget>              // for QDockWidget
+#include <QGuiApplication>          // for QGuiApplication::primaryScreen
+#include <QScreen>                  // for QScreen
 #include <QDragEnterEvent>          // for QDragEnterEvent
 #include <QDropEvent>               // for QDropEvent
 #include <QFile>                    // for QFile
+#include <QFileInfo>                // for QFileInfo
+#include <QMap>                     // for QMap
 #include <QMimeData>                // for QMimeData
+#include <QSemaphore>               // for QSemaphore
 #include <QSettings>                // for QSettings
+#include <QStatusBar>               // for QStatusBar
+#include <QThreadPool>              // for QThreadPool
 #include <QSpinBox>                 // for QSpinBox
 #include <QTimer>                   // for QTimer
 #include <QUrl>                     // for QUrl
@@ -37,6 +46,7 @@
 #include <QListWidget>              // for QListWidget
 #include <QMouseEvent>              // for QMouseEvent
 #include <QProcess>                 // for QProcess
+#include <QProgressDialog>          // for QProgressDialog
 #include <QPushButton>              // for QPushButton
 #include <QTableWidget>             // for QTableWidget
 #include <QTemporaryDir>            // for QTemporaryDir
@@ -160,6 +170,49 @@ vtkSmartPointer<vtkPolyData> read_vtp(const QString& path)
   return reader->GetOutput();
 }
 
+QByteArray file_bytes(const QString& path)
+{
+  QFile f(path);
+  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+//! Every file of `folder` (hidden ones too: temporaries start with a dot) and its bytes.
+QMap<QString, QByteArray> folder_bytes(const QString& folder)
+{
+  QMap<QString, QByteArray> files;
+  for (const QString& name : QDir(folder).entryList(QDir::Files | QDir::Hidden, QDir::Name))
+    files[name] = file_bytes(folder + "/" + name);
+  return files;
+}
+
+//! Keeps every worker of Qt's global thread pool busy while it lives: work
+//! QtConcurrent starts meanwhile waits in the queue.
+class PoolHold
+{
+public:
+  PoolHold()
+  {
+    QThreadPool* pool = QThreadPool::globalInstance();
+    workers_ = pool->maxThreadCount();
+    for (int k = 0; k < workers_; ++k)
+      pool->start([this] {
+        started_.release();
+        release_.acquire();
+        ended_.release();
+      });
+    started_.acquire(workers_);
+  }
+  ~PoolHold()
+  {
+    release_.release(workers_);
+    ended_.acquire(workers_); // the workers are done with the semaphores
+  }
+
+private:
+  int workers_ = 0;
+  QSemaphore started_, release_, ended_;
+};
+
 //! Counts the turns of the event loop while it runs.
 struct LoopTicks
 {
@@ -182,6 +235,38 @@ int run_meshpaint(const QStringList& args)
   if (p.exitCode() != 0)
     qWarning("%s", p.readAllStandardError().constData());
   return p.exitCode();
+}
+
+//! `meshpaint paint MESH ARGS --strokes SESSION/strokes.json -o OUT`; what
+//! differs between OUT/surface.vtp and SESSION/surface.vtp ("" when every
+//! channel array is equal bit for bit).
+QString replay_differs(const QString& session, const QStringList& mesh_and_args, const QString& out)
+{
+  if (run_meshpaint(QStringList{"paint"} + mesh_and_args +
+                    QStringList{"--strokes", session + "/strokes.json", "-o", out, "--quiet"}) != 0)
+    return "the replay failed";
+  const auto live = read_vtp(session + "/surface.vtp"), again = read_vtp(out + "/surface.vtp");
+  if (live->GetNumberOfPoints() != again->GetNumberOfPoints())
+    return "points differ";
+  for (const char* name : {"diffuse", "label", "specular", "roughness", "displacement", "mask"}) {
+    vtkDataArray *a = live->GetPointData()->GetArray(name), *b = again->GetPointData()->GetArray(name);
+    if (!a || !b || a->GetDataSize() != b->GetDataSize() ||
+        std::memcmp(a->GetVoidPointer(0), b->GetVoidPointer(0), std::size_t(a->GetDataSize()) * 4) != 0)
+      return name;
+  }
+  return QString();
+}
+
+//! Class 3 "defect" added, and a label stroke of it across the middle.
+bool label_a_defect(StudioWindow& w, vtkPaintView* view)
+{
+  if (!view->AddLabelClass(3, "defect", 1, 0.5, 0))
+    return false;
+  QTest::keyClick(w.render_widget(), Qt::Key_T, Qt::ShiftModifier); // the label tool
+  QTest::keyClick(w.render_widget(), Qt::Key_3);
+  const std::size_t before = view->GetScene().history().size();
+  drag(w.render_widget(), {0.35, 0.45}, {0.65, 0.55});
+  return view->GetScene().history().size() == before + 1;
 }
 
 } // namespace
@@ -357,6 +442,65 @@ private Q_SLOTS:
       QCOMPARE(la->GetTuple1(i), lb->GetTuple1(i));
   }
 
+  void the_fill_key_fills_under_the_mouse_and_connects_diagonally_on_request()
+  {
+    QTemporaryDir dir;
+    const QString session = dir.filePath("session");
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, session);
+    QWidget* r = w->render_widget();
+    const auto labels = [&] {
+      std::vector<float> out;
+      for (const meshpaint::Float4& m : view->GetScene().surface(0).read_channels().material)
+        out.push_back(m[2]);
+      return out;
+    };
+    // A band of class 2 across the front, then g over the surface with class 3 chosen.
+    QTest::keyClick(r, Qt::Key_T, Qt::ShiftModifier); // the label tool
+    QTest::keyClick(r, Qt::Key_2);
+    drag(r, {0.5, 0.4}, {0.5, 0.6});
+    const std::vector<float> banded = labels();
+    QTest::keyClick(r, Qt::Key_3);
+    QTest::qWait(20);
+    mouse(r, QEvent::MouseMove, QPoint(r->width() / 8, r->height() / 2), Qt::NoButton, Qt::NoButton);
+    mouse(r, QEvent::MouseMove, QPoint(r->width() * 4 / 10, r->height() / 2), Qt::NoButton, Qt::NoButton);
+    QVERIFY(!w->label_panel()->fill_diagonals()->isChecked());
+    QTest::keyClick(r, Qt::Key_G);
+    QVERIFY2(view->GetScene().history().size() == 2,
+             qPrintable(QString("%1 strokes: %2").arg(view->GetScene().history().size()).arg(view->GetMessage())));
+    QCOMPARE(view->GetScene().history().back().tool, meshpaint::Tool::Fill);
+    QVERIFY(!view->GetScene().history().back().paint().fill_diagonals);
+    std::vector<float> filled = labels();
+    std::size_t threes = 0;
+    for (std::size_t t = 0; t < filled.size(); ++t) {
+      QVERIFY(filled[t] == (banded[t] == 2.f ? 2.f : 3.f) || (banded[t] == 0.f && filled[t] == 0.f));
+      threes += filled[t] == 3.f;
+    }
+    QVERIFY(threes > filled.size() / 4);
+    // G: fills connect across corners (the panel's box follows), g again with class 4.
+    QTest::keyClick(r, Qt::Key_G, Qt::ShiftModifier);
+    QVERIFY(view->GetBrush()->fill_diagonals());
+    QVERIFY(w->label_panel()->fill_diagonals()->isChecked());
+    QTest::keyClick(r, Qt::Key_4);
+    QTest::keyClick(r, Qt::Key_G);
+    QCOMPARE(int(view->GetScene().history().size()), 3);
+    QVERIFY(view->GetScene().history().back().paint().fill_diagonals);
+    filled = labels();
+    for (std::size_t t = 0; t < filled.size(); ++t)
+      if (banded[t] != 2.f)
+        QVERIFY(filled[t] == 4.f || filled[t] == 0.f);
+    // The box unticked: the brush's fills go along sides again.
+    QTest::mouseClick(w->label_panel()->fill_diagonals(), Qt::LeftButton);
+    QVERIFY(!view->GetBrush()->fill_diagonals());
+    // The recording replays the fills to the same labels.
+    QTest::keyClick(r, Qt::Key_S, Qt::ControlModifier);
+    QFile recording(session + "/strokes.json");
+    QVERIFY(recording.open(QIODevice::ReadOnly));
+    QVERIFY(recording.readAll().contains("\"connect\": \"diagonals\""));
+    const QString differs = replay_differs(session, {kCube}, dir.filePath("replay"));
+    QVERIFY2(differs.isEmpty(), qPrintable(differs));
+  }
+
   void the_history_list_undoes_and_redoes()
   {
     QTemporaryDir dir;
@@ -393,17 +537,8 @@ private Q_SLOTS:
     QVERIFY(QFile::exists(session + "/strokes.json"));
     const QString project = dir.filePath("cube.meshpaint");
     QVERIFY(w->save_project(project));
-    QProcess paint;
-    paint.start(MESHPAINT_BIN, {"paint", kCube, "--strokes", session + "/strokes.json", "-o", dir.filePath("replay"),
-                                "--quiet"});
-    QVERIFY(paint.waitForFinished(600000));
-    QCOMPARE(paint.exitCode(), 0);
-    const auto live = read_vtp(session + "/surface.vtp"), again = read_vtp(dir.filePath("replay/surface.vtp"));
-    for (const char* name : {"diffuse", "label", "specular", "roughness", "displacement", "mask"}) {
-      vtkDataArray *a = live->GetPointData()->GetArray(name), *b = again->GetPointData()->GetArray(name);
-      QVERIFY2(a && b && a->GetDataSize() == b->GetDataSize(), name);
-      QVERIFY2(std::memcmp(a->GetVoidPointer(0), b->GetVoidPointer(0), std::size_t(a->GetDataSize()) * 4) == 0, name);
-    }
+    const QString differs = replay_differs(session, {kCube}, dir.filePath("replay"));
+    QVERIFY2(differs.isEmpty(), qPrintable(differs));
     // Reopened, the project has the painted channels.
     const std::vector<meshpaint::Float4> before = view->GetScene().surface(0).read_channels().diffuse;
     QVERIFY(w->open_path(project));
@@ -492,6 +627,71 @@ private Q_SLOTS:
     QCOMPARE(glb.read(4), QByteArray("glTF"));
   }
 
+  void a_cancelled_export_leaves_the_previous_files_whole()
+  {
+    QTemporaryDir dir;
+    const QString session = dir.filePath("session");
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, session);
+    drag(w->render_widget(), {0.4, 0.45}, {0.6, 0.55});
+    QTest::keyClick(w->render_widget(), Qt::Key_E, Qt::ControlModifier);
+    QTRY_VERIFY_WITH_TIMEOUT(!w->busy(), 120000);
+    const QString glb = dir.filePath("cube.glb");
+    QVERIFY(w->export_gltf(glb) != nullptr);
+    QTRY_VERIFY_WITH_TIMEOUT(!w->busy(), 120000);
+    const QMap<QString, QByteArray> before = folder_bytes(session);
+    const QByteArray glb_before = file_bytes(glb);
+    QVERIFY(before.contains("model.obj") && before.contains("diffuse.png") && !glb_before.isEmpty());
+    // A second stroke: a finished export now writes other maps.
+    drag(w->render_widget(), {0.3, 0.6}, {0.6, 0.3});
+    // The work waits for a worker while the pool's are held, so the Cancel
+    // button is pressed before it ends, however quick it is.
+    std::unique_ptr<PoolHold> hold;
+    const auto cancel_now = [&] {
+      QVERIFY(w->busy());
+      QProgressDialog* dialog = w->task()->dialog();
+      dialog->show(); // it shows by itself after a moment; the click comes before that
+      QPushButton* cancel = dialog->findChild<QPushButton*>();
+      QVERIFY2(cancel, qPrintable(dialog->labelText()));
+      QTest::mouseClick(cancel, Qt::LeftButton);
+      hold.reset();
+      QTRY_VERIFY_WITH_TIMEOUT(!w->busy(), 120000);
+      QVERIFY(!view->GetLocked());
+      QVERIFY2(w->statusBar()->currentMessage() == "cancelled", qPrintable(w->statusBar()->currentMessage()));
+      hold = std::make_unique<PoolHold>();
+    };
+    hold = std::make_unique<PoolHold>();
+    // Ctrl+E, cancelled: every file as before, no temporary beside them.
+    QTest::keyClick(w->render_widget(), Qt::Key_E, Qt::ControlModifier);
+    cancel_now();
+    QCOMPARE(folder_bytes(session), before);
+    // The glTF file, cancelled: as before.
+    QVERIFY(w->export_gltf(glb) != nullptr);
+    cancel_now();
+    QCOMPARE(file_bytes(glb), glb_before);
+    // Into folders and files that were not there: none appears.
+    view->SetSaveDirectory(dir.filePath("new/session").toStdString().c_str());
+    QTest::keyClick(w->render_widget(), Qt::Key_E, Qt::ControlModifier);
+    cancel_now();
+    QVERIFY(!QFileInfo::exists(dir.filePath("new")));
+    QVERIFY(w->export_gltf(dir.filePath("new.gltf")) != nullptr);
+    cancel_now();
+    const QString scan = dir.filePath("scan.ply");
+    QCOMPARE(run_meshpaint({"subdivide", kCube, "--level", "3", "--quiet", "-o", scan}), 0);
+    QVERIFY(w->export_labelled_scan(scan, dir.filePath("labelled.vtp")) != nullptr);
+    cancel_now();
+    hold.reset();
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden | QDir::Dirs | QDir::NoDotAndDotDot, QDir::Name),
+             QStringList({"cube.glb", "scan.ply", "session"}));
+    // Not cancelled, the same export writes the second stroke's maps.
+    view->SetSaveDirectory(session.toStdString().c_str());
+    QTest::keyClick(w->render_widget(), Qt::Key_E, Qt::ControlModifier);
+    QTRY_VERIFY_WITH_TIMEOUT(!w->busy(), 120000);
+    const QMap<QString, QByteArray> after = folder_bytes(session);
+    QCOMPARE(after.keys(), before.keys());
+    QVERIFY(after["diffuse.png"] != before["diffuse.png"]);
+  }
+
   void the_level_panel_changes_the_level_in_the_background()
   {
     QTemporaryDir dir;
@@ -531,6 +731,99 @@ private Q_SLOTS:
     // Still paints after the change.
     drag(w->render_widget(), {0.35, 0.6}, {0.6, 0.35});
     QCOMPARE(int(view->GetScene().history().size()), 2);
+  }
+
+  void a_projects_level_changes_and_saves_at_the_new_level()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("first"));
+    // A project of the cube at level 4 with a class and a label stroke.
+    QVERIFY(label_a_defect(*w, view));
+    const QString project = dir.filePath("cube.meshpaint");
+    QVERIFY(w->save_project(project));
+    // Opened, painted on, then changed to level 3 with the Level panel.
+    QVERIFY(w->open_path(project));
+    const QString session = dir.filePath("session");
+    view->SetSaveDirectory(session.toStdString().c_str());
+    QCOMPARE(int(view->GetScene().history().size()), 0);
+    for (int k = 0; k < 3; ++k) // the new surface's brush: wider than its texel spacing, as open_studio's
+      QTest::keyClick(w->render_widget(), Qt::Key_BracketRight);
+    drag(w->render_widget(), {0.42, 0.52}, {0.58, 0.45});
+    QVERIFY2(view->GetScene().history().size() == 1, view->GetMessage());
+    const vtkIdType faces = view->GetFaceCount();
+    meshpaint::studio::LevelPanel* panel = w->level_panel();
+    QVERIFY(panel->apply()->isEnabled() || panel->level()->value() == 4);
+    panel->level()->setValue(3);
+    QVERIFY(panel->apply()->isEnabled());
+    QTest::mouseClick(panel->apply(), Qt::LeftButton);
+    QVERIFY(w->busy());
+    QTRY_VERIFY_WITH_TIMEOUT(!w->busy(), 120000);
+    QCOMPARE(view->GetLevel(), 3);
+    QCOMPARE(view->GetFaceCount(), faces / 4);
+    // Still the project, its class kept; the project's stroke and this session's replayed.
+    QVERIFY(view->GetProject() != nullptr);
+    QCOMPARE(view->GetProject()->level, 3);
+    QCOMPARE(int(view->GetLabelClasses().size()), 1);
+    QCOMPARE(view->GetLabelClasses()[0].name, std::string("defect"));
+    QCOMPARE(int(view->GetScene().history().size()), 2);
+    QCOMPARE(view->GetScene().history()[0].tool, meshpaint::Tool::Label);
+    const std::vector<meshpaint::Float4> material = view->GetScene().surface(0).read_channels().material;
+    QVERIFY(std::count_if(material.begin(), material.end(), [](const meshpaint::Float4& m) { return m[2] == 3.f; }) > 0);
+    QVERIFY(red_texels(view) > 0);
+    // Saved (Ctrl+S, and over the project itself), then reopened: level 3, the class and the labels.
+    QTest::keyClick(w->render_widget(), Qt::Key_S, Qt::ControlModifier);
+    QVERIFY(QFile::exists(session + "/surface.meshpaint"));
+    QVERIFY2(w->save_project(project), view->GetLastError());
+    const std::vector<meshpaint::Float4> diffuse = view->GetScene().surface(0).read_channels().diffuse;
+    QVERIFY(w->open_path(project));
+    QCOMPARE(view->GetLevel(), 3);
+    QCOMPARE(view->GetProject()->level, 3);
+    QCOMPARE(int(view->GetLabelClasses().size()), 1);
+    QCOMPARE(view->GetLabelClasses()[0].id, 3);
+    const meshpaint::PaintChannels reopened = view->GetScene().surface(0).read_channels();
+    QVERIFY(reopened.material.size() == material.size() &&
+            std::memcmp(reopened.material.data(), material.data(), material.size() * sizeof(meshpaint::Float4)) == 0);
+    QVERIFY(std::memcmp(reopened.diffuse.data(), diffuse.data(), diffuse.size() * sizeof(meshpaint::Float4)) == 0);
+    // The recording (both strokes, at level 3) replays on the mesh to the same bits.
+    const QString differs = replay_differs(session, {kCube, "--level", "3"}, dir.filePath("replay"));
+    QVERIFY2(differs.isEmpty(), qPrintable(differs));
+  }
+
+  void a_view_wider_than_the_screen_keeps_the_window_on_it_with_its_panels()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    view->SetLevel(4);
+    view->SetSize(3000, 2000); // --size 3000x2000
+    view->SetSaveDirectory(dir.filePath("session").toStdString().c_str());
+    QVERIFY(view->LoadMesh(kCube.toStdString().c_str()));
+    const QRect screen = QGuiApplication::primaryScreen()->availableGeometry();
+    QVERIFY(3000 + 640 > screen.width() && 2000 + 90 > screen.height()); // else this shows nothing
+    StudioWindow w(view);
+    QVERIFY(w.ready());
+    w.show();
+    QApplication::setActiveWindow(&w);
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.grab().save(dir.filePath("wide.png"));
+    if (const char* shots = std::getenv("MESHPAINT_STUDIO_SHOTS"))
+      w.grab().save(QString(shots) + "/studio_small_screen.png");
+    QVERIFY2(w.frameGeometry().width() <= screen.width() && w.frameGeometry().height() <= screen.height(),
+             qPrintable(QString("%1x%2 on %3x%4").arg(w.width()).arg(w.height()).arg(screen.width()).arg(screen.height())));
+    // Every panel shown and inside the window, the view between them.
+    const QList<QDockWidget*> docks = w.findChildren<QDockWidget*>();
+    QCOMPARE(docks.size(), 4);
+    for (QDockWidget* d : docks) {
+      QVERIFY2(d->isVisible() && d->width() > 100, qPrintable(d->windowTitle()));
+      QVERIFY2(w.rect().contains(d->geometry()), qPrintable(d->windowTitle()));
+    }
+    QWidget* r = w.render_widget();
+    QVERIFY(r->width() > 100 && r->height() > 100);
+    // The view paints where it is: the left-drag over the cube is a stroke.
+    for (int k = 0; k < 3; ++k)
+      QTest::keyClick(r, Qt::Key_BracketRight);
+    drag(r, {0.45, 0.5}, {0.55, 0.48});
+    QCOMPARE(int(view->GetScene().history().size()), 1);
   }
 
   void patch_borders_show_over_the_surface()
@@ -616,10 +909,7 @@ private Q_SLOTS:
     QTemporaryDir dir;
     vtkNew<vtkPaintView> view;
     auto w = open_studio(view, kCube, dir.filePath("session"));
-    QVERIFY(view->AddLabelClass(3, "defect", 1, 0.5, 0));
-    QTest::keyClick(w->render_widget(), Qt::Key_T, Qt::ShiftModifier); // the label tool
-    QTest::keyClick(w->render_widget(), Qt::Key_3);
-    drag(w->render_widget(), {0.35, 0.45}, {0.65, 0.55});
+    QVERIFY(label_a_defect(*w, view));
     // A scan with many vertices: the cube subdivided.
     const QString scan = dir.filePath("scan.ply");
     QCOMPARE(run_meshpaint({"subdivide", kCube, "--level", "4", "--quiet", "-o", scan}), 0);

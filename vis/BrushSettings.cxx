@@ -127,6 +127,7 @@ Stroke BrushSettings::fill_stroke(const Vec3& point) const
   s.paint().alpha[CHANNEL_LABEL] = 1.f;
   s.paint().locked_labels = locked_labels_;
   s.paint().only_over_label = only_over_label_;
+  s.paint().fill_diagonals = fill_diagonals_;
   check_stroke(s);
   return s;
 }
@@ -262,6 +263,7 @@ std::string BrushSettings::describe() const
       out << (k == 0 ? "   locked " : ",") << locked_labels_[k];
     if (only_over_label_ >= 0)
       out << "   only over " << only_over_label_;
+    out << "   fill " << (fill_diagonals_ ? "diagonals" : "sides");
   }
   else if (tool == "sculpt" || tool == "inflate")
     out << (inwards_ ? "   inwards" : "   outwards");

@@ -71,6 +71,10 @@ public:
   void set_locked_labels(const std::vector<int>& ids);
   int only_over_label() const { return only_over_label_; }
   void set_only_over_label(int id);
+  //! Fills connect texels across the texel grid's corners too (the stroke
+  //! key connect: diagonals), not only along its sides (the default).
+  bool fill_diagonals() const { return fill_diagonals_; }
+  void set_fill_diagonals(bool on) { fill_diagonals_ = on; }
   double strength() const { return strength_; }
   void set_strength(double strength);
   std::string falloff() const;
@@ -115,6 +119,7 @@ private:
   int label_ = 1;                // the label tool's class id
   std::vector<int> locked_labels_; // label strokes: classes kept
   int only_over_label_ = -1;       // label strokes: the one class painted over, -1 any
+  bool fill_diagonals_ = false;    // fills: 8-connected texels
   double spacing_ = 0.25;
   bool backfaces_ = false;
   double radius_;

@@ -2,7 +2,7 @@
 
 #include "SurfaceConversion.h" // for to_polydata, write_vtp, write_texture_maps
 
-#include "core/atomic_file.h"   // for meshpaint::write_bytes_atomically
+#include "core/atomic_file.h"   // for meshpaint::write_bytes_atomically, AtomicWriteBatch
 #include "core/errors.h"        // for meshpaint::IOError, InputError
 #include "core/format.h"        // for meshpaint::lower_extension
 #include "paint/gltf_export.h"  // for meshpaint::gltf_bytes, metallic_roughness_map
@@ -20,19 +20,33 @@ int default_model_level(int level)
 
 void make_directory(const std::string& dir)
 {
+  namespace fs = std::filesystem;
+  std::vector<std::string> missing; // deepest first
   std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
+  for (fs::path p = fs::absolute(dir, ec); !ec && !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+    missing.push_back(p.string());
+    if (p == p.parent_path())
+      break;
+  }
+  fs::create_directories(dir, ec);
   if (ec)
     throw IOError("cannot create '" + dir + "': " + ec.message());
+  if (AtomicWriteBatch* batch = AtomicWriteBatch::current())
+    for (const std::string& made : missing)
+      batch->made_directory(made);
 }
 
-PaintingExportReport export_model(PaintSurface& surface, int model_level, const std::string& dir)
+PaintingExportReport export_model(PaintSurface& surface, int model_level, const std::string& dir, CancelFlag cancel)
 {
+  stop_if_cancelled(cancel);
+  AtomicWriteBatch batch; // every file of the model, or none
   make_directory(dir);
   ExportModel model;
   TextureMaps maps;
   build_export(surface, model_level, model, maps);
+  stop_if_cancelled(cancel);
   write_texture_maps(maps, dir);
+  stop_if_cancelled(cancel);
   write_obj_model(model, maps, dir);
   GltfImages images;
   for (const bool inside : {false, true}) {
@@ -48,8 +62,11 @@ PaintingExportReport export_model(PaintSurface& surface, int model_level, const 
                                     maps.width, maps.height, 3, path);
     write_bytes_atomically(path, {png});
   }
+  stop_if_cancelled(cancel);
   const std::string gltf = gltf_bytes(model, maps, images, false);
   write_bytes_atomically(dir + "/model.gltf", {gltf});
+  stop_if_cancelled(cancel);
+  batch.commit();
   PaintingExportReport report;
   report.model_quads = model.mesh.quads.size();
   report.map_width = maps.width;
@@ -60,24 +77,28 @@ PaintingExportReport export_model(PaintSurface& surface, int model_level, const 
 PaintingExportReport export_painting(PaintSurface& surface, int model_level, const std::string& dir,
                                      const std::vector<LabelClass>& labels)
 {
+  AtomicWriteBatch batch; // the surface and the model together
   make_directory(dir);
   const std::string surface_path = dir + "/surface.vtp";
   vtkSmartPointer<vtkPolyData> poly = to_polydata(surface.painted_surface());
   add_label_classes(poly, labels);
   write_vtp(poly, surface_path);
   PaintingExportReport report = export_model(surface, model_level, dir);
+  batch.commit();
   report.surface_path = surface_path;
   return report;
 }
 
-void export_gltf(PaintSurface& surface, int model_level, const std::string& path)
+void export_gltf(PaintSurface& surface, int model_level, const std::string& path, CancelFlag cancel)
 {
   const std::string ext = lower_extension(path);
   if (ext != ".glb" && ext != ".gltf")
     throw InputError("--gltf must name a .glb or .gltf file, not '" + path + "'");
+  stop_if_cancelled(cancel);
   ExportModel model;
   TextureMaps maps;
   build_export(surface, model_level, model, maps);
+  stop_if_cancelled(cancel);
   GltfImages images;
   images.outside.base_colour.png = map_png(maps.diffuse, maps.width, maps.height, 3, path);
   images.outside.specular.png = map_png(maps.specular, maps.width, maps.height, 3, path);
@@ -89,7 +110,9 @@ void export_gltf(PaintSurface& surface, int model_level, const std::string& path
     images.inside.metallic_roughness.png =
       map_png(metallic_roughness_map(maps.inside_roughness), maps.width, maps.height, 3, path);
   }
+  stop_if_cancelled(cancel);
   const std::string bytes = gltf_bytes(model, maps, images, ext == ".glb");
+  stop_if_cancelled(cancel); // the last boundary: the write below renames its file into place
   write_bytes_atomically(path, {bytes});
 }
 

@@ -5,6 +5,7 @@
 
 #include "meshpaintVisModule.h" // for MESHPAINTVIS_EXPORT
 
+#include "core/cancellation.h"   // for meshpaint::CancelFlag
 #include "paint/paint_surface.h" // for meshpaint::PaintSurface
 #include "project/labels.h"      // for meshpaint::LabelClass
 
@@ -29,10 +30,14 @@ struct PaintingExportReport
 //! model.mtl at `model_level` (1 .. the painting level), the PNG texture
 //! maps diffuse, specular, roughness, displacement and metallic_roughness,
 //! and DIR/model.gltf, the same model as glTF 2.0 using those maps (the
-//! window's Ctrl+E).
+//! window's Ctrl+E). The files land together (AtomicWriteBatch): on an
+//! error or when `cancel` is set (looked at between the model, the maps and
+//! the files) none is written, the previous ones stay whole and a DIR made
+//! for them goes again.
 //! \throw IOError when DIR cannot be created or a file not written;
-//! StorageError when the disk is full.
-MESHPAINTVIS_EXPORT PaintingExportReport export_model(PaintSurface& surface, int model_level, const std::string& dir);
+//! StorageError when the disk is full; Cancelled.
+MESHPAINTVIS_EXPORT PaintingExportReport export_model(PaintSurface& surface, int model_level, const std::string& dir,
+                                                      CancelFlag cancel = nullptr);
 
 //! export_model(), and before it DIR/surface.vtp: the painted limit surface
 //! with its channel arrays and the label classes as field data
@@ -45,11 +50,15 @@ MESHPAINTVIS_EXPORT PaintingExportReport export_painting(PaintSurface& surface, 
 
 //! Writes the model at `model_level` as one self-contained glTF 2.0 file,
 //! textures inside: binary .glb or text .gltf by the extension of `path`
-//! (`meshpaint paint --gltf FILE`). Atomic.
-//! \throw InputError for another extension; IOError, StorageError as above.
-MESHPAINTVIS_EXPORT void export_gltf(PaintSurface& surface, int model_level, const std::string& path);
+//! (`meshpaint paint --gltf FILE`). Atomic; `cancel` is looked at between
+//! the model, the textures and the write (a cancelled export writes nothing).
+//! \throw InputError for another extension; IOError, StorageError as above;
+//! Cancelled.
+MESHPAINTVIS_EXPORT void export_gltf(PaintSurface& surface, int model_level, const std::string& path,
+                                     CancelFlag cancel = nullptr);
 
-//! Creates `dir` and its parents unless it exists.
+//! Creates `dir` and its parents unless it exists (those it made go again
+//! when an AtomicWriteBatch living then ends uncommitted).
 //! \throw IOError when it cannot.
 MESHPAINTVIS_EXPORT void make_directory(const std::string& dir);
 

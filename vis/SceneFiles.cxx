@@ -3,7 +3,7 @@
 #include "PaintingExport.h"    // for meshpaint::export_model, make_directory
 #include "SurfaceConversion.h" // for meshpaint::write_vtp, add_label_classes
 
-#include "core/atomic_file.h"        // for meshpaint::write_bytes_atomically
+#include "core/atomic_file.h"        // for meshpaint::write_bytes_atomically, AtomicWriteBatch
 #include "paint/paint_scene.h"       // for meshpaint::PaintScene
 #include "project/project_surface.h" // for meshpaint::save_painted_project
 
@@ -35,10 +35,13 @@ std::string save_session(PaintScene& scene, const std::string& recording,
   return "saved " + dir + "/strokes.json, " + surfaces + (project ? " and surface.meshpaint" : "");
 }
 
-std::string export_scene(PaintScene& scene, int model_level, const std::string& dir)
+std::string export_scene(PaintScene& scene, int model_level, const std::string& dir, CancelFlag cancel)
 {
+  AtomicWriteBatch batch; // every object's files, or none
   for (std::size_t o = 0; o < scene.size(); ++o)
-    export_model(scene.surface(o), model_level, scene.folder(dir, o));
+    export_model(scene.surface(o), model_level, scene.folder(dir, o), cancel);
+  stop_if_cancelled(cancel);
+  batch.commit();
   return "exported " + scene.folder(dir, 0) + "/model.obj" + (scene.size() > 1 ? " and the other objects'" : "");
 }
 

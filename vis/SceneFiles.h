@@ -5,6 +5,8 @@
 
 #include "meshpaintVisModule.h" // for MESHPAINTVIS_EXPORT
 
+#include "core/cancellation.h" // for meshpaint::CancelFlag
+
 #include <functional> // for std::function
 #include <string>     // for std::string
 
@@ -30,9 +32,12 @@ MESHPAINTVIS_EXPORT std::string save_session(PaintScene& scene, const std::strin
                          ProjectOrigin& origin, const std::string& dir);
 
 //! Writes each object's model at `model_level` (export_model()) into
-//! PaintScene::folder(dir, k). Returns the status message.
-//! \throw IOError when a folder or file cannot be written.
-MESHPAINTVIS_EXPORT std::string export_scene(PaintScene& scene, int model_level, const std::string& dir);
+//! PaintScene::folder(dir, k), all files landing together; with `cancel`
+//! set (looked at between objects and files) none lands. Returns the status
+//! message.
+//! \throw IOError when a folder or file cannot be written; Cancelled.
+MESHPAINTVIS_EXPORT std::string export_scene(PaintScene& scene, int model_level, const std::string& dir,
+                                             CancelFlag cancel = nullptr);
 
 } // namespace meshpaint
 

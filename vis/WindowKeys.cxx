@@ -29,6 +29,10 @@ WindowKey window_key(const std::string& key, bool control)
     return WindowKey::reset_camera;
   if (key == "e")
     return WindowKey::eyedropper;
+  if (key == "g")
+    return WindowKey::fill;
+  if (key == "G")
+    return WindowKey::fill_connect;
   if (key == "q" || key == "Escape")
     return WindowKey::quit;
   return WindowKey::brush;
@@ -44,6 +48,7 @@ std::string window_help()
          "Ctrl+E       export model.obj with texture maps\n"
          "r            reset the camera\n"
          "e            eyedropper: the class (label tool) or colour under the mouse into the brush\n"
+         "g / G        fill the region under the mouse with the label class / fills connect diagonally (on / off)\n"
          "b            subsurface light at rest (on / off)\n"
          "v / V        show the next / previous channel (diffuse label specular roughness displacement mask)\n"
          "h, F1        this help;  q, Escape: quit";

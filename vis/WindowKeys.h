@@ -22,6 +22,8 @@ enum class WindowKey
   shown_back,   //!< V: the previous one
   reset_camera, //!< r
   eyedropper,   //!< e: the class or colour under the mouse into the brush
+  fill,         //!< g: the region under the mouse filled with the brush's class
+  fill_connect, //!< G: fills connect along sides only / across corners too
   quit          //!< q, Escape
 };
 

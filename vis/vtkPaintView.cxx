@@ -341,6 +341,21 @@ int vtkPaintView::HandleKey(const char* keysym, bool control, bool shift)
         this->Message = "nothing to pick: no surface under the mouse";
       break;
     }
+    case meshpaint::WindowKey::fill:
+    case meshpaint::WindowKey::fill_connect: {
+      if (shift || meshpaint::window_key(key, control) == meshpaint::WindowKey::fill_connect) { // G: g with Shift
+        in.brush->set_fill_diagonals(!in.brush->fill_diagonals());
+        this->Message = in.brush->fill_diagonals() ? "fills connect across corners too (diagonals)"
+                                                   : "fills connect along sides only";
+        break;
+      }
+      const int* at = in.interactor->GetEventPosition();
+      if (this->RefusedWhileLocked())
+        return 1;
+      if (!this->FillAt(at[0], at[1]) && this->Message != this->LastError)
+        this->Message = "nothing to fill: no surface under the mouse";
+      break;
+    }
     case meshpaint::WindowKey::quit:
       this->InvokeEvent(vtkCommand::ExitEvent); // a host window (the studio) closes itself on it
       if (in.initialized)
@@ -502,3 +517,5 @@ meshpaint::BrushSettings* vtkPaintView::GetBrush() { return this->Impl->brush.ge
 meshpaint::PaintScene& vtkPaintView::GetScene() { return this->Impl->scene; }
 
 const meshpaint::Project* vtkPaintView::GetProject() const { return this->Impl->project.get(); }
+
+const meshpaint::ProjectOrigin& vtkPaintView::GetProjectOrigin() const { return this->Impl->origin; }

@@ -52,6 +52,7 @@ struct LabelClass;
 class PaintScene;
 class PaintSurface;
 struct Project;
+struct ProjectOrigin;
 struct StrokeScript;
 }
 
@@ -256,7 +257,8 @@ public:
 
   /// Acts on a key (VTK key symbol, e.g. "z", "bracketleft", "F1"): brush
   /// settings, undo/redo (Ctrl+Z, Ctrl+Y), save (Ctrl+S), export (Ctrl+E),
-  /// help (h, F1), eyedropper under the mouse (e), camera reset (r), quit (q, Escape: ExitEvent, then the
+  /// help (h, F1), eyedropper under the mouse (e), fill under the mouse (g;
+  /// G: fills connect diagonally or not), camera reset (r), quit (q, Escape: ExitEvent, then the
   /// interactor's TerminateApp()). 1 when it was one.
   int HandleKey(const char* keysym, bool control, bool shift);
 
@@ -313,6 +315,8 @@ public:
   meshpaint::PaintScene& GetScene();
   /// The project the first object came from, null when from a mesh.
   const meshpaint::Project* GetProject() const;
+  /// The project file last loaded or saved here (what a save over it checks).
+  const meshpaint::ProjectOrigin& GetProjectOrigin() const;
 #endif
   /// Brings the status line up to date, and tells observers (UpdateDataEvent)
   /// that the view's state changed: strokes, undo, brush, messages.

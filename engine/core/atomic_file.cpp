@@ -10,6 +10,7 @@
 #include <cstring>    // for std::strerror, std::strncpy
 #include <fcntl.h>    // for open, O_WRONLY
 #include <filesystem> // for std::filesystem
+#include <memory>     // for std::make_shared
 #include <signal.h>   // for kill
 #include <sys/statvfs.h> // for statvfs
 #include <unistd.h>   // for getpid, write, fsync, close, unlink
@@ -31,7 +32,7 @@ bool written_extension(const std::string& ext)
 
 //! Temporaries being written, for the signal handler: fixed slots, since a
 //! handler may not allocate or lock.
-constexpr int kSlots = 8;
+constexpr int kSlots = 32; // a batched export holds about 15 at once
 struct Slot
 {
   std::atomic<bool> used{false};
@@ -140,7 +141,73 @@ void rename_over(const std::string& tmp, const std::string& path)
   sync_folder(path);
 }
 
+thread_local AtomicWriteBatch* g_batch = nullptr;
+
 } // namespace
+
+AtomicWriteBatch::AtomicWriteBatch() : outer_(g_batch)
+{
+  if (!outer_)
+    g_batch = this;
+}
+
+AtomicWriteBatch::~AtomicWriteBatch()
+{
+  if (outer_)
+    return;
+  g_batch = nullptr;
+  if (committed_)
+    return;
+  for (const Staged& s : staged_)
+    ::unlink(s.tmp.c_str());
+  for (const std::string& dir : made_) {
+    std::error_code ec;
+    fs::remove(dir, ec); // only when empty
+  }
+}
+
+void AtomicWriteBatch::made_directory(const std::string& dir)
+{
+  (outer_ ? *g_batch : *this).made_.push_back(dir);
+}
+
+AtomicWriteBatch* AtomicWriteBatch::current() { return g_batch; }
+
+void AtomicWriteBatch::stage(const std::string& tmp, const std::string& path, std::shared_ptr<void> slot)
+{
+  AtomicWriteBatch& outermost = outer_ ? *g_batch : *this;
+  for (const Staged& s : outermost.staged_)
+    if (s.tmp == tmp)
+      return; // the same file written again: its temporary holds the last bytes
+  outermost.staged_.push_back({tmp, path, std::move(slot)});
+}
+
+std::vector<std::string> AtomicWriteBatch::temporaries() const
+{
+  std::vector<std::string> out;
+  for (const Staged& s : (outer_ ? *g_batch : *this).staged_)
+    out.push_back(s.tmp);
+  return out;
+}
+
+void AtomicWriteBatch::commit()
+{
+  if (outer_ || committed_)
+    return;
+  for (std::size_t k = 0; k < staged_.size(); ++k) {
+    std::error_code ec;
+    fs::rename(staged_[k].tmp, staged_[k].path, ec);
+    if (ec) {
+      for (std::size_t j = k; j < staged_.size(); ++j)
+        ::unlink(staged_[j].tmp.c_str());
+      committed_ = true;
+      throw IOError("cannot write '" + staged_[k].path + "': " + ec.message());
+    }
+  }
+  committed_ = true;
+  for (const Staged& s : staged_)
+    sync_folder(s.path);
+}
 
 std::string temporary_path(const std::string& path)
 {
@@ -177,7 +244,7 @@ void write_bytes_atomically(const std::string& path, const std::vector<std::stri
   check_folder(path);
   remove_stale_temporaries(path);
   const std::string tmp = temporary_path(path);
-  InFlight in_flight(tmp);
+  auto in_flight = std::make_shared<InFlight>(tmp);
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0)
     fail(path, errno);
@@ -203,7 +270,10 @@ void write_bytes_atomically(const std::string& path, const std::vector<std::stri
     fail(path, error);
   }
   try {
-    rename_over(tmp, path);
+    if (AtomicWriteBatch* batch = AtomicWriteBatch::current())
+      batch->stage(tmp, path, in_flight);
+    else
+      rename_over(tmp, path);
   } catch (...) {
     ::unlink(tmp.c_str());
     throw;
@@ -215,7 +285,7 @@ void write_atomically(const std::string& path, const std::function<void(const st
   check_folder(path);
   remove_stale_temporaries(path);
   const std::string tmp = temporary_path(path);
-  InFlight in_flight(tmp);
+  auto in_flight = std::make_shared<InFlight>(tmp);
   try {
     try {
       write(tmp);
@@ -231,7 +301,10 @@ void write_atomically(const std::string& path, const std::function<void(const st
       throw IOError("cannot write '" + path + "'");
     if (const int error = sync_file(tmp))
       fail(path, error);
-    rename_over(tmp, path);
+    if (AtomicWriteBatch* batch = AtomicWriteBatch::current())
+      batch->stage(tmp, path, in_flight);
+    else
+      rename_over(tmp, path);
   } catch (...) {
     ::unlink(tmp.c_str());
     throw;

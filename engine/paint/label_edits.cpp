@@ -6,6 +6,7 @@
 #include "paint/paint_device.h"
 
 #include <algorithm> // for std::none_of, std::sort, std::unique
+#include <utility>   // for std::pair
 
 namespace meshpaint {
 namespace {
@@ -25,6 +26,12 @@ std::vector<Float4> read_layer(Runtime& rt, const cl::Buffer& material, std::siz
   rt.queue().enqueueReadBuffer(material, CL_TRUE, 0, texels * sizeof(Float4), m.data());
   return m;
 }
+
+//! A texel's neighbours in its tile: the four along the sides first, then
+//! the four across corners (a diagonal fill). Tiles share their border
+//! texels (one welded vertex), so the diagonals of every tile about a patch
+//! corner reach across that corner too.
+constexpr std::pair<int, int> kNeighbours[8] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}, {-1, -1}, {1, -1}, {-1, 1}, {1, 1}};
 
 } // namespace
 
@@ -93,7 +100,8 @@ bool PaintSurface::fill_labels(const Vec3& point, float radius, const PaintSetti
       region.push_back(t);
       const std::size_t p = t / tile_texels, i = t % tile, j = t % tile_texels / tile;
       const std::size_t base = p * tile_texels;
-      for (const auto& [di, dj] : {std::pair{-1, 0}, std::pair{1, 0}, std::pair{0, -1}, std::pair{0, 1}}) {
+      for (int k = 0; k < (settings.fill_diagonals ? 8 : 4); ++k) {
+        const auto [di, dj] = kNeighbours[k];
         const long ni = long(i) + di, nj = long(j) + dj;
         if (ni < 0 || nj < 0 || ni >= long(tile) || nj >= long(tile))
           continue;

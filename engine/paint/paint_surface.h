@@ -232,7 +232,8 @@ private:
   void paint(const std::vector<int>& patches, const BrushDab& dab);
   //! Fill: the texels connected to the one closest to `point` (within
   //! `radius`) through texels of its class, across patch sides and corners
-  //! (welded vertices), become class `id`. Nothing where that class is
+  //! (welded vertices), become class `id`: neighbours along the texel grid's
+  //! sides, and with settings.fill_diagonals across its corners too. Nothing where that class is
   //! locked or not the only-over class, or no surface is in reach.
   //! \return whether a surface was in reach
   bool fill_labels(const Vec3& point, float radius, const PaintSettings& settings);

@@ -235,7 +235,8 @@ void read_pattern(const StrokeReader& r, Stroke& s)
 }
 
 //! "locked_labels": [ids], "only_over_label": id: which classes a stroke
-//! that paints the label channel may overwrite (a merge: the class merged).
+//! that paints the label channel may overwrite (a merge: the class merged);
+//! "connect": how a fill's region grows.
 void read_label_guards(const StrokeReader& r, Stroke& s, const std::string& tool)
 {
   const auto* p = std::get_if<PaintSettings>(&s.settings);
@@ -259,6 +260,11 @@ void read_label_guards(const StrokeReader& r, Stroke& s, const std::string& tool
     if (!id(r.at("only_over_label")))
       r.fail("only_over_label", "must be an integer class id from 0 to 16777216 (0: unlabelled)");
     s.paint().only_over_label = r.at("only_over_label").get<int>();
+  }
+  if (r.has("connect")) {
+    if (s.tool != Tool::Fill)
+      r.fail("connect", "has no meaning for a " + tool + " stroke: only a fill connects texels");
+    s.paint().fill_diagonals = r.value(stroke_key("connect"), stroke_key("connect").fallback) == 1;
   }
   if (s.tool == Tool::Merge && !r.has("only_over_label"))
     r.fail("only_over_label", "is required for a merge: the class whose texels become \"channels\" {\"label\": id}");
@@ -628,7 +634,7 @@ bool operator==(const PaintSettings& a, const PaintSettings& b)
   return a.op == b.op && a.value == b.value && a.alpha == b.alpha && a.remover == b.remover &&
          a.specular_coefficient == b.specular_coefficient && a.pattern == b.pattern && a.spray_drops == b.spray_drops &&
          a.spray_size == b.spray_size && a.spray_seed == b.spray_seed && a.locked_labels == b.locked_labels &&
-         a.only_over_label == b.only_over_label;
+         a.only_over_label == b.only_over_label && a.fill_diagonals == b.fill_diagonals;
 }
 
 bool operator==(const SmoothSettings& a, const SmoothSettings& b)

@@ -95,6 +95,7 @@ struct PaintSettings
   unsigned spray_seed = 0;
   std::vector<int> locked_labels;            //!< label channel: classes never overwritten
   int only_over_label = -1;                  //!< label channel: the one class overwritten (merge: the class merged); -1 any
+  bool fill_diagonals = false;               //!< fill: texels that touch at a corner connect too (8 neighbours, not 4)
 };
 
 //! Smooth and blur: Laplacian or Taubin passes.

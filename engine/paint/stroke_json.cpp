@@ -79,6 +79,8 @@ void write_settings(const PaintSettings& p, Tool, json& j)
     j["locked_labels"] = p.locked_labels;
   if (p.only_over_label >= 0)
     j["only_over_label"] = p.only_over_label;
+  if (p.fill_diagonals) // the default stays unwritten: recordings from before read the same
+    j["connect"] = name_of(stroke_key("connect"), 1);
 }
 
 void write_settings(const SmoothSettings& m, Tool tool, json& j)

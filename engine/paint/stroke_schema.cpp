@@ -187,7 +187,16 @@ const std::vector<StrokeKey>& stroke_table()
      {},
      kPaintTools | kLabelEdits,
      "",
-     "PaintSettings::only_over_label"}};
+     "PaintSettings::only_over_label"},
+    // How a fill's region grows from texel to texel.
+    {"connect",
+     KeyType::Word,
+     0,
+     0,
+     {{"sides", 0}, {"diagonals", 1}},
+     tool_bit(Tool::Fill),
+     "sides",
+     "PaintSettings::fill_diagonals"}};
   return kStrokeKeys;
 }
 

@@ -4,6 +4,7 @@
 #include "core/errors.h"
 #include "core/file_lock.h"
 
+#include <algorithm>  // for std::max
 #include <filesystem> // for std::filesystem::equivalent
 #include <optional>   // for std::optional
 #include <utility>    // for std::move
@@ -38,6 +39,20 @@ WeldedSurface reference_surface(std::shared_ptr<Runtime> runtime, const Project&
   if (!project.reference.empty())
     atlas.write_positions(project.level, project.reference);
   return level_surface(atlas, project.level, true);
+}
+
+std::vector<Float4> reference_at_level(std::shared_ptr<Runtime> runtime, const Project& project, int level,
+                                       AtlasStorage storage)
+{
+  Atlas atlas(std::move(runtime), project.mesh, std::max(level, project.level), storage);
+  atlas.subdivide(1, project.level);
+  atlas.write_positions(project.level, project.reference);
+  if (level > project.level)
+    atlas.subdivide(project.level, level);
+  else if (level < project.level)
+    atlas.reduce(project.level, level);
+  atlas.finish();
+  return atlas.read_positions(level);
 }
 
 StrokeScript stroke_history(const std::string& history)

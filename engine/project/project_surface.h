@@ -22,6 +22,13 @@ std::unique_ptr<PaintSurface> open_project_surface(std::shared_ptr<Runtime> runt
 //! surface: same vertices, same quads.
 WeldedSurface reference_surface(std::shared_ptr<Runtime> runtime, const Project& project, AtlasStorage storage);
 
+//! The project's reference positions (its fit; not empty) at painting level
+//! `level`: refined from the project's level, or reduced below it, as
+//! `meshpaint subdivide` refines or reduces a project's surface. What a
+//! project changed to another level starts from.
+std::vector<Float4> reference_at_level(std::shared_ptr<Runtime> runtime, const Project& project, int level,
+                                       AtlasStorage storage);
+
 //! A project's stroke history as a script ("" is an empty one).
 //! \throw InputError when it is not a valid stroke script.
 StrokeScript stroke_history(const std::string& history);
