@@ -16,7 +16,7 @@ namespace meshpaint {
 
 std::vector<CullRecord> PaintSurface::cull(const Vec3& centre, float radius)
 {
-  Device& d = *device_;
+  PaintDevice& d = *device_;
   const LevelLayout l = atlas_->layout(level_);
   cl_int radius_bits;
   std::memcpy(&radius_bits, &radius, sizeof radius_bits); // brush_cull's nearest distance so far
@@ -28,7 +28,7 @@ std::vector<CullRecord> PaintSurface::cull(const Vec3& centre, float radius)
 
 void PaintSurface::reach_sides(const Vec3& centre, float radius)
 {
-  Device& d = *device_;
+  PaintDevice& d = *device_;
   Runtime& rt = atlas_->runtime();
   const LevelLayout l = atlas_->layout(level_);
   launch(rt.queue(), d.brush_reach, cl::NDRange(round_up(std::size_t(l.patches), kGroup)), cl::NDRange(kGroup),
@@ -120,7 +120,7 @@ std::vector<int> PaintSurface::place(const Stroke& stroke, const DabSample& samp
 
 std::vector<int> PaintSurface::unfold_dab(int centre_patch, BrushDab& dab)
 {
-  Device& d = *device_;
+  PaintDevice& d = *device_;
   Runtime& rt = atlas_->runtime();
   const Unfolding u =
     unfold(atlas_->topology(), centre_patch, atlas_->layout(level_).n, dab.centre_texel, dab.radius / dab.texel_size);

@@ -19,7 +19,7 @@ namespace meshpaint {
 
 PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int level,
                            AtlasStorage storage, const BaseMaterial& material)
-  : atlas_(std::make_unique<Atlas>(runtime, mesh, level, storage)), level_(level), device_(std::make_unique<Device>()),
+  : atlas_(std::make_unique<Atlas>(runtime, mesh, level, storage)), level_(level), device_(std::make_unique<PaintDevice>()),
     base_material_(material)
 {
   check_paint_fits(*atlas_, level, mesh.name);
@@ -27,7 +27,7 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
   atlas_->compute_limit();
   const LevelLayout l = atlas_->layout(level);
   Runtime& rt = atlas_->runtime();
-  Device& d = *device_;
+  PaintDevice& d = *device_;
   try {
     d.positions.build(rt, storage);
     if (storage == AtlasStorage::Buffer)
@@ -196,7 +196,7 @@ void PaintSurface::prepare_dab(const Stroke& stroke)
     throw InputError("the stroke's brush image has no samples (load '" + stroke.brush.stamp_file + "' first)");
   upload_rasters(stroke, dab);
   if (stroke.tool == Tool::Merge) {
-    merge_labels(p);
+    record_labels(merge_labels(state(), p));
     open_->report.dabs = open_->report.dabs_applied = 1;
     return;
   }
@@ -265,7 +265,10 @@ void PaintSurface::paint_sample(const DabSample& sample, bool may_end)
   bool on_surface = false;
   if (stroke.tool == Tool::Fill) { // no brush: the region around one point
     ++o.report.dabs;
-    on_surface = fill_labels(sample.centre, dab.radius, stroke.paint());
+    CullRecord seed{};
+    on_surface = dab.radius > 0.f && !brush_patches(sample.centre, dab.radius, nullptr, nullptr, 0.f, &seed).empty();
+    if (on_surface)
+      record_labels(fill_labels(state(), seed, stroke.paint()));
     o.report.dabs_applied += on_surface ? 1 : 0;
     dabs.clear();
   }
@@ -297,6 +300,14 @@ void PaintSurface::paint_sample(const DabSample& sample, bool may_end)
     o.report.left_surface = true;
     o.ended = true;
   }
+}
+
+void PaintSurface::record_labels(LabelEdit edit)
+{
+  if (edit.texels.empty())
+    return;
+  remember(edit.patches);
+  write_labels(state(), edit);
 }
 
 StrokeReport PaintSurface::end_stroke(const Stroke& stroke)
@@ -376,7 +387,7 @@ void PaintSurface::set_two_sided(bool on)
   if (on == two_sided_)
     return;
   display_ = nullptr; // made again with (or without) the inside's arrays
-  Device& d = *device_;
+  PaintDevice& d = *device_;
   Runtime& rt = atlas_->runtime();
   const std::size_t bytes = atlas_->layout(level_).texels() * sizeof(Float4);
   if (on) {

@@ -1,8 +1,9 @@
 // A surface to paint on: the atlas at the painting level, its limit surface,
 // the paint channels, and the brush pipeline that changes them. The class's
 // parts live in files named for them: brush_placement.cpp, colour_brushes.cpp,
-// geometry_brushes.cpp, snapshots.cpp, subsurface_light.cpp,
-// painted_surface.cpp (reading the surface back), paint_memory.h (what fits).
+// geometry_brushes.cpp, snapshots.cpp, painted_surface.cpp (reading the
+// surface back), paint_memory.h (what fits). Tool families that are free
+// functions over its PaintState: subsurface_light.h, label_edits.h.
 #pragma once
 
 #include "atlas/atlas.h"
@@ -11,6 +12,8 @@
 #include "core/timer.h"
 #include "mesh/welded_surface.h"
 #include "paint/display_arrays.h"
+#include "paint/label_edits.h"
+#include "paint/paint_state.h"
 #include "paint/stroke.h"
 #include "paint/undo_log.h"
 
@@ -97,6 +100,8 @@ struct BaseMaterial
   float roughness = 0.5f;
 };
 
+struct LayerKernels; // paint_device.h
+
 class PaintSurface
 {
 public:
@@ -110,6 +115,8 @@ public:
 
   Atlas& atlas() { return *atlas_; }
   int level() const { return level_; }
+  //! What the tool families work on (subsurface_light.h, label_edits.h).
+  PaintState state() { return PaintState{*atlas_, level_, *device_, weld_map_}; }
 
   //! Two-sided materials: an inside set of diffuse, specular and roughness
   //! (starting as the base material), painted where the brush sees the
@@ -161,11 +168,6 @@ public:
   void geometry_changed();
 
   PaintChannels read_channels();
-  //! Texture-space subsurface lighting (Ritschel et al., section 7): the
-  //! irradiance max(0, n . light) of a directional light at every texel,
-  //! diffused over the atlas by `passes` smoothing passes, per welded vertex
-  //! in the order of painted_surface().
-  std::vector<float> scattered_light(const Vec3& towards_light, int passes);
   //! Replaces every channel (e.g. from a saved project); each layer must
   //! hold the painting level's texels.
   //! \throw InputError when a layer has another size.
@@ -205,7 +207,6 @@ public:
   void time_phases(bool on) { time_phases_ = on; }
 
 private:
-  struct Device;
   //! Records, in no particular order and each with its closest texel, of
   //! patches with a texel within `radius` of `centre`: among them every
   //! patch whose closest texel is the nearest (brush_cull).
@@ -216,19 +217,9 @@ private:
   void reach_sides(const Vec3& centre, float radius);
   bool step(bool back); // undo (back) or redo
   void paint(const std::vector<int>& patches, const BrushDab& dab);
-  //! Fill: the texels connected to the one closest to `point` (within
-  //! `radius`) through texels of its class, across patch sides and corners
-  //! (welded vertices), become class `id`. Nothing where that class is
-  //! locked or not the only-over class, or no surface is in reach.
-  //! \return whether a surface was in reach
-  bool fill_labels(const Vec3& point, float radius, const PaintSettings& settings);
-  //! Merge: every texel of class settings.only_over_label becomes class
-  //! settings.value[CHANNEL_LABEL], the mask notwithstanding; nothing where
-  //! that class is locked.
-  void merge_labels(const PaintSettings& settings);
-  //! Class `id` into the label channel at `texels` (patch-major indices into
-  //! `material`, the whole layer as read), one undo step's worth.
-  void write_labels(std::vector<Float4>& material, const std::vector<std::size_t>& texels, int id);
+  //! A label edit (label_edits.h) as part of the running stroke: its tiles
+  //! remembered for undo, then written.
+  void record_labels(LabelEdit edit);
   //! One dab of spray paint: droplets at random points of the brush's disc
   //! on the screen (seeded by the stroke's seed and the dab's `index`).
   void spray(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke, std::uint64_t index);
@@ -306,7 +297,6 @@ private:
   cl::Buffer& diffuse_buffer();
   cl::Buffer& specular_buffer();
   cl::Buffer& material_buffer();
-  struct LayerKernels;
   std::pair<LayerKernels*, const cl::Memory*> layer(int id, int edit_level = 0);
   //! The given layers' tiles of `patches`, from the device, and the state of
   //! the multiresolution details.
@@ -314,8 +304,6 @@ private:
   void restore(const Snapshot& snapshot);
   //! Adds the patches not yet in the stroke's snapshot, before they change.
   void remember(const std::vector<int>& patches);
-  //! Per texel of the painting level: its welded vertex (weld_map), made once.
-  const std::vector<int>& texel_vertices();
   //! With time_phases() on: waits for the device and adds the time since
   //! the last call (or phase_start()) to `phase`.
   void phase_start();
@@ -338,7 +326,7 @@ private:
   StepPhases phases_;                  // the running stroke's, with time_phases_
   Timer phase_clock_;
   std::vector<Stroke> history_, undone_;
-  std::unique_ptr<Device> device_;
+  std::unique_ptr<PaintDevice> device_;
   BaseMaterial base_material_;
   UndoLog undo_;
   Snapshot stroke_before_;            // the running stroke's snapshot
@@ -352,7 +340,7 @@ private:
   bool inside_ = false; // the running dab paints the inside
   std::uint64_t change_count_ = 1, all_changed_at_ = 1;
   std::vector<std::uint64_t> changed_at_; // per patch: the count of its last change
-  std::vector<int> weld_map_;             // per texel of the painting level: its welded vertex, made on first use
+  std::vector<int> weld_map_;             // per texel of the painting level: its welded vertex (texel_vertices())
   struct Display;
   std::shared_ptr<Display> display_;      // display_arrays() and their kernels, made on first use
 };

@@ -70,16 +70,9 @@ PaintedSurface painted(WeldedSurface surface, const std::vector<int>& map, const
 
 } // namespace
 
-const std::vector<int>& PaintSurface::texel_vertices()
-{
-  if (weld_map_.empty())
-    weld_map_ = weld_map(atlas_->topology(), atlas_->layout(level_));
-  return weld_map_;
-}
-
 PaintedSurface PaintSurface::painted_surface()
 {
-  return painted(level_surface(*atlas_, level_, true), texel_vertices(), read_channels());
+  return painted(level_surface(*atlas_, level_, true), texel_vertices(state()), read_channels());
 }
 
 PaintedSurface PaintSurface::painted_surface(int level)
@@ -125,7 +118,7 @@ PaintedVertices PaintSurface::painted_vertices(const std::vector<int>& patches)
   if (patches.empty())
     return out;
   const LevelLayout l = atlas_->layout(level_);
-  const std::vector<int>& map = texel_vertices();
+  const std::vector<int>& map = texel_vertices(state());
   // The listed tiles of each layer, gathered on the device and read back:
   // tile after tile, as `patches` lists them.
   const std::size_t per_tile = std::size_t(l.tile) * l.tile;
@@ -200,7 +193,7 @@ std::shared_ptr<DisplayArrays> PaintSurface::display_arrays()
       d->program = kernel_program(rt, KernelProgram::Display, storage_options(atlas_->storage(), rt.info()));
       d->vertices = cl::Kernel(d->program, "display_vertices");
       d->inside = cl::Kernel(d->program, "display_inside");
-      d->vertex_of = device_ints(rt.context(), texel_vertices());
+      d->vertex_of = device_ints(rt.context(), texel_vertices(state()));
     } catch (const cl::Error& e) {
       throw DeviceError("cannot set up the display arrays on " + rt.info().name + ": " + describe(e));
     }

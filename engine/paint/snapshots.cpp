@@ -8,9 +8,9 @@
 
 namespace meshpaint {
 
-std::pair<PaintSurface::LayerKernels*, const cl::Memory*> PaintSurface::layer(int id, int edit_level)
+std::pair<LayerKernels*, const cl::Memory*> PaintSurface::layer(int id, int edit_level)
 {
-  Device& d = *device_;
+  PaintDevice& d = *device_;
   switch (id) {
   case kEditPositions: return {&d.positions, &atlas_->level_layer(edit_level)};
   case kPositions: return {&d.positions, &atlas_->level_layer(level_)};
