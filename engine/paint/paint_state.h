@@ -2,11 +2,13 @@
 // atlas at its painting level and its device state (channel layers, scratch
 // buffers, kernels). PaintSurface owns these and hands them out as a
 // PaintState; the families are free functions over it, each in a file named
-// for it (subsurface_light.h, label_edits.h).
+// for it (subsurface_light.h, label_edits.h, snapshots.h).
 #pragma once
 
 #include "atlas/atlas.h"
+#include "atlas/multires.h"
 
+#include <memory> // for std::unique_ptr
 #include <vector> // for std::vector
 
 namespace meshpaint {
@@ -21,6 +23,8 @@ struct PaintState
   //! Per texel of the painting level: its welded vertex; empty until
   //! texel_vertices() first needs it.
   std::vector<int>& weld_map;
+  //! Details for edits at a coarser level; null until such an edit needs them.
+  std::unique_ptr<Multires>& multires;
 
   LevelLayout layout() const { return atlas.layout(level); }
 };

@@ -1,9 +1,10 @@
 // A surface to paint on: the atlas at the painting level, its limit surface,
-// the paint channels, and the brush pipeline that changes them. The class's
-// parts live in files named for them: brush_placement.cpp, colour_brushes.cpp,
-// geometry_brushes.cpp, snapshots.cpp, painted_surface.cpp (reading the
+// the paint channels, the undo and change logs, and a stroke's way through
+// the brush pipeline. Parts of the class live in files named for them:
+// colour_brushes.cpp, geometry_brushes.cpp, painted_surface.cpp (reading the
 // surface back), paint_memory.h (what fits). Tool families that are free
-// functions over its PaintState: subsurface_light.h, label_edits.h.
+// functions or small classes over its PaintState: brush_placement.h,
+// brush_space.h, snapshots.h, subsurface_light.h, label_edits.h.
 #pragma once
 
 #include "atlas/atlas.h"
@@ -11,6 +12,7 @@
 #include "core/marks.h"
 #include "core/timer.h"
 #include "mesh/welded_surface.h"
+#include "paint/brush_placement.h"
 #include "paint/display_arrays.h"
 #include "paint/label_edits.h"
 #include "paint/paint_state.h"
@@ -100,8 +102,6 @@ struct BaseMaterial
   float roughness = 0.5f;
 };
 
-struct LayerKernels; // paint_device.h
-
 class PaintSurface
 {
 public:
@@ -115,8 +115,9 @@ public:
 
   Atlas& atlas() { return *atlas_; }
   int level() const { return level_; }
-  //! What the tool families work on (subsurface_light.h, label_edits.h).
-  PaintState state() { return PaintState{*atlas_, level_, *device_, weld_map_}; }
+  //! What the tool families work on (subsurface_light.h, label_edits.h,
+  //! snapshots.h, brush_placement.h, brush_space.h).
+  PaintState state() { return PaintState{*atlas_, level_, *device_, weld_map_, multires_}; }
 
   //! Two-sided materials: an inside set of diffuse, specular and roughness
   //! (starting as the base material), painted where the brush sees the
@@ -150,16 +151,10 @@ public:
   bool stroke_open() const { return open_ != nullptr; }
 
   //! Distance from `point` to the closest surface point within `radius`;
-  //! infinity when there is none.
+  //! infinity when there is none (BrushPlacement::distance_to).
   float distance_to(const Vec3& point, float radius);
 
-  //! The patches one dab at `point` would touch: those connected to the
-  //! closest surface point along the surface within `radius`, sorted. Empty
-  //! when no surface is within the radius. `centre` receives the snapped
-  //! centre.
-  //! `reach` (default: the radius) bounds the search for connected patches
-  //! when the brush's footprint reaches further than its radius in space
-  //! (tangent and screen brushes); `closest` receives the centre's texel.
+  //! The patches one dab at `point` would touch (BrushPlacement::brush_patches).
   std::vector<int> brush_patches(const Vec3& point, float radius, Vec3* centre = nullptr,
                                  Vec3* centre_normal = nullptr, float reach = 0.f, CullRecord* closest = nullptr);
 
@@ -207,14 +202,6 @@ public:
   void time_phases(bool on) { time_phases_ = on; }
 
 private:
-  //! Records, in no particular order and each with its closest texel, of
-  //! patches with a texel within `radius` of `centre`: among them every
-  //! patch whose closest texel is the nearest (brush_cull).
-  std::vector<CullRecord> cull(const Vec3& centre, float radius);
-  //! The patches with a texel within `radius`, each with the sides that
-  //! come within it.
-  //! Fills open_sides_ from brush_reach.
-  void reach_sides(const Vec3& centre, float radius);
   bool step(bool back); // undo (back) or redo
   void paint(const std::vector<int>& patches, const BrushDab& dab);
   //! A label edit (label_edits.h) as part of the running stroke: its tiles
@@ -268,39 +255,17 @@ private:
   //! The stroke's pattern samples, brush image and locked label classes to
   //! the device, sizes and the only-over class into the dab.
   void upload_rasters(const Stroke& stroke, BrushDab& dab);
-  //! The dab's brush space at its centre (camera axes, the centre's texel);
-  //! false where a screen-space stroke meets a silhouette and ends.
-  bool aim(const Stroke& stroke, const Vec3& point, const Vec3& normal, const Vec3& heading, const CullRecord& closest,
-           BrushDab& dab);
-  //! A parameter dab's patches around `centre_patch`, laid flat in its
-  //! texels (unfold()); their maps to the device, in the order returned.
-  std::vector<int> unfold_dab(int centre_patch, BrushDab& dab);
+  //! The side of a two-sided surface the dab paints, or the side a one-sided
+  //! surface shows the stroke's camera: BrushDab::side_sign (and inside_).
+  void choose_side(const Stroke& stroke, const Vec3& point, const Vec3& normal, BrushDab& dab);
   //! Finds the dab's site and aims it: the patches it may change, empty
   //! when it misses the surface (or meets a silhouette).
   std::vector<int> place(const Stroke& stroke, const DabSample& sample, BrushDab& dab, Vec3& normal);
-  //! Layers a snapshot may hold: the finest level's control points, the
-  //! channel layers, and the control points of a coarser edit level.
-  enum Layer : int
-  {
-    kPositions,
-    kDiffuse,
-    kSpecular,
-    kMaterial,
-    kInsideDiffuse,
-    kInsideSpecular,
-    kInsideMaterial,
-    kLimitPositions, // read only (painted_vertices): the limit surface at the painting level
-    kLimitNormals,
-    kEditPositions // the control points of a snapshot's edit_level
-  };
   //! The channel buffers a dab writes: the side it paints.
   cl::Buffer& diffuse_buffer();
   cl::Buffer& specular_buffer();
   cl::Buffer& material_buffer();
-  std::pair<LayerKernels*, const cl::Memory*> layer(int id, int edit_level = 0);
-  //! The given layers' tiles of `patches`, from the device, and the state of
-  //! the multiresolution details.
-  Snapshot take_snapshot(const std::vector<int>& patches, const std::vector<int>& layers, int edit_level = 0);
+  //! Puts back a snapshot's tiles and its state of the multiresolution details.
   void restore(const Snapshot& snapshot);
   //! Adds the patches not yet in the stroke's snapshot, before they change.
   void remember(const std::vector<int>& patches);
@@ -332,9 +297,7 @@ private:
   Snapshot stroke_before_;            // the running stroke's snapshot
   std::vector<int> stroke_layers_;    // the layers the running stroke changes
   std::vector<char> in_stroke_;       // per patch: already in stroke_before_
-  std::vector<std::array<int, 4>> neighbours_; // per patch side: the patch across, -1 on a border
-  Marks reached_;                        // per patch: reached by this dab's flood
-  std::vector<std::uint8_t> open_sides_; // per patch: bit s set if side s comes within the dab's reach, or REACH_NONE
+  BrushPlacement placement_; // the flood that finds a dab's patches, with its scratch
   std::unique_ptr<OpenStroke> open_; // the stroke being drawn
   bool two_sided_ = false;
   bool inside_ = false; // the running dab paints the inside
