@@ -1,8 +1,8 @@
 // The painting surface's state (atlas, channel layers, undo log, change
 // log) and a stroke's way through the brush pipeline: each dab placed
-// (brush_placement.h, brush_space.h), then run by its tool family (colour_brushes.cpp,
-// geometry_brushes.cpp, label_edits.h), with the tiles it changes remembered
-// first (snapshots.h), and undo and redo.
+// (brush_placement.h, brush_space.h), then run by its tool family
+// (colour_brushes.cpp, geometry_brushes.cpp, label_edits.h), with the tiles
+// it changes remembered first (snapshots.h), and undo and redo.
 
 #include "paint/paint_device.h"
 
@@ -21,8 +21,8 @@ namespace meshpaint {
 
 PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int level,
                            AtlasStorage storage, const BaseMaterial& material)
-  : atlas_(std::make_unique<Atlas>(runtime, mesh, level, storage)), level_(level), device_(std::make_unique<PaintDevice>()),
-    base_material_(material)
+  : atlas_(std::make_unique<Atlas>(runtime, mesh, level, storage)), level_(level),
+    device_(std::make_unique<PaintDevice>()), base_material_(material)
 {
   check_paint_fits(*atlas_, level, mesh.name);
   atlas_->subdivide(1, level);
@@ -330,7 +330,6 @@ std::vector<int> PaintSurface::place(const Stroke& stroke, const DabSample& samp
   return patches;
 }
 
-
 void PaintSurface::choose_side(const Stroke& stroke, const Vec3& point, const Vec3& normal, BrushDab& dab)
 {
   // The side a two-sided surface is painted on: the one the eye sees for a
@@ -382,7 +381,10 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
   return placement_.brush_patches(state(), point, radius, centre, centre_normal, reach, closest);
 }
 
-float PaintSurface::distance_to(const Vec3& point, float radius) { return placement_.distance_to(state(), point, radius); }
+float PaintSurface::distance_to(const Vec3& point, float radius)
+{
+  return placement_.distance_to(state(), point, radius);
+}
 
 void PaintSurface::phase_start()
 {
