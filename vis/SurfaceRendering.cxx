@@ -5,6 +5,7 @@
 #include "core/atomic_file.h" // for meshpaint::write_bytes_atomically
 #include "core/errors.h"      // for meshpaint::IOError, DeviceError
 #include "paint/paint_surface.h" // for meshpaint::PaintSurface
+#include "paint/subsurface_light.h" // for meshpaint::scattered_light
 #include "SurfaceConversion.h"   // for meshpaint::png_bytes
 
 #include <vtkActor.h>                   // for vtkActor
@@ -144,8 +145,8 @@ void show_scattered_light(vtkActor* actor, vtkPolyData* surface)
 void add_scattered_light(vtkPolyData* surface, PaintSurface& painted, const std::array<double, 3>& towards_light,
                          int passes)
 {
-  const std::vector<float> light = painted.scattered_light(
-    {float(towards_light[0]), float(towards_light[1]), float(towards_light[2])}, passes);
+  const std::vector<float> light = scattered_light(
+    painted.state(), {float(towards_light[0]), float(towards_light[1]), float(towards_light[2])}, passes);
   vtkNew<vtkFloatArray> array;
   array->SetName("scattered_light");
   array->SetNumberOfValues(vtkIdType(light.size()));

@@ -43,7 +43,7 @@ MESHPAINTVIS_EXPORT void show_scattered_light(vtkActor* actor, vtkPolyData* surf
 
 //! Adds to `surface` (to_polydata() of `painted`) the point array
 //! "scattered_light": the light arriving from direction `towards_light`
-//! diffused over the atlas in `passes` passes (PaintSurface::scattered_light).
+//! diffused over the atlas in `passes` passes (scattered_light(), subsurface_light.h).
 //! An array of that name already there is replaced.
 MESHPAINTVIS_EXPORT void add_scattered_light(vtkPolyData* surface, PaintSurface& painted,
                                              const std::array<double, 3>& towards_light, int passes);

@@ -1,59 +1,75 @@
-// Brush placement: where a dab lands on the surface (the closest limit
-// texel within its radius), the patches it may change (those connected to
-// the centre through sides within its reach, never through the air), and
-// its brush space there.
+// Brush placement: where a dab lands, and the patches it may change.
+
+#include "paint/brush_placement.h"
 
 #include "paint/paint_device.h"
 
 #include "atlas/unfolding.h"
-#include "paint/brush_space.h"
 
-#include <cmath>   // for std::sqrt, std::lround
+#include <cmath>   // for std::lround
 #include <cstring> // for std::memcpy
 #include <limits>  // for std::numeric_limits
 
 namespace meshpaint {
 
-std::vector<CullRecord> PaintSurface::cull(const Vec3& centre, float radius)
+namespace {
+
+//! Records, in no particular order and each with its closest texel, of
+//! patches with a texel within `radius` of `centre`: among them every
+//! patch whose closest texel is the nearest (brush_cull), wherever `hint`
+//! points.
+std::vector<CullRecord> cull(const PaintState& state, const Vec3& centre, float radius, const SnapHint& hint)
 {
-  Device& d = *device_;
-  const LevelLayout l = atlas_->layout(level_);
+  PaintDevice& d = state.device;
+  Atlas& atlas = state.atlas;
+  const LevelLayout l = state.layout();
   cl_int radius_bits;
   std::memcpy(&radius_bits, &radius, sizeof radius_bits); // brush_cull's nearest distance so far
   const cl_float4 at{{centre[0], centre[1], centre[2], 0.f}};
-  // Brushes move little between dabs: the last centre's texel bounds the
-  // search from the start, so that far patches stop at their bounds.
-  const bool seeded = snap_hint_.patch >= 0 && snap_hint_.patch < l.patches && snap_hint_.texel >= 0 &&
-                      snap_hint_.texel < l.tile * l.tile;
+  // Brushes move little between dabs: the hinted texel bounds the search
+  // from the start, so that far patches stop at their bounds.
+  const bool seeded = hint.patch >= 0 && hint.patch < l.patches && hint.texel >= 0 && hint.texel < l.tile * l.tile;
   const auto seed = [&] {
     if (seeded)
-      launch(atlas_->runtime().queue(), d.brush_cull_seed, cl::NDRange(1), cl::NullRange,
-             atlas_->limit_positions_layer(), grid(l), cl_int(snap_hint_.patch), cl_int(snap_hint_.texel), at,
-             d.counters);
+      launch(atlas.runtime().queue(), d.brush_cull_seed, cl::NDRange(1), cl::NullRange, atlas.limit_positions_layer(),
+             grid(l), cl_int(hint.patch), cl_int(hint.texel), at, d.counters);
   };
-  return run_appending<CullRecord>(atlas_->runtime(), d.brush_cull, l.patches, kGroup, d.culled, d.counters,
-                                   cl_int2{{0, radius_bits}}, seed, atlas_->limit_positions_layer(),
-                                   atlas_->limit_normals_layer(), grid(l), l.patches, atlas_->limit_bounds(), at);
+  return run_appending<CullRecord>(atlas.runtime(), d.brush_cull, l.patches, kGroup, d.culled, d.counters,
+                                   cl_int2{{0, radius_bits}}, seed, atlas.limit_positions_layer(),
+                                   atlas.limit_normals_layer(), grid(l), l.patches, atlas.limit_bounds(), at);
 }
 
-void PaintSurface::reach_sides(const Vec3& centre, float radius)
+//! Per patch, the sides that come within `radius` of `centre` (brush_reach),
+//! into `open_sides`.
+void reach_sides(const PaintState& state, const Vec3& centre, float radius, std::vector<std::uint8_t>& open_sides)
 {
-  Device& d = *device_;
-  Runtime& rt = atlas_->runtime();
-  const LevelLayout l = atlas_->layout(level_);
+  PaintDevice& d = state.device;
+  Atlas& atlas = state.atlas;
+  Runtime& rt = atlas.runtime();
+  const LevelLayout l = state.layout();
   launch(rt.queue(), d.brush_reach, cl::NDRange(round_up(std::size_t(l.patches), kGroup)), cl::NDRange(kGroup),
-         atlas_->limit_positions_layer(), grid(l), l.patches, atlas_->limit_bounds(),
+         atlas.limit_positions_layer(), grid(l), l.patches, atlas.limit_bounds(),
          cl_float4{{centre[0], centre[1], centre[2], 0.f}}, radius, d.open_sides);
-  rt.queue().enqueueReadBuffer(d.open_sides, CL_TRUE, 0, open_sides_.size(), open_sides_.data());
+  rt.queue().enqueueReadBuffer(d.open_sides, CL_TRUE, 0, open_sides.size(), open_sides.data());
 }
 
-std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Vec3* centre_out, Vec3* normal_out,
-                                             float reach, CullRecord* closest)
+} // namespace
+
+BrushPlacement::BrushPlacement(const AtlasTopology& topology)
+  : neighbours_(std::size_t(topology.patch_count)), open_sides_(std::size_t(topology.patch_count), 0)
+{
+  for (int p = 0; p < topology.patch_count; ++p)
+    for (int s = 0; s < 4; ++s)
+      neighbours_[std::size_t(p)][s] = topology.across(p, s);
+}
+
+std::vector<int> BrushPlacement::brush_patches(const PaintState& state, const Vec3& point, float radius,
+                                               Vec3* centre_out, Vec3* normal_out, float reach, CullRecord* closest)
 {
   if (!(reach > 0.f))
     reach = radius;
   // Snap: the closest texel within the radius is the brush centre.
-  const std::vector<CullRecord> near = cull(point, radius);
+  const std::vector<CullRecord> near = cull(state, point, radius, hint_);
   if (near.empty())
     return {};
   const CullRecord* best = &near.front();
@@ -61,7 +77,7 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
     if (c.distance < best->distance ||
         (c.distance == best->distance && c.patch < best->patch))
       best = &c;
-  snap_hint_ = {best->patch, best->closest_texel};
+  hint_ = {best->patch, best->closest_texel};
   const float* snapped = best->closest_position;
   const Vec3 centre{snapped[0], snapped[1], snapped[2]};
   if (centre_out)
@@ -74,7 +90,7 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
   // The brush reaches the patches connected to the centre's patch through
   // sides that themselves come within the radius: never through the air.
   const int start_patch = best->patch;
-  reach_sides(centre, reach);
+  reach_sides(state, centre, reach, open_sides_);
 
   // Flood from the centre's patch over the patches within reach.
   reached_.begin(open_sides_.size());
@@ -101,51 +117,31 @@ std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Ve
   return marked_in_order(std::move(queue), reached_, open_sides_.size());
 }
 
-void PaintSurface::hint_snap(int patch, double u, double v)
+void BrushPlacement::hint_snap(const PaintState& state, int patch, double u, double v)
 {
-  const LevelLayout l = atlas_->layout(level_);
+  const LevelLayout l = state.layout();
   if (patch < 0 || patch >= l.patches || !(u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0)) {
-    snap_hint_ = {};
+    hint_ = {};
     return;
   }
   const int i = int(std::lround(u * l.n)), j = int(std::lround(v * l.n));
-  snap_hint_ = {patch, j * l.tile + i};
+  hint_ = {patch, j * l.tile + i};
 }
 
-float PaintSurface::distance_to(const Vec3& point, float radius)
+float BrushPlacement::distance_to(const PaintState& state, const Vec3& point, float radius)
 {
   Vec3 centre;
-  if (brush_patches(point, radius, &centre).empty())
+  if (brush_patches(state, point, radius, &centre).empty())
     return std::numeric_limits<float>::infinity();
   return length(sub(centre, point));
 }
 
-std::vector<int> PaintSurface::place(const Stroke& stroke, const DabSample& sample, BrushDab& dab, Vec3& normal)
+std::vector<int> unfold_dab(const PaintState& state, int centre_patch, BrushDab& dab)
 {
-  // A tangent or screen footprint runs further than the radius in space on
-  // surface turned from the brush: the search for it goes that far, at most.
-  const float reach = dab.radius * (stroke.brush.space == SPACE_SCREEN ? 4.f : stroke.brush.space == SPACE_OBJECT ? 1.f : 2.f);
-  Vec3 centre;
-  CullRecord closest{};
-  std::vector<int> patches = brush_patches(sample.centre, dab.radius, &centre, &normal, reach, &closest);
-  if (patches.empty())
-    return patches;
-  for (int k = 0; k < 3; ++k)
-    dab.centre[k] = centre[k];
-  dab.unfolded = 0;
-  if (!aim(stroke, sample.centre, normal, sample.heading, closest, dab))
-    return {};
-  if (stroke.brush.space == SPACE_PARAMETER)
-    return unfold_dab(closest.patch, dab);
-  return patches;
-}
-
-std::vector<int> PaintSurface::unfold_dab(int centre_patch, BrushDab& dab)
-{
-  Device& d = *device_;
-  Runtime& rt = atlas_->runtime();
+  PaintDevice& d = state.device;
+  Runtime& rt = state.atlas.runtime();
   const Unfolding u =
-    unfold(atlas_->topology(), centre_patch, atlas_->layout(level_).n, dab.centre_texel, dab.radius / dab.texel_size);
+    unfold(state.atlas.topology(), centre_patch, state.layout().n, dab.centre_texel, dab.radius / dab.texel_size);
   if (d.unfold_capacity < u.maps.size()) {
     d.unfold_capacity = u.maps.size();
     d.unfold = cl::Buffer(rt.context(), CL_MEM_READ_ONLY, sizeof(PatchUnfolding) * d.unfold_capacity);
@@ -154,52 +150,6 @@ std::vector<int> PaintSurface::unfold_dab(int centre_patch, BrushDab& dab)
   rt.queue().enqueueWriteBuffer(d.unfold, CL_TRUE, 0, sizeof(PatchUnfolding) * u.maps.size(), u.maps.data());
   dab.unfolded = int(u.maps.size());
   return u.patches;
-}
-
-bool PaintSurface::aim(const Stroke& stroke, const Vec3& point, const Vec3& normal, const Vec3& heading,
-                       const CullRecord& closest, BrushDab& dab)
-{
-  // The side a two-sided surface is painted on: the one the eye sees for a
-  // screen brush, else the one the stroke's point lies on.
-  const ToolFamily family = tool_family(stroke);
-  const bool colours = family == ToolFamily::Paint || family == ToolFamily::ColourFilter;
-  inside_ = false;
-  if (two_sided_ && colours) {
-    const Vec3 from = stroke.brush.space == SPACE_SCREEN && stroke.brush.has_camera ? stroke.brush.camera.position : point;
-    const float seen = dot(sub(from, Vec3{dab.centre[0], dab.centre[1], dab.centre[2]}), normal);
-    inside_ = stroke.brush.side == 2 || (stroke.brush.side == 0 && seen < 0.f);
-  }
-  dab.side_sign = inside_ ? -1.f : 1.f;
-  if (stroke.brush.has_camera && !(two_sided_ && colours) && open_) {
-    // A surface of one side shows it to the eye whichever way its faces
-    // are wound: the side facing the camera where the stroke starts is the
-    // front for the whole stroke, so inward-wound scans paint as outward ones.
-    if (open_->facing_side == 0.f) {
-      const Vec3 to_eye = sub(stroke.brush.camera.position, Vec3{dab.centre[0], dab.centre[1], dab.centre[2]});
-      open_->facing_side = dot(to_eye, normal) < 0.f ? -1.f : 1.f;
-    }
-    dab.side_sign = open_->facing_side;
-  }
-  dab.space = stroke.brush.space;
-  dab.paint_backfaces = stroke.brush.paint_backfaces ? 1 : 0;
-  for (int k = 0; k < 3; ++k)
-    dab.centre_normal[k] = normal[k];
-  stamp_axes(normal, heading, dab);
-  if (stroke.brush.has_camera) {
-    camera_frame(stroke.brush.camera, dab);
-    if (stroke.brush.space == SPACE_SCREEN && at_silhouette(dab, normal))
-      return false;
-  }
-  if (stroke.brush.space == SPACE_PARAMETER) {
-    const LevelLayout l = atlas_->layout(level_);
-    cl_float4 bound;
-    atlas_->runtime().queue().enqueueReadBuffer(atlas_->limit_bounds(), CL_TRUE, sizeof(cl_float4) * closest.patch,
-                                                sizeof bound, &bound);
-    dab.centre_texel[0] = float(closest.closest_texel % l.tile);
-    dab.centre_texel[1] = float(closest.closest_texel / l.tile);
-    dab.texel_size = float(std::sqrt(2.0) * bound.s[3] / l.n); // the tile's side over its texels
-  }
-  return true;
 }
 
 } // namespace meshpaint

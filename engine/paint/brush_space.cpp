@@ -1,6 +1,6 @@
 #include "paint/brush_space.h"
 
-#include <cmath> // for std::fabs, std::tan
+#include <cmath> // for std::fabs, std::sqrt, std::tan
 
 namespace meshpaint {
 
@@ -50,5 +50,31 @@ bool at_silhouette(const BrushDab& dab, const Vec3& normal)
   const Vec3 v = sub(Vec3{dab.centre[0], dab.centre[1], dab.centre[2]}, Vec3{dab.eye[0], dab.eye[1], dab.eye[2]});
   return !(dab.centre_depth > 0.f) || dab.side_sign * dot(normal, v) >= 0.f;
 }
+
+bool aim(const PaintState& state, const Brush& brush, const Vec3& normal, const Vec3& heading,
+         const CullRecord& closest, BrushDab& dab)
+{
+  dab.space = brush.space;
+  dab.paint_backfaces = brush.paint_backfaces ? 1 : 0;
+  for (int k = 0; k < 3; ++k)
+    dab.centre_normal[k] = normal[k];
+  stamp_axes(normal, heading, dab);
+  if (brush.has_camera) {
+    camera_frame(brush.camera, dab);
+    if (brush.space == SPACE_SCREEN && at_silhouette(dab, normal))
+      return false;
+  }
+  if (brush.space == SPACE_PARAMETER) {
+    const LevelLayout l = state.layout();
+    cl_float4 bound;
+    state.atlas.runtime().queue().enqueueReadBuffer(state.atlas.limit_bounds(), CL_TRUE,
+                                                    sizeof(cl_float4) * closest.patch, sizeof bound, &bound);
+    dab.centre_texel[0] = float(closest.closest_texel % l.tile);
+    dab.centre_texel[1] = float(closest.closest_texel / l.tile);
+    dab.texel_size = float(std::sqrt(2.0) * bound.s[3] / l.n); // the tile's side over its texels
+  }
+  return true;
+}
+
 
 } // namespace meshpaint

@@ -4,7 +4,8 @@
 
 #include "atlas_types.h" // for BrushDab
 #include "core/vec.h"
-#include "paint/stroke.h" // for Camera
+#include "paint/paint_state.h"
+#include "paint/stroke.h" // for Brush, Camera
 
 namespace meshpaint {
 
@@ -22,5 +23,13 @@ void camera_frame(const Camera& camera, BrushDab& dab);
 //! behind the eye, or the side the dab paints (`normal` times
 //! BrushDab::side_sign) turns away from it. Screen strokes end there.
 bool at_silhouette(const BrushDab& dab, const Vec3& normal);
+
+//! The dab's brush space at its centre, for `brush`: the centre's limit
+//! `normal`, the stamp's axes along `heading`, the camera's frame, and for
+//! a parameter-space brush the centre's texel (`closest`) and the texel's
+//! size. False where a screen brush meets a silhouette (the stroke ends).
+//! The side it paints (BrushDab::side_sign) is set before.
+bool aim(const PaintState& state, const Brush& brush, const Vec3& normal, const Vec3& heading,
+         const CullRecord& closest, BrushDab& dab);
 
 } // namespace meshpaint

@@ -28,7 +28,7 @@ void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
   }
   remember(patches);
   mask_painted_ = mask_painted_ || dab.alpha[CHANNEL_MASK] > 0.f;
-  Device& d = *device_;
+  PaintDevice& d = *device_;
   Runtime& rt = atlas_->runtime();
   const LevelLayout l = atlas_->layout(level_);
   if (d.active_capacity < patches.size()) {
@@ -51,7 +51,7 @@ void PaintSurface::spray(const std::vector<int>& patches, const BrushDab& dab, c
 {
   // Droplets fall evenly on the screen, so the surface gets fewer per area
   // where it is seen obliquely: by the cosine of the angle to the view.
-  Device& d = *device_;
+  PaintDevice& d = *device_;
   Runtime& rt = atlas_->runtime();
   const LevelLayout l = atlas_->layout(level_);
   const int k = stroke.paint().spray_drops;
@@ -94,7 +94,7 @@ void PaintSurface::spray(const std::vector<int>& patches, const BrushDab& dab, c
 
 void PaintSurface::smear(const std::vector<int>& patches, BrushDab dab, std::optional<std::array<Float4, 2>>& carried)
 {
-  Device& d = *device_;
+  PaintDevice& d = *device_;
   Runtime& rt = atlas_->runtime();
   const LevelLayout l = atlas_->layout(level_);
   // Lay down what the previous dab picked up, then pick up from here.
@@ -147,7 +147,7 @@ void PaintSurface::upload_rasters(const Stroke& stroke, BrushDab& dab)
       throw InputError("a pattern or brush image of " + std::to_string(r->width) + "x" + std::to_string(r->height) +
                        "x" + std::to_string(r->depth) + " samples of " + std::to_string(r->channels) +
                        " channels does not match its " + std::to_string(r->samples.size()) + " values");
-  Device& d = *device_;
+  PaintDevice& d = *device_;
   Runtime& rt = atlas_->runtime();
   const auto upload = [&](const std::vector<float>& v) {
     static const float none = 0.f;

@@ -16,7 +16,7 @@ void PaintSurface::weigh(const std::vector<int>& patches, const cl::Buffer& list
   // At a coarser edit level, on the limit of that level's control points.
   // The patches come from the finest surface, so that level's weights may
   // reach the sides they share with other patches: those stay put.
-  Device& d = *device_;
+  PaintDevice& d = *device_;
   Runtime& rt = atlas_->runtime();
   const LevelLayout f = atlas_->layout(level_), l = atlas_->layout(level);
   const bool coarse = level < level_;
@@ -82,7 +82,7 @@ void PaintSurface::reshape(const std::vector<int>& patches, const BrushDab& dab,
   }
   remember(coarse ? changed : patches);
   phase_done(&StepPhases::record);
-  Device& d = *device_;
+  PaintDevice& d = *device_;
   Runtime& rt = atlas_->runtime();
   cl::CommandQueue& q = rt.queue();
   const LevelLayout l = atlas_->layout(level);

@@ -1,7 +1,8 @@
-// Label edits that are no brush: fill (the connected region of one class
-// around a point) and merge (one class into another). Both decide on the
-// host from the label layer as read, over welded vertices so that a region
+// Label edits that are no brush: fill and merge. Both decide on the host
+// from the label layer as read, over welded vertices so that a region
 // crosses patch sides and corners, and write every stored copy of a texel.
+
+#include "paint/label_edits.h"
 
 #include "paint/paint_device.h"
 
@@ -33,45 +34,51 @@ std::vector<Float4> read_layer(Runtime& rt, const cl::Buffer& material, std::siz
 //! corner reach across that corner too.
 constexpr std::pair<int, int> kNeighbours[8] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}, {-1, -1}, {1, -1}, {-1, 1}, {1, 1}};
 
+//! The edit's tiles, from its texels.
+void find_patches(const PaintState& state, LabelEdit& edit)
+{
+  const LevelLayout l = state.layout();
+  const std::size_t tile_texels = std::size_t(l.tile) * std::size_t(l.tile);
+  for (const std::size_t t : edit.texels)
+    edit.patches.push_back(int(t / tile_texels));
+  std::sort(edit.patches.begin(), edit.patches.end());
+  edit.patches.erase(std::unique(edit.patches.begin(), edit.patches.end()), edit.patches.end());
+}
+
 } // namespace
 
-void PaintSurface::write_labels(std::vector<Float4>& material, const std::vector<std::size_t>& texels, int id)
+void write_labels(const PaintState& state, LabelEdit& edit)
 {
-  if (texels.empty())
+  if (edit.texels.empty())
     return;
-  const LevelLayout l = atlas_->layout(level_);
+  const LevelLayout l = state.layout();
   const std::size_t tile_texels = std::size_t(l.tile) * std::size_t(l.tile);
-  std::vector<int> patches;
-  for (const std::size_t t : texels)
-    patches.push_back(int(t / tile_texels));
-  std::sort(patches.begin(), patches.end());
-  patches.erase(std::unique(patches.begin(), patches.end()), patches.end());
-  remember(patches);
-  for (const std::size_t t : texels)
-    material[t][2] = float(id);
+  std::vector<Float4>& material = edit.material;
+  for (const std::size_t t : edit.texels)
+    material[t][2] = float(edit.id);
   // A tile is one run of the patch-major layer: one write per patch.
-  cl::CommandQueue& q = atlas_->runtime().queue();
-  for (const int p : patches)
-    q.enqueueWriteBuffer(device_->material, CL_FALSE, std::size_t(p) * tile_texels * sizeof(Float4),
+  cl::CommandQueue& q = state.atlas.runtime().queue();
+  for (const int p : edit.patches)
+    q.enqueueWriteBuffer(state.device.material, CL_FALSE, std::size_t(p) * tile_texels * sizeof(Float4),
                          tile_texels * sizeof(Float4), material.data() + std::size_t(p) * tile_texels);
   q.finish(); // before `material` goes
 }
 
-bool PaintSurface::fill_labels(const Vec3& point, float radius, const PaintSettings& settings)
+LabelEdit fill_labels(const PaintState& state, const CullRecord& seed, const PaintSettings& settings)
 {
-  CullRecord seed{};
-  if (!(radius > 0.f) || brush_patches(point, radius, nullptr, nullptr, 0.f, &seed).empty())
-    return false;
-  const LevelLayout l = atlas_->layout(level_);
+  const LevelLayout l = state.layout();
   const std::size_t tile = std::size_t(l.tile), tile_texels = tile * tile;
-  std::vector<Float4> material = read_layer(atlas_->runtime(), device_->material, l.texels());
+  LabelEdit edit;
+  edit.material = read_layer(state.atlas.runtime(), state.device.material, l.texels());
+  const std::vector<Float4>& material = edit.material;
   const std::size_t start = std::size_t(seed.patch) * tile_texels + std::size_t(seed.closest_texel);
   const float label = material[start][2];
   const int id = int(settings.value[CHANNEL_LABEL][0]);
+  edit.id = id;
   if (!label_open(settings, label) || label == float(id))
-    return true;
+    return edit;
   // The texels of each welded vertex (its stored copies), as lists.
-  const std::vector<int>& vertex_of = texel_vertices();
+  const std::vector<int>& vertex_of = texel_vertices(state);
   std::size_t vertices = 0;
   for (const int v : vertex_of)
     vertices = std::max(vertices, std::size_t(v) + 1);
@@ -88,11 +95,11 @@ bool PaintSurface::fill_labels(const Vec3& point, float radius, const PaintSetti
   // all copies of its vertices.
   const auto fillable = [&](std::size_t t) { return material[t][2] == label && material[t][3] <= 0.5f; };
   if (!fillable(start))
-    return true;
+    return edit;
   std::vector<char> seen(vertices, 0);
   std::vector<int> queue{vertex_of[start]};
   seen[std::size_t(queue.front())] = 1;
-  std::vector<std::size_t> region;
+  std::vector<std::size_t>& region = edit.texels;
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const std::size_t v = std::size_t(queue[head]);
     for (std::size_t c = first[v]; c < first[v + 1]; ++c) {
@@ -114,22 +121,23 @@ bool PaintSurface::fill_labels(const Vec3& point, float radius, const PaintSetti
       }
     }
   }
-  write_labels(material, region, id);
-  return true;
+  find_patches(state, edit);
+  return edit;
 }
 
-void PaintSurface::merge_labels(const PaintSettings& settings)
+LabelEdit merge_labels(const PaintState& state, const PaintSettings& settings)
 {
   const float from = float(settings.only_over_label);
-  const int into = int(settings.value[CHANNEL_LABEL][0]);
-  if (!label_open(settings, from) || from == float(into))
-    return;
-  std::vector<Float4> material = read_layer(atlas_->runtime(), device_->material, atlas_->layout(level_).texels());
-  std::vector<std::size_t> texels;
-  for (std::size_t t = 0; t < material.size(); ++t)
-    if (material[t][2] == from)
-      texels.push_back(t);
-  write_labels(material, texels, into);
+  LabelEdit edit;
+  edit.id = int(settings.value[CHANNEL_LABEL][0]);
+  if (!label_open(settings, from) || from == float(edit.id))
+    return edit;
+  edit.material = read_layer(state.atlas.runtime(), state.device.material, state.layout().texels());
+  for (std::size_t t = 0; t < edit.material.size(); ++t)
+    if (edit.material[t][2] == from)
+      edit.texels.push_back(t);
+  find_patches(state, edit);
+  return edit;
 }
 
 } // namespace meshpaint

@@ -1,6 +1,6 @@
-// What PaintSurface keeps on the device, and the kernels it runs there:
-// shared by the files that implement PaintSurface (one per part of the brush
-// pipeline), included by nothing else.
+// What a painting surface keeps on the device, and the kernels it runs
+// there: shared by the files of the brush pipeline (PaintSurface and the
+// tool families that work on its PaintState), included by nothing else.
 #pragma once
 
 #include "cl/append_buffer.h"
@@ -22,7 +22,7 @@ namespace meshpaint {
 constexpr std::size_t kGroup = 64;
 
 //! Kernels that filter or copy a layer, built for one storage path.
-struct PaintSurface::LayerKernels
+struct LayerKernels
 {
   cl::Program program;
   cl::Kernel copy_tiles, gather_tiles, scatter_tiles;
@@ -43,7 +43,7 @@ struct PaintSurface::LayerKernels
 //! storage; paint channels, weights and lists are always buffers, so their
 //! kernels come from a buffer build (the same one when the atlas uses
 //! buffers).
-struct PaintSurface::Device
+struct PaintDevice
 {
   LayerKernels positions, channels;
   cl::Kernel brush_cull, brush_cull_seed, brush_reach, paint_dab, dab_weights, move_points, move_dab, move_dab_patches;

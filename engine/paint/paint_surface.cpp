@@ -1,17 +1,19 @@
 // The painting surface's state (atlas, channel layers, undo log, change
 // log) and a stroke's way through the brush pipeline: each dab placed
-// (brush_placement.cpp), then run by its tool family (colour_brushes.cpp,
-// geometry_brushes.cpp), with the tiles it changes remembered first
-// (snapshots.cpp).
+// (brush_placement.h, brush_space.h), then run by its tool family
+// (colour_brushes.cpp, geometry_brushes.cpp, label_edits.h), with the tiles
+// it changes remembered first (snapshots.h), and undo and redo.
 
 #include "paint/paint_device.h"
 
 #include "core/errors.h"
 #include "core/timer.h"
+#include "paint/brush_placement.h"
 #include "paint/brush_space.h"
 #include "paint/paint_memory.h"
+#include "paint/snapshots.h"
 
-#include <algorithm> // for std::any_of, std::min, std::max
+#include <algorithm> // for std::any_of, std::find, std::min, std::max
 #include <optional>  // for std::optional
 #include <limits>    // for std::numeric_limits
 
@@ -19,15 +21,15 @@ namespace meshpaint {
 
 PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mesh, int level,
                            AtlasStorage storage, const BaseMaterial& material)
-  : atlas_(std::make_unique<Atlas>(runtime, mesh, level, storage)), level_(level), device_(std::make_unique<Device>()),
-    base_material_(material)
+  : atlas_(std::make_unique<Atlas>(runtime, mesh, level, storage)), level_(level),
+    device_(std::make_unique<PaintDevice>()), base_material_(material)
 {
   check_paint_fits(*atlas_, level, mesh.name);
   atlas_->subdivide(1, level);
   atlas_->compute_limit();
   const LevelLayout l = atlas_->layout(level);
   Runtime& rt = atlas_->runtime();
-  Device& d = *device_;
+  PaintDevice& d = *device_;
   try {
     d.positions.build(rt, storage);
     if (storage == AtlasStorage::Buffer)
@@ -67,13 +69,8 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     throw DeviceError("cannot set up painting on " + rt.info().name + ": " + describe(e));
   }
   in_stroke_.assign(std::size_t(l.patches), 0);
-  open_sides_.assign(std::size_t(l.patches), 0);
   changed_at_.assign(std::size_t(l.patches), 0);
-  const AtlasTopology& topo = atlas_->topology();
-  neighbours_.resize(std::size_t(l.patches));
-  for (int p = 0; p < l.patches; ++p)
-    for (int s = 0; s < 4; ++s)
-      neighbours_[std::size_t(p)][s] = topo.across(p, s);
+  placement_ = BrushPlacement(atlas_->topology());
 }
 
 PaintSurface::~PaintSurface() = default;
@@ -197,7 +194,7 @@ void PaintSurface::prepare_dab(const Stroke& stroke)
     throw InputError("the stroke's brush image has no samples (load '" + stroke.brush.stamp_file + "' first)");
   upload_rasters(stroke, dab);
   if (stroke.tool == Tool::Merge) {
-    merge_labels(p);
+    record_labels(merge_labels(state(), p));
     open_->report.dabs = open_->report.dabs_applied = 1;
     return;
   }
@@ -266,7 +263,10 @@ void PaintSurface::paint_sample(const DabSample& sample, bool may_end)
   bool on_surface = false;
   if (stroke.tool == Tool::Fill) { // no brush: the region around one point
     ++o.report.dabs;
-    on_surface = fill_labels(sample.centre, dab.radius, stroke.paint());
+    CullRecord seed{};
+    on_surface = dab.radius > 0.f && !brush_patches(sample.centre, dab.radius, nullptr, nullptr, 0.f, &seed).empty();
+    if (on_surface)
+      record_labels(fill_labels(state(), seed, stroke.paint()));
     o.report.dabs_applied += on_surface ? 1 : 0;
     dabs.clear();
   }
@@ -300,6 +300,62 @@ void PaintSurface::paint_sample(const DabSample& sample, bool may_end)
   }
 }
 
+void PaintSurface::record_labels(LabelEdit edit)
+{
+  if (edit.texels.empty())
+    return;
+  remember(edit.patches);
+  write_labels(state(), edit);
+}
+
+std::vector<int> PaintSurface::place(const Stroke& stroke, const DabSample& sample, BrushDab& dab, Vec3& normal)
+{
+  // A tangent or screen footprint runs further than the radius in space on
+  // surface turned from the brush: the search for it goes that far, at most.
+  const float reach =
+    dab.radius * (stroke.brush.space == SPACE_SCREEN ? 4.f : stroke.brush.space == SPACE_OBJECT ? 1.f : 2.f);
+  Vec3 centre;
+  CullRecord closest{};
+  std::vector<int> patches = placement_.brush_patches(state(), sample.centre, dab.radius, &centre, &normal, reach,
+                                                        &closest);
+  if (patches.empty())
+    return patches;
+  for (int k = 0; k < 3; ++k)
+    dab.centre[k] = centre[k];
+  dab.unfolded = 0;
+  choose_side(stroke, sample.centre, normal, dab);
+  if (!aim(state(), stroke.brush, normal, sample.heading, closest, dab))
+    return {};
+  if (stroke.brush.space == SPACE_PARAMETER)
+    return unfold_dab(state(), closest.patch, dab);
+  return patches;
+}
+
+void PaintSurface::choose_side(const Stroke& stroke, const Vec3& point, const Vec3& normal, BrushDab& dab)
+{
+  // The side a two-sided surface is painted on: the one the eye sees for a
+  // screen brush, else the one the stroke's point lies on.
+  const ToolFamily family = tool_family(stroke);
+  const bool colours = family == ToolFamily::Paint || family == ToolFamily::ColourFilter;
+  inside_ = false;
+  if (two_sided_ && colours) {
+    const Vec3 from = stroke.brush.space == SPACE_SCREEN && stroke.brush.has_camera ? stroke.brush.camera.position : point;
+    const float seen = dot(sub(from, Vec3{dab.centre[0], dab.centre[1], dab.centre[2]}), normal);
+    inside_ = stroke.brush.side == 2 || (stroke.brush.side == 0 && seen < 0.f);
+  }
+  dab.side_sign = inside_ ? -1.f : 1.f;
+  if (stroke.brush.has_camera && !(two_sided_ && colours) && open_) {
+    // A surface of one side shows it to the eye whichever way its faces
+    // are wound: the side facing the camera where the stroke starts is the
+    // front for the whole stroke, so inward-wound scans paint as outward ones.
+    if (open_->facing_side == 0.f) {
+      const Vec3 to_eye = sub(stroke.brush.camera.position, Vec3{dab.centre[0], dab.centre[1], dab.centre[2]});
+      open_->facing_side = dot(to_eye, normal) < 0.f ? -1.f : 1.f;
+    }
+    dab.side_sign = open_->facing_side;
+  }
+}
+
 StrokeReport PaintSurface::end_stroke(const Stroke& stroke)
 {
   if (!open_)
@@ -318,6 +374,19 @@ StrokeReport PaintSurface::end_stroke(const Stroke& stroke)
   report.ms = open_->timer.ms();
   close_stroke(stroke);
   return report;
+}
+
+std::vector<int> PaintSurface::brush_patches(const Vec3& point, float radius, Vec3* centre, Vec3* centre_normal,
+                                             float reach, CullRecord* closest)
+{
+  return placement_.brush_patches(state(), point, radius, centre, centre_normal, reach, closest);
+}
+
+void PaintSurface::hint_snap(int patch, double u, double v) { placement_.hint_snap(state(), patch, u, v); }
+
+float PaintSurface::distance_to(const Vec3& point, float radius)
+{
+  return placement_.distance_to(state(), point, radius);
 }
 
 void PaintSurface::phase_start()
@@ -377,7 +446,7 @@ void PaintSurface::set_two_sided(bool on)
   if (on == two_sided_)
     return;
   display_ = nullptr; // made again with (or without) the inside's arrays
-  Device& d = *device_;
+  PaintDevice& d = *device_;
   Runtime& rt = atlas_->runtime();
   const std::size_t bytes = atlas_->layout(level_).texels() * sizeof(Float4);
   if (on) {
@@ -428,6 +497,96 @@ void PaintSurface::write_channels(const PaintChannels& c)
   q.enqueueWriteBuffer(device_->inside_diffuse, CL_TRUE, 0, n * sizeof(Float4), c.inside_diffuse.data());
   q.enqueueWriteBuffer(device_->inside_specular, CL_TRUE, 0, n * sizeof(Float4), c.inside_specular.data());
   q.enqueueWriteBuffer(device_->inside_material, CL_TRUE, 0, n * sizeof(Float4), c.inside_material.data());
+}
+
+void PaintSurface::restore(const Snapshot& s)
+{
+  for (const int id : s.layer_ids) // the tiles put back may carry a mask
+    mask_painted_ = mask_painted_ || id == kMaterial || id == kInsideMaterial;
+  Runtime& rt = atlas_->runtime();
+  const cl::Buffer list = s.patches.empty() ? cl::Buffer() : device_ints(rt.context(), s.patches);
+  const PaintState st = state();
+  const auto scatter = [&](std::size_t k) { put_back_layer(st, s, k, list); };
+  const auto edit = std::find(s.layer_ids.begin(), s.layer_ids.end(), int(kEditPositions));
+  if (!s.patches.empty() && edit != s.layer_ids.end()) {
+    // The edit level's control points, and the levels up to the finest made
+    // from them, which the next edit at that level reads around its reach.
+    scatter(std::size_t(edit - s.layer_ids.begin()));
+    if (s.edit_level + 1 < level_) {
+      atlas_->subdivide(s.edit_level, level_ - 1, atlas_->neighbourhood(s.patches));
+    }
+  }
+  // Then the details, before the finest level, which they leave alone.
+  if (multires_) {
+    if (s.memo)
+      multires_->load(*s.memo);
+    multires_->resume(s.multires);
+  }
+  if (s.patches.empty())
+    return;
+  changed(s.patches);
+  for (std::size_t k = 0; k < s.layer_ids.size(); ++k)
+    if (s.layer_ids[k] != kEditPositions)
+      scatter(k);
+  if (std::find(s.layer_ids.begin(), s.layer_ids.end(), int(kPositions)) != s.layer_ids.end())
+    refresh_geometry(s.patches);
+  rt.queue().finish();
+}
+
+void PaintSurface::remember(const std::vector<int>& patches)
+{
+  changed(patches); // every dab that changes tiles says which here, first
+  if (!undo_.recording())
+    return;
+  std::vector<int> fresh;
+  for (const int p : patches)
+    if (!in_stroke_[std::size_t(p)])
+      fresh.push_back(p);
+  if (fresh.empty())
+    return;
+  Snapshot s = take_snapshot(state(), fresh, stroke_layers_, stroke_before_.edit_level); // flags only once the tiles are safe
+  for (const int p : fresh)
+    in_stroke_[std::size_t(p)] = 1;
+  stroke_before_.layer_ids = s.layer_ids;
+  stroke_before_.patches.insert(stroke_before_.patches.end(), s.patches.begin(), s.patches.end());
+  stroke_before_.layers.resize(std::max(stroke_before_.layers.size(), s.layers.size()));
+  for (std::size_t k = 0; k < s.layers.size(); ++k)
+    stroke_before_.layers[k].insert(stroke_before_.layers[k].end(), s.layers[k].begin(), s.layers[k].end());
+}
+
+bool PaintSurface::undo()
+{
+  if (!step(true))
+    return false;
+  undone_.push_back(std::move(history_.back()));
+  history_.pop_back();
+  return true;
+}
+
+bool PaintSurface::redo()
+{
+  if (!step(false))
+    return false;
+  history_.push_back(std::move(undone_.back()));
+  undone_.pop_back();
+  return true;
+}
+
+bool PaintSurface::step(bool back)
+{
+  if (back ? !undo_.can_undo() : !undo_.can_redo())
+    return false;
+  // Keep the present state of the same tiles, so the step can be reversed.
+  const Snapshot& target = back ? undo_.next_undo() : undo_.next_redo();
+  Snapshot now = take_snapshot(state(), target.patches, target.layer_ids, target.edit_level);
+  if (target.memo && multires_) // the step puts back another encoding: keep this one for the way back
+    now.memo = std::make_shared<const Multires::Memo>(multires_->save());
+  restore(target);
+  if (back)
+    undo_.undone(std::move(now));
+  else
+    undo_.redone(std::move(now));
+  return true;
 }
 
 } // namespace meshpaint

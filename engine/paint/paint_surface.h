@@ -1,8 +1,10 @@
 // A surface to paint on: the atlas at the painting level, its limit surface,
-// the paint channels, and the brush pipeline that changes them. The class's
-// parts live in files named for them: brush_placement.cpp, colour_brushes.cpp,
-// geometry_brushes.cpp, snapshots.cpp, subsurface_light.cpp,
-// painted_surface.cpp (reading the surface back), paint_memory.h (what fits).
+// the paint channels, the undo and change logs, and a stroke's way through
+// the brush pipeline. Parts of the class live in files named for them:
+// colour_brushes.cpp, geometry_brushes.cpp, painted_surface.cpp (reading the
+// surface back), paint_memory.h (what fits). Tool families that are free
+// functions or small classes over its PaintState: brush_placement.h,
+// brush_space.h, snapshots.h, subsurface_light.h, label_edits.h.
 #pragma once
 
 #include "atlas/atlas.h"
@@ -10,7 +12,10 @@
 #include "core/marks.h"
 #include "core/timer.h"
 #include "mesh/welded_surface.h"
+#include "paint/brush_placement.h"
 #include "paint/display_arrays.h"
+#include "paint/label_edits.h"
+#include "paint/paint_state.h"
 #include "paint/stroke.h"
 #include "paint/undo_log.h"
 
@@ -89,14 +94,6 @@ struct StrokeReport
   StepPhases phases;               //!< with PaintSurface::time_phases() on
 };
 
-//! A texel of the atlas at the painting level (CullRecord's patch and
-//! closest_texel, row-major in the tile); none while patch < 0.
-struct SnapHint
-{
-  int patch = -1;
-  int texel = -1;
-};
-
 //! Default material of unpainted surface.
 struct BaseMaterial
 {
@@ -118,6 +115,9 @@ public:
 
   Atlas& atlas() { return *atlas_; }
   int level() const { return level_; }
+  //! What the tool families work on (subsurface_light.h, label_edits.h,
+  //! snapshots.h, brush_placement.h, brush_space.h).
+  PaintState state() { return PaintState{*atlas_, level_, *device_, weld_map_, multires_}; }
 
   //! Two-sided materials: an inside set of diffuse, specular and roughness
   //! (starting as the base material), painted where the brush sees the
@@ -151,16 +151,10 @@ public:
   bool stroke_open() const { return open_ != nullptr; }
 
   //! Distance from `point` to the closest surface point within `radius`;
-  //! infinity when there is none.
+  //! infinity when there is none (BrushPlacement::distance_to).
   float distance_to(const Vec3& point, float radius);
 
-  //! The patches one dab at `point` would touch: those connected to the
-  //! closest surface point along the surface within `radius`, sorted. Empty
-  //! when no surface is within the radius. `centre` receives the snapped
-  //! centre.
-  //! `reach` (default: the radius) bounds the search for connected patches
-  //! when the brush's footprint reaches further than its radius in space
-  //! (tangent and screen brushes); `closest` receives the centre's texel.
+  //! The patches one dab at `point` would touch (BrushPlacement::brush_patches).
   std::vector<int> brush_patches(const Vec3& point, float radius, Vec3* centre = nullptr,
                                  Vec3* centre_normal = nullptr, float reach = 0.f, CullRecord* closest = nullptr);
 
@@ -175,11 +169,6 @@ public:
   void geometry_changed();
 
   PaintChannels read_channels();
-  //! Texture-space subsurface lighting (Ritschel et al., section 7): the
-  //! irradiance max(0, n . light) of a directional light at every texel,
-  //! diffused over the atlas by `passes` smoothing passes, per welded vertex
-  //! in the order of painted_surface().
-  std::vector<float> scattered_light(const Vec3& towards_light, int passes);
   //! Replaces every channel (e.g. from a saved project); each layer must
   //! hold the painting level's texels.
   //! \throw InputError when a layer has another size.
@@ -219,31 +208,11 @@ public:
   void time_phases(bool on) { time_phases_ = on; }
 
 private:
-  struct Device;
-  //! Records, in no particular order and each with its closest texel, of
-  //! patches with a texel within `radius` of `centre`: among them every
-  //! patch whose closest texel is the nearest (brush_cull).
-  std::vector<CullRecord> cull(const Vec3& centre, float radius);
-  //! The patches with a texel within `radius`, each with the sides that
-  //! come within it.
-  //! Fills open_sides_ from brush_reach.
-  void reach_sides(const Vec3& centre, float radius);
   bool step(bool back); // undo (back) or redo
   void paint(const std::vector<int>& patches, const BrushDab& dab);
-  //! Fill: the texels connected to the one closest to `point` (within
-  //! `radius`) through texels of its class, across patch sides and corners
-  //! (welded vertices), become class `id`: neighbours along the texel grid's
-  //! sides, and with settings.fill_diagonals across its corners too. Nothing where that class is
-  //! locked or not the only-over class, or no surface is in reach.
-  //! \return whether a surface was in reach
-  bool fill_labels(const Vec3& point, float radius, const PaintSettings& settings);
-  //! Merge: every texel of class settings.only_over_label becomes class
-  //! settings.value[CHANNEL_LABEL], the mask notwithstanding; nothing where
-  //! that class is locked.
-  void merge_labels(const PaintSettings& settings);
-  //! Class `id` into the label channel at `texels` (patch-major indices into
-  //! `material`, the whole layer as read), one undo step's worth.
-  void write_labels(std::vector<Float4>& material, const std::vector<std::size_t>& texels, int id);
+  //! A label edit (label_edits.h) as part of the running stroke: its tiles
+  //! remembered for undo, then written.
+  void record_labels(LabelEdit edit);
   //! One dab of spray paint: droplets at random points of the brush's disc
   //! on the screen (seeded by the stroke's seed and the dab's `index`).
   void spray(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke, std::uint64_t index);
@@ -292,45 +261,20 @@ private:
   //! The stroke's pattern samples, brush image and locked label classes to
   //! the device, sizes and the only-over class into the dab.
   void upload_rasters(const Stroke& stroke, BrushDab& dab);
-  //! The dab's brush space at its centre (camera axes, the centre's texel);
-  //! false where a screen-space stroke meets a silhouette and ends.
-  bool aim(const Stroke& stroke, const Vec3& point, const Vec3& normal, const Vec3& heading, const CullRecord& closest,
-           BrushDab& dab);
-  //! A parameter dab's patches around `centre_patch`, laid flat in its
-  //! texels (unfold()); their maps to the device, in the order returned.
-  std::vector<int> unfold_dab(int centre_patch, BrushDab& dab);
+  //! The side of a two-sided surface the dab paints, or the side a one-sided
+  //! surface shows the stroke's camera: BrushDab::side_sign (and inside_).
+  void choose_side(const Stroke& stroke, const Vec3& point, const Vec3& normal, BrushDab& dab);
   //! Finds the dab's site and aims it: the patches it may change, empty
   //! when it misses the surface (or meets a silhouette).
   std::vector<int> place(const Stroke& stroke, const DabSample& sample, BrushDab& dab, Vec3& normal);
-  //! Layers a snapshot may hold: the finest level's control points, the
-  //! channel layers, and the control points of a coarser edit level.
-  enum Layer : int
-  {
-    kPositions,
-    kDiffuse,
-    kSpecular,
-    kMaterial,
-    kInsideDiffuse,
-    kInsideSpecular,
-    kInsideMaterial,
-    kLimitPositions, // read only (painted_vertices): the limit surface at the painting level
-    kLimitNormals,
-    kEditPositions // the control points of a snapshot's edit_level
-  };
   //! The channel buffers a dab writes: the side it paints.
   cl::Buffer& diffuse_buffer();
   cl::Buffer& specular_buffer();
   cl::Buffer& material_buffer();
-  struct LayerKernels;
-  std::pair<LayerKernels*, const cl::Memory*> layer(int id, int edit_level = 0);
-  //! The given layers' tiles of `patches`, from the device, and the state of
-  //! the multiresolution details.
-  Snapshot take_snapshot(const std::vector<int>& patches, const std::vector<int>& layers, int edit_level = 0);
+  //! Puts back a snapshot's tiles and its state of the multiresolution details.
   void restore(const Snapshot& snapshot);
   //! Adds the patches not yet in the stroke's snapshot, before they change.
   void remember(const std::vector<int>& patches);
-  //! Per texel of the painting level: its welded vertex (weld_map), made once.
-  const std::vector<int>& texel_vertices();
   //! With time_phases() on: waits for the device and adds the time since
   //! the last call (or phase_start()) to `phase`.
   void phase_start();
@@ -353,22 +297,19 @@ private:
   StepPhases phases_;                  // the running stroke's, with time_phases_
   Timer phase_clock_;
   std::vector<Stroke> history_, undone_;
-  std::unique_ptr<Device> device_;
+  std::unique_ptr<PaintDevice> device_;
   BaseMaterial base_material_;
   UndoLog undo_;
   Snapshot stroke_before_;            // the running stroke's snapshot
   std::vector<int> stroke_layers_;    // the layers the running stroke changes
   std::vector<char> in_stroke_;       // per patch: already in stroke_before_
-  std::vector<std::array<int, 4>> neighbours_; // per patch side: the patch across, -1 on a border
-  Marks reached_;                        // per patch: reached by this dab's flood
-  SnapHint snap_hint_;                   // the texel the last dab snapped to: where cull() starts
-  std::vector<std::uint8_t> open_sides_; // per patch: bit s set if side s comes within the dab's reach, or REACH_NONE
+  BrushPlacement placement_; // the flood that finds a dab's patches, with its scratch
   std::unique_ptr<OpenStroke> open_; // the stroke being drawn
   bool two_sided_ = false;
   bool inside_ = false; // the running dab paints the inside
   std::uint64_t change_count_ = 1, all_changed_at_ = 1;
   std::vector<std::uint64_t> changed_at_; // per patch: the count of its last change
-  std::vector<int> weld_map_;             // per texel of the painting level: its welded vertex, made on first use
+  std::vector<int> weld_map_;             // per texel of the painting level: its welded vertex (texel_vertices())
   struct Display;
   std::shared_ptr<Display> display_;      // display_arrays() and their kernels, made on first use
 };

@@ -3,6 +3,7 @@
 // display last read it.
 
 #include "paint/paint_surface.h"
+#include "paint/snapshots.h"
 
 #include "atlas/weld.h"
 #include "cl/launch.h"
@@ -70,16 +71,9 @@ PaintedSurface painted(WeldedSurface surface, const std::vector<int>& map, const
 
 } // namespace
 
-const std::vector<int>& PaintSurface::texel_vertices()
-{
-  if (weld_map_.empty())
-    weld_map_ = weld_map(atlas_->topology(), atlas_->layout(level_));
-  return weld_map_;
-}
-
 PaintedSurface PaintSurface::painted_surface()
 {
-  return painted(level_surface(*atlas_, level_, true), texel_vertices(), read_channels());
+  return painted(level_surface(*atlas_, level_, true), texel_vertices(state()), read_channels());
 }
 
 PaintedSurface PaintSurface::painted_surface(int level)
@@ -125,7 +119,7 @@ PaintedVertices PaintSurface::painted_vertices(const std::vector<int>& patches)
   if (patches.empty())
     return out;
   const LevelLayout l = atlas_->layout(level_);
-  const std::vector<int>& map = texel_vertices();
+  const std::vector<int>& map = texel_vertices(state());
   // The listed tiles of each layer, gathered on the device and read back:
   // tile after tile, as `patches` lists them.
   const std::size_t per_tile = std::size_t(l.tile) * l.tile;
@@ -134,7 +128,7 @@ PaintedVertices PaintSurface::painted_vertices(const std::vector<int>& patches)
     layers.insert(layers.end(), {kInsideDiffuse, kInsideSpecular, kInsideMaterial});
   Snapshot tiles;
   try {
-    tiles = take_snapshot(patches, layers);
+    tiles = take_snapshot(state(), patches, layers);
   } catch (const cl::Error& e) {
     throw DeviceError("reading the painted surface failed on " + atlas_->runtime().info().name + ": " +
                       describe(e));
@@ -200,7 +194,7 @@ std::shared_ptr<DisplayArrays> PaintSurface::display_arrays()
       d->program = kernel_program(rt, KernelProgram::Display, storage_options(atlas_->storage(), rt.info()));
       d->vertices = cl::Kernel(d->program, "display_vertices");
       d->inside = cl::Kernel(d->program, "display_inside");
-      d->vertex_of = device_ints(rt.context(), texel_vertices());
+      d->vertex_of = device_ints(rt.context(), texel_vertices(state()));
     } catch (const cl::Error& e) {
       throw DeviceError("cannot set up the display arrays on " + rt.info().name + ": " + describe(e));
     }
@@ -217,6 +211,7 @@ std::shared_ptr<DisplayArrays> PaintSurface::display_arrays()
   const int count = listed ? int(listed->size()) : l.patches;
   Runtime& rt = atlas_->runtime();
   try {
+    const PaintState st = state();
     const cl::Memory& positions = atlas_->limit_positions_layer(); // brought up to date first
     const cl::Memory& normals = atlas_->limit_normals_layer();
     const cl::Buffer list = listed ? device_ints(rt.context(), *listed) : cl::Buffer();
@@ -230,13 +225,13 @@ std::shared_ptr<DisplayArrays> PaintSurface::display_arrays()
     const std::vector<cl::Buffer>& out = d.arrays->begin_write();
     if (count > 0) {
       const auto tiles = range_tiles(l, count);
-      launch(rt.queue(), d.vertices, tiles.first, tiles.second, positions, normals, *layer(kDiffuse).second,
-             *layer(kSpecular).second, *layer(kMaterial).second, grid(l), list, count, d.vertex_of, out[0], out[1],
-             out[2], out[3], out[4], out[5], out[6], out[7], d.arrays->flags());
+      const auto memory = [&](int id) -> const cl::Memory& { return *snapshot_layer(st, id).second; };
+      launch(rt.queue(), d.vertices, tiles.first, tiles.second, positions, normals, memory(kDiffuse),
+             memory(kSpecular), memory(kMaterial), grid(l), list, count, d.vertex_of, out[0], out[1], out[2], out[3],
+             out[4], out[5], out[6], out[7], d.arrays->flags());
       if (two_sided_)
-        launch(rt.queue(), d.inside, tiles.first, tiles.second, *layer(kInsideDiffuse).second,
-               *layer(kInsideSpecular).second, *layer(kInsideMaterial).second, grid(l), list, count, d.vertex_of,
-               out[8], out[9], out[10], d.arrays->flags());
+        launch(rt.queue(), d.inside, tiles.first, tiles.second, memory(kInsideDiffuse), memory(kInsideSpecular),
+               memory(kInsideMaterial), grid(l), list, count, d.vertex_of, out[8], out[9], out[10], d.arrays->flags());
     }
   } catch (const cl::Error& e) {
     d.shows = 0; // written in part, if at all: all of it next time

@@ -1,5 +1,7 @@
 // Texture-space subsurface lighting (Ritschel et al., section 7).
 
+#include "paint/subsurface_light.h"
+
 #include "paint/paint_device.h"
 
 #include "core/errors.h"
@@ -8,19 +10,19 @@
 
 namespace meshpaint {
 
-std::vector<float> PaintSurface::scattered_light(const Vec3& light, int passes)
+std::vector<float> scattered_light(const PaintState& state, const Vec3& light, int passes)
 {
-  Device& d = *device_;
-  Runtime& rt = atlas_->runtime();
+  PaintDevice& d = state.device;
+  Runtime& rt = state.atlas.runtime();
   cl::CommandQueue& q = rt.queue();
-  const LevelLayout l = atlas_->layout(level_);
+  const LevelLayout l = state.layout();
   const float len = std::sqrt(light[0] * light[0] + light[1] * light[1] + light[2] * light[2]);
   if (!(len > 0.f))
     throw InputError("the light's direction must not be zero");
   try {
     cl::Kernel irradiance(d.positions.program, "irradiance");
     const auto tiles = range_tiles(l, l.patches);
-    launch(q, irradiance, tiles.first, tiles.second, atlas_->limit_normals_layer(), grid(l), l.patches,
+    launch(q, irradiance, tiles.first, tiles.second, state.atlas.limit_normals_layer(), grid(l), l.patches,
            cl_float4{{light[0] / len, light[1] / len, light[2] / len, 0.f}}, d.channel_work);
     // Diffusion over the whole surface: the smoothing passes at full weight.
     q.enqueueFillBuffer(d.weights, 1.f, 0, l.texels() * sizeof(float));
