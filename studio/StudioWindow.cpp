@@ -23,7 +23,7 @@
 #include "mesh/base_mesh.h"             // for meshpaint::BaseMesh
 #include "paint/paint_scene.h"          // for meshpaint::PaintScene
 #include "paint/paint_surface.h"        // for meshpaint::PaintSurface
-#include "project/imported_colours.h"   // for meshpaint::apply_imported_colours
+#include "project/imported_channels.h"   // for meshpaint::apply_imported_channels
 #include "project/imported_labels.h"   // for meshpaint::apply_imported_labels
 #include "project/project_surface.h"    // for meshpaint::capture_surface, reference_surface
 
@@ -431,7 +431,7 @@ BackgroundTask* StudioWindow::change_level(int level)
       const AtlasStorage chosen = storage.empty() ? default_storage(runtime->info()) : parse_storage(storage);
       for (std::size_t k = 0; k < meshes.size() && !cancelled; ++k) {
         auto surface = std::make_shared<PaintSurface>(runtime, meshes[k], level, chosen);
-        apply_imported_colours(*surface);
+        apply_imported_channels(*surface);
         apply_imported_labels(*surface);
         rebuilt->add(std::move(surface), names[k]);
       }
