@@ -54,6 +54,8 @@ struct vtkPaintSurface::Internals
   vtkMTimeType built_from = 0; // input's modification time the surface was built from
   int built_level = 0;
   bool built_welded = true;
+  std::vector<meshpaint::ArrayImport> imports; // AddImportArray()
+  bool imports_changed = false;                // since the surface was built
   std::vector<meshpaint::Stroke> queued;
   //! The loaded project, without its layers: history, labels, scan and
   //! reference to carry into the next save.
@@ -327,6 +329,25 @@ int vtkPaintSurface::ExportModel(const char* dir)
   });
 }
 
+int vtkPaintSurface::AddImportArray(const char* name, const char* channel)
+{
+  const int ok = meshpaint::guarded(this->LastError, [&] {
+    this->Impl->imports.push_back(
+      meshpaint::parse_array_import(std::string(name ? name : "") + ":" + (channel ? channel : "")));
+    this->Impl->imports_changed = true;
+  });
+  if (ok)
+    this->Modified();
+  return ok;
+}
+
+void vtkPaintSurface::RemoveAllImportArrays()
+{
+  this->Impl->imports.clear();
+  this->Impl->imports_changed = true;
+  this->Modified();
+}
+
 int vtkPaintSurface::GetNumberOfLabelClasses()
 {
   return int(this->Impl->labels.size());
@@ -410,13 +431,15 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
     // Without an input, the surface is a loaded project's.
     if (!input && !in.surface)
       throw meshpaint::InputError("nothing to paint on: set an input or load a project");
-    if (!in.surface || (input && (in.built_from != input->GetMTime() || in.built_welded != this->Weld)) ||
+    if (!in.surface ||
+        (input && (in.built_from != input->GetMTime() || in.built_welded != this->Weld || in.imports_changed)) ||
         in.built_level != this->Level) {
       if (!input)
         throw meshpaint::InputError("a loaded project keeps its level " + std::to_string(in.built_level) +
                                     "; set an input to paint at another");
       meshpaint::ImportOptions import;
       import.weld = this->Weld;
+      import.arrays = in.imports;
       const meshpaint::BaseMesh mesh = meshpaint::import_polydata(input, "input", "input polygons: ", import);
       std::string report;
       for (const auto& lines : {mesh.report.step_lines(), mesh.report.lines()})
@@ -433,6 +456,7 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
       in.built_from = input->GetMTime();
       in.built_level = this->Level;
       in.built_welded = this->Weld;
+      in.imports_changed = false;
       in.project.reset();
       in.origin = {};
       this->StrokeCount = 0;

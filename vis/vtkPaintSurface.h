@@ -72,6 +72,16 @@ public:
   vtkBooleanMacro(Weld, bool);
   //@}
 
+  //@{
+  /// `--import-array NAME:CHANNEL`: the input's point array `name` becomes
+  /// the channel (diffuse, specular, roughness, displacement, label, mask)
+  /// at the next surface built. AddImportArray() returns 0 for an unknown
+  /// channel; a missing array or one of the wrong shape fails the Update().
+  /// Changing them starts over.
+  int AddImportArray(const char* name, const char* channel);
+  void RemoveAllImportArrays();
+  //@}
+
   /// What the import steps and repairs did to the input's polygons at the
   /// last surface built from it, one line each as the command line prints
   /// them ("welded 960 coincident vertices (tolerance 1e-05)"); empty when
