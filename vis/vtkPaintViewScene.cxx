@@ -12,7 +12,7 @@
 #include "mesh/base_mesh.h"      // for meshpaint::BaseMesh, load_mesh
 #include "paint/paint_surface.h" // for meshpaint::PaintSurface
 #include "project/imported_channels.h" // for meshpaint::apply_imported_channels
-#include "project/imported_labels.h" // for meshpaint::apply_imported_labels
+#include "project/imported_labels.h" // for meshpaint::apply_imported_labels, imported_label_classes
 
 #include <vtkBoundingBox.h> // for vtkBoundingBox
 #include <vtkPolyData.h>    // for vtkPolyData
@@ -82,6 +82,8 @@ int vtkPaintView::MeshObject(const meshpaint::BaseMesh& mesh, bool add)
     if (!add)
       this->RemoveObjects();
     this->AddObject(std::move(surface), mesh.name);
+    if (!add) // the file's classes (or one per label id), shown in their colours, kept by a save
+      in.labels = meshpaint::imported_label_classes(mesh);
   });
 }
 
