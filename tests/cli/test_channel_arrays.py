@@ -304,3 +304,18 @@ def test_vtk_ply_writer_colours_and_a_quality_mapping_together(tmp_path):
     assert r.returncode == 0 and "took the file's colours as the diffuse channel" in r.stdout, r.stdout + r.stderr
     r = run("info", tmp_path / "s.ply", "--import-array", "Curvature:roughness")
     assert r.returncode == 2 and "has no vertex array 'Curvature'" in r.stderr, r.stderr
+
+
+def test_face_properties_beside_vertex_quality_are_left_alone(tmp_path):
+    """MeshLab also writes per-face quality and flags: they are no vertex arrays."""
+    head = (b"ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+            b"property float z\nproperty float quality\nelement face 2\nproperty list uchar int vertex_indices\n"
+            b"property float quality\nproperty int flags\nend_header\n")
+    body = b"".join(struct.pack("<4f", *p) for p in [(0, 0, 0, .1), (1, 0, 0, .5), (1, 1, 0, .9), (0, 1, 0, .2)])
+    body += struct.pack("<B3ifi", 3, 0, 1, 2, 0.7, 3) + struct.pack("<B3ifi", 3, 0, 2, 3, 0.2, 0)
+    mesh = tmp_path / "faces.ply"
+    mesh.write_bytes(head + body)
+    r = run("info", mesh, "--import-array", "quality:mask")
+    assert r.returncode == 0, r.stderr
+    assert "counts       4 vertices, 5 edges, 2 faces" in r.stdout, r.stdout
+    assert "took the file's 'quality' array as the mask channel (4 vertices)" in r.stdout

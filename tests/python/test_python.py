@@ -348,17 +348,34 @@ def test_polydata_input_goes_through_the_import_steps():
     assert "outward" not in poly_file.GetImportReport()
 
 
-def test_polydata_label_array_becomes_the_label_channel():
-    # The cube soup with a "label" point array: the top's points 5, the rest 2;
-    # welded points keep their ids, the top face's surface takes 5.
+def labelled_cube(classes=True):
+    """The cube soup with a label array (top 5, the rest 2) and, with `classes`, the label classes
+    as meshpaint's surface.vtp carries them: field data label_ids, label_names, label_colors."""
     poly = cube_soup()
     ids = vtk.vtkIntArray()
     ids.SetName("label")
     for i in range(poly.GetNumberOfPoints()):
         ids.InsertNextValue(5 if poly.GetPoint(i)[2] > 0.5 else 2)
     poly.GetPointData().AddArray(ids)
+    if classes:
+        class_ids, names, colours = vtk.vtkIntArray(), vtk.vtkStringArray(), vtk.vtkUnsignedCharArray()
+        class_ids.SetName("label_ids")
+        names.SetName("label_names")
+        colours.SetName("label_colors")
+        colours.SetNumberOfComponents(3)
+        for i, name, rgb in ((2, "shaft", (255, 0, 0)), (5, "head", (0, 0, 255)), (9, "unused", (0, 255, 0))):
+            class_ids.InsertNextValue(i)
+            names.InsertNextValue(name)
+            colours.InsertNextTuple3(*rgb)
+        for a in (class_ids, names, colours):
+            poly.GetFieldData().AddArray(a)
+    return poly
+
+
+def test_polydata_label_array_becomes_the_label_channel():
+    # Welded points keep their ids, the top face's surface takes 5.
     s = meshpaint.vtkPaintSurface()
-    s.SetInputData(poly)
+    s.SetInputData(labelled_cube(classes=False))
     s.SetLevel(2)
     s.Update()
     assert "took the file's 'label' array as the label channel (2 classes)" in s.GetImportReport()
@@ -383,30 +400,6 @@ def test_polydata_input_with_a_diffuse_array_starts_with_those_colours():
     s.Update()
     diffuse = vtk_to_numpy(s.GetChannel("diffuse"))
     assert np.allclose(diffuse, [0.2, 0.4, 0.6], atol=1e-6)
-
-
-def labelled_cube(classes=True):
-    """The cube soup with a label array (top 5, the rest 2) and, with `classes`, the label classes
-    as meshpaint's surface.vtp carries them: field data label_ids, label_names, label_colors."""
-    poly = cube_soup()
-    ids = vtk.vtkIntArray()
-    ids.SetName("label")
-    for i in range(poly.GetNumberOfPoints()):
-        ids.InsertNextValue(5 if poly.GetPoint(i)[2] > 0.5 else 2)
-    poly.GetPointData().AddArray(ids)
-    if classes:
-        class_ids, names, colours = vtk.vtkIntArray(), vtk.vtkStringArray(), vtk.vtkUnsignedCharArray()
-        class_ids.SetName("label_ids")
-        names.SetName("label_names")
-        colours.SetName("label_colors")
-        colours.SetNumberOfComponents(3)
-        for i, name, rgb in ((2, "shaft", (255, 0, 0)), (5, "head", (0, 0, 255)), (9, "unused", (0, 255, 0))):
-            class_ids.InsertNextValue(i)
-            names.InsertNextValue(name)
-            colours.InsertNextTuple3(*rgb)
-        for a in (class_ids, names, colours):
-            poly.GetFieldData().AddArray(a)
-    return poly
 
 
 def label_classes(s):
