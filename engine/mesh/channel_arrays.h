@@ -3,8 +3,9 @@
 // those become which channel (by their name, or as --import-array says).
 #pragma once
 
-#include <string> // for std::string
-#include <vector> // for std::vector
+#include <cstddef> // for std::size_t
+#include <string>  // for std::string
+#include <vector>  // for std::vector
 
 namespace meshpaint {
 
