@@ -4,6 +4,7 @@ Files are written as VTK's writers and MeshLab write them: vtkXMLPolyDataWriter,
 vtkPolyDataWriter, vtkPLYWriter, and a hand-written PLY with `property float quality`.
 """
 import json
+import locale
 import os
 import struct
 import subprocess
@@ -271,7 +272,11 @@ def test_vtk_scalars_become_channels(tmp_path, writer):
         w = vtk.vtkPolyDataWriter()
         w.SetInputData(poly)
         w.SetFileName(str(tmp_path / "s.vtk"))
-        assert w.Write() == 1
+        kept = locale.setlocale(locale.LC_ALL)
+        try:
+            assert w.Write() == 1
+        finally:  # VTK 9.1's legacy writer leaves the process in the C locale (ASCII text I/O for later tests)
+            locale.setlocale(locale.LC_ALL, kept)
         mesh = str(tmp_path / "s.vtk")
     (tmp_path / "none.json").write_text('{"strokes": []}')
     out = paint(mesh, tmp_path / "out", tmp_path / "none.json", "--import-array", "Curvature:displacement")
