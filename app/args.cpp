@@ -28,6 +28,7 @@ Args::Args(const std::string& command, const std::vector<std::string>& argv, con
         values_[name] = argv[++i];
       else
         throw InputError(name + " needs a value");
+      all_values_[name].push_back(values_[name]);
     } else {
       throw InputError("unknown option " + name + " for 'meshpaint " + command_ +
                        "' (see meshpaint help)");
@@ -39,6 +40,12 @@ void Args::expect_positionals(std::size_t min, std::size_t max, const std::strin
 {
   if (positionals_.size() < min || positionals_.size() > max)
     throw InputError("usage: meshpaint " + command_ + " " + usage);
+}
+
+std::vector<std::string> Args::values(const std::string& name) const
+{
+  const auto it = all_values_.find(name);
+  return it == all_values_.end() ? std::vector<std::string>() : it->second;
 }
 
 std::string Args::value(const std::string& name, const std::string& fallback) const

@@ -26,6 +26,8 @@ public:
   bool flag(const std::string& name) const { return flags_.count(name) > 0; }
   bool has(const std::string& name) const { return values_.count(name) > 0; }
   std::string value(const std::string& name, const std::string& fallback = "") const;
+  //! Every value of an option given repeatedly, in order (value() keeps the last).
+  std::vector<std::string> values(const std::string& name) const;
   //! \throw InputError when the value is not an integer in [min, max].
   int integer(const std::string& name, int fallback, int min, int max) const;
 
@@ -34,6 +36,7 @@ private:
   std::vector<std::string> positionals_;
   std::set<std::string> flags_;
   std::map<std::string, std::string> values_;
+  std::map<std::string, std::vector<std::string>> all_values_;
 };
 
 } // namespace meshpaint::cli

@@ -5,7 +5,7 @@
 #include "core/format.h"  // for meshpaint::lower_extension
 #include "mesh/base_mesh.h" // for meshpaint::readable_mesh_extensions
 #include "PolyDataFiles.h"
-#include "project/imported_colours.h"
+#include "project/imported_channels.h"
 #include "project/imported_labels.h"
 #include "project/project_surface.h"
 
@@ -81,6 +81,8 @@ ImportOptions import_options(const Args& args)
 {
   ImportOptions options;
   options.weld = !args.flag("--no-weld");
+  for (const std::string& text : args.values("--import-array"))
+    options.arrays.push_back(parse_array_import(text));
   return options;
 }
 
@@ -103,8 +105,11 @@ MeshOrProject open_mesh_or_project(const std::string& path, const ImportOptions&
 {
   MeshOrProject input;
   input.path = path;
-  if (is_project_path(path))
+  if (is_project_path(path)) {
+    if (!options.arrays.empty())
+      throw InputError("--import-array reads mesh files; '" + path + "' is a project, whose channels are its own");
     input.project = load_project(path);
+  }
   else
     input.loaded = load_reported(path, options);
   return input;
@@ -147,7 +152,7 @@ std::unique_ptr<PaintSurface> open_paint_surface(const std::shared_ptr<Runtime>&
   if (input.project)
     return open_project_surface(runtime, *input.project, storage);
   auto surface = std::make_unique<PaintSurface>(runtime, input.loaded, level, storage);
-  apply_imported_colours(*surface);
+  apply_imported_channels(*surface);
   apply_imported_labels(*surface);
   return surface;
 }

@@ -25,7 +25,8 @@ using Argv = std::vector<std::string>;
 //! The device named by --device (or MESHPAINT_DEVICE, or the default).
 std::shared_ptr<Runtime> open_device(const Args& args);
 
-//! The import options of the flags (--no-weld).
+//! The import options of the flags (--no-weld, --import-array).
+//! \throw InputError for an --import-array that is not NAME:CHANNEL.
 ImportOptions import_options(const Args& args);
 
 //! Loads a mesh and reports on stderr what import repaired and what its

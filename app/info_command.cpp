@@ -35,7 +35,7 @@ std::string hex32(std::uint32_t v)
 
 int info_command(const Argv& argv)
 {
-  Args args("info", argv, {"--no-weld"}, {"--device", "--storage"});
+  Args args("info", argv, {"--no-weld"}, {"--device", "--storage", "--import-array"});
   args.expect_positionals(1, 1, "MESH|PROJECT");
   const std::string path = args.positionals()[0];
   const MeshOrProject input = open_mesh_or_project(path, import_options(args));

@@ -69,6 +69,8 @@ MESH: a mesh file (.obj .off .ply .stl .vtp .vtk) or a project (.meshpaint) for 
 paint, view and stats
 options of demo, info, subdivide, paint, view, stats and bench: --device SEL (gpu, cpu, P:D
 or part of a name), --storage buffer|image
+info, paint, view and stats: --import-array NAME:CHANNEL (repeatable): the mesh file's vertex
+array NAME as a channel (diffuse, specular, roughness, displacement, label, mask)
 )";
 
 //! The first line of each command's entry in kUsage starts with two spaces

@@ -103,7 +103,7 @@ int paint_command(const Argv& argv)
 {
   Args args("paint", argv, {"--quiet", "--two-sided", "--no-weld"},
             {"--strokes", "--level", "--model-level", "--lod", "-o", "--save", "--labels", "--device", "--storage",
-             "--screenshot", "--camera", "--size", "--subsurface", "--gltf", "--show"});
+             "--screenshot", "--camera", "--size", "--subsurface", "--gltf", "--show", "--import-array"});
   args.expect_positionals(1, 64, "MESH|PROJECT... --strokes S.json [--level L] [--model-level M] [--lod L] [--two-sided] "
                                 "[-o OUTDIR] [--gltf FILE.glb|FILE.gltf] [--save P.meshpaint] [--labels labels.json] "
                                 "[--screenshot OUT.png [--camera AZ,EL,ZOOM] [--size WxH] [--subsurface N] "

@@ -60,7 +60,7 @@ nlohmann::json json_triple(const Vec3& v) { return nlohmann::json::array({v[0], 
 
 int stats_command(const Argv& argv)
 {
-  Args args("stats", argv, {"--json", "--csv", "--no-weld"}, {"--labels", "--level", "--device", "--storage"});
+  Args args("stats", argv, {"--json", "--csv", "--no-weld"}, {"--labels", "--level", "--device", "--storage", "--import-array"});
   args.expect_positionals(1, 1, "MESH|PROJECT [--labels labels.json] [--json|--csv]");
   if (args.flag("--json") && args.flag("--csv"))
     throw InputError("--json and --csv exclude each other");

@@ -39,7 +39,8 @@ int default_view_level(const std::vector<MeshOrProject>& inputs)
 
 int view_command(const Argv& argv)
 {
-  Args args("view", argv, {"--no-weld"}, {"--strokes", "--level", "--lod", "-o", "--size", "--device", "--storage"});
+  Args args("view", argv, {"--no-weld"}, {"--strokes", "--level", "--lod", "-o", "--size", "--device", "--storage",
+                                              "--import-array"});
   args.expect_positionals(1, 64, "MESH...|PROJECT [--strokes S.json] [--level L] [--lod L] [-o DIR] [--size WxH]");
   const std::vector<std::string>& paths = args.positionals();
   if (paths.size() > 1)

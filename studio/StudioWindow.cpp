@@ -24,7 +24,7 @@
 #include "mesh/base_mesh.h"             // for meshpaint::BaseMesh
 #include "paint/paint_scene.h"          // for meshpaint::PaintScene
 #include "paint/paint_surface.h"        // for meshpaint::PaintSurface
-#include "project/imported_colours.h"   // for meshpaint::apply_imported_colours
+#include "project/imported_channels.h"   // for meshpaint::apply_imported_channels
 #include "project/imported_labels.h"   // for meshpaint::apply_imported_labels
 #include "project/project_surface.h"    // for meshpaint::capture_surface, reference_surface, stroke_history
 #include "RasterIO.h"                   // for meshpaint::load_stroke_rasters
@@ -455,7 +455,7 @@ BackgroundTask* StudioWindow::change_level(int level)
       for (std::size_t k = 0; k < meshes.size(); ++k) {
         stop_if_cancelled(&cancelled);
         auto surface = std::make_shared<PaintSurface>(runtime, meshes[k], level, chosen);
-        apply_imported_colours(*surface);
+        apply_imported_channels(*surface);
         apply_imported_labels(*surface);
         if (continued && !continued->reference.empty()) { // a fitted project starts from its fit
           continued->reference = reference_at_level(runtime, *continued, level, chosen);

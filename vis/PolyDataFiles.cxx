@@ -2,14 +2,17 @@
 
 #include "core/errors.h" // for meshpaint::IOError, InputError
 #include "core/format.h" // for meshpaint::lower_extension, excerpt
+#include "project/labels.h" // for meshpaint::LabelClass, check_labels
 
 #include <vtkCellArray.h>         // for vtkCellArray
 #include <vtkDataArray.h>         // for vtkDataArray
+#include <vtkFieldData.h>         // for vtkFieldData
 #include <vtkLogger.h>            // for vtkLogger::SetStderrVerbosity
 #include <vtkObjectFactory.h>     // for vtkStandardNewMacro
 #include <vtkOutputWindow.h>      // for vtkOutputWindow
 #include <vtkPointData.h>         // for vtkPointData
 #include <vtkPolyDataReader.h>    // for vtkPolyDataReader
+#include <vtkStringArray.h>       // for vtkStringArray
 #include <vtkXMLPolyDataReader.h> // for vtkXMLPolyDataReader
 
 #include <algorithm>  // for std::transform
@@ -227,6 +230,63 @@ vtkDataArray* byte_colours(vtkPolyData* poly)
   return nullptr;
 }
 
+//! Every numeric point array with a value per point, for take_channel_arrays().
+void read_point_arrays(vtkPolyData* poly, PolygonSoup& soup)
+{
+  vtkPointData* pd = poly->GetPointData();
+  const vtkIdType points = poly->GetNumberOfPoints();
+  for (int k = 0; k < pd->GetNumberOfArrays(); ++k) {
+    vtkDataArray* a = pd->GetArray(k);
+    if (!a || !a->GetName() || a->GetNumberOfTuples() != points || a->GetNumberOfComponents() < 1)
+      continue;
+    VertexArray v;
+    v.name = a->GetName();
+    v.components = a->GetNumberOfComponents();
+    v.integer = a->GetDataType() != VTK_FLOAT && a->GetDataType() != VTK_DOUBLE;
+    v.values.resize(std::size_t(points) * std::size_t(v.components));
+    for (vtkIdType t = 0; t < points; ++t)
+      for (int c = 0; c < v.components; ++c)
+        v.values[std::size_t(t) * std::size_t(v.components) + std::size_t(c)] = a->GetComponent(t, c);
+    soup.arrays.push_back(std::move(v));
+  }
+}
+
+//! The label classes named by the field data label_ids, label_names and
+//! label_colors, as add_label_classes() writes them; none without label_ids.
+void read_label_classes(vtkPolyData* poly, PolygonSoup& soup, const std::string& where)
+{
+  vtkFieldData* fd = poly->GetFieldData();
+  vtkDataArray* ids = fd ? fd->GetArray("label_ids") : nullptr;
+  if (!ids)
+    return;
+  auto* names = vtkStringArray::SafeDownCast(fd->GetAbstractArray("label_names"));
+  vtkDataArray* colours = fd->GetArray("label_colors");
+  const vtkIdType n = ids->GetNumberOfTuples();
+  if (ids->GetNumberOfComponents() != 1 || !names || names->GetNumberOfValues() != n || !colours ||
+      colours->GetNumberOfComponents() != 3 || colours->GetNumberOfTuples() != n)
+    throw InputError(where + "the field data label_ids, label_names and label_colors do not agree (one id, one "
+                     "name and one RGB byte colour per class)");
+  std::vector<LabelClass> classes(static_cast<std::size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i) {
+    LabelClass& c = classes[std::size_t(i)];
+    const double id = ids->GetComponent(i, 0);
+    if (!(id >= 0 && id <= double(kMaxLabelId)))
+      throw InputError(where + "label_ids entry " + std::to_string(i) + " is not an id from 0 to " +
+                       std::to_string(kMaxLabelId));
+    c.id = int(id);
+    c.name = names->GetValue(i);
+    for (int a = 0; a < 3; ++a)
+      c.colour[std::size_t(a)] = float(std::min(255.0, std::max(0.0, colours->GetComponent(i, a))) / 255.0);
+  }
+  try {
+    check_labels(classes);
+  } catch (const InputError& e) {
+    throw InputError(where + "label classes of the field data: " + e.what());
+  }
+  for (const LabelClass& c : classes)
+    soup.label_classes.push_back({c.id, c.name, c.colour});
+}
+
 } // namespace
 
 bool is_polydata_path(const std::string& path)
@@ -332,25 +392,13 @@ BaseMesh import_polydata(vtkPolyData* poly, const std::string& name, const std::
       soup.faces.emplace_back(ids, ids + n);
     }
   }
-  vtkDataArray* diffuse = poly->GetPointData()->GetArray("diffuse");
-  if (!(diffuse && diffuse->GetNumberOfComponents() == 3 && diffuse->GetNumberOfTuples() == points)) {
-    diffuse = nullptr;
-    if (vtkDataArray* bytes = byte_colours(poly))
-      for (vtkIdType v = 0; v < points; ++v)
-        soup.colours.push_back({float(bytes->GetComponent(v, 0) / 255.0), float(bytes->GetComponent(v, 1) / 255.0),
-                                float(bytes->GetComponent(v, 2) / 255.0)});
-  }
-  if (diffuse)
-    for (vtkIdType v = 0; v < points; ++v) {
-      Vec3 c;
-      for (int a = 0; a < 3; ++a) {
-        const double value = diffuse->GetComponent(v, a);
-        if (!(value >= 0 && value <= 1))
-          throw InputError(where + "point " + std::to_string(v) + " has a diffuse value outside 0-1");
-        c[std::size_t(a)] = float(value);
-      }
-      soup.colours.push_back(c);
-    }
+  // Byte colours, unless an array becomes the diffuse channel (take_channel_arrays()).
+  if (vtkDataArray* bytes = byte_colours(poly))
+    for (vtkIdType v = 0; v < points; ++v)
+      soup.colours.push_back({float(bytes->GetComponent(v, 0) / 255.0), float(bytes->GetComponent(v, 1) / 255.0),
+                              float(bytes->GetComponent(v, 2) / 255.0)});
+  read_point_arrays(poly, soup);
+  read_label_classes(poly, soup, where);
   // The first integer, one-component point array named as labels are.
   for (const std::string& label : label_array_names()) {
     vtkDataArray* ids = poly->GetPointData()->GetArray(label.c_str());

@@ -33,12 +33,16 @@ MESHPAINTVIS_EXPORT vtkSmartPointer<vtkPolyData> read_polydata_file(const std::s
 
 //! Polygons handed over in memory (Python, VTK pipelines) as a base mesh,
 //! through the same import steps and checks as a file's (import_mesh()): its
-//! points, its polygons, and as the mesh's colours a 3-component point array
-//! named `diffuse` (values 0-1), else RGB bytes as other tools write them (3
-//! or 4 unsigned chars per point, alpha ignored: the point scalars, or an
-//! array named Colors, RGB or RGBA). Messages start with `where`.
+//! points, its polygons, as the mesh's colours RGB bytes as other tools
+//! write them (3 or 4 unsigned chars per point, alpha ignored: the point
+//! scalars, or an array named Colors, RGB or RGBA), its point arrays for the
+//! channels (take_channel_arrays(): by their name, as `diffuse`, or as
+//! `options.arrays` says), an integer one named as label_array_names() as
+//! labels, and the label classes of its field data label_ids, label_names
+//! and label_colors. Messages start with `where`.
 //! \throw InputError when there are no polygons, a point is not
-//! finite, a polygon names a missing point, or the mesh is unusable.
+//! finite, a polygon names a missing point, the mesh is unusable, an array
+//! for a channel is missing or out of range, or the label classes are invalid.
 MESHPAINTVIS_EXPORT BaseMesh import_polydata(vtkPolyData* poly, const std::string& name, const std::string& where,
                                              const ImportOptions& options = {});
 

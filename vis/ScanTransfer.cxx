@@ -216,6 +216,8 @@ TransferReport transfer_to_scan(const PaintedSurface& painted, const WeldedSurfa
     int sub = 0;
     scan->GetPoint(v, x);
     locator->FindClosestPoint(x, closest, cell, triangle, sub, dist2);
+    // The locator leaves in `cell` the last triangle it tried, not always the closest.
+    triangles->GetCell(triangle, cell);
     cell->EvaluatePosition(closest, ignored, sub, pcoords, ignored_dist2, weights);
     report.max_distance = std::max(report.max_distance, std::sqrt(dist2));
     sum2 += dist2;

@@ -11,8 +11,8 @@
 #include "core/errors.h"               // for meshpaint::InputError
 #include "paint/paint_surface.h"       // for meshpaint::PaintSurface
 #include "paint/stroke_session.h"      // for meshpaint::StrokeSession
-#include "project/imported_colours.h"  // for meshpaint::apply_imported_colours
-#include "project/imported_labels.h"  // for meshpaint::apply_imported_labels
+#include "project/imported_channels.h"  // for meshpaint::apply_imported_channels
+#include "project/imported_labels.h"  // for meshpaint::apply_imported_labels, imported_label_classes
 #include "project/project_surface.h"   // for meshpaint::open_project_surface, save_painted_project
 #include "project/vertex_channels.h"   // for meshpaint::vertex_channel, set_vertex_channel
 
@@ -54,10 +54,15 @@ struct vtkPaintSurface::Internals
   vtkMTimeType built_from = 0; // input's modification time the surface was built from
   int built_level = 0;
   bool built_welded = true;
+  std::vector<meshpaint::ArrayImport> imports; // AddImportArray()
+  bool imports_changed = false;                // since the surface was built
   std::vector<meshpaint::Stroke> queued;
   //! The loaded project, without its layers: history, labels, scan and
   //! reference to carry into the next save.
   std::optional<meshpaint::Project> project;
+  //! The label classes: the loaded project's, or those of the input's file
+  //! data and label ids (imported_label_classes()).
+  std::vector<meshpaint::LabelClass> labels;
   //! The file this surface was last loaded from or saved to, as it was then.
   meshpaint::ProjectOrigin origin;
   std::map<std::string, vtkSmartPointer<vtkDataArray>> channels; // arrays handed out by GetChannel
@@ -265,6 +270,7 @@ int vtkPaintSurface::SaveProject(const char* path)
   return meshpaint::guarded(this->LastError, [&] {
     Internals& in = *this->Impl;
     meshpaint::Project base = in.project ? *in.project : meshpaint::Project();
+    base.labels = in.labels;
     base.origin = in.origin;
     in.origin = meshpaint::save_painted_project(*in.surface, std::move(base), path ? path : "");
   });
@@ -302,6 +308,7 @@ int vtkPaintSurface::LoadProject(const char* path)
     p.positions = {};
     p.channels = {};
     in.origin = p.origin;
+    in.labels = p.labels;
     in.project = std::move(p);
   });
   if (ok)
@@ -318,9 +325,51 @@ int vtkPaintSurface::ExportModel(const char* dir)
     const int model_level =
       this->ModelLevel > 0 ? std::min(this->ModelLevel, level) : meshpaint::default_model_level(level);
     const Internals& in = *this->Impl;
-    meshpaint::export_painting(*in.surface, model_level, dir ? dir : "",
-                               in.project ? in.project->labels : std::vector<meshpaint::LabelClass>());
+    meshpaint::export_painting(*in.surface, model_level, dir ? dir : "", in.labels);
   });
+}
+
+int vtkPaintSurface::AddImportArray(const char* name, const char* channel)
+{
+  const int ok = meshpaint::guarded(this->LastError, [&] {
+    this->Impl->imports.push_back(
+      meshpaint::parse_array_import(std::string(name ? name : "") + ":" + (channel ? channel : "")));
+    this->Impl->imports_changed = true;
+  });
+  if (ok)
+    this->Modified();
+  return ok;
+}
+
+void vtkPaintSurface::RemoveAllImportArrays()
+{
+  this->Impl->imports.clear();
+  this->Impl->imports_changed = true;
+  this->Modified();
+}
+
+int vtkPaintSurface::GetNumberOfLabelClasses()
+{
+  return int(this->Impl->labels.size());
+}
+
+int vtkPaintSurface::GetLabelClassId(int i)
+{
+  const auto& labels = this->Impl->labels;
+  return i >= 0 && i < int(labels.size()) ? labels[std::size_t(i)].id : -1;
+}
+
+const char* vtkPaintSurface::GetLabelClassName(int i)
+{
+  const auto& labels = this->Impl->labels;
+  return i >= 0 && i < int(labels.size()) ? labels[std::size_t(i)].name.c_str() : "";
+}
+
+void vtkPaintSurface::GetLabelClassColor(int i, double rgb[3])
+{
+  const auto& labels = this->Impl->labels;
+  for (int a = 0; a < 3; ++a)
+    rgb[a] = i >= 0 && i < int(labels.size()) ? double(labels[std::size_t(i)].colour[std::size_t(a)]) : 0.0;
 }
 
 vtkDataArray* vtkPaintSurface::GetChannel(const char* name)
@@ -382,13 +431,15 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
     // Without an input, the surface is a loaded project's.
     if (!input && !in.surface)
       throw meshpaint::InputError("nothing to paint on: set an input or load a project");
-    if (!in.surface || (input && (in.built_from != input->GetMTime() || in.built_welded != this->Weld)) ||
+    if (!in.surface ||
+        (input && (in.built_from != input->GetMTime() || in.built_welded != this->Weld || in.imports_changed)) ||
         in.built_level != this->Level) {
       if (!input)
         throw meshpaint::InputError("a loaded project keeps its level " + std::to_string(in.built_level) +
                                     "; set an input to paint at another");
       meshpaint::ImportOptions import;
       import.weld = this->Weld;
+      import.arrays = in.imports;
       const meshpaint::BaseMesh mesh = meshpaint::import_polydata(input, "input", "input polygons: ", import);
       std::string report;
       for (const auto& lines : {mesh.report.step_lines(), mesh.report.lines()})
@@ -397,13 +448,15 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
       auto runtime = meshpaint::Runtime::open(this->Device);
       auto surface =
         std::make_shared<meshpaint::PaintSurface>(runtime, mesh, this->Level, meshpaint::default_storage(runtime->info()));
-      meshpaint::apply_imported_colours(*surface);
+      meshpaint::apply_imported_channels(*surface);
       meshpaint::apply_imported_labels(*surface);
       in.set_surface(std::move(surface));
+      in.labels = meshpaint::imported_label_classes(mesh);
       this->ImportReport = report;
       in.built_from = input->GetMTime();
       in.built_level = this->Level;
       in.built_welded = this->Weld;
+      in.imports_changed = false;
       in.project.reset();
       in.origin = {};
       this->StrokeCount = 0;

@@ -72,6 +72,16 @@ public:
   vtkBooleanMacro(Weld, bool);
   //@}
 
+  //@{
+  /// `--import-array NAME:CHANNEL`: the input's point array `name` becomes
+  /// the channel (diffuse, specular, roughness, displacement, label, mask)
+  /// at the next surface built. AddImportArray() returns 0 for an unknown
+  /// channel; a missing array or one of the wrong shape fails the Update().
+  /// Changing them starts over.
+  int AddImportArray(const char* name, const char* channel);
+  void RemoveAllImportArrays();
+  //@}
+
   /// What the import steps and repairs did to the input's polygons at the
   /// last surface built from it, one line each as the command line prints
   /// them ("welded 960 coincident vertices (tolerance 1e-05)"); empty when
@@ -133,8 +143,8 @@ public:
 
   //@{
   /// Projects. SaveProject() paints queued strokes first, then writes the
-  /// surface, its stroke history (the loaded project's, then this filter's)
-  /// and the loaded project's labels and scan. LoadProject() makes the
+  /// surface, its stroke history (the loaded project's, then this filter's),
+  /// the label classes (GetLabelClassName()) and the loaded project's scan. LoadProject() makes the
   /// project the source: the input connection is dropped, the level becomes
   /// the project's, and undo starts afresh. Both return 0 on failure.
   int SaveProject(const char* path);
@@ -154,6 +164,18 @@ public:
   /// 0 to 12; another value is refused as SetLevel() refuses one.
   void SetModelLevel(int level);
   vtkGetMacro(ModelLevel, int);
+  //@}
+
+  //@{
+  /// The label classes, in ascending id: a loaded project's, or, once an
+  /// input is painted (Update()), those its field data names (label_ids,
+  /// label_names, label_colors, as ExportModel() writes them) and a class
+  /// "label ID" for each other id of its label array. SaveProject() and
+  /// ExportModel() write them. Out of range: id -1, name "", colour black.
+  int GetNumberOfLabelClasses();
+  int GetLabelClassId(int i);
+  const char* GetLabelClassName(int i);
+  void GetLabelClassColor(int i, double rgb[3]);
   //@}
 
   //@{

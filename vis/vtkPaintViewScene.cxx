@@ -11,8 +11,8 @@
 #include "core/errors.h"         // for meshpaint::InputError
 #include "mesh/base_mesh.h"      // for meshpaint::BaseMesh, load_mesh
 #include "paint/paint_surface.h" // for meshpaint::PaintSurface
-#include "project/imported_colours.h" // for meshpaint::apply_imported_colours
-#include "project/imported_labels.h" // for meshpaint::apply_imported_labels
+#include "project/imported_channels.h" // for meshpaint::apply_imported_channels
+#include "project/imported_labels.h" // for meshpaint::apply_imported_labels, imported_label_classes
 
 #include <vtkBoundingBox.h> // for vtkBoundingBox
 #include <vtkPolyData.h>    // for vtkPolyData
@@ -77,11 +77,13 @@ int vtkPaintView::MeshObject(const meshpaint::BaseMesh& mesh, bool add)
     const meshpaint::AtlasStorage storage = this->Storage.empty() ? meshpaint::default_storage(runtime->info())
                                                                   : meshpaint::parse_storage(this->Storage);
     auto surface = std::make_shared<meshpaint::PaintSurface>(runtime, mesh, level, storage);
-    meshpaint::apply_imported_colours(*surface);
+    meshpaint::apply_imported_channels(*surface);
     meshpaint::apply_imported_labels(*surface);
     if (!add)
       this->RemoveObjects();
     this->AddObject(std::move(surface), mesh.name);
+    if (!add) // the file's classes (or one per label id), shown in their colours, kept by a save
+      in.labels = meshpaint::imported_label_classes(mesh);
   });
 }
 

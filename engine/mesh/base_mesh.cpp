@@ -187,6 +187,7 @@ void split_nonmanifold_vertices(BaseMesh& mesh)
           mesh.colours.push_back(mesh.colours[v]);
         if (!mesh.labels.empty())
           mesh.labels.push_back(mesh.labels[v]);
+        append_vertex(mesh.channels, mesh.channels, v);
         ++mesh.report.nonmanifold_vertices_split;
       }
       mesh.face_vertices[mesh.face_offsets[cs[c].first] + cs[c].second] = it->second;
@@ -198,11 +199,12 @@ void split_nonmanifold_vertices(BaseMesh& mesh)
 //! and splits non-manifold ones.
 BaseMesh finish(const PolyMesh& om, const ImportReport& report, const std::string& name,
                 const std::string& where, const std::vector<Vec3>& colours, const std::vector<int>& labels,
-                const std::map<int, int>& copied_from)
+                const std::vector<ChannelArray>& channels, const std::map<int, int>& copied_from)
 {
   BaseMesh mesh;
   mesh.name = name;
   mesh.report = report;
+  mesh.channels = without_values(channels);
   if (om.n_faces() == 0)
     throw InputError(where + "has no faces");
 
@@ -219,14 +221,13 @@ BaseMesh finish(const PolyMesh& om, const ImportReport& report, const std::strin
     }
     remap[v] = int(mesh.points.size());
     mesh.points.push_back({p[0], p[1], p[2]});
-    if (!colours.empty()) {
-      const auto copy = copied_from.find(int(v));
-      mesh.colours.push_back(colours[std::size_t(copy == copied_from.end() ? int(v) : copy->second)]);
-    }
-    if (!labels.empty()) {
-      const auto copy = copied_from.find(int(v));
-      mesh.labels.push_back(labels[std::size_t(copy == copied_from.end() ? int(v) : copy->second)]);
-    }
+    const auto copy = copied_from.find(int(v));
+    const std::size_t source = std::size_t(copy == copied_from.end() ? int(v) : copy->second);
+    if (!colours.empty())
+      mesh.colours.push_back(colours[source]);
+    if (!labels.empty())
+      mesh.labels.push_back(labels[source]);
+    append_vertex(mesh.channels, channels, source);
   }
   mesh.face_offsets.push_back(0);
   for (const auto fh : om.faces()) {
@@ -299,11 +300,19 @@ std::vector<std::string> ImportReport::step_lines() const
                   count(nonorientable_components, "non-orientable or non-manifold component",
                         "non-orientable or non-manifold components") +
                   " open at " + count(vertices_cut, "vertex copy", "vertex copies") + " to orient them");
-  if (coloured)
+  const std::string vertices = count(array_vertices, "vertex", "vertices");
+  if (coloured && colour_array.empty())
     out.push_back("took the file's colours as the diffuse channel");
+  if (coloured && !colour_array.empty())
+    out.push_back("took the file's '" + excerpt(colour_array) + "' array as the diffuse channel (" + vertices + ")");
+  for (const auto& [array, channel] : channel_arrays)
+    out.push_back("took the file's '" + excerpt(array) + "' array as the " + channel + " channel (" + vertices + ")");
   if (!label_array.empty())
-    out.push_back("took the file's '" + label_array + "' array as the label channel (" +
+    out.push_back("took the file's '" + excerpt(label_array) + "' array as the label channel (" +
                   count(label_classes, "class", "classes") + ")");
+  if (named_label_classes)
+    out.push_back("took the names and colours of " + count(named_label_classes, "label class", "label classes") +
+                  " from the file");
   return out;
 }
 
@@ -322,7 +331,8 @@ namespace {
 
 //! make_base_mesh() with the prefix its messages carry.
 BaseMesh build(const std::vector<Vec3>& points, const std::vector<std::vector<int>>& faces, const std::string& name,
-               const std::string& where, const std::vector<Vec3>& colours, const std::vector<int>& labels = {})
+               const std::string& where, const std::vector<Vec3>& colours, const std::vector<int>& labels = {},
+               const std::vector<ChannelArray>& channels = {})
 {
   if (points.empty() || faces.empty())
     throw InputError(where + "has no faces");
@@ -339,7 +349,7 @@ BaseMesh build(const std::vector<Vec3>& points, const std::vector<std::vector<in
     if (!importer.problem_.empty())
       throw InputError(where + importer.problem_);
   }
-  BaseMesh mesh = finish(om, importer.report, name, where, colours, labels, importer.copied_from);
+  BaseMesh mesh = finish(om, importer.report, name, where, colours, labels, channels, importer.copied_from);
   if (!(mesh.diagonal() >= kMinDiagonal)) {
     std::ostringstream size;
     size << mesh.diagonal();
@@ -361,12 +371,14 @@ bool binary_off(const std::string& path)
 //! OpenMesh's PLY reader takes only some spellings of a list's types
 //! (uchar, uint16, int): each list type becomes the one of its size that it
 //! takes. The census has bounded every count and index, so the values read
-//! the same either way. In a text file, a one-byte label property becomes
-//! int, which OpenMesh reads as a number rather than a character. Returns
-//! whether a property is named as labels are (label_array_names()).
+//! the same either way. In a text file, a one-byte property of its own
+//! becomes int, which OpenMesh reads as a number rather than a character.
+//! Returns whether the file has properties of its own (beyond coordinates,
+//! normals, colours and texture coordinates), which OpenMesh reads only
+//! when asked.
 bool normalise_ply_types(std::string& bytes, bool text)
 {
-  bool labelled = false;
+  bool own = false;
   const std::size_t end = bytes.find("end_header");
   if (end == std::string::npos)
     return false;
@@ -389,17 +401,19 @@ bool normalise_ply_types(std::string& bytes, bool text)
       line = "property list " + w[2] + " " + w[3] + " " + w[4];
     }
     if (w.size() == 3 && w[0] == "property") {
-      const auto& names = label_array_names();
-      const bool label = std::find(names.begin(), names.end(), w[2]) != names.end();
+      static const std::set<std::string> standard = {
+        "x", "y", "z", "nx", "ny", "nz", "red", "green", "blue", "alpha", "u", "v", "s", "t",
+        "texture_u", "texture_v", "texture_s", "texture_t", "diffuse_red", "diffuse_green", "diffuse_blue"};
       static const std::set<std::string> bytes_wide = {"char", "uchar", "int8", "uint8"};
-      if (label && text && bytes_wide.count(w[1]))
+      const bool custom = standard.count(w[2]) == 0;
+      if (custom && text && bytes_wide.count(w[1]))
         line = "property int " + w[2];
-      labelled = labelled || label;
+      own = own || custom;
     }
     out += line + "\n";
   }
   bytes = out + bytes.substr(end);
-  return labelled;
+  return own;
 }
 
 //! The ids of the custom vertex property `name` if OpenMesh's PLY reader made
@@ -414,6 +428,40 @@ bool integer_property(const PolyMesh& om, const std::string& name, std::vector<i
   for (const auto vh : om.vertices())
     ids.push_back(int(om.property(handle, vh)));
   return true;
+}
+
+//! The vertex property `name` as a VertexArray if OpenMesh's PLY reader made
+//! it with type T; false otherwise.
+template <typename T>
+bool vertex_array(const PolyMesh& om, const std::string& name, bool integer, std::vector<VertexArray>& arrays)
+{
+  OpenMesh::VPropHandleT<T> handle;
+  if (!om.get_property_handle(handle, name))
+    return false;
+  VertexArray a;
+  a.name = name;
+  a.integer = integer;
+  a.values.reserve(om.n_vertices());
+  for (const auto vh : om.vertices())
+    a.values.push_back(double(om.property(handle, vh)));
+  arrays.push_back(std::move(a));
+  return true;
+}
+
+//! Every numeric vertex property of the file's own, in the header's order,
+//! with component properties joined (join_component_arrays()).
+void read_ply_arrays(const PolyMesh& om, PolygonSoup& soup)
+{
+  std::vector<std::string> names;
+  for (auto it = om.vprops_begin(); it != om.vprops_end(); ++it)
+    if (*it && (*it)->name().compare(0, 2, "v:") != 0) // OpenMesh's own properties are named "v:..."
+      names.push_back((*it)->name());
+  for (const std::string& name : names)
+    vertex_array<float>(om, name, false, soup.arrays) || vertex_array<double>(om, name, false, soup.arrays) ||
+      vertex_array<std::int32_t>(om, name, true, soup.arrays) || vertex_array<std::uint32_t>(om, name, true, soup.arrays) ||
+      vertex_array<std::int16_t>(om, name, true, soup.arrays) || vertex_array<std::uint16_t>(om, name, true, soup.arrays) ||
+      vertex_array<std::int8_t>(om, name, true, soup.arrays) || vertex_array<std::uint8_t>(om, name, true, soup.arrays);
+  join_component_arrays(soup.arrays);
 }
 
 //! The first integer vertex property named as label_array_names() lists,
@@ -460,7 +508,7 @@ PolygonSoup read_through_openmesh(const std::string& path, const std::string& ex
     if (census.text && bytes.compare(0, 3, "\xEF\xBB\xBF") == 0)
       bytes.erase(0, 3);
     if (ext == ".ply" && normalise_ply_types(bytes, census.text))
-      options += OpenMesh::IO::Options::Custom; // the file's own properties, for the label channel
+      options += OpenMesh::IO::Options::Custom; // the file's own properties, for the label and other channels
     std::istringstream in(std::move(bytes), std::ios::binary);
     QuietOpenMesh quiet;
     ok = ext == ".off" ? OpenMesh::IO::IOManager().read(path, importer, options)
@@ -488,8 +536,10 @@ PolygonSoup read_through_openmesh(const std::string& path, const std::string& ex
       const auto& c = om.color(vh);
       soup.colours.push_back({c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f});
     }
-  if (ext == ".ply")
+  if (ext == ".ply") {
     read_ply_labels(om, soup);
+    read_ply_arrays(om, soup);
+  }
   soup.faces = std::move(importer.faces);
   soup.faces_skipped = faces_skipped;
   return soup;
@@ -545,11 +595,14 @@ BaseMesh import_mesh(PolygonSoup soup, const std::string& name, const std::strin
   // Welding and orienting compute with the coordinates: they must be usable.
   for (std::size_t v = 0; v < soup.points.size(); ++v)
     check_coordinates(soup.points[v], v, where);
+  const std::size_t file_vertices = soup.points.size();
+  take_channel_arrays(soup, import.arrays, where);
   const SoupSteps steps = import_soup(soup, import.weld);
   if (soup.faces.empty())
     throw InputError(where + "has no faces (every face is degenerate)");
   check_label_ids(soup.labels, where);
-  BaseMesh mesh = build(soup.points, soup.faces, name, where, soup.colours, soup.labels);
+  BaseMesh mesh = build(soup.points, soup.faces, name, where, soup.colours, soup.labels, soup.channels);
+  mesh.label_classes = soup.label_classes;
   ImportReport& r = mesh.report;
   r.faces_skipped_by_reader = faces_skipped;
   r.degenerate_faces_dropped += steps.degenerate_faces_dropped;
@@ -561,6 +614,11 @@ BaseMesh import_mesh(PolygonSoup soup, const std::string& name, const std::strin
   r.nonorientable_components = steps.nonorientable_components;
   r.vertices_cut = steps.vertices_cut;
   r.coloured = !mesh.colours.empty();
+  r.colour_array = soup.colour_array;
+  for (const ChannelArray& a : mesh.channels)
+    r.channel_arrays.emplace_back(a.array, a.channel);
+  r.array_vertices = file_vertices;
+  r.named_label_classes = mesh.label_classes.size();
   // Id 0 is unlabelled surface: an array of zeros only (meshpaint's own
   // output before any label stroke) brings nothing to import.
   std::set<int> ids(mesh.labels.begin(), mesh.labels.end());

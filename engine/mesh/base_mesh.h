@@ -28,6 +28,11 @@ struct ImportReport
   std::size_t nonorientable_components = 0;    //!< cut open (or split at non-manifold vertices) to orient
   std::size_t vertices_cut = 0;                //!< vertex copies made for those cuts
   bool coloured = false;                       //!< the file's colours became the diffuse channel
+  std::string colour_array;                    //!< the file's array that gave them, empty for byte colours
+  //! Each array taken as another channel: the file's name, the channel.
+  std::vector<std::pair<std::string, std::string>> channel_arrays;
+  std::size_t array_vertices = 0;              //!< the file's vertices that those arrays (and colour_array) cover
+  std::size_t named_label_classes = 0;         //!< label classes the file names (FileLabelClass)
   std::string label_array;                     //!< the file's array that became the label channel, or empty
   std::size_t label_classes = 0;               //!< distinct ids in it
 
@@ -52,6 +57,8 @@ struct BaseMesh
   std::vector<int> face_vertices; //!< sum(face_sizes), counter-clockwise
   std::vector<Vec3> colours;      //!< #vertices RGB in [0, 1] from the file, or empty
   std::vector<int> labels;        //!< #vertices label ids from the file, or empty
+  std::vector<ChannelArray> channels;        //!< other channels from the file, #vertices values each
+  std::vector<FileLabelClass> label_classes; //!< classes the file names, or empty
   ImportReport report;
 
   std::size_t vertex_count() const { return points.size(); }
@@ -90,14 +97,18 @@ PolygonSoup read_mesh_file(const std::string& path);
 struct ImportOptions
 {
   bool weld = true; //!< merge coincident vertices (--no-weld keeps them)
+  std::vector<ArrayImport> arrays; //!< --import-array NAME:CHANNEL, in the order given
 };
 
 //! Reads OBJ, OFF, PLY or STL through read_mesh_file(), then the import steps of import_soup() and the checks and repairs of
 //! make_base_mesh(). Vertex or face colours become `colours`, an integer
-//! vertex property named as label_array_names() says `labels`.
+//! vertex property named as label_array_names() says `labels`, and PLY
+//! properties named as channels, or as `options.arrays` says, the channels
+//! take_channel_arrays() chooses.
 //! \throw IOError when the file is missing or unreadable.
 //! \throw InputError when the format is unknown or the file is malformed,
-//! truncated, or disagrees with its header, or the mesh is unusable.
+//! truncated, or disagrees with its header, or the mesh is unusable, or an
+//! array for a channel is missing or out of range.
 BaseMesh load_mesh(const std::string& path, const ImportOptions& options = {});
 
 //! The import steps and checks of load_mesh() for polygons read elsewhere

@@ -371,6 +371,12 @@ void check_ply_ascii_body(std::istream& in, long& number, const std::vector<PlyE
         }
         if (!list) {
           if (e.name == "vertex" && c.nonfinite_line < 0 && nonfinite_word(word)) {
+            const std::string& name = e.names[p];
+            if (name != "x" && name != "y" && name != "z") { // a property, not a coordinate: say which
+              c.problem = "line " + std::to_string(number) + ": vertex " + std::to_string(k) + " has the non-finite "
+                          "value " + shown(word) + " in its property '" + excerpt(name) + "'";
+              return;
+            }
             c.nonfinite_line = number;
             c.nonfinite_token = word;
             return;

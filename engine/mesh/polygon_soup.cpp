@@ -15,7 +15,7 @@ const std::vector<std::string>& label_array_names()
 
 void check_label_ids(const std::vector<int>& labels, const std::string& where)
 {
-  constexpr int kLargest = 1 << 24; // kMaxLabelId: the label channel stores floats
+  constexpr int kLargest = kMaxLabelId;
   for (std::size_t v = 0; v < labels.size(); ++v)
     if (labels[v] < 0 || labels[v] > kLargest)
       throw InputError(where + "vertex " + std::to_string(v) + " has label " + std::to_string(labels[v]) +

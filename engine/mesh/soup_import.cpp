@@ -49,6 +49,41 @@ std::size_t snap_to_first_in_cell(std::vector<Point>& points, double tolerance)
   return snapped;
 }
 
+//! Per-vertex values, `k` floats each, summed by position before welding.
+using PositionSums = std::map<Point, std::pair<std::vector<float>, int>>;
+
+PositionSums sums_by_position(const std::vector<Point>& points, const float* values, std::size_t k)
+{
+  PositionSums sums;
+  for (std::size_t v = 0; v < points.size(); ++v) {
+    auto& [s, n] = sums.emplace(points[v], std::make_pair(std::vector<float>(k, 0.f), 0)).first->second;
+    for (std::size_t a = 0; a < k; ++a)
+      s[a] += values[v * k + a];
+    ++n;
+  }
+  return sums;
+}
+
+//! The values of the imported vertices: with welding, the mean over the
+//! vertices merged at each position; without, those of the vertex each one
+//! came from (`origin`).
+template <typename Origin>
+std::vector<float> carried_values(const std::vector<Point>& points, const float* values, std::size_t k, bool weld,
+                                  const PositionSums& sums, Origin origin)
+{
+  std::vector<float> out(points.size() * k);
+  for (std::size_t v = 0; v < points.size(); ++v)
+    for (std::size_t a = 0; a < k; ++a) {
+      if (!weld) {
+        out[v * k + a] = values[origin(v) * k + a];
+        continue;
+      }
+      const auto& [s, n] = sums.at(points[v]);
+      out[v * k + a] = s[a] / float(n);
+    }
+  return out;
+}
+
 } // namespace
 
 SoupSteps import_soup(PolygonSoup& soup, bool weld)
@@ -68,20 +103,18 @@ SoupSteps import_soup(PolygonSoup& soup, bool weld)
   polygons.reserve(soup.faces.size());
   for (const auto& f : soup.faces)
     polygons.emplace_back(f.begin(), f.end());
-  std::map<Point, Vec3> colour_sum; // by position: colours of the vertices merged there
-  std::map<Point, int> colour_count;
+  PositionSums colour_sums;                  // by position: colours of the vertices merged there
+  std::vector<PositionSums> channel_sums(soup.channels.size()); // and so for each channel array
   std::map<Point, std::map<int, int>> label_votes; // by position: label ids of the vertices merged there
 
   if (weld) {
     steps.weld_tolerance = kWeldTolerance * diagonal_of(soup.points);
     snap_to_first_in_cell(points, steps.weld_tolerance);
     if (coloured)
-      for (std::size_t v = 0; v < points.size(); ++v) {
-        Vec3& s = colour_sum.emplace(points[v], Vec3{0, 0, 0}).first->second;
-        for (int a = 0; a < 3; ++a)
-          s[a] += soup.colours[v][a];
-        ++colour_count[points[v]];
-      }
+      colour_sums = sums_by_position(points, soup.colours[0].data(), 3);
+    for (std::size_t c = 0; c < soup.channels.size(); ++c)
+      channel_sums[c] = sums_by_position(points, soup.channels[c].values.data(),
+                                         std::size_t(soup.channels[c].components));
     if (labelled)
       for (std::size_t v = 0; v < points.size(); ++v)
         ++label_votes[points[v]][soup.labels[v]];
@@ -167,17 +200,14 @@ SoupSteps import_soup(PolygonSoup& soup, bool weld)
   for (std::size_t v = 0; v < points.size(); ++v)
     soup.points[v] = {float(points[v].x()), float(points[v].y()), float(points[v].z())};
   if (coloured) {
-    std::vector<Vec3> colours(points.size());
-    for (std::size_t v = 0; v < points.size(); ++v) {
-      if (!weld) {
-        colours[v] = soup.colours[origin(v)];
-        continue;
-      }
-      const Vec3& s = colour_sum.at(points[v]);
-      const float n = float(colour_count.at(points[v]));
-      colours[v] = {s[0] / n, s[1] / n, s[2] / n};
-    }
-    soup.colours = std::move(colours);
+    const std::vector<float> flat = carried_values(points, soup.colours[0].data(), 3, weld, colour_sums, origin);
+    soup.colours.resize(points.size());
+    for (std::size_t v = 0; v < points.size(); ++v)
+      soup.colours[v] = {flat[v * 3], flat[v * 3 + 1], flat[v * 3 + 2]};
+  }
+  for (std::size_t c = 0; c < soup.channels.size(); ++c) {
+    ChannelArray& a = soup.channels[c];
+    a.values = carried_values(points, a.values.data(), std::size_t(a.components), weld, channel_sums[c], origin);
   }
   if (labelled) {
     std::vector<int> labels(points.size());

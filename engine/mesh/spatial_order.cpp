@@ -52,6 +52,8 @@ BaseMesh spatially_ordered(const BaseMesh& mesh, std::vector<int>* face_order)
   BaseMesh out;
   out.name = mesh.name;
   out.report = mesh.report;
+  out.channels = without_values(mesh.channels);
+  out.label_classes = mesh.label_classes;
   std::vector<int> renumber(mesh.vertex_count(), -1);
   out.face_offsets.push_back(0);
   for (const int f : order) {
@@ -64,6 +66,7 @@ BaseMesh spatially_ordered(const BaseMesh& mesh, std::vector<int>* face_order)
           out.colours.push_back(mesh.colours[mesh.face_vertices[mesh.face_offsets[f] + k]]);
         if (!mesh.labels.empty())
           out.labels.push_back(mesh.labels[mesh.face_vertices[mesh.face_offsets[f] + k]]);
+        append_vertex(out.channels, mesh.channels, std::size_t(mesh.face_vertices[mesh.face_offsets[f] + k]));
       }
       out.face_vertices.push_back(v);
     }

@@ -36,19 +36,6 @@ void check_points(const std::vector<Float4>& texels, const std::string& what, co
 
 } // namespace
 
-std::string channel_value_problem(const std::string& channel, float v)
-{
-  if (!std::isfinite(v))
-    return "is not finite";
-  if (channel == "displacement")
-    return std::fabs(v) <= kMaxCoordinate ? "" : "is beyond 1e15 in magnitude";
-  if (channel == "label")
-    return v >= 0.f && v <= float(kMaxLabelId) && std::round(v) == v
-               ? ""
-               : "is not an integer from 0 to " + std::to_string(kMaxLabelId);
-  return v >= 0.f && v <= 1.f ? "" : "is not from 0 to 1";
-}
-
 void check_project_content(const Project& p, const std::string& where)
 {
   std::vector<std::vector<int>> faces(p.mesh.face_count());

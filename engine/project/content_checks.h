@@ -2,16 +2,12 @@
 // in their ranges, a base mesh that needs no repair, valid label classes.
 #pragma once
 
+#include "mesh/channel_arrays.h" // for meshpaint::channel_value_problem
 #include "project/project.h"
 
 #include <string> // for std::string
 
 namespace meshpaint {
-
-//! Why `value` cannot be a value of the named channel (diffuse, specular,
-//! roughness, mask: 0 to 1; displacement: finite, at most kMaxCoordinate in
-//! magnitude; label: an integer 0..kMaxLabelId), or "" when it can.
-std::string channel_value_problem(const std::string& channel, float value);
 
 //! Checks what load_project() read: the base mesh as make_base_mesh() would
 //! take it without a repair, control points finite and within

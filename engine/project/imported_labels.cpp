@@ -1,11 +1,9 @@
 #include "project/imported_labels.h"
 
-#include "mesh/far_refiner.h"
+#include "project/refined_values.h"
 #include "project/vertex_channels.h"
-#include "reference/opensubdiv_reference.h"
 
-#include <opensubdiv/far/primvarRefiner.h> // for Far::PrimvarRefiner
-
+#include <algorithm> // for std::stable_sort
 #include <array>  // for std::array
 #include <cmath>  // for std::floor
 #include <set>    // for std::set
@@ -79,33 +77,26 @@ void apply_imported_labels(PaintSurface& surface)
   const BaseMesh& base = surface.atlas().base_mesh();
   if (base.labels.size() != base.vertex_count())
     return;
-  const int level = surface.level();
-  auto refiner = make_refiner(base);
-  refine_uniform(*refiner, level, false);
   std::vector<LabelVote> coarse(base.vertex_count());
   for (std::size_t v = 0; v < coarse.size(); ++v)
     coarse[v].add(base.labels[v], 1.0f);
-  Far::PrimvarRefiner primvar(*refiner);
-  for (int l = 1; l <= level; ++l) {
-    std::vector<LabelVote> fine(std::size_t(refiner->GetLevel(l).GetNumVertices()));
-    const LabelVote* src = coarse.data();
-    LabelVote* dst = fine.data();
-    primvar.Interpolate(l, src, dst);
-    coarse = std::move(fine);
-  }
-  // Each welded vertex of the painting level, as OpenSubdiv numbers it.
-  const std::vector<int> order = opensubdiv_vertex_order(base, surface.atlas().topology(), level);
-  std::vector<float> values(order.size());
-  for (std::size_t v = 0; v < order.size(); ++v)
-    values[v] = float(coarse[std::size_t(order[v])].leading());
+  const std::vector<LabelVote> fine = refined_to_painting_level(surface, std::move(coarse));
+  std::vector<float> values(fine.size());
+  for (std::size_t v = 0; v < fine.size(); ++v)
+    values[v] = float(fine[v].leading());
   set_vertex_channel(surface, "label", values);
 }
 
 std::vector<LabelClass> imported_label_classes(const BaseMesh& mesh)
 {
   std::vector<LabelClass> classes;
+  std::set<int> named;
+  for (const FileLabelClass& f : mesh.label_classes) {
+    classes.push_back({f.id, f.name, f.colour});
+    named.insert(f.id);
+  }
   for (const int id : std::set<int>(mesh.labels.begin(), mesh.labels.end())) {
-    if (id == 0) // unlabelled surface, no class
+    if (id == 0 || named.count(id)) // unlabelled surface, or a class the file names
       continue;
     LabelClass c;
     c.id = id;
@@ -120,6 +111,7 @@ std::vector<LabelClass> imported_label_classes(const BaseMesh& mesh)
     c.colour = rgb[std::size_t(sector)];
     classes.push_back(c);
   }
+  std::stable_sort(classes.begin(), classes.end(), [](const LabelClass& a, const LabelClass& b) { return a.id < b.id; });
   return classes;
 }
 

@@ -20,8 +20,10 @@ namespace meshpaint {
 //! the file appear. Not a stroke: no undo step.
 void apply_imported_labels(PaintSurface& surface);
 
-//! A class for each distinct id but 0 (unlabelled) of `mesh.labels`, ascending, named
-//! "label ID", with a colour made from the id; empty when it has none.
+//! The classes the file names (BaseMesh::label_classes), and a class for
+//! each other distinct id but 0 (unlabelled) of `mesh.labels`, named
+//! "label ID", with a colour made from the id; ascending by id, empty when
+//! there are none.
 std::vector<LabelClass> imported_label_classes(const BaseMesh& mesh);
 
 } // namespace meshpaint

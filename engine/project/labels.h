@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/vec.h"
+#include "mesh/channel_arrays.h" // for meshpaint::kMaxLabelId
 
 #include <string> // for std::string
 #include <vector> // for std::vector
@@ -15,9 +16,6 @@ struct LabelClass
   std::string name; //!< unique, not empty
   Vec3 colour{};    //!< rgb, 0..1
 };
-
-//! Largest id: label values are stored as floats, exact up to 2^24.
-constexpr int kMaxLabelId = 1 << 24;
 
 //! Checks label classes however they were read (a labels file, a project):
 //! ids 0..kMaxLabelId, names not empty and valid UTF-8, colours 0..1, ids

@@ -26,7 +26,7 @@ std::pair<std::vector<Float4>*, int> place(PaintChannels& c, const std::string& 
     return {&c.material, 2};
   if (name == "mask")
     return {&c.material, 3};
-  throw InputError("unknown channel '" + name + "' (diffuse, specular, roughness, displacement, label, mask)");
+  throw InputError("unknown channel '" + name + "' (" + channel_name_list() + ")");
 }
 
 } // namespace
@@ -35,7 +35,7 @@ int channel_components(const std::string& name)
 {
   PaintChannels none;
   place(none, name);
-  return name == "diffuse" || name == "specular" ? 3 : 1;
+  return channel_component_count(name);
 }
 
 std::vector<float> vertex_channel(PaintSurface& surface, const std::string& name)

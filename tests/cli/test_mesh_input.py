@@ -231,7 +231,7 @@ def test_meshpaint_reads_its_own_vtp_output_with_its_colours(tmp_path):
     back, diffuse_back = diffuse_of(again, str(tmp_path / "out" / "surface.vtp"))
     r = run("info", str(tmp_path / "out" / "surface.vtp"))
     assert r.returncode == 0, r.stderr
-    assert "took the file's colours as the diffuse channel" in r.stdout
+    assert f"took the file's 'diffuse' array as the diffuse channel ({poly.GetNumberOfPoints()} vertices)" in r.stdout
     # Its label array holds zeros only (nothing labelled): unlabelled, no class.
     assert "label channel" not in r.stdout + r.stderr
     # The read-back surface starts from the painted one's colours: the same range.

@@ -7,7 +7,7 @@ import sys
 import numpy as np
 import pytest
 import vtk
-from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 
 import meshpaint
 
@@ -348,17 +348,34 @@ def test_polydata_input_goes_through_the_import_steps():
     assert "outward" not in poly_file.GetImportReport()
 
 
-def test_polydata_label_array_becomes_the_label_channel():
-    # The cube soup with a "label" point array: the top's points 5, the rest 2;
-    # welded points keep their ids, the top face's surface takes 5.
+def labelled_cube(classes=True):
+    """The cube soup with a label array (top 5, the rest 2) and, with `classes`, the label classes
+    as meshpaint's surface.vtp carries them: field data label_ids, label_names, label_colors."""
     poly = cube_soup()
     ids = vtk.vtkIntArray()
     ids.SetName("label")
     for i in range(poly.GetNumberOfPoints()):
         ids.InsertNextValue(5 if poly.GetPoint(i)[2] > 0.5 else 2)
     poly.GetPointData().AddArray(ids)
+    if classes:
+        class_ids, names, colours = vtk.vtkIntArray(), vtk.vtkStringArray(), vtk.vtkUnsignedCharArray()
+        class_ids.SetName("label_ids")
+        names.SetName("label_names")
+        colours.SetName("label_colors")
+        colours.SetNumberOfComponents(3)
+        for i, name, rgb in ((2, "shaft", (255, 0, 0)), (5, "head", (0, 0, 255)), (9, "unused", (0, 255, 0))):
+            class_ids.InsertNextValue(i)
+            names.InsertNextValue(name)
+            colours.InsertNextTuple3(*rgb)
+        for a in (class_ids, names, colours):
+            poly.GetFieldData().AddArray(a)
+    return poly
+
+
+def test_polydata_label_array_becomes_the_label_channel():
+    # Welded points keep their ids, the top face's surface takes 5.
     s = meshpaint.vtkPaintSurface()
-    s.SetInputData(poly)
+    s.SetInputData(labelled_cube(classes=False))
     s.SetLevel(2)
     s.Update()
     assert "took the file's 'label' array as the label channel (2 classes)" in s.GetImportReport()
@@ -383,6 +400,82 @@ def test_polydata_input_with_a_diffuse_array_starts_with_those_colours():
     s.Update()
     diffuse = vtk_to_numpy(s.GetChannel("diffuse"))
     assert np.allclose(diffuse, [0.2, 0.4, 0.6], atol=1e-6)
+
+
+def label_classes(s):
+    colour = [0.0, 0.0, 0.0]
+    out = []
+    for i in range(s.GetNumberOfLabelClasses()):
+        s.GetLabelClassColor(i, colour)
+        out.append((s.GetLabelClassId(i), s.GetLabelClassName(i), tuple(round(c, 3) for c in colour)))
+    return out
+
+
+def test_polydata_label_field_data_gives_the_label_classes(tmp_path):
+    s = meshpaint.vtkPaintSurface()
+    s.SetInputData(labelled_cube())
+    s.SetLevel(2)
+    s.Update()
+    expected = [(2, "shaft", (1.0, 0.0, 0.0)), (5, "head", (0.0, 0.0, 1.0)), (9, "unused", (0.0, 1.0, 0.0))]
+    assert label_classes(s) == expected
+    assert "took the names and colours of 3 label classes from the file" in s.GetImportReport()
+    # ExportModel and SaveProject carry them; the exported surface read back gives them again.
+    s.ExportModel(tmp_path / "out")
+    r = vtk.vtkXMLPolyDataReader()
+    r.SetFileName(str(tmp_path / "out" / "surface.vtp"))
+    r.Update()
+    names = r.GetOutput().GetFieldData().GetAbstractArray("label_names")
+    assert [names.GetValue(i) for i in range(names.GetNumberOfValues())] == ["shaft", "head", "unused"]
+    again = meshpaint.vtkPaintSurface()
+    again.SetInputData(r.GetOutput())
+    again.SetLevel(1)
+    again.Update()
+    assert label_classes(again) == expected
+    s.SaveProject(tmp_path / "p.meshpaint")
+    loaded = meshpaint.vtkPaintSurface()
+    loaded.LoadProject(tmp_path / "p.meshpaint")
+    assert label_classes(loaded) == expected
+    # Without field data: a class "label ID" for each id.
+    plain = meshpaint.vtkPaintSurface()
+    plain.SetInputData(labelled_cube(classes=False))
+    plain.SetLevel(1)
+    plain.Update()
+    assert [(i, name) for i, name, _ in label_classes(plain)] == [(2, "label 2"), (5, "label 5")]
+
+
+def test_polydata_label_field_data_that_disagrees_raises():
+    poly = labelled_cube()
+    poly.GetFieldData().GetAbstractArray("label_names").SetValue(1, "shaft")  # two classes of one name
+    s = meshpaint.vtkPaintSurface()
+    s.SetInputData(poly)
+    with pytest.raises(meshpaint.Error, match="label classes of the field data"):
+        s.Update()
+
+
+def test_polydata_float_arrays_become_channels():
+    poly = cube_soup()
+    z = vtk_to_numpy(poly.GetPoints().GetData())[:, 2]
+    for name, values in (("roughness", 0.2 + 0.6 * z), ("Curvature", 1 - z)):
+        a = numpy_to_vtk(values.astype("float32"), deep=True)
+        a.SetName(name)
+        poly.GetPointData().AddArray(a)
+    s = meshpaint.vtkPaintSurface()
+    s.SetInputData(poly)
+    s.SetLevel(2)
+    s.AddImportArray("Curvature", "mask")
+    s.Update()
+    report = s.GetImportReport()
+    assert "took the file's 'roughness' array as the roughness channel (24 vertices)" in report, report
+    assert "took the file's 'Curvature' array as the mask channel (24 vertices)" in report, report
+    out_z = vtk_to_numpy(s.GetOutput().GetPoints().GetData())[:, 2]
+    assert np.corrcoef(out_z, vtk_to_numpy(s.GetChannel("roughness")))[0, 1] > 0.95
+    assert np.corrcoef(out_z, vtk_to_numpy(s.GetChannel("mask")))[0, 1] < -0.95
+    with pytest.raises(meshpaint.Error, match="unknown channel 'shine'"):
+        s.AddImportArray("Curvature", "shine")
+    s.RemoveAllImportArrays()
+    s.AddImportArray("Missing", "mask")
+    with pytest.raises(meshpaint.Error, match="has no vertex array 'Missing'"):
+        s.Update()
 
 
 def test_bad_polydata_input_raises():

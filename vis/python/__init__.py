@@ -135,6 +135,10 @@ class vtkPaintSurface(_wrapped.vtkPaintSurface):
         """Writes surface.vtp, model.obj/.mtl and the PNG maps, as `meshpaint paint -o` does."""
         self._check(super().ExportModel(str(directory)))
 
+    def AddImportArray(self, name, channel):
+        """The input's point array `name` as `channel` (--import-array NAME:CHANNEL); Error for an unknown channel."""
+        self._check(super().AddImportArray(name, channel))
+
     def GetChannel(self, name):
         """One channel at every output vertex as a VTK array (numpy: vtk_to_numpy)."""
         array = super().GetChannel(name)
