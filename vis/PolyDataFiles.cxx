@@ -1,5 +1,7 @@
 #include "PolyDataFiles.h"
 
+#include "XmlPolyDataCheck.h" // for meshpaint::check_xml_polydata_arrays
+
 #include "core/errors.h" // for meshpaint::IOError, InputError
 #include "core/format.h" // for meshpaint::lower_extension, excerpt
 
@@ -30,6 +32,12 @@ namespace {
 //! and component numbers are bounded by what the file could hold (zlib
 //! compresses at most about 1000 to 1): the XML attributes of .vtp, the
 //! POINTS, POLYGONS, ... and SCALARS/COLOR_SCALARS counts of legacy .vtk.
+double polydata_budget(const std::string& path)
+{
+  std::error_code ec;
+  return 1100.0 * double(std::filesystem::file_size(path, ec));
+}
+
 void check_polydata_sizes(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -39,8 +47,7 @@ void check_polydata_sizes(const std::string& path)
   const auto cut = head.find("<AppendedData");
   if (cut != std::string::npos)
     head.resize(cut);
-  std::error_code ec;
-  const double budget = 1100.0 * double(std::filesystem::file_size(path, ec));
+  const double budget = polydata_budget(path);
   static const std::regex attribute(
     R"re((NumberOf(Points|Polys|Cells|Verts|Lines|Strips|Components|Tuples))="\s*(-?[0-9]+)\s*"|\n(POINTS|POLYGONS|VERTICES|LINES|TRIANGLE_STRIPS|POINT_DATA|CELL_DATA|COLOR_SCALARS [^ \n]+|SCALARS [^ \n]+ [^ \n]+) +(-?[0-9]+))re");
   for (auto it = std::sregex_iterator(head.begin(), head.end(), attribute); it != std::sregex_iterator(); ++it) {
@@ -299,6 +306,10 @@ vtkSmartPointer<vtkPolyData> read_polydata_file(const std::string& path)
     r->ReadAllScalarsOn();
     r->ReadAllColorScalarsOn();
     return read_checked(r, path);
+  }
+  {
+    VtkMessagesKept kept; // the parser's own messages: VTK's reader repeats what matters
+    check_xml_polydata_arrays(path, polydata_budget(path));
   }
   auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
   r->SetFileName(path.c_str());
