@@ -76,20 +76,30 @@ public:
   //! Where the run of characters `keep` accepts, from `at`, ends.
   template <class Keep> std::uint64_t run_end(std::uint64_t at, Keep keep)
   {
-    constexpr std::uint64_t chunk = 1 << 16;
-    for (;; at += chunk) {
-      const std::string part = read(at, chunk);
-      for (std::size_t k = 0; k < part.size(); ++k)
-        if (!keep(part[k]))
-          return at + k;
-      if (part.size() < chunk)
-        return at + part.size();
-    }
+    for (int c; (c = byte(at)) >= 0 && keep(char(c));)
+      ++at;
+    return at;
   }
 
 private:
+  //! The byte at `at`, -1 past the end; scans read through a window.
+  int byte(std::uint64_t at)
+  {
+    if (at >= size_)
+      return -1;
+    if (at < window_at_ || at - window_at_ >= window_.size()) {
+      window_ = read(at, 1 << 16);
+      window_at_ = at;
+      if (window_.empty())
+        return -1;
+    }
+    return static_cast<unsigned char>(window_[std::size_t(at - window_at_)]);
+  }
+
   std::ifstream in_;
   std::uint64_t size_ = 0;
+  std::string window_;
+  std::uint64_t window_at_ = 0;
 };
 
 bool is_base64(char c)
