@@ -42,6 +42,16 @@ def sphere():
     labels.SetName("labels")
     poly.GetPointData().AddArray(diffuse)
     poly.GetPointData().AddArray(labels)
+    # Strings have no fixed size per value: a point array and a field array of them.
+    names = vtk.vtkStringArray()
+    names.SetName("names")
+    for k in range(poly.GetNumberOfPoints()):
+        names.InsertNextValue("p%d" % k if k % 3 else "")
+    poly.GetPointData().AddArray(names)
+    note = vtk.vtkStringArray()
+    note.SetName("note")
+    note.InsertNextValue("scanned")
+    poly.GetFieldData().AddArray(note)
     return poly
 
 
@@ -76,7 +86,8 @@ def painted_arrays(tmp_path, mesh):
     arrays = {"points": numpy_support.vtk_to_numpy(poly.GetPoints().GetData())}
     pd = poly.GetPointData()
     for k in range(pd.GetNumberOfArrays()):
-        arrays[pd.GetArrayName(k)] = numpy_support.vtk_to_numpy(pd.GetArray(k))
+        if pd.GetArray(k):  # numeric arrays
+            arrays[pd.GetArrayName(k)] = numpy_support.vtk_to_numpy(pd.GetArray(k))
     return arrays
 
 
