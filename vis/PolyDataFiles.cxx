@@ -234,6 +234,32 @@ vtkDataArray* byte_colours(vtkPolyData* poly)
   return nullptr;
 }
 
+//! The offsets of `cells` as VTK's traversal trusts them to be: from 0,
+//! never decreasing, never beyond the connectivity. Damaged files give
+//! others (fuzz findings: a decrease made a cell of negative size, a first
+//! offset far past the connectivity a read out of bounds).
+//! \throw InputError starting with `where`, naming the cell.
+void check_cell_offsets(vtkCellArray* cells, const std::string& where, const char* cell)
+{
+  vtkDataArray* offsets = cells->GetOffsetsArray();
+  if (!offsets)
+    return;
+  const double ids = double(cells->GetNumberOfConnectivityIds());
+  double previous = 0;
+  for (vtkIdType k = 0; k < offsets->GetNumberOfValues(); ++k) {
+    const double at = offsets->GetComponent(k, 0);
+    if (k == 0 && at != 0)
+      throw InputError(where + "the first " + cell + " offset is " + std::to_string((long long)at) + ", not 0");
+    if (at < previous)
+      throw InputError(where + cell + " " + std::to_string(k - 1) + " has " + std::to_string((long long)(at - previous)) +
+                       " points: the cell offsets decrease");
+    if (at > ids)
+      throw InputError(where + cell + " " + std::to_string(k - 1) + " ends at offset " + std::to_string((long long)at) +
+                       ", past the " + std::to_string((long long)ids) + " point ids of the connectivity");
+    previous = at;
+  }
+}
+
 } // namespace
 
 bool is_polydata_path(const std::string& path)
@@ -267,13 +293,11 @@ vtkSmartPointer<vtkPolyData> read_checked(vtkAlgorithm* reader, const std::strin
   for (vtkCellArray* cells : {out->GetVerts(), out->GetLines(), out->GetPolys(), out->GetStrips()}) {
     if (!cells)
       continue;
+    check_cell_offsets(cells, where, "cell");
     vtkIdType n = 0;
     const vtkIdType* ids = nullptr;
     vtkIdType cell = 0;
     for (cells->InitTraversal(); cells->GetNextCell(n, ids); ++cell) {
-      if (n < 0) // offsets that decrease (a fuzz finding)
-        throw InputError(where + "cell " + std::to_string(cell) + " has " + std::to_string(n) +
-                         " points: the file's cell offsets decrease");
       for (vtkIdType k = 0; k < n; ++k)
         if (ids[k] < 0 || ids[k] >= points)
           throw InputError(where + "cell " + std::to_string(cell) + " names point " + std::to_string(ids[k]) +
@@ -330,12 +354,10 @@ BaseMesh import_polydata(vtkPolyData* poly, const std::string& name, const std::
   }
   const vtkIdType points = poly->GetNumberOfPoints();
   if (vtkCellArray* polys = poly->GetPolys()) {
+    check_cell_offsets(polys, where, "polygon");
     vtkIdType n = 0;
     const vtkIdType* ids = nullptr;
     for (polys->InitTraversal(); polys->GetNextCell(n, ids);) {
-      if (n < 0)
-        throw InputError(where + "polygon " + std::to_string(soup.faces.size()) + " has " + std::to_string(n) +
-                         " points: its cell offsets decrease");
       for (vtkIdType k = 0; k < n; ++k)
         if (ids[k] < 0 || ids[k] >= points)
           throw InputError(where + "polygon " + std::to_string(soup.faces.size()) + " names point " +

@@ -402,3 +402,17 @@ def test_negative_label_is_refused(tmp_path):
     data = label_ply("label", "int").replace(b"0.0 3\n", b"0.0 -3\n", 1)
     r = run("info", write(tmp_path, "grid.ply", data))
     assert r.returncode == 2 and "has label -3, outside 0 to 16777216" in r.stderr, r.stderr
+
+
+POLYDATA_FINDINGS = sorted(glob.glob(os.path.join(SOURCE, "tests", "fuzz", "regressions", "fuzz_polydata_*", "*")))
+
+
+@pytest.mark.parametrize("path", POLYDATA_FINDINGS, ids=os.path.basename)
+def test_polydata_fuzz_findings_are_bad_input(tmp_path, path):
+    # As the fuzz targets read them: the bytes under their format's extension.
+    mesh = tmp_path / ("finding" + (".vtp" if "fuzz_polydata_vtp" in path else ".vtk"))
+    mesh.write_bytes(open(path, "rb").read())
+    r = run("info", str(mesh))
+    lines = r.stderr.strip().splitlines()
+    assert r.returncode == 2, r.stdout + r.stderr
+    assert len(lines) == 1 and lines[0].startswith("meshpaint info: "), r.stderr
