@@ -7,7 +7,7 @@ import sys
 import numpy as np
 import pytest
 import vtk
-from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 
 import meshpaint
 
@@ -391,6 +391,25 @@ def test_bad_polydata_input_raises():
     s = meshpaint.vtkPaintSurface()
     s.SetInputData(poly)
     with pytest.raises(meshpaint.Error, match="input polygons: vertex 3 has a non-finite coordinate"):
+        s.Update()
+
+
+@pytest.mark.parametrize("offsets, message", [
+    ([4, 8, 12, 16, 20, 24, 28], "the first polygon offset is 4, not 0"),
+    ([0, 4, 8, 6, 16, 20, 24], "polygon 2 has -2 points: the cell offsets decrease"),
+    ([0, 4, 8, 12, 16, 20, 10 ** 9], "polygon 5 ends at offset 1000000000, past the 24 point ids"),
+])
+def test_polydata_with_bad_cell_offsets_raises(offsets, message):
+    # Offsets a traversal would trust: checked whole before any polygon is read.
+    poly = cube_soup()
+    conn = numpy_to_vtk(np.arange(24, dtype=np.int64), deep=True, array_type=vtk.VTK_TYPE_INT64)
+    offs = numpy_to_vtk(np.array(offsets, dtype=np.int64), deep=True, array_type=vtk.VTK_TYPE_INT64)
+    cells = vtk.vtkCellArray()
+    cells.SetData(offs, conn)
+    poly.SetPolys(cells)
+    s = meshpaint.vtkPaintSurface()
+    s.SetInputData(poly)
+    with pytest.raises(meshpaint.Error, match=message):
         s.Update()
 
 
