@@ -124,6 +124,36 @@ void check_legacy_points(const std::string& path)
   }
 }
 
+//! VTK's legacy reader takes the length of each string in a binary string
+//! array from the data and allocates it unchecked (a fuzz finding: 2^56
+//! bytes for a CONNECTIVITY declared utf8_string). meshpaint reads no string
+//! arrays: in a binary file, a line declaring one is refused.
+void check_legacy_binary_strings(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  for (int k = 0; k < 3 && std::getline(in, line); ++k) {
+  }
+  if (line.rfind("BINARY", 0) != 0)
+    return;
+  long number = 3;
+  while (std::getline(in, line)) {
+    ++number;
+    if (!line.empty() && line.back() == '\r')
+      line.pop_back();
+    const auto space = line.find_last_of(' ');
+    if (space == std::string::npos || line.size() > 256)
+      continue;
+    std::string type = line.substr(space + 1);
+    std::transform(type.begin(), type.end(), type.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    // VTK's reader compares only the start of the type's name.
+    if (type.rfind("string", 0) == 0 || type.rfind("utf8_string", 0) == 0 || type.rfind("unicode_string", 0) == 0)
+      throw InputError("'" + path + "': line " + std::to_string(number) + " ('" + excerpt(line, 40) +
+                       "') declares a binary string array, which VTK's reader cannot read safely (write the file "
+                       "as ASCII or .vtp)");
+  }
+}
+
 //! The legacy file's bytes without its METADATA blocks (each from its
 //! keyword line to the next empty line, as VTK writes them). They hold only
 //! component names and array information, which nothing here reads, and
@@ -320,6 +350,7 @@ vtkSmartPointer<vtkPolyData> read_polydata_file(const std::string& path)
   if (lower_extension(path) == ".vtk") {
     check_legacy_version(path);
     check_legacy_points(path);
+    check_legacy_binary_strings(path);
     // VTK's reader takes the bytes' count as an int.
     if (std::filesystem::file_size(path, ec) > std::uintmax_t(std::numeric_limits<int>::max()))
       throw InputError("'" + path + "': a legacy .vtk file of 2 GiB or more (write it as .vtp)");
