@@ -22,7 +22,9 @@
 #include <fstream>    // for std::ifstream
 #include <iterator>   // for std::istreambuf_iterator
 #include <limits>     // for std::numeric_limits
+#include <map>        // for std::map
 #include <regex>      // for std::regex, std::sregex_iterator
+#include <set>        // for std::set
 #include <sstream>    // for std::istringstream
 
 namespace meshpaint {
@@ -121,6 +123,37 @@ void check_legacy_points(const std::string& path)
       ++read;
     }
     return;
+  }
+}
+
+//! VTK's legacy reader dereferences a null cell array when a cell section
+//! is repeated or its line malformed (a fuzz finding): each of POINTS,
+//! VERTICES, LINES, POLYGONS and TRIANGLE_STRIPS may start a line once (any
+//! case, as VTK reads them), a cell section's line as `KEYWORD n m`.
+void check_legacy_sections(const std::string& path)
+{
+  static const std::set<std::string> sections{"points", "vertices", "lines", "polygons", "triangle_strips"};
+  std::ifstream in(path, std::ios::binary);
+  std::map<std::string, long> seen;
+  long number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++number;
+    if (line.size() > 256)
+      continue; // binary data
+    std::istringstream words(line);
+    std::string key;
+    words >> key;
+    std::transform(key.begin(), key.end(), key.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (!sections.count(key))
+      continue;
+    const std::string where = "'" + path + "': line " + std::to_string(number) + " ('" + excerpt(line, 40) + "') ";
+    if (seen.count(key))
+      throw InputError(where + "repeats the section of line " + std::to_string(seen[key]));
+    seen[key] = number;
+    long long cells = -1, size = -1;
+    std::string more;
+    if (key != "points" && (!(words >> cells >> size) || cells < 0 || size < 0 || (words >> more)))
+      throw InputError(where + "is not '" + key + " CELLS SIZE'");
   }
 }
 
@@ -351,6 +384,7 @@ vtkSmartPointer<vtkPolyData> read_polydata_file(const std::string& path)
     check_legacy_version(path);
     check_legacy_points(path);
     check_legacy_binary_strings(path);
+    check_legacy_sections(path);
     // VTK's reader takes the bytes' count as an int.
     if (std::filesystem::file_size(path, ec) > std::uintmax_t(std::numeric_limits<int>::max()))
       throw InputError("'" + path + "': a legacy .vtk file of 2 GiB or more (write it as .vtp)");

@@ -416,3 +416,37 @@ def test_polydata_fuzz_findings_are_bad_input(tmp_path, path):
     lines = r.stderr.strip().splitlines()
     assert r.returncode == 2, r.stdout + r.stderr
     assert len(lines) == 1 and lines[0].startswith("meshpaint info: "), r.stderr
+
+
+@pytest.mark.parametrize("binary", [False, True])
+def test_legacy_string_arrays_are_read_only_as_text(tmp_path, binary):
+    # VTK's legacy reader trusts the string lengths stored in binary data.
+    s = vtk.vtkSphereSource()
+    s.Update()
+    poly = s.GetOutput()
+    names = vtk.vtkStringArray()
+    names.SetName("names")
+    names.InsertNextValue("scan")
+    poly.GetFieldData().AddArray(names)
+    w = vtk.vtkPolyDataWriter()
+    w.SetInputData(poly)
+    w.SetFileType(2 if binary else 1)
+    w.SetFileName(str(tmp_path / "s.vtk"))
+    w.Write()
+    r = run("info", str(tmp_path / "s.vtk"))
+    if not binary:
+        assert r.returncode == 0, r.stderr
+    else:
+        assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1, r.stderr
+        assert "binary string array" in r.stderr, r.stderr
+
+
+def test_a_repeated_legacy_cell_section_is_refused(tmp_path):
+    text = open(os.path.join(SOURCE, "tests", "fuzz", "corpus", "fuzz_polydata_vtk", "cube-ascii.vtk")).read()
+    start = text.index("POLYGONS")
+    end = text.index("\n", text.index("\n", start) + 1)
+    path = tmp_path / "twice.vtk"
+    path.write_text(text[:end + 1] + text[start:])
+    r = run("info", str(path))
+    assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1, r.stderr
+    assert "repeats the section" in r.stderr, r.stderr
