@@ -30,16 +30,18 @@
 namespace meshpaint {
 namespace {
 
-//! VTK's readers allocate what the header says before reading data: counts
-//! and component numbers are bounded by what the file could hold (zlib
-//! compresses at most about 1000 to 1): the XML attributes of .vtp, the
-//! POINTS, POLYGONS, ... and SCALARS/COLOR_SCALARS counts of legacy .vtk.
+//! The most bytes a polydata file can describe (zlib compresses at most
+//! about 1000 to 1).
 double polydata_budget(const std::string& path)
 {
   std::error_code ec;
   return 1100.0 * double(std::filesystem::file_size(path, ec));
 }
 
+//! VTK's readers allocate what the header says before reading data: counts
+//! and component numbers are bounded by what the file could hold
+//! (polydata_budget()): the XML attributes of .vtp, the POINTS, POLYGONS,
+//! ... and SCALARS/COLOR_SCALARS counts of legacy .vtk.
 void check_polydata_sizes(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
