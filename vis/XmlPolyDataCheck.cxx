@@ -557,14 +557,16 @@ void check_cells(FileLayout& f, vtkXMLDataElement* cells, std::uint64_t count)
   if (count == 0)
     return; // VTK's reader does not read them
   const std::string label = cells->GetName();
+  // VTK's reader reads the offsets before it looks for the connectivity
+  // (a fuzz finding: damaged offsets beside a missing connectivity).
   vtkXMLDataElement* offsets = array_named(cells, "offsets");
-  vtkXMLDataElement* connectivity = array_named(cells, "connectivity");
-  if (!offsets || !connectivity)
-    return; // VTK's reader says which is missing
+  if (!offsets)
+    return; // VTK's reader says it is missing
   const std::optional<double> last =
     ArrayCheck(f, offsets, label).check(count, "NumberOf" + label + "=" + std::to_string(count), true);
-  if (!last)
-    return; // no fixed word size: VTK's reader refuses the type
+  vtkXMLDataElement* connectivity = array_named(cells, "connectivity");
+  if (!last || !connectivity)
+    return; // no fixed word size or no connectivity: VTK's reader refuses them
   if (!(*last >= 0) || *last != std::floor(*last) || *last > f.budget)
     throw InputError(f.where + label + " array 'offsets' ends with " + number_text(*last) +
                      ", not a connectivity length a file of this size can hold");
