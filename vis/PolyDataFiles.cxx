@@ -1,5 +1,7 @@
 #include "PolyDataFiles.h"
 
+#include "XmlPolyDataCheck.h" // for meshpaint::check_xml_polydata_arrays
+
 #include "core/errors.h" // for meshpaint::IOError, InputError
 #include "core/format.h" // for meshpaint::lower_extension, excerpt
 #include "project/labels.h" // for meshpaint::LabelClass, check_labels
@@ -23,16 +25,26 @@
 #include <fstream>    // for std::ifstream
 #include <iterator>   // for std::istreambuf_iterator
 #include <limits>     // for std::numeric_limits
+#include <map>        // for std::map
 #include <regex>      // for std::regex, std::sregex_iterator
+#include <set>        // for std::set
 #include <sstream>    // for std::istringstream
 
 namespace meshpaint {
 namespace {
 
+//! The most bytes a polydata file can describe (zlib compresses at most
+//! about 1000 to 1).
+double polydata_budget(const std::string& path)
+{
+  std::error_code ec;
+  return 1100.0 * double(std::filesystem::file_size(path, ec));
+}
+
 //! VTK's readers allocate what the header says before reading data: counts
-//! and component numbers are bounded by what the file could hold (zlib
-//! compresses at most about 1000 to 1): the XML attributes of .vtp, the
-//! POINTS, POLYGONS, ... and SCALARS/COLOR_SCALARS counts of legacy .vtk.
+//! and component numbers are bounded by what the file could hold
+//! (polydata_budget()): the XML attributes of .vtp, the POINTS, POLYGONS,
+//! ... and SCALARS/COLOR_SCALARS counts of legacy .vtk.
 void check_polydata_sizes(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -42,8 +54,7 @@ void check_polydata_sizes(const std::string& path)
   const auto cut = head.find("<AppendedData");
   if (cut != std::string::npos)
     head.resize(cut);
-  std::error_code ec;
-  const double budget = 1100.0 * double(std::filesystem::file_size(path, ec));
+  const double budget = polydata_budget(path);
   static const std::regex attribute(
     R"re((NumberOf(Points|Polys|Cells|Verts|Lines|Strips|Components|Tuples))="\s*(-?[0-9]+)\s*"|\n(POINTS|POLYGONS|VERTICES|LINES|TRIANGLE_STRIPS|POINT_DATA|CELL_DATA|COLOR_SCALARS [^ \n]+|SCALARS [^ \n]+ [^ \n]+) +(-?[0-9]+))re");
   for (auto it = std::sregex_iterator(head.begin(), head.end(), attribute); it != std::sregex_iterator(); ++it) {
@@ -117,6 +128,78 @@ void check_legacy_points(const std::string& path)
       ++read;
     }
     return;
+  }
+}
+
+//! VTK's legacy reader dereferences a null cell array when a cell section
+//! is repeated or its line malformed (a fuzz finding): each of POINTS,
+//! VERTICES, LINES, POLYGONS and TRIANGLE_STRIPS may start a line once (any
+//! case, as VTK reads them), a cell section's line as `KEYWORD n m`, the
+//! points' as `POINTS n TYPE`.
+void check_legacy_sections(const std::string& path)
+{
+  static const std::set<std::string> sections{"points", "vertices", "lines", "polygons", "triangle_strips"};
+  // A type VTK's reader cannot read leaves the points null (a fuzz finding).
+  static const std::set<std::string> point_types{
+    "char",         "signed_char", "unsigned_char", "short",        "unsigned_short", "int",       "unsigned_int",
+    "long",         "unsigned_long", "vtktypeint64", "vtktypeuint64", "vtkidtype",      "float",     "double"};
+  std::ifstream in(path, std::ios::binary);
+  std::map<std::string, long> seen;
+  long number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++number;
+    if (line.size() > 256)
+      continue; // binary data
+    std::istringstream words(line);
+    std::string key;
+    words >> key;
+    std::transform(key.begin(), key.end(), key.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (!sections.count(key))
+      continue;
+    const std::string where = "'" + path + "': line " + std::to_string(number) + " ('" + excerpt(line, 40) + "') ";
+    if (seen.count(key))
+      throw InputError(where + "repeats the section of line " + std::to_string(seen[key]));
+    seen[key] = number;
+    long long cells = -1, size = -1;
+    std::string type, more;
+    if (key == "points") {
+      words >> cells >> type;
+      std::transform(type.begin(), type.end(), type.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+      if (cells < 0 || !point_types.count(type) || (words >> more))
+        throw InputError(where + "is not 'POINTS N TYPE' with a number type");
+    } else if (!(words >> cells >> size) || cells < 0 || size < 0 || (words >> more)) {
+      throw InputError(where + "is not '" + key + " CELLS SIZE'");
+    }
+  }
+}
+
+//! VTK's legacy reader takes the length of each string in a binary string
+//! array from the data and allocates it unchecked (a fuzz finding: 2^56
+//! bytes for a CONNECTIVITY declared utf8_string). meshpaint reads no string
+//! arrays: in a binary file, a line declaring one is refused.
+void check_legacy_binary_strings(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  for (int k = 0; k < 3 && std::getline(in, line); ++k) {
+  }
+  if (line.rfind("BINARY", 0) != 0)
+    return;
+  long number = 3;
+  while (std::getline(in, line)) {
+    ++number;
+    if (!line.empty() && line.back() == '\r')
+      line.pop_back();
+    const auto space = line.find_last_of(' ');
+    if (space == std::string::npos || line.size() > 256)
+      continue;
+    std::string type = line.substr(space + 1);
+    std::transform(type.begin(), type.end(), type.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    // VTK's reader compares only the start of the type's name.
+    if (type.rfind("string", 0) == 0 || type.rfind("utf8_string", 0) == 0 || type.rfind("unicode_string", 0) == 0)
+      throw InputError("'" + path + "': line " + std::to_string(number) + " ('" + excerpt(line, 40) +
+                       "') declares a binary string array, which VTK's reader cannot read safely (write the file "
+                       "as ASCII or .vtp)");
   }
 }
 
@@ -287,6 +370,32 @@ void read_label_classes(vtkPolyData* poly, PolygonSoup& soup, const std::string&
     soup.label_classes.push_back({c.id, c.name, c.colour});
 }
 
+//! The offsets of `cells` as VTK's traversal trusts them to be: from 0,
+//! never decreasing, never beyond the connectivity. Damaged files give
+//! others (fuzz findings: a decrease made a cell of negative size, a first
+//! offset far past the connectivity a read out of bounds).
+//! \throw InputError starting with `where`, naming the cell.
+void check_cell_offsets(vtkCellArray* cells, const std::string& where, const char* cell)
+{
+  vtkDataArray* offsets = cells->GetOffsetsArray();
+  if (!offsets)
+    return;
+  const double ids = double(cells->GetNumberOfConnectivityIds());
+  double previous = 0;
+  for (vtkIdType k = 0; k < offsets->GetNumberOfValues(); ++k) {
+    const double at = offsets->GetComponent(k, 0);
+    if (k == 0 && at != 0)
+      throw InputError(where + "the first " + cell + " offset is " + std::to_string((long long)at) + ", not 0");
+    if (at < previous)
+      throw InputError(where + cell + " " + std::to_string(k - 1) + " has " + std::to_string((long long)(at - previous)) +
+                       " points: the cell offsets decrease");
+    if (at > ids)
+      throw InputError(where + cell + " " + std::to_string(k - 1) + " ends at offset " + std::to_string((long long)at) +
+                       ", past the " + std::to_string((long long)ids) + " point ids of the connectivity");
+    previous = at;
+  }
+}
+
 } // namespace
 
 bool is_polydata_path(const std::string& path)
@@ -320,13 +429,11 @@ vtkSmartPointer<vtkPolyData> read_checked(vtkAlgorithm* reader, const std::strin
   for (vtkCellArray* cells : {out->GetVerts(), out->GetLines(), out->GetPolys(), out->GetStrips()}) {
     if (!cells)
       continue;
+    check_cell_offsets(cells, where, "cell");
     vtkIdType n = 0;
     const vtkIdType* ids = nullptr;
     vtkIdType cell = 0;
     for (cells->InitTraversal(); cells->GetNextCell(n, ids); ++cell) {
-      if (n < 0) // offsets that decrease (a fuzz finding)
-        throw InputError(where + "cell " + std::to_string(cell) + " has " + std::to_string(n) +
-                         " points: the file's cell offsets decrease");
       for (vtkIdType k = 0; k < n; ++k)
         if (ids[k] < 0 || ids[k] >= points)
           throw InputError(where + "cell " + std::to_string(cell) + " names point " + std::to_string(ids[k]) +
@@ -349,6 +456,8 @@ vtkSmartPointer<vtkPolyData> read_polydata_file(const std::string& path)
   if (lower_extension(path) == ".vtk") {
     check_legacy_version(path);
     check_legacy_points(path);
+    check_legacy_binary_strings(path);
+    check_legacy_sections(path);
     // VTK's reader takes the bytes' count as an int.
     if (std::filesystem::file_size(path, ec) > std::uintmax_t(std::numeric_limits<int>::max()))
       throw InputError("'" + path + "': a legacy .vtk file of 2 GiB or more (write it as .vtp)");
@@ -359,6 +468,10 @@ vtkSmartPointer<vtkPolyData> read_polydata_file(const std::string& path)
     r->ReadAllScalarsOn();
     r->ReadAllColorScalarsOn();
     return read_checked(r, path);
+  }
+  {
+    VtkMessagesKept kept; // the parser's own messages: VTK's reader repeats what matters
+    check_xml_polydata_arrays(path, polydata_budget(path));
   }
   auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
   r->SetFileName(path.c_str());
@@ -379,12 +492,10 @@ BaseMesh import_polydata(vtkPolyData* poly, const std::string& name, const std::
   }
   const vtkIdType points = poly->GetNumberOfPoints();
   if (vtkCellArray* polys = poly->GetPolys()) {
+    check_cell_offsets(polys, where, "polygon");
     vtkIdType n = 0;
     const vtkIdType* ids = nullptr;
     for (polys->InitTraversal(); polys->GetNextCell(n, ids);) {
-      if (n < 0)
-        throw InputError(where + "polygon " + std::to_string(soup.faces.size()) + " has " + std::to_string(n) +
-                         " points: its cell offsets decrease");
       for (vtkIdType k = 0; k < n; ++k)
         if (ids[k] < 0 || ids[k] >= points)
           throw InputError(where + "polygon " + std::to_string(soup.faces.size()) + " names point " +

@@ -83,13 +83,13 @@ def test_vtk_messages_do_not_reach_stderr(tmp_path):
     project = tmp_path / "p.meshpaint"
     r = run("fit", CUBE, "--level", "2", "--quiet", "-o", str(project))
     assert r.returncode == 0, r.stderr
-    # Points promised but too short: VTK's reader reports it on its own.
+    # Cell offsets that decrease (sizes all consistent): VTK's reader reports it on its own.
     bad = tmp_path / "short.vtp"
     bad.write_text('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1"><PolyData>'
-                   '<Piece NumberOfPoints="3" NumberOfPolys="1"><Points><DataArray type="Float32" '
-                   'NumberOfComponents="3" format="ascii">0 0 0 1 0 0</DataArray></Points><Polys>'
+                   '<Piece NumberOfPoints="3" NumberOfPolys="2"><Points><DataArray type="Float32" '
+                   'NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 1 0</DataArray></Points><Polys>'
                    '<DataArray type="Int32" Name="connectivity" format="ascii">0 1 2</DataArray>'
-                   '<DataArray type="Int32" Name="offsets" format="ascii">3</DataArray></Polys></Piece>'
+                   '<DataArray type="Int32" Name="offsets" format="ascii">4 3</DataArray></Polys></Piece>'
                    '</PolyData></VTKFile>\n')
     r = run("transfer", str(project), "--to", str(bad), "-o", str(tmp_path / "out.vtp"))
     assert r.returncode == 2

@@ -402,3 +402,51 @@ def test_negative_label_is_refused(tmp_path):
     data = label_ply("label", "int").replace(b"0.0 3\n", b"0.0 -3\n", 1)
     r = run("info", write(tmp_path, "grid.ply", data))
     assert r.returncode == 2 and "has label -3, outside 0 to 16777216" in r.stderr, r.stderr
+
+
+POLYDATA_FINDINGS = sorted(glob.glob(os.path.join(SOURCE, "tests", "fuzz", "regressions", "fuzz_polydata_*", "*")))
+
+
+@pytest.mark.parametrize("path", POLYDATA_FINDINGS, ids=os.path.basename)
+def test_polydata_fuzz_findings_are_bad_input(tmp_path, path):
+    # As the fuzz targets read them: the bytes under their format's extension.
+    mesh = tmp_path / ("finding" + (".vtp" if "fuzz_polydata_vtp" in path else ".vtk"))
+    mesh.write_bytes(open(path, "rb").read())
+    r = run("info", str(mesh))
+    lines = r.stderr.strip().splitlines()
+    assert r.returncode == 2, r.stdout + r.stderr
+    assert len(lines) == 1 and lines[0].startswith("meshpaint info: "), r.stderr
+
+
+@pytest.mark.parametrize("binary", [False, True])
+def test_legacy_string_arrays_are_read_only_as_text(tmp_path, binary):
+    # VTK's legacy reader trusts the string lengths stored in binary data.
+    s = vtk.vtkSphereSource()
+    s.Update()
+    poly = s.GetOutput()
+    names = vtk.vtkStringArray()
+    names.SetName("names")
+    names.InsertNextValue("scan")
+    poly.GetFieldData().AddArray(names)
+    w = vtk.vtkPolyDataWriter()
+    w.SetInputData(poly)
+    w.SetFileType(2 if binary else 1)
+    w.SetFileName(str(tmp_path / "s.vtk"))
+    w.Write()
+    r = run("info", str(tmp_path / "s.vtk"))
+    if not binary:
+        assert r.returncode == 0, r.stderr
+    else:
+        assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1, r.stderr
+        assert "binary string array" in r.stderr, r.stderr
+
+
+def test_a_repeated_legacy_cell_section_is_refused(tmp_path):
+    text = open(os.path.join(SOURCE, "tests", "fuzz", "corpus", "fuzz_polydata_vtk", "cube-ascii.vtk")).read()
+    start = text.index("POLYGONS")
+    end = text.index("\n", text.index("\n", start) + 1)
+    path = tmp_path / "twice.vtk"
+    path.write_text(text[:end + 1] + text[start:])
+    r = run("info", str(path))
+    assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1, r.stderr
+    assert "repeats the section" in r.stderr, r.stderr

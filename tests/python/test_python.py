@@ -487,6 +487,25 @@ def test_bad_polydata_input_raises():
         s.Update()
 
 
+@pytest.mark.parametrize("offsets, message", [
+    ([4, 8, 12, 16, 20, 24, 28], "the first polygon offset is 4, not 0"),
+    ([0, 4, 8, 6, 16, 20, 24], "polygon 2 has -2 points: the cell offsets decrease"),
+    ([0, 4, 8, 12, 16, 20, 10 ** 9], "polygon 5 ends at offset 1000000000, past the 24 point ids"),
+])
+def test_polydata_with_bad_cell_offsets_raises(offsets, message):
+    # Offsets a traversal would trust: checked whole before any polygon is read.
+    poly = cube_soup()
+    conn = numpy_to_vtk(np.arange(24, dtype=np.int64), deep=True, array_type=vtk.VTK_TYPE_INT64)
+    offs = numpy_to_vtk(np.array(offsets, dtype=np.int64), deep=True, array_type=vtk.VTK_TYPE_INT64)
+    cells = vtk.vtkCellArray()
+    cells.SetData(offs, conn)
+    poly.SetPolys(cells)
+    s = meshpaint.vtkPaintSurface()
+    s.SetInputData(poly)
+    with pytest.raises(meshpaint.Error, match=message):
+        s.Update()
+
+
 def test_saves_take_the_project_lock(tmp_path):
     source, s = painted_sphere()
     path = tmp_path / "p.meshpaint"
