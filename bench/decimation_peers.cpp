@@ -9,6 +9,7 @@
 
 #include "core/timer.h"
 #include "mesh/decimate.h"
+#include "mesh/edge_collapse.h"
 
 #include <vtkCellArray.h>          // for vtkCellArray
 #include <vtkIdList.h>             // for vtkIdList
@@ -17,8 +18,6 @@
 #include <vtkPolyData.h>           // for vtkPolyData
 #include <vtkQuadricDecimation.h>  // for vtkQuadricDecimation
 
-#include <CGAL/Simple_cartesian.h> // for CGAL::Simple_cartesian
-#include <CGAL/Surface_mesh.h>     // for CGAL::Surface_mesh
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_plane_policies.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h> // for edge_collapse
 
@@ -29,8 +28,6 @@
 namespace meshpaint::cli {
 namespace {
 
-using Kernel = CGAL::Simple_cartesian<double>;
-using CgalMesh = CGAL::Surface_mesh<Kernel::Point_3>;
 namespace SMS = CGAL::Surface_mesh_simplification;
 
 using Triangles = std::vector<std::array<int, 3>>;
@@ -39,18 +36,6 @@ struct Surface
 {
   std::vector<Vec3> points;
   Triangles triangles;
-};
-
-//! Stops the collapses once the mesh has at most `budget` faces.
-struct FaceBudget
-{
-  const CgalMesh* mesh;
-  std::size_t budget;
-  template <typename Cost, typename Profile>
-  bool operator()(const Cost&, const Profile&, std::size_t, std::size_t) const
-  {
-    return mesh->number_of_faces() <= budget;
-  }
 };
 
 //! Runs `decimate` `repeats` times; the median seconds and the last result.
@@ -132,20 +117,20 @@ DecimationPeer cgal_garland_heckbert(const BaseMesh& scan, const Triangles& tria
 {
   CgalMesh input;
   for (const Vec3& v : scan.points)
-    input.add_vertex(Kernel::Point_3(v[0], v[1], v[2]));
+    input.add_vertex(CgalKernel::Point_3(v[0], v[1], v[2]));
   for (const auto& t : triangles)
     input.add_face(CgalMesh::Vertex_index(t[0]), CgalMesh::Vertex_index(t[1]), CgalMesh::Vertex_index(t[2]));
   CgalMesh mesh;
   const double seconds = median_seconds(repeats, [&] {
     mesh = input;
-    SMS::GarlandHeckbert_plane_policies<CgalMesh, Kernel> policies(mesh);
+    SMS::GarlandHeckbert_plane_policies<CgalMesh, CgalKernel> policies(mesh);
     SMS::edge_collapse(mesh, FaceBudget{&mesh, budget},
                        CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement()));
   });
   mesh.collect_garbage();
   Surface s;
   for (CgalMesh::Vertex_index v : mesh.vertices()) {
-    const Kernel::Point_3& p = mesh.point(v);
+    const CgalKernel::Point_3& p = mesh.point(v);
     s.points.push_back({p.x(), p.y(), p.z()});
   }
   for (CgalMesh::Face_index f : mesh.faces()) {

@@ -1,7 +1,7 @@
 #include "mesh/decimate.h"
 
-#include <CGAL/Simple_cartesian.h> // for CGAL::Simple_cartesian
-#include <CGAL/Surface_mesh.h>     // for CGAL::Surface_mesh
+#include "mesh/edge_collapse.h"
+
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Bounded_normal_change_filter.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_plane_policies.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h> // for edge_collapse
@@ -12,28 +12,14 @@
 namespace meshpaint {
 namespace {
 
-using Kernel = CGAL::Simple_cartesian<double>;
-using CgalMesh = CGAL::Surface_mesh<Kernel::Point_3>;
 namespace SMS = CGAL::Surface_mesh_simplification;
-
-//! Stops the collapses once the mesh has at most `budget` faces.
-struct FaceBudget
-{
-  const CgalMesh* mesh;
-  std::size_t budget;
-  template <typename Cost, typename Profile>
-  bool operator()(const Cost&, const Profile&, std::size_t, std::size_t) const
-  {
-    return mesh->number_of_faces() <= budget;
-  }
-};
 
 //! One stage: Garland-Heckbert plane quadrics order and place the
 //! collapses until the budget or until none is allowed; stage 1 refuses a
 //! collapse that turns any face of its star by more than 90 degrees.
 void decimate_stage(CgalMesh& mesh, std::size_t target_faces, int stage)
 {
-  SMS::GarlandHeckbert_plane_policies<CgalMesh, Kernel> policies(mesh);
+  SMS::GarlandHeckbert_plane_policies<CgalMesh, CgalKernel> policies(mesh);
   const auto params = CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement());
   if (stage == 1)
     SMS::edge_collapse(mesh, FaceBudget{&mesh, target_faces}, params.filter(SMS::Bounded_normal_change_filter<>()));
@@ -51,7 +37,7 @@ Decimation decimate(const BaseMesh& mesh, std::size_t target_faces)
   cm.reserve(CgalMesh::size_type(mesh.vertex_count()), CgalMesh::size_type(3 * mesh.face_count()),
              CgalMesh::size_type(2 * mesh.face_count()));
   for (const Vec3& p : mesh.points)
-    cm.add_vertex(Kernel::Point_3(p[0], p[1], p[2]));
+    cm.add_vertex(CgalKernel::Point_3(p[0], p[1], p[2]));
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     const int* v = &mesh.face_vertices[std::size_t(mesh.face_offsets[f])];
     for (int k = 1; k + 1 < mesh.face_sizes[f]; ++k)
@@ -71,7 +57,7 @@ Decimation decimate(const BaseMesh& mesh, std::size_t target_faces)
   std::vector<Vec3> points;
   points.reserve(cm.number_of_vertices());
   for (const CgalMesh::Vertex_index v : cm.vertices()) {
-    const Kernel::Point_3& p = cm.point(v);
+    const CgalKernel::Point_3& p = cm.point(v);
     points.push_back({float(p.x()), float(p.y()), float(p.z())});
   }
   std::vector<std::vector<int>> faces;
