@@ -6,6 +6,9 @@
 # new is kept in build-fuzz/corpus/<target>/, crashes in build-fuzz/artifacts/,
 # logs with the executed-input counts in build-fuzz/logs/.
 # MESHPAINT_FUZZ_TARGETS="fuzz_mesh_obj ..." runs only those targets.
+# MESHPAINT_FUZZ_SEED=N fixes libFuzzer's random seed, so that a run from the
+# same clean tree on the same machine mutates the same inputs in the same
+# order (the test command does this; campaigns leave it unset to explore).
 set -eu
 seconds=${1:-30}
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -33,9 +36,11 @@ for t in $targets; do
   # its leaks are not findings of ours; crashes, hangs and memory still are.
   leaks=""
   case $t in fuzz_polydata_*) leaks="-detect_leaks=0" ;; esac
-  echo "fuzzing $t for $seconds s"
+  seed=""
+  [ -n "${MESHPAINT_FUZZ_SEED:-}" ] && seed="-seed=$MESHPAINT_FUZZ_SEED"
+  echo "fuzzing $t for $seconds s${seed:+ ($seed)}"
   # -timeout: one input taking longer is a hang; -rss_limit_mb: more is a finding.
-  if ! "$build/tests/fuzz/$t" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 $leaks \
+  if ! "$build/tests/fuzz/$t" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 $leaks $seed \
        -print_final_stats=1 -artifact_prefix="$build/artifacts/$t-" $dirs \
        >"$build/logs/$t.log" 2>&1; then
     echo "$t: finding, see $build/logs/$t.log and $build/artifacts/" >&2

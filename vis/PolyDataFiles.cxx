@@ -29,6 +29,7 @@
 #include <regex>      // for std::regex, std::sregex_iterator
 #include <set>        // for std::set
 #include <sstream>    // for std::istringstream
+#include <vector>     // for std::vector
 
 namespace meshpaint {
 namespace {
@@ -44,7 +45,7 @@ double polydata_budget(const std::string& path)
 //! VTK's readers allocate what the header says before reading data: counts
 //! and component numbers are bounded by what the file could hold
 //! (polydata_budget()): the XML attributes of .vtp, the POINTS, POLYGONS,
-//! ... and SCALARS/COLOR_SCALARS counts of legacy .vtk.
+//! ... and SCALARS/COLOR_SCALARS counts and FIELD array numbers of legacy .vtk.
 void check_polydata_sizes(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -56,7 +57,7 @@ void check_polydata_sizes(const std::string& path)
     head.resize(cut);
   const double budget = polydata_budget(path);
   static const std::regex attribute(
-    R"re((NumberOf(Points|Polys|Cells|Verts|Lines|Strips|Components|Tuples))="\s*(-?[0-9]+)\s*"|\n(POINTS|POLYGONS|VERTICES|LINES|TRIANGLE_STRIPS|POINT_DATA|CELL_DATA|COLOR_SCALARS [^ \n]+|SCALARS [^ \n]+ [^ \n]+) +(-?[0-9]+))re");
+    R"re((NumberOf(Points|Polys|Cells|Verts|Lines|Strips|Components|Tuples))="\s*(-?[0-9]+)\s*"|\n(POINTS|POLYGONS|VERTICES|LINES|TRIANGLE_STRIPS|POINT_DATA|CELL_DATA|COLOR_SCALARS [^ \n]+|SCALARS [^ \n]+ [^ \n]+|FIELD [^ \n]+) +(-?[0-9]+))re");
   for (auto it = std::sregex_iterator(head.begin(), head.end(), attribute); it != std::sregex_iterator(); ++it) {
     const bool xml = (*it)[1].matched;
     const std::string name = xml ? (*it)[1].str() : (*it)[4].str(), value = xml ? (*it)[3].str() : (*it)[5].str();
@@ -293,6 +294,82 @@ private:
   vtkLogger::Verbosity verbosity_;
 };
 
+//! VTK's legacy polydata reader releases a FIELD block of the dataset
+//! section without checking that it could be read (a null pointer when it
+//! could not: a fuzz finding). This walks that section first with the
+//! reader's own parts, as the reader will, and refuses the file when one of
+//! its FIELD blocks does not read; what else goes wrong is left for the
+//! reader to report.
+class LegacyDatasetFields : public vtkPolyDataReader
+{
+public:
+  static LegacyDatasetFields* New();
+  vtkTypeMacro(LegacyDatasetFields, vtkPolyDataReader);
+
+  //! \throw InputError when a FIELD block of the dataset section cannot be read.
+  void check(const std::string& text, const std::string& path)
+  {
+    ReadFromInputStringOn();
+    SetBinaryInputString(text.data(), int(text.size()));
+    VtkMessagesKept messages;
+    if (!OpenVTKFile() || !ReadHeader())
+      return;
+    if (next().rfind("dataset", 0) == 0 && next().rfind("polydata", 0) == 0)
+      walk(path);
+    CloseVTKFile();
+  }
+
+private:
+  //! The next word, lower case; empty at the end.
+  std::string next()
+  {
+    char word[256];
+    return ReadString(word) ? std::string(LowerCase(word)) : std::string();
+  }
+
+  void walk(const std::string& path)
+  {
+    auto points = vtkSmartPointer<vtkPolyData>::New();
+    for (std::string key = next(); !key.empty(); key = next()) {
+      if (key.rfind("field", 0) == 0) {
+        VtkMessagesKept reading; // its own reason, not an earlier section's
+        vtkFieldData* fields = ReadFieldData();
+        if (!fields) {
+          std::string why = reading.kept->message();
+          why = why.substr(0, why.find(" for file:")); // reading from memory: no file name follows
+          throw InputError("'" + path + "': the dataset's FIELD data cannot be read" + (why.empty() ? "" : ": " + why));
+        }
+        fields->Delete();
+      } else if (key.rfind("points", 0) == 0) {
+        vtkIdType n = 0;
+        if (!Read(&n))
+          return;
+        ReadPointCoordinates(points, n); // the reader goes on whether or not they read, so the walk does
+      } else if (key.rfind("vertices", 0) == 0 || key.rfind("lines", 0) == 0 || key.rfind("polygons", 0) == 0 ||
+                 key.rfind("triangle_strips", 0) == 0) {
+        if (!skip_cells())
+          return;
+      } else {
+        return; // the point and cell data, or a word the reader will refuse
+      }
+    }
+  }
+
+  bool skip_cells()
+  {
+    if (GetFileMajorVersion() >= 5) {
+      vtkSmartPointer<vtkCellArray> cells;
+      return ReadCells(cells) != 0;
+    }
+    vtkIdType cells = 0, size = 0;
+    if (!Read(&cells) || !Read(&size) || size < 0)
+      return false;
+    std::vector<int> ids(static_cast<std::size_t>(size));
+    return ReadCellsLegacy(size, ids.data()) != 0;
+  }
+};
+vtkStandardNewMacro(LegacyDatasetFields);
+
 //! Colours as ParaView, MeshLab's VTK export and Blender's VTK add-ons write
 //! them: 3 or 4 unsigned bytes per point (alpha ignored), as the point
 //! scalars or an array named Colors, RGB or RGBA (any case); null if none.
@@ -463,6 +540,7 @@ vtkSmartPointer<vtkPolyData> read_polydata_file(const std::string& path)
       throw InputError("'" + path + "': a legacy .vtk file of 2 GiB or more (write it as .vtp)");
     auto r = vtkSmartPointer<vtkPolyDataReader>::New();
     const std::string text = legacy_without_metadata(path);
+    vtkSmartPointer<LegacyDatasetFields>::New()->check(text, path);
     r->ReadFromInputStringOn();
     r->SetBinaryInputString(text.data(), int(text.size()));
     r->ReadAllScalarsOn();

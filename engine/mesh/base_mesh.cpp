@@ -117,10 +117,29 @@ public:
     return OpenMesh::FaceHandle();
   }
 
+  // OpenMesh's OBJ reader colours the vertices a face names as it reads the
+  // face, before anything checks that they exist.
+  void set_color(OpenMesh::VertexHandle vh, const OpenMesh::Vec3uc& c) override { colour_if_valid(vh, c); }
+  void set_color(OpenMesh::VertexHandle vh, const OpenMesh::Vec4uc& c) override { colour_if_valid(vh, c); }
+  void set_color(OpenMesh::VertexHandle vh, const OpenMesh::Vec3f& c) override { colour_if_valid(vh, c); }
+  void set_color(OpenMesh::VertexHandle vh, const OpenMesh::Vec4f& c) override { colour_if_valid(vh, c); }
+  using ImporterT<PolyMesh>::set_color;
+
   std::vector<std::vector<int>> faces;
   std::string problem;
 
 private:
+  template <class Colour>
+  void colour_if_valid(OpenMesh::VertexHandle vh, const Colour& c)
+  {
+    if (mesh_.is_valid_handle(vh)) {
+      ImporterT<PolyMesh>::set_color(vh, c);
+    } else if (problem.empty()) {
+      problem = "a colour for vertex " + std::to_string(vh.idx()) + ", but there are only " +
+                std::to_string(mesh_.n_vertices()) + " vertices";
+    }
+  }
+
   PolyMesh& mesh_;
 };
 

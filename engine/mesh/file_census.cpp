@@ -65,7 +65,7 @@ void check_obj_face(std::istringstream& words, long number, FileCensus& c)
     char* end = nullptr;
     errno = 0;
     const long index = std::strtol(text, &end, 10);
-    if (end == text || index == 0 || errno == ERANGE || (*end != '\0' && *end != '/')) {
+    if (end == text || index == 0 || errno == ERANGE || (end != text + corner.size() && *end != '/')) {
       c.problem = "line " + std::to_string(number) + ": face corner " + shown(corner) + " has no vertex index";
       return;
     }
@@ -120,7 +120,8 @@ bool is_number(const std::string& w, double limit)
 {
   char* end = nullptr;
   const double v = std::strtod(w.c_str(), &end);
-  return end != w.c_str() && !*end && (!std::isfinite(v) || std::fabs(v) <= limit);
+  // The whole word: a NUL inside it ends strtod's number but not OpenMesh's word.
+  return end != w.c_str() && end == w.c_str() + w.size() && (!std::isfinite(v) || std::fabs(v) <= limit);
 }
 
 //! A number OpenMesh reads as a float, and as an int.
@@ -159,7 +160,7 @@ bool unit_number(const std::string& w)
 {
   char* end = nullptr;
   const double v = std::strtod(w.c_str(), &end);
-  return end != w.c_str() && !*end && v >= 0 && v <= 1;
+  return end != w.c_str() && end == w.c_str() + w.size() && v >= 0 && v <= 1;
 }
 
 //! A colour property stored as a real number: OpenMesh scales it by 255

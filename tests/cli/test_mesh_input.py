@@ -418,21 +418,26 @@ def test_polydata_fuzz_findings_are_bad_input(tmp_path, path):
     assert len(lines) == 1 and lines[0].startswith("meshpaint info: "), r.stderr
 
 
-@pytest.mark.parametrize("binary", [False, True])
-def test_legacy_string_arrays_are_read_only_as_text(tmp_path, binary):
-    # VTK's legacy reader trusts the string lengths stored in binary data.
+def sphere_with_field_array(array, path, binary):
+    """A VTK sphere with `array` in its field data, written as legacy .vtk."""
     s = vtk.vtkSphereSource()
     s.Update()
     poly = s.GetOutput()
-    names = vtk.vtkStringArray()
-    names.SetName("names")
-    names.InsertNextValue("scan")
-    poly.GetFieldData().AddArray(names)
+    poly.GetFieldData().AddArray(array)
     w = vtk.vtkPolyDataWriter()
     w.SetInputData(poly)
     w.SetFileType(2 if binary else 1)
-    w.SetFileName(str(tmp_path / "s.vtk"))
+    w.SetFileName(str(path))
     w.Write()
+
+
+@pytest.mark.parametrize("binary", [False, True])
+def test_legacy_string_arrays_are_read_only_as_text(tmp_path, binary):
+    # VTK's legacy reader trusts the string lengths stored in binary data.
+    names = vtk.vtkStringArray()
+    names.SetName("names")
+    names.InsertNextValue("scan")
+    sphere_with_field_array(names, tmp_path / "s.vtk", binary)
     r = run("info", str(tmp_path / "s.vtk"))
     if not binary:
         assert r.returncode == 0, r.stderr
@@ -450,3 +455,39 @@ def test_a_repeated_legacy_cell_section_is_refused(tmp_path):
     r = run("info", str(path))
     assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1, r.stderr
     assert "repeats the section" in r.stderr, r.stderr
+
+
+@pytest.mark.parametrize("where", ["before POINTS", "after POLYGONS"])
+@pytest.mark.parametrize("binary", [False, True])
+def test_unreadable_dataset_field_data_is_refused_and_readable_field_data_read(tmp_path, where, binary):
+    # VTK's legacy reader deletes the null result of field data it could not
+    # read in the dataset section; such a file must be refused with one line,
+    # and field data that reads (label classes travel in it) must still load.
+    values = vtk.vtkFloatArray()
+    values.SetName("weights")
+    values.SetNumberOfComponents(3)
+    for k in range(4):
+        values.InsertNextTuple3(k, k + 0.5, k + 0.25)
+    sphere_with_field_array(values, tmp_path / "good.vtk", binary)
+    good = (tmp_path / "good.vtk").read_bytes()
+    assert run("info", str(tmp_path / "good.vtk")).returncode == 0
+    # The writer puts field data before POINTS; move it if asked.
+    start = good.index(b"FIELD FieldData 1")
+    end = good.index(b"POINTS")
+    block = good[start:end]
+    body = good[:start] + good[end:]
+    if where == "after POLYGONS":
+        at = body.index(b"POINT_DATA") if b"POINT_DATA" in body else len(body)
+        body = body[:at] + block + body[at:]
+    else:
+        body = body[:start] + block + body[start:]
+    (tmp_path / "moved.vtk").write_bytes(body)
+    r = run("info", str(tmp_path / "moved.vtk"))
+    assert r.returncode == 0, r.stderr
+    # Damage the block: an array header that cannot be read.
+    damaged = body.replace(b"weights 3 4 float", b"weights 3 x float")
+    assert damaged != body
+    (tmp_path / "damaged.vtk").write_bytes(damaged)
+    r = run("info", str(tmp_path / "damaged.vtk"))
+    assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1, r.stderr
+    assert "FIELD data cannot be read" in r.stderr, r.stderr
