@@ -6,6 +6,7 @@
 #include "cl/append_buffer.h"
 #include "cl/launch.h"
 #include "cl/kernel_programs.h"
+#include "paint/grab.h"
 #include "paint/paint_surface.h"
 #include "paint/welded_smoothing.h"
 

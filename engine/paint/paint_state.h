@@ -1,8 +1,10 @@
 // What the tool families of the brush pipeline work on: a painting surface's
 // atlas at its painting level and its device state (channel layers, scratch
 // buffers, kernels). PaintSurface owns these and hands them out as a
-// PaintState; the families are free functions over it, each in a file named
-// for it (subsurface_light.h, label_edits.h, snapshots.h).
+// PaintState; the families are free functions or small classes over it,
+// each in a file named for it (subsurface_light.h, label_edits.h,
+// snapshots.h, brush_placement.h; the brushes over a DabContext built on it:
+// colour_paint.h, smoothing.h, sculpt.h, grab.h, coarse_edit.h, reshape.h).
 #pragma once
 
 #include "atlas/atlas.h"

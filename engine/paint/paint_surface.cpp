@@ -1,8 +1,8 @@
 // The painting surface's state (atlas, channel layers, undo log, change
 // log) and a stroke's way through the brush pipeline: each dab placed
 // (brush_placement.h, brush_space.h), then run by its tool family
-// (colour_brushes.cpp, geometry_brushes.cpp, label_edits.h), with the tiles
-// it changes remembered first (snapshots.h), and undo and redo.
+// (colour_paint.h, smoothing.h, reshape.h, grab.h, label_edits.h), with the
+// tiles it changes remembered first (snapshots.h), and undo and redo.
 
 #include "paint/paint_device.h"
 
@@ -10,7 +10,10 @@
 #include "core/timer.h"
 #include "paint/brush_placement.h"
 #include "paint/brush_space.h"
+#include "paint/colour_paint.h"
 #include "paint/paint_memory.h"
+#include "paint/reshape.h"
+#include "paint/smoothing.h"
 #include "paint/snapshots.h"
 
 #include <algorithm> // for std::any_of, std::find, std::min, std::max
@@ -144,9 +147,7 @@ void PaintSurface::begin_stroke(const Stroke& stroke)
   if (two_sided_ && stroke_layers_.front() != kPositions) // either side may change
     for (const int id : std::vector<int>(stroke_layers_))
       stroke_layers_.push_back(id + kInsideDiffuse - kDiffuse);
-  stretched_.clear();
-  stretched_marks_.begin(std::size_t(atlas_->topology().patch_count));
-  encode_ms_ = 0;
+  coarse_.begin(std::size_t(atlas_->topology().patch_count));
   phases_ = StepPhases();
   open_ = std::make_unique<OpenStroke>();
   open_->stroke = stroke;
@@ -192,7 +193,7 @@ void PaintSurface::prepare_dab(const Stroke& stroke)
                      " pattern has no samples (load '" + p.pattern.file + "' first)");
   if (!stroke.brush.stamp_file.empty() && (!stroke.brush.stamp || stroke.brush.stamp->empty()))
     throw InputError("the stroke's brush image has no samples (load '" + stroke.brush.stamp_file + "' first)");
-  upload_rasters(stroke, dab);
+  upload_rasters(state(), stroke, dab);
   if (stroke.tool == Tool::Merge) {
     record_labels(merge_labels(state(), p));
     open_->report.dabs = open_->report.dabs_applied = 1;
@@ -208,7 +209,7 @@ void PaintSurface::prepare_dab(const Stroke& stroke)
     if (stroke.brush.has_camera) // a screen pattern's view
       camera_frame(stroke.brush.camera, dab);
     inside_ = two_sided_ && stroke.brush.side == 2; // a wash covers the outside unless told
-    paint(all, dab);
+    paint_dab(dab_context(), all, dab);
     open_->report.dabs = open_->report.dabs_applied = 1;
     open_->report.patches_touched = all.size();
     return;
@@ -236,9 +237,10 @@ bool PaintSurface::paint_dabs(const std::vector<DabSample>& samples, const std::
     for (; o.next < samples.size() && !o.ended; ++o.next) {
       const std::size_t index = o.next;
       const bool mine = !dabs || (index < dabs->size() && (*dabs)[index]); // else another object's dab
-      if (o.stroke.tool == Tool::Grab)
-        grab_step(samples, index, mine);
-      else if (mine)
+      if (o.stroke.tool == Tool::Grab) {
+        if (!o.grab.step(dab_context(), coarse_, o.stroke, o.dab, samples, index, mine, placer(), o.report))
+          o.report.left_surface = o.ended = true;
+      } else if (mine)
         paint_sample(samples[index], !dabs);
     }
   });
@@ -281,14 +283,15 @@ void PaintSurface::paint_sample(const DabSample& sample, bool may_end)
     if (patches.empty())
       continue;
     on_surface = true;
+    const DabContext context = dab_context();
     if (stroke.tool == Tool::Smear)
-      smear(patches, dab, o.carried[side]);
+      smear_dab(context, patches, dab, o.carried[side]);
     else if (const auto* p = std::get_if<PaintSettings>(&stroke.settings); p && p->spray_drops > 0)
-      spray(patches, dab, stroke, o.report.dabs);
+      spray_dab(context, patches, dab, stroke, o.report.dabs, placer());
     else if (stroke.tool == Tool::Paint || stroke.tool == Tool::Label)
-      paint(patches, dab);
+      paint_dab(context, patches, dab);
     else
-      reshape(patches, dab, stroke, normal);
+      reshape_dab(context, coarse_, patches, dab, stroke, normal);
     ++o.report.dabs_applied;
     o.report.patches_touched += patches.size();
   }
@@ -306,6 +309,13 @@ void PaintSurface::record_labels(LabelEdit edit)
     return;
   remember(edit.patches);
   write_labels(state(), edit);
+}
+
+PlaceDab PaintSurface::placer()
+{
+  return [this](const Stroke& stroke, const DabSample& sample, BrushDab& dab, Vec3& normal) {
+    return place(stroke, sample, dab, normal);
+  };
 }
 
 std::vector<int> PaintSurface::place(const Stroke& stroke, const DabSample& sample, BrushDab& dab, Vec3& normal)
@@ -364,10 +374,10 @@ StrokeReport PaintSurface::end_stroke(const Stroke& stroke)
   StrokeReport report;
   in_stroke([&] {
     if (stroke.tool == Tool::Grab)
-      grab_end(stroke);
+      open_->grab.end(dab_context(), coarse_, stroke, open_->dab, open_->report);
     report = open_->report;
-    report.stretch = stroke_stretch();
-    report.encode_ms = encode_ms_;
+    report.stretch = coarse_.stretch(dab_context());
+    report.encode_ms = coarse_.encode_ms();
     report.phases = phases_;
     atlas_->finish(); // the stroke's time holds all of its device work
   });
@@ -436,10 +446,6 @@ PaintChannels PaintSurface::read_channels()
   }
   return c;
 }
-
-cl::Buffer& PaintSurface::diffuse_buffer() { return inside_ ? device_->inside_diffuse : device_->diffuse; }
-cl::Buffer& PaintSurface::specular_buffer() { return inside_ ? device_->inside_specular : device_->specular; }
-cl::Buffer& PaintSurface::material_buffer() { return inside_ ? device_->inside_material : device_->material; }
 
 void PaintSurface::set_two_sided(bool on)
 {
@@ -529,7 +535,7 @@ void PaintSurface::restore(const Snapshot& s)
     if (s.layer_ids[k] != kEditPositions)
       scatter(k);
   if (std::find(s.layer_ids.begin(), s.layer_ids.end(), int(kPositions)) != s.layer_ids.end())
-    refresh_geometry(s.patches);
+    refresh_geometry(dab_context(), s.patches);
   rt.queue().finish();
 }
 
@@ -552,6 +558,12 @@ void PaintSurface::remember(const std::vector<int>& patches)
   stroke_before_.layers.resize(std::max(stroke_before_.layers.size(), s.layers.size()));
   for (std::size_t k = 0; k < s.layers.size(); ++k)
     stroke_before_.layers[k].insert(stroke_before_.layers[k].end(), s.layers[k].begin(), s.layers[k].end());
+}
+
+void PaintSurface::remember_details()
+{
+  if (undo_.recording() && multires_->encoded_level() >= 0 && !stroke_before_.memo)
+    stroke_before_.memo = std::make_shared<const Multires::Memo>(multires_->save());
 }
 
 bool PaintSurface::undo()

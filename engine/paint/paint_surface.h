@@ -1,28 +1,29 @@
 // A surface to paint on: the atlas at the painting level, its limit surface,
 // the paint channels, the undo and change logs, and a stroke's way through
-// the brush pipeline. Parts of the class live in files named for them:
-// colour_brushes.cpp, geometry_brushes.cpp, painted_surface.cpp (reading the
-// surface back), paint_memory.h (what fits). Tool families that are free
-// functions or small classes over its PaintState: brush_placement.h,
-// brush_space.h, snapshots.h, subsurface_light.h, label_edits.h.
+// the brush pipeline, which hands each dab to its tool family: free
+// functions or small classes over its PaintState and a DabContext
+// (colour_paint.h, smoothing.h, sculpt.h, grab.h, coarse_edit.h, reshape.h,
+// label_edits.h), after brush_placement.h and brush_space.h placed it;
+// snapshots.h and subsurface_light.h work on the state too. Reading the
+// surface back lives in painted_surface.cpp, what fits in paint_memory.h.
 #pragma once
 
 #include "atlas/atlas.h"
 #include "atlas/multires.h"
-#include "core/marks.h"
 #include "core/timer.h"
 #include "mesh/welded_surface.h"
 #include "paint/brush_placement.h"
+#include "paint/coarse_edit.h"
+#include "paint/dab_context.h"
 #include "paint/display_arrays.h"
 #include "paint/label_edits.h"
 #include "paint/paint_state.h"
 #include "paint/stroke.h"
+#include "paint/stroke_report.h"
 #include "paint/undo_log.h"
 
-#include <array>   // for std::array
-#include <cstdint> // for std::uint8_t, std::uint64_t
+#include <cstdint> // for std::uint64_t
 #include <memory>  // for std::unique_ptr
-#include <optional> // for std::optional
 #include <vector> // for std::vector
 
 namespace meshpaint {
@@ -66,34 +67,6 @@ struct PatchChanges
   std::vector<int> patches; //!< else these, ascending
 };
 
-//! What one stroke did.
-//! Where a stroke's dabs spent their time, summed over the dabs, when
-//! PaintSurface::time_phases() is on. Each phase ends with a wait for the
-//! device, which the phases then pay instead of the next one.
-struct StepPhases
-{
-  double place = 0;     //!< snapping, culling, reach and the flood (brush_patches)
-  double record = 0;    //!< the undo snapshot, and a coarse edit's encoding of details
-  double weights = 0;   //!< dab_weights (a coarse edit's: with the edit level's limit); none for
-                        //!< sculpt, inflate, flatten at the painting level, which weigh as they move
-  double transform = 0; //!< the move (with its weights: move_dab), the smoothing passes or paint_dab
-  double rebuild = 0;   //!< a coarse edit: subdivision to the finest level and decoding
-  double lists = 0;     //!< the corner neighbourhood and its patch set (host)
-  double limit = 0;     //!< limit positions, normals and patch bounds
-};
-
-struct StrokeReport
-{
-  std::size_t dabs = 0;            //!< dab positions along the stroke (mirrored ones included)
-  std::size_t dabs_applied = 0;    //!< those on the surface
-  std::size_t patches_touched = 0; //!< summed over dabs
-  bool left_surface = false;       //!< the stroke ended where it left the surface
-  float stretch = 1.f;             //!< edits at a coarser level: worst growth of a patch's sampling (Multires::stretch)
-  double ms = 0;                   //!< wall time, device work included
-  double encode_ms = 0;            //!< of which the encoding of details for coarse edits (Multires::encode)
-  StepPhases phases;               //!< with PaintSurface::time_phases() on
-};
-
 //! Default material of unpainted surface.
 struct BaseMaterial
 {
@@ -102,7 +75,9 @@ struct BaseMaterial
   float roughness = 0.5f;
 };
 
-class PaintSurface
+//! The surface keeps the state; its tool families see the running stroke
+//! through StrokeHooks, which it implements (undo records, phase timing).
+class PaintSurface : private StrokeHooks
 {
 public:
   //! Subdivides `mesh` to `level` on the device and computes its limit
@@ -116,7 +91,8 @@ public:
   Atlas& atlas() { return *atlas_; }
   int level() const { return level_; }
   //! What the tool families work on (subsurface_light.h, label_edits.h,
-  //! snapshots.h, brush_placement.h, brush_space.h).
+  //! snapshots.h, brush_placement.h, brush_space.h; with dab_context() the
+  //! brushes).
   PaintState state() { return PaintState{*atlas_, level_, *device_, weld_map_, multires_}; }
 
   //! Two-sided materials: an inside set of diffuse, specular and roughness
@@ -209,89 +185,51 @@ public:
 
 private:
   bool step(bool back); // undo (back) or redo
-  void paint(const std::vector<int>& patches, const BrushDab& dab);
+  //! What a dab's tool family works with: the state, this surface's hooks,
+  //! the side painted and the mask flag.
+  DabContext dab_context() { return DabContext{state(), *this, inside_, mask_painted_}; }
+  //! place() for the tool families that place dabs of their own (spray, grab).
+  PlaceDab placer();
   //! A label edit (label_edits.h) as part of the running stroke: its tiles
   //! remembered for undo, then written.
   void record_labels(LabelEdit edit);
-  //! One dab of spray paint: droplets at random points of the brush's disc
-  //! on the screen (seeded by the stroke's seed and the dab's `index`).
-  void spray(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke, std::uint64_t index);
-  //! Smooths or moves geometry (or smooths colours) on the patches.
-  //! `reweigh` false keeps the weights of the previous call (grab).
-  void reshape(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke, const Vec3& normal,
-               bool reweigh = true);
   struct OpenStroke;
-  //! The grab tool's region: taken under the first dab, then pulled along
-  //! the path.
-  struct GrabRegion
-  {
-    bool held = false;
-    std::vector<int> patches;
-    Vec3 at{0.f, 0.f, 0.f}; // where the last pull ended
-    std::size_t moves = 0;
-  };
   StrokeReport apply(const Stroke& stroke, const std::vector<char>* dabs);
   //! The open stroke's dab settings from the stroke (a wash or dip is
   //! painted here, having no path).
   void prepare_dab(const Stroke& stroke);
   //! One sample's dab, and its mirror image; `may_end`: a miss ends the stroke.
   void paint_sample(const DabSample& sample, bool may_end);
-  //! The grab tool at sample `index`: the region taken at the first, pulled
-  //! by the later ones; grab_end() pulls it to the path's end.
-  void grab_step(const std::vector<DabSample>& samples, std::size_t index, bool mine);
-  void grab_move(const Vec3& to);
-  void grab_end(const Stroke& stroke);
   //! Runs part of the open stroke; where it throws, the stroke is closed
   //! (one undo step, in history()) and the error passed on, OpenCL's as a
   //! DeviceError.
   template <typename F>
   void in_stroke(F&& work);
   void close_stroke(const Stroke& stroke);
-  //! Weights of the dab on the patches' texels at `level`, into the weight
-  //! buffer of that level.
-  void weigh(const std::vector<int>& patches, const cl::Buffer& list, const BrushDab& dab, int level);
-  //! After positions changed on `patches`: limit surface and bounds there.
-  //! `list`, if given, holds the patches on the device.
-  void refresh_geometry(const std::vector<int>& patches, const cl::Buffer* list = nullptr);
-  //! The same given Atlas::neighbourhood() of the moved patches.
-  void refresh_geometry(const PatchSet& around);
-  //! One dab of the smear brush: lays down `carried`, then picks up the
-  //! weighted mean colour under the dab into it.
-  void smear(const std::vector<int>& patches, BrushDab dab, std::optional<std::array<Float4, 2>>& carried);
-  //! The stroke's pattern samples, brush image and locked label classes to
-  //! the device, sizes and the only-over class into the dab.
-  void upload_rasters(const Stroke& stroke, BrushDab& dab);
   //! The side of a two-sided surface the dab paints, or the side a one-sided
   //! surface shows the stroke's camera: BrushDab::side_sign (and inside_).
   void choose_side(const Stroke& stroke, const Vec3& point, const Vec3& normal, BrushDab& dab);
   //! Finds the dab's site and aims it: the patches it may change, empty
   //! when it misses the surface (or meets a silhouette).
   std::vector<int> place(const Stroke& stroke, const DabSample& sample, BrushDab& dab, Vec3& normal);
-  //! The channel buffers a dab writes: the side it paints.
-  cl::Buffer& diffuse_buffer();
-  cl::Buffer& specular_buffer();
-  cl::Buffer& material_buffer();
   //! Puts back a snapshot's tiles and its state of the multiresolution details.
   void restore(const Snapshot& snapshot);
-  //! Adds the patches not yet in the stroke's snapshot, before they change.
-  void remember(const std::vector<int>& patches);
+  //! StrokeHooks: the patches not yet in the stroke's snapshot, added
+  //! before they change; the encoding of details a coarse edit replaces.
+  void remember(const std::vector<int>& patches) override;
+  void remember_details() override;
   //! With time_phases() on: waits for the device and adds the time since
   //! the last call (or phase_start()) to `phase`.
-  void phase_start();
-  void phase_done(double StepPhases::*phase);
+  void phase_start() override;
+  void phase_done(double StepPhases::*phase) override;
   //! Records a change of these patches, or of everything, for changes_since().
   void changed(const std::vector<int>& patches);
   void changed_all();
-  //! Multires::stretch of what the running stroke rebuilt, once at its end:
-  //! what the edit leaves is what the warning is about.
-  float stroke_stretch();
 
   std::unique_ptr<Atlas> atlas_;
   int level_;
   std::unique_ptr<Multires> multires_; // details for edits at a coarser level, made on first use
-  std::vector<int> stretched_;         // patches the running stroke rebuilt from a coarser level
-  Marks stretched_marks_;              // per patch: in stretched_
-  double encode_ms_ = 0;               // the running stroke's encoding time
+  CoarseEdits coarse_;                 // what the running stroke's coarse edits rebuilt, and their encoding time
   bool mask_painted_ = false;          // a mask may be set somewhere (else weights skip reading it)
   bool time_phases_ = false;
   StepPhases phases_;                  // the running stroke's, with time_phases_

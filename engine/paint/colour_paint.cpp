@@ -1,9 +1,10 @@
-// Colour brushes: the paint equation under a dab (paint, label, wash, dip),
-// spray droplets, and the smear brush's pick-up; the stroke's pattern,
-// brush image and label guards for the kernels.
+// Colour paint: paint_dab launches the paint equation on the dab's patches,
+// spray_dab lets droplets fall on the surface first.
 
+#include "paint/colour_paint.h"
+
+#include "core/errors.h"
 #include "paint/paint_device.h"
-
 #include "paint/spray.h"
 
 #include <algorithm> // for std::max
@@ -11,26 +12,27 @@
 
 namespace meshpaint {
 
-void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
+void paint_dab(const DabContext& context, const std::vector<int>& patches, const BrushDab& dab)
 {
   if (patches.empty())
     return;
-  if (inside_ && (dab.alpha[CHANNEL_LABEL] > 0.f || dab.alpha[CHANNEL_DISPLACEMENT] > 0.f)) {
+  if (context.inside && (dab.alpha[CHANNEL_LABEL] > 0.f || dab.alpha[CHANNEL_DISPLACEMENT] > 0.f)) {
     // Labels and displacement belong to the surface, not to one side.
     BrushDab shared = dab, sided = dab;
     for (int c = 0; c < CHANNEL_COUNT; ++c)
       (c == CHANNEL_LABEL || c == CHANNEL_DISPLACEMENT ? sided : shared).alpha[c] = 0.f;
-    inside_ = false;
-    paint(patches, shared);
-    inside_ = true;
-    paint(patches, sided);
+    context.inside = false;
+    paint_dab(context, patches, shared);
+    context.inside = true;
+    paint_dab(context, patches, sided);
     return;
   }
-  remember(patches);
-  mask_painted_ = mask_painted_ || dab.alpha[CHANNEL_MASK] > 0.f;
-  PaintDevice& d = *device_;
-  Runtime& rt = atlas_->runtime();
-  const LevelLayout l = atlas_->layout(level_);
+  context.hooks.remember(patches);
+  context.mask_painted = context.mask_painted || dab.alpha[CHANNEL_MASK] > 0.f;
+  const PaintState& s = context.state;
+  PaintDevice& d = s.device;
+  Runtime& rt = s.atlas.runtime();
+  const LevelLayout l = s.layout();
   if (d.active_capacity < patches.size()) {
     d.active_capacity = std::max(patches.size(), std::size_t(l.patches < 1024 ? l.patches : 1024));
     d.active = cl::Buffer(rt.context(), CL_MEM_READ_ONLY, sizeof(cl_int) * d.active_capacity);
@@ -39,21 +41,22 @@ void PaintSurface::paint(const std::vector<int>& patches, const BrushDab& dab)
   rt.queue().enqueueWriteBuffer(d.active, CL_TRUE, 0, sizeof(cl_int) * patches.size(), patches.data());
   rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
   const auto tiles = range_tiles(l, int(patches.size()));
-  launch(rt.queue(), d.paint_dab, tiles.first, tiles.second, atlas_->limit_positions_layer(),
-         atlas_->limit_normals_layer(), grid(l), d.active, cl_int(patches.size()), d.dab, d.unfold, d.raster, d.stamp,
-         diffuse_buffer(), specular_buffer(), material_buffer(), d.locked);
+  launch(rt.queue(), d.paint_dab, tiles.first, tiles.second, s.atlas.limit_positions_layer(),
+         s.atlas.limit_normals_layer(), grid(l), d.active, cl_int(patches.size()), d.dab, d.unfold, d.raster, d.stamp,
+         context.diffuse(), context.specular(), context.material(), d.locked);
   rt.queue().finish();
-  phase_done(&StepPhases::transform);
+  context.hooks.phase_done(&StepPhases::transform);
 }
 
-void PaintSurface::spray(const std::vector<int>& patches, const BrushDab& dab, const Stroke& stroke,
-                         std::uint64_t index)
+void spray_dab(const DabContext& context, const std::vector<int>& patches, const BrushDab& dab,
+               const Stroke& stroke, std::uint64_t index, const PlaceDab& place)
 {
   // Droplets fall evenly on the screen, so the surface gets fewer per area
   // where it is seen obliquely: by the cosine of the angle to the view.
-  PaintDevice& d = *device_;
-  Runtime& rt = atlas_->runtime();
-  const LevelLayout l = atlas_->layout(level_);
+  const PaintState& s = context.state;
+  PaintDevice& d = s.device;
+  Runtime& rt = s.atlas.runtime();
+  const LevelLayout l = s.layout();
   const int k = stroke.paint().spray_drops;
   std::vector<cl_float2> drops;
   for (const auto& o : spray_offsets(stroke.paint().spray_seed, index, k, dab.radius))
@@ -69,10 +72,10 @@ void PaintSurface::spray(const std::vector<int>& patches, const BrushDab& dab, c
   q.enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
   const cl::Buffer list = device_ints(rt.context(), patches);
   const auto tiles = range_tiles(l, int(patches.size()));
-  const cl::Memory &pos = atlas_->limit_positions_layer(), &nrm = atlas_->limit_normals_layer();
+  const cl::Memory &pos = s.atlas.limit_positions_layer(), &nrm = s.atlas.limit_normals_layer();
   for (const int pass : {0, 1})
-    launch(q, d.spray_pick, tiles.first, tiles.second, pos, nrm, grid(l), list, int(patches.size()), d.dab, atlas_->limit_bounds(),
-           drop_buffer, k, pass, keys, texels);
+    launch(q, d.spray_pick, tiles.first, tiles.second, pos, nrm, grid(l), list, int(patches.size()), d.dab,
+           s.atlas.limit_bounds(), drop_buffer, k, pass, keys, texels);
   launch(q, d.spray_points, cl::NDRange(round_up(std::size_t(k), kGroup)), cl::NDRange(kGroup), pos, grid(l), texels, k,
          points);
   std::vector<Float4> landed(drops.size());
@@ -88,57 +91,11 @@ void PaintSurface::spray(const std::vector<int>& patches, const BrushDab& dab, c
       continue;
     Vec3 normal;
     const std::vector<int> hit = place(droplet, DabSample{{at[0], at[1], at[2]}, 1.f, {0.f, 0.f, 0.f}}, drop, normal);
-    paint(hit, drop);
+    paint_dab(context, hit, drop);
   }
 }
 
-void PaintSurface::smear(const std::vector<int>& patches, BrushDab dab, std::optional<std::array<Float4, 2>>& carried)
-{
-  PaintDevice& d = *device_;
-  Runtime& rt = atlas_->runtime();
-  const LevelLayout l = atlas_->layout(level_);
-  // Lay down what the previous dab picked up, then pick up from here.
-  if (carried) {
-    for (int k = 0; k < 4; ++k) {
-      dab.value[CHANNEL_DIFFUSE][k] = (*carried)[0][k];
-      dab.value[CHANNEL_SPECULAR][k] = (*carried)[1][k];
-    }
-    for (int c = 0; c < CHANNEL_COUNT; ++c)
-      dab.alpha[c] = c == CHANNEL_DIFFUSE || c == CHANNEL_SPECULAR ? 1.f : 0.f;
-    dab.op = PAINT_OP_COPY;
-    dab.pattern = PATTERN_NONE;
-    paint(patches, dab);
-  }
-  const cl::Buffer list = device_ints(rt.context(), patches);
-  const int count = int(patches.size());
-  const std::size_t items = kGroup, texels = std::size_t(count) * l.tile * l.tile;
-  const std::size_t groups = (texels + items - 1) / items;
-  cl::Buffer partial(rt.context(), CL_MEM_WRITE_ONLY, 3 * groups * sizeof(Float4));
-  rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
-  launch(rt.queue(), d.dab_pickup, cl::NDRange(groups * items), cl::NDRange(items), atlas_->limit_positions_layer(),
-         atlas_->limit_normals_layer(),
-         grid(l), list, count, d.dab, d.unfold, d.stamp, diffuse_buffer(), specular_buffer(), partial,
-         cl::Local(3 * items * sizeof(Float4)));
-  std::vector<Float4> sums(3 * groups);
-  rt.queue().enqueueReadBuffer(partial, CL_TRUE, 0, sums.size() * sizeof(Float4), sums.data());
-  double acc[2][4] = {}, weight = 0;
-  for (std::size_t g = 0; g < groups; ++g) {
-    for (int k = 0; k < 4; ++k) {
-      acc[0][k] += sums[3 * g][k];
-      acc[1][k] += sums[3 * g + 1][k];
-    }
-    weight += sums[3 * g + 2][0];
-  }
-  if (weight > 0) {
-    std::array<Float4, 2> load;
-    for (int c = 0; c < 2; ++c)
-      for (int k = 0; k < 4; ++k)
-        load[std::size_t(c)][k] = float(acc[c][k] / weight);
-    carried = load;
-  }
-}
-
-void PaintSurface::upload_rasters(const Stroke& stroke, BrushDab& dab)
+void upload_rasters(const PaintState& state, const Stroke& stroke, BrushDab& dab)
 {
   const Raster* pattern = stroke.pattern() ? stroke.pattern()->raster.get() : nullptr;
   for (const Raster* r : {pattern, stroke.brush.stamp.get()})
@@ -147,8 +104,8 @@ void PaintSurface::upload_rasters(const Stroke& stroke, BrushDab& dab)
       throw InputError("a pattern or brush image of " + std::to_string(r->width) + "x" + std::to_string(r->height) +
                        "x" + std::to_string(r->depth) + " samples of " + std::to_string(r->channels) +
                        " channels does not match its " + std::to_string(r->samples.size()) + " values");
-  PaintDevice& d = *device_;
-  Runtime& rt = atlas_->runtime();
+  PaintDevice& d = state.device;
+  Runtime& rt = state.atlas.runtime();
   const auto upload = [&](const std::vector<float>& v) {
     static const float none = 0.f;
     return cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,

@@ -1,0 +1,81 @@
+// Weights and moves of the control points under a dab.
+
+#include "paint/sculpt.h"
+
+#include "paint/paint_device.h"
+
+#include <algorithm> // for std::max
+#include <cstdint>   // for std::uint8_t
+
+namespace meshpaint {
+
+void weigh_dab(const DabContext& context, const std::vector<int>& patches, const cl::Buffer& list, const BrushDab& dab,
+               int level)
+{
+  // At a coarser edit level, on the limit of that level's control points.
+  // The patches come from the finest surface, so that level's weights may
+  // reach the sides they share with other patches: those stay put.
+  const PaintState& s = context.state;
+  PaintDevice& d = s.device;
+  Runtime& rt = s.atlas.runtime();
+  const LevelLayout f = s.layout(), l = s.atlas.layout(level);
+  const bool coarse = level < s.level;
+  const int stride = f.n / l.n;
+  // The outside bits first: the blocking write below waits for the kernels
+  // queued before it (a coarse edit's limit), which run meanwhile.
+  cl::Buffer outside;
+  if (coarse) {
+    std::vector<std::uint8_t> bits = s.atlas.shared_outside(patches);
+    bits.resize(std::max<std::size_t>(1, bits.size())); // a valid argument when empty
+    outside = cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bits.size(), bits.data());
+  }
+  BrushDab at_level = dab; // parameter space counts texels of the level
+  for (float& c : at_level.centre_texel)
+    c /= float(stride);
+  at_level.texel_size *= float(stride);
+  rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof at_level, &at_level);
+  const int count = int(patches.size());
+  const auto tiles = range_tiles(l, count);
+  launch(rt.queue(), d.dab_weights, tiles.first, tiles.second,
+         coarse ? s.multires->base_positions() : s.atlas.limit_positions_layer(),
+         coarse ? s.multires->base_normals() : s.atlas.limit_normals_layer(), grid(l), list, count, d.dab, d.unfold,
+         d.stamp, context.material(), cl_int(context.mask_painted), grid(f), stride, outside,
+         coarse ? s.multires->base_weights() : d.weights);
+}
+
+void move_dab(const DabContext& context, const std::vector<int>& patches, const cl::Buffer& list, const BrushDab& dab,
+              const Stroke& stroke, const Vec3& towards, int level, bool weigh_as_moved, const cl::Buffer& weights)
+{
+  const PaintState& s = context.state;
+  PaintDevice& d = s.device;
+  cl::CommandQueue& q = s.atlas.runtime().queue();
+  const LevelLayout l = s.atlas.layout(level);
+  const bool coarse = level < s.level;
+  const int count = int(patches.size());
+  const int mode = stroke.tool == Tool::Inflate ? MOVE_INFLATE : stroke.tool == Tool::Flatten ? MOVE_FLATTEN
+                                                                                               : MOVE_SCULPT;
+  // A grab moves by the path's step times the weight.
+  const float amount = stroke.tool == Tool::Grab ? 1.f : stroke.move().amount;
+  const cl::Memory& pos = s.atlas.level_layer(level);
+  const bool in_place = s.atlas.storage() == AtlasStorage::Buffer; // see geometry.cl
+  const cl::Memory& moved = in_place ? pos : d.position_work;
+  const cl::Memory& normals = coarse ? s.multires->base_normals() : s.atlas.limit_normals_layer();
+  const cl_float4 centre{{dab.centre[0], dab.centre[1], dab.centre[2], 0.f}};
+  const cl_float4 step{{towards[0], towards[1], towards[2], 0.f}};
+  const auto tiles = range_tiles(l, count);
+  if (weigh_as_moved) {
+    const bool plain = dab.space == SPACE_OBJECT && dab.stamp_size[0] == 0 && !context.mask_painted;
+    q.enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
+    const Atlas::TileLaunch t = s.atlas.tile_launch(d.move_dab, d.move_dab_patches, l, count);
+    launch(q, t.kernel, t.global, t.local, pos, moved, s.atlas.limit_positions_layer(), normals, grid(l), list,
+           count, d.dab, d.unfold, d.stamp, context.material(), cl_int(context.mask_painted), mode, amount, centre,
+           step, cl_int(plain), dab.radius, cl_int(dab.falloff), dab.strength);
+  } else {
+    launch(q, d.move_points, tiles.first, tiles.second, pos, moved, normals, grid(l), list, count, weights, mode,
+           amount, centre, step);
+  }
+  if (!in_place)
+    launch(q, d.positions.copy_tiles, tiles.first, tiles.second, d.position_work, pos, grid(l), list, count);
+}
+
+} // namespace meshpaint
