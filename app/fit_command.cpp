@@ -5,7 +5,7 @@
 #include "progress_bar.h"
 #include "table.h"
 
-#include "VtkSurfaceQuery.h"
+#include "project/aabb_surface_query.h" // for meshpaint::aabb_surface_queries
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
@@ -152,7 +152,7 @@ int fit_command(const Argv& argv)
   FitOptions options;
   options.passes = passes;
   options.progress = &bar;
-  const FitReport fit = fit_atlas(surface.atlas(), scan, vtk_surface_queries(), options);
+  const FitReport fit = fit_atlas(surface.atlas(), scan, aabb_surface_queries(), options);
   surface.geometry_changed();
   const double fit_ms = t.ms();
 

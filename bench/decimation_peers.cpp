@@ -5,7 +5,7 @@
 
 #include "decimation_peers.h"
 
-#include "VtkSurfaceQuery.h"
+#include "project/aabb_surface_query.h" // for meshpaint::aabb_surface_queries
 
 #include "core/timer.h"
 #include "mesh/decimate.h"
@@ -57,7 +57,7 @@ DecimationPeer measured(const std::string& method, double seconds, const Surface
   peer.method = method;
   peer.faces = s.triangles.size();
   peer.seconds = seconds;
-  peer.scan_to_mesh = surface_distance(*vtk_surface_queries()(s.points, s.triangles), scan.points);
+  peer.scan_to_mesh = surface_distance(*aabb_surface_queries()(s.points, s.triangles), scan.points);
   return peer;
 }
 
@@ -84,7 +84,7 @@ Surface surface_of(vtkPolyData* mesh)
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i) {
     double x[3];
     mesh->GetPoint(i, x);
-    s.points.push_back({x[0], x[1], x[2]});
+    s.points.push_back({float(x[0]), float(x[1]), float(x[2])});
   }
   vtkNew<vtkIdList> ids;
   vtkCellArray* polys = mesh->GetPolys();
@@ -131,7 +131,7 @@ DecimationPeer cgal_garland_heckbert(const BaseMesh& scan, const Triangles& tria
   Surface s;
   for (CgalMesh::Vertex_index v : mesh.vertices()) {
     const CgalKernel::Point_3& p = mesh.point(v);
-    s.points.push_back({p.x(), p.y(), p.z()});
+    s.points.push_back({float(p.x()), float(p.y()), float(p.z())});
   }
   for (CgalMesh::Face_index f : mesh.faces()) {
     std::array<int, 3> t{};

@@ -17,11 +17,12 @@
 #include <vtkStringArray.h>       // for vtkStringArray
 #include <vtkXMLPolyDataReader.h> // for vtkXMLPolyDataReader
 
-#include <algorithm>  // for std::transform
+#include <algorithm>  // for std::transform, std::any_of
 #include <cctype>     // for std::tolower
 #include <cmath>      // for std::isfinite
 #include <cstdlib>    // for std::strtod, std::getenv
 #include <filesystem> // for std::filesystem::file_size, path
+#include <initializer_list> // for std::initializer_list
 #include <fstream>    // for std::ifstream
 #include <iterator>   // for std::istreambuf_iterator
 #include <limits>     // for std::numeric_limits
@@ -174,6 +175,19 @@ void check_legacy_sections(const std::string& path)
   }
 }
 
+//! Whether a lower-case word starts as one of VTK's string array types
+//! (its reader compares only the start of the name).
+bool is_string_type(const std::string& type)
+{
+  return type.rfind("string", 0) == 0 || type.rfind("utf8_string", 0) == 0 || type.rfind("unicode_string", 0) == 0;
+}
+
+//! Whether a word is a count: digits only.
+bool is_count(const std::string& word)
+{
+  return !word.empty() && word.find_first_not_of("0123456789") == std::string::npos;
+}
+
 //! VTK's legacy reader takes the length of each string in a binary string
 //! array from the data and allocates it unchecked (a fuzz finding: 2^56
 //! bytes for a CONNECTIVITY declared utf8_string). meshpaint reads no string
@@ -197,10 +211,33 @@ void check_legacy_binary_strings(const std::string& path)
     std::string type = line.substr(space + 1);
     std::transform(type.begin(), type.end(), type.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     // VTK's reader compares only the start of the type's name.
-    if (type.rfind("string", 0) == 0 || type.rfind("utf8_string", 0) == 0 || type.rfind("unicode_string", 0) == 0)
+    if (is_string_type(type))
       throw InputError("'" + path + "': line " + std::to_string(number) + " ('" + excerpt(line, 40) +
                        "') declares a binary string array, which VTK's reader cannot read safely (write the file "
                        "as ASCII or .vtp)");
+  }
+  // VTK's reader takes words, not lines: a type may also follow its count
+  // on the next line, or be run into it ("24string" reads as 24, then
+  // "string"). A string type where the reader takes a type is refused too.
+  in.clear();
+  in.seekg(0);
+  std::string before[2]; // the two words before this one, the nearer first
+  for (std::string word; in >> word;) {
+    std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const std::size_t digits = word.find_first_not_of("0123456789");
+    const std::string type = digits == std::string::npos ? "" : word.substr(digits);
+    const auto one_of = [](const std::string& w, std::initializer_list<const char*> any) {
+      return std::any_of(any.begin(), any.end(), [&](const char* a) { return w == a; });
+    };
+    const bool typed = (digits > 0 && is_count(before[0])) || (digits == 0 && is_count(before[0]) && is_count(before[1])) ||
+                       one_of(before[1], {"scalars", "vectors", "normals", "tensors", "global_ids", "pedigree_ids", "points"}) ||
+                       one_of(before[0], {"offsets", "connectivity"});
+    if (typed && is_string_type(type))
+      throw InputError("'" + path + "': the word '" + excerpt(word, 40) +
+                       "' declares a binary string array, which VTK's reader cannot read safely (write the file "
+                       "as ASCII or .vtp)");
+    before[1] = std::move(before[0]);
+    before[0] = std::move(word);
   }
 }
 

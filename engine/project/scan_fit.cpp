@@ -2,6 +2,7 @@
 
 #include "atlas/weld.h"
 #include "core/errors.h"
+#include "core/parallel_for.h"
 
 #include <algorithm> // for std::max, std::max_element
 #include <cmath>     // for std::sqrt, std::isfinite, std::abs
@@ -11,6 +12,9 @@ namespace meshpaint {
 namespace {
 
 Vec3 xyz(const Float4& t) { return {t[0], t[1], t[2]}; }
+
+//! Points one thread takes at least, and points between two words of progress.
+constexpr std::size_t kPointsPerThread = 4096, kPointsPerBlock = 1 << 16;
 
 //! Halvings of a folding step before it is dropped.
 constexpr int kMaxShortenings = 4;
@@ -170,10 +174,17 @@ double scan_area(const BaseMesh& scan)
 
 FitError surface_distance(const SurfaceQuery& to, const std::vector<Vec3>& from)
 {
+  std::vector<double> distance(from.size());
+  parallel_for(from.size(), kPointsPerThread, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+      distance[k] = length(sub(to.closest_point(from[k]), from[k]));
+  });
+  // Summed in order, so the result does not depend on the threads.
   FitError e;
   double sum2 = 0;
-  for (const Vec3& p : from) {
-    const double d = length(sub(to.closest_point(p), p));
+  for (std::size_t k = 0; k < from.size(); ++k) {
+    const Vec3& p = from[k];
+    const double d = distance[k];
     sum2 += d * d;
     if (d > e.max) {
       e.max = d;
@@ -220,22 +231,30 @@ FitReport fit_atlas(Atlas& atlas, const BaseMesh& scan, const SurfaceQueryFactor
     std::optional<ProgressTask> task;
     task.emplace(options.progress, "pass " + std::to_string(pass + 1) + " of " + std::to_string(options.passes),
                  welded);
-    for (std::size_t w = 0; w < welded; ++w) {
-      if (w % 1024 == 0)
-        task->step(w);
-      const Vec3 p = xyz(limit[first[w]]), n = xyz(normals[first[w]]);
-      const Vec3 closest = scan_query->closest_point(p);
-      const Vec3 to = sub(closest, p);
-      const float d = length(to);
-      Vec3 target = closest;
-      // Where the closest point lies on the normal line already, it is the hit.
-      if (d > 0 && std::abs(dot(to, n)) < 0.999f * d) {
-        bool missed = false;
-        target = normal_target(*scan_query, p, n, closest, std::max(4 * d, min_reach), missed);
-        report.ray_misses += missed;
-      }
-      delta[w] = sub(target, p);
+    std::vector<char> missed(welded, 0);
+    // In blocks, so that progress is told between them.
+    for (std::size_t block = 0; block < welded; block += kPointsPerBlock) {
+      task->step(block);
+      const std::size_t block_end = std::min(welded, block + kPointsPerBlock);
+      parallel_for(block_end - block, kPointsPerThread, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t w = block + begin; w < block + end; ++w) {
+          const Vec3 p = xyz(limit[first[w]]), n = xyz(normals[first[w]]);
+          const Vec3 closest = scan_query->closest_point(p);
+          const Vec3 to = sub(closest, p);
+          const float d = length(to);
+          Vec3 target = closest;
+          // Where the closest point lies on the normal line already, it is the hit.
+          if (d > 0 && std::abs(dot(to, n)) < 0.999f * d) {
+            bool miss = false;
+            target = normal_target(*scan_query, p, n, closest, std::max(4 * d, min_reach), miss);
+            missed[w] = miss;
+          }
+          delta[w] = sub(target, p);
+        }
+      });
     }
+    for (const char m : missed)
+      report.ray_misses += m;
     task->step(welded);
     task.reset();
     // A step longer than the quads it moves can turn them over (where the

@@ -14,8 +14,9 @@
 
 namespace meshpaint {
 
-//! Closest points and ray hits on a triangle surface. The engine defines
-//! the question; vis/ answers it with VTK's locators.
+//! Closest points and ray hits on a triangle surface
+//! (aabb_surface_queries() answers with CGAL's AABB tree). The fit asks
+//! from several threads at once: the const methods must allow that.
 class SurfaceQuery
 {
 public:

@@ -431,6 +431,16 @@ def sphere_with_field_array(array, path, binary):
     w.Write()
 
 
+def weights_array():
+    """A field array of 4 float triples named weights (header `weights 3 4 float`)."""
+    values = vtk.vtkFloatArray()
+    values.SetName("weights")
+    values.SetNumberOfComponents(3)
+    for k in range(4):
+        values.InsertNextTuple3(k, k + 0.5, k + 0.25)
+    return values
+
+
 @pytest.mark.parametrize("binary", [False, True])
 def test_legacy_string_arrays_are_read_only_as_text(tmp_path, binary):
     # VTK's legacy reader trusts the string lengths stored in binary data.
@@ -463,12 +473,7 @@ def test_unreadable_dataset_field_data_is_refused_and_readable_field_data_read(t
     # VTK's legacy reader deletes the null result of field data it could not
     # read in the dataset section; such a file must be refused with one line,
     # and field data that reads (label classes travel in it) must still load.
-    values = vtk.vtkFloatArray()
-    values.SetName("weights")
-    values.SetNumberOfComponents(3)
-    for k in range(4):
-        values.InsertNextTuple3(k, k + 0.5, k + 0.25)
-    sphere_with_field_array(values, tmp_path / "good.vtk", binary)
+    sphere_with_field_array(weights_array(), tmp_path / "good.vtk", binary)
     good = (tmp_path / "good.vtk").read_bytes()
     assert run("info", str(tmp_path / "good.vtk")).returncode == 0
     # The writer puts field data before POINTS; move it if asked.
@@ -491,3 +496,17 @@ def test_unreadable_dataset_field_data_is_refused_and_readable_field_data_read(t
     r = run("info", str(tmp_path / "damaged.vtk"))
     assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1, r.stderr
     assert "FIELD data cannot be read" in r.stderr, r.stderr
+
+
+@pytest.mark.parametrize("header", [b"weights 3 4string", b"weights 3 4\nstring", b"weights 3\n4 string"])
+def test_a_binary_string_type_is_refused_however_its_words_are_laid_out(tmp_path, header):
+    # VTK's legacy reader reads words, not lines: a string type run into its
+    # count or moved to the next line is still a string array, whose lengths
+    # its reader trusts.
+    sphere_with_field_array(weights_array(), tmp_path / "good.vtk", True)
+    body = (tmp_path / "good.vtk").read_bytes()
+    assert b"weights 3 4 float" in body
+    (tmp_path / "bad.vtk").write_bytes(body.replace(b"weights 3 4 float", header))
+    r = run("info", str(tmp_path / "bad.vtk"))
+    assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1, r.stderr
+    assert "binary string array" in r.stderr, r.stderr

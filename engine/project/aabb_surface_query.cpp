@@ -1,0 +1,86 @@
+#include "project/aabb_surface_query.h"
+
+#include <CGAL/AABB_traits.h>             // for CGAL::AABB_traits
+#include <CGAL/AABB_tree.h>               // for CGAL::AABB_tree
+#include <CGAL/AABB_triangle_primitive.h> // for CGAL::AABB_triangle_primitive
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h> // for CGAL::Epick
+
+#include <cmath>  // for std::sqrt
+#include <memory> // for std::unique_ptr
+#include <vector> // for std::vector
+
+namespace meshpaint {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Triangle = Kernel::Triangle_3;
+using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle>::const_iterator>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+Point point(const Vec3& v) { return {v[0], v[1], v[2]}; }
+Vec3 vec(const Point& p) { return {float(p.x()), float(p.y()), float(p.z())}; }
+
+class AabbQuery : public SurfaceQuery
+{
+public:
+  AabbQuery(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles)
+  {
+    triangles_.reserve(triangles.size());
+    for (const auto& t : triangles) {
+      const Triangle tri(point(points[std::size_t(t[0])]), point(points[std::size_t(t[1])]),
+                         point(points[std::size_t(t[2])]));
+      if (!tri.is_degenerate())
+        triangles_.push_back(tri);
+    }
+    tree_.insert(triangles_.cbegin(), triangles_.cend());
+    tree_.build();
+    // Built now, not on the first query, so that queries only read.
+    tree_.accelerate_distance_queries();
+  }
+
+  Vec3 closest_point(const Vec3& p) const override
+  {
+    if (triangles_.empty())
+      return p;
+    return vec(tree_.closest_point(point(p)));
+  }
+
+  bool first_hit(const Vec3& a, const Vec3& b, Vec3& hit) const override
+  {
+    const Point from = point(a), to = point(b);
+    if (triangles_.empty() || from == to)
+      return false;
+    const auto found = tree_.first_intersection(Kernel::Ray_3(from, to));
+    if (!found)
+      return false;
+    Point at;
+    if (const Point* p = boost::get<Point>(&found->first))
+      at = *p;
+    else if (const Kernel::Segment_3* s = boost::get<Kernel::Segment_3>(&found->first))
+      at = CGAL::squared_distance(from, s->source()) <= CGAL::squared_distance(from, s->target()) ? s->source()
+                                                                                                   : s->target();
+    else
+      return false;
+    // A ray, so the hit must lie within the segment.
+    if (CGAL::squared_distance(from, at) > CGAL::squared_distance(from, to))
+      return false;
+    hit = vec(at);
+    return true;
+  }
+
+private:
+  std::vector<Triangle> triangles_;
+  Tree tree_;
+};
+
+} // namespace
+
+SurfaceQueryFactory aabb_surface_queries()
+{
+  return [](const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles) {
+    return std::unique_ptr<SurfaceQuery>(new AabbQuery(points, triangles));
+  };
+}
+
+} // namespace meshpaint
