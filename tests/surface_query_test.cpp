@@ -33,6 +33,18 @@ TEST(SurfaceQuery, FindsTheClosestPointOnTheSurface)
   EXPECT_FLOAT_EQ(outside[2], 0.f);
 }
 
+TEST(SurfaceQuery, NamesTheClosestTriangleAsGiven)
+{
+  const auto q = square();
+  Vec3 closest{};
+  EXPECT_EQ(q->closest_triangle({0.75f, 0.25f, 1.f}, closest), 0); // below the diagonal: (0, 1, 2)
+  EXPECT_EQ(q->closest_triangle({0.25f, 0.75f, -1.f}, closest), 1); // above it: (0, 2, 3)
+  EXPECT_FLOAT_EQ(closest[2], 0.f);
+  EXPECT_LT(q->closest_triangle({2.f, 2.f, 2.f}, closest), 2); // the degenerate one (at 2, 2, 2) is never named
+  const auto none = aabb_surface_queries()({{0, 0, 0}, {1, 1, 1}}, {{0, 1, 1}});
+  EXPECT_EQ(none->closest_triangle({1.f, 0.f, 0.f}, closest), -1);
+}
+
 TEST(SurfaceQuery, HitsOnlyWithinTheSegment)
 {
   const auto q = square();

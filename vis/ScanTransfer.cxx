@@ -4,6 +4,8 @@
 #include "SurfaceConversion.h" // for meshpaint::to_polydata, colour_byte
 
 #include "core/errors.h"     // for meshpaint::IOError, InputError
+#include "core/parallel_for.h" // for meshpaint::parallel_for
+#include "project/aabb_surface_query.h" // for meshpaint::aabb_surface_queries
 #include "core/format.h"     // for meshpaint::lower_extension
 #include "mesh/base_mesh.h"  // for meshpaint::load_mesh
 #include "mesh/property_ply.h" // for meshpaint::write_property_ply
@@ -19,9 +21,11 @@
 #include <vtkPLYReader.h>         // for vtkPLYReader
 #include <vtkPointData.h>         // for vtkPointData
 #include <vtkPoints.h>            // for vtkPoints
-#include <vtkStaticCellLocator.h> // for vtkStaticCellLocator
 
 #include <algorithm>  // for std::find, std::max_element
+#include <array>      // for std::array
+#include <memory>     // for std::unique_ptr
+#include <vector>     // for std::vector
 #include <cmath>      // for std::sqrt, std::isfinite
 #include <filesystem> // for std::filesystem::is_regular_file
 
@@ -193,11 +197,29 @@ TransferReport transfer_to_scan(const PaintedSurface& painted, const WeldedSurfa
   if (painted.surface.points.size() != reference.points.size() || painted.surface.quads != reference.quads)
     throw InputError("the painted and the reference surface differ in their vertices or quads");
   vtkSmartPointer<vtkPolyData> triangles = triangles_of(reference);
-  auto locator = vtkSmartPointer<vtkStaticCellLocator>::New();
-  locator->SetDataSet(triangles);
-  locator->BuildLocator();
-
   const vtkIdType n = scan->GetNumberOfPoints();
+  // The closest triangle of every scan vertex, on every core (the engine's
+  // AABB tree; VTK 9.1's static locator clears a bit per triangle on every
+  // query, minutes for a scan of millions of vertices).
+  std::vector<Vec3> at(static_cast<std::size_t>(n));
+  for (vtkIdType v = 0; v < n; ++v) {
+    double x[3];
+    scan->GetPoint(v, x);
+    at[std::size_t(v)] = {float(x[0]), float(x[1]), float(x[2])};
+  }
+  std::vector<std::array<int, 3>> corners;
+  corners.reserve(2 * reference.quads.size());
+  for (const auto& q : reference.quads) { // in triangles_of()'s order
+    corners.push_back({q[0], q[1], q[2]});
+    corners.push_back({q[0], q[2], q[3]});
+  }
+  const std::unique_ptr<SurfaceQuery> query = aabb_surface_queries()(reference.points, corners);
+  std::vector<int> nearest_triangle(at.size());
+  std::vector<Vec3> nearest_point(at.size());
+  parallel_for(at.size(), 4096, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v)
+      nearest_triangle[v] = query->closest_triangle(at[v], nearest_point[v]);
+  });
   auto label = vtkSmartPointer<vtkIntArray>::New();
   label->SetName("label");
   label->SetNumberOfTuples(n);
@@ -211,12 +233,16 @@ TransferReport transfer_to_scan(const PaintedSurface& painted, const WeldedSurfa
   double sum2 = 0;
   auto cell = vtkSmartPointer<vtkGenericCell>::New();
   for (vtkIdType v = 0; v < n; ++v) {
-    double x[3], closest[3], pcoords[3], weights[3], ignored[3], dist2 = 0, ignored_dist2 = 0;
-    vtkIdType triangle = -1;
+    double x[3], pcoords[3], weights[3], ignored[3], ignored_dist2 = 0;
     int sub = 0;
     scan->GetPoint(v, x);
-    locator->FindClosestPoint(x, closest, cell, triangle, sub, dist2);
-    // The locator leaves in `cell` the last triangle it tried, not always the closest.
+    const vtkIdType triangle = nearest_triangle[std::size_t(v)];
+    if (triangle < 0)
+      throw InputError("the painted surface has no area to transfer from");
+    const Vec3& c = nearest_point[std::size_t(v)];
+    double closest[3] = {c[0], c[1], c[2]};
+    const double dist2 = (x[0] - closest[0]) * (x[0] - closest[0]) + (x[1] - closest[1]) * (x[1] - closest[1]) +
+                         (x[2] - closest[2]) * (x[2] - closest[2]);
     triangles->GetCell(triangle, cell);
     cell->EvaluatePosition(closest, ignored, sub, pcoords, ignored_dist2, weights);
     report.max_distance = std::max(report.max_distance, std::sqrt(dist2));

@@ -30,8 +30,10 @@ public:
     for (const auto& t : triangles) {
       const Triangle tri(point(points[std::size_t(t[0])]), point(points[std::size_t(t[1])]),
                          point(points[std::size_t(t[2])]));
-      if (!tri.is_degenerate())
+      if (!tri.is_degenerate()) {
         triangles_.push_back(tri);
+        ids_.push_back(int(&t - triangles.data()));
+      }
     }
     tree_.insert(triangles_.cbegin(), triangles_.cend());
     tree_.build();
@@ -44,6 +46,17 @@ public:
     if (triangles_.empty())
       return p;
     return vec(tree_.closest_point(point(p)));
+  }
+
+  int closest_triangle(const Vec3& p, Vec3& closest) const override
+  {
+    if (triangles_.empty()) {
+      closest = p;
+      return -1;
+    }
+    const auto found = tree_.closest_point_and_primitive(point(p));
+    closest = vec(found.first);
+    return ids_[std::size_t(found.second - triangles_.cbegin())];
   }
 
   bool first_hit(const Vec3& a, const Vec3& b, Vec3& hit) const override
@@ -71,6 +84,7 @@ public:
 
 private:
   std::vector<Triangle> triangles_;
+  std::vector<int> ids_; //!< per triangle of the tree: its index as given
   Tree tree_;
 };
 

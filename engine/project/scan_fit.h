@@ -23,6 +23,9 @@ public:
   virtual ~SurfaceQuery() = default;
   //! The point of the surface closest to `p`.
   virtual Vec3 closest_point(const Vec3& p) const = 0;
+  //! The triangle (its index as given) closest to `p`, and the point on it
+  //! in `closest`; -1 when the surface has no triangle with area.
+  virtual int closest_triangle(const Vec3& p, Vec3& closest) const = 0;
   //! The first point where the segment from `a` to `b` meets the surface.
   virtual bool first_hit(const Vec3& a, const Vec3& b, Vec3& hit) const = 0;
 };
