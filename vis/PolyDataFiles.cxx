@@ -250,14 +250,24 @@ std::string legacy_without_metadata(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  for (std::size_t at = text.find("\nMETADATA"); at != std::string::npos; at = text.find("\nMETADATA", at)) {
-    const std::size_t start = at + 1, after = start + 8;
-    if (after < text.size() && text[after] != '\n' && text[after] != '\r') {
-      at = after; // a longer word
-      continue;
+  // VTK's reader takes any line whose first 8 bytes read "metadata" in any
+  // case (a fuzz finding: "METADATA" run into other bytes) as such a block.
+  const auto starts_block = [&](std::size_t start) {
+    if (start + 8 > text.size())
+      return false;
+    for (std::size_t k = 0; k < 8; ++k)
+      if (std::tolower(static_cast<unsigned char>(text[start + k])) != "metadata"[k])
+        return false;
+    return true;
+  };
+  for (std::size_t at = text.find('\n'); at != std::string::npos;) {
+    const std::size_t start = at + 1;
+    if (starts_block(start)) {
+      const std::size_t end = text.find("\n\n", start);
+      text.erase(start, end == std::string::npos ? std::string::npos : end + 2 - start);
+      continue; // the line now at `start` may start another
     }
-    const std::size_t end = text.find("\n\n", start);
-    text.erase(start, end == std::string::npos ? std::string::npos : end + 2 - start);
+    at = text.find('\n', start);
   }
   return text;
 }
@@ -292,7 +302,11 @@ public:
     const auto end = text.find('\n');
     if (end != std::string::npos)
       text.erase(end);
-    return text.substr(0, 200);
+    // Read from memory, the legacy reader names no file after it.
+    const auto file = text.find(" for file: ");
+    if (file != std::string::npos && text.find_first_not_of(' ', file + 11) == std::string::npos)
+      text.erase(file);
+    return excerpt(text, 200); // it may quote the file's bytes
   }
 
   std::string first;
@@ -372,8 +386,7 @@ private:
         VtkMessagesKept reading; // its own reason, not an earlier section's
         vtkFieldData* fields = ReadFieldData();
         if (!fields) {
-          std::string why = reading.kept->message();
-          why = why.substr(0, why.find(" for file:")); // reading from memory: no file name follows
+          const std::string why = reading.kept->message();
           throw InputError("'" + path + "': the dataset's FIELD data cannot be read" + (why.empty() ? "" : ": " + why));
         }
         fields->Delete();
