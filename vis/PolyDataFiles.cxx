@@ -347,17 +347,20 @@ private:
 
 //! VTK's legacy polydata reader releases a FIELD block of the dataset
 //! section without checking that it could be read (a null pointer when it
-//! could not: a fuzz finding). This walks that section first with the
-//! reader's own parts, as the reader will, and refuses the file when one of
-//! its FIELD blocks does not read; what else goes wrong is left for the
-//! reader to report.
-class LegacyDatasetFields : public vtkPolyDataReader
+//! could not), and imports cells of the layout before version 5 without
+//! checking that each cell's count stays within the list (a read past it):
+//! fuzz findings. This walks that section first with the reader's own
+//! parts, as the reader will, and refuses the file when one of its FIELD
+//! blocks does not read or a cell list does not fit its size; what else
+//! goes wrong is left for the reader to report.
+class LegacyDatasetCheck : public vtkPolyDataReader
 {
 public:
-  static LegacyDatasetFields* New();
-  vtkTypeMacro(LegacyDatasetFields, vtkPolyDataReader);
+  static LegacyDatasetCheck* New();
+  vtkTypeMacro(LegacyDatasetCheck, vtkPolyDataReader);
 
-  //! \throw InputError when a FIELD block of the dataset section cannot be read.
+  //! \throw InputError when a FIELD block of the dataset section cannot be
+  //! read or a cell list of the old layout does not fit its size.
   void check(const std::string& text, const std::string& path)
   {
     ReadFromInputStringOn();
@@ -397,7 +400,7 @@ private:
         ReadPointCoordinates(points, n); // the reader goes on whether or not they read, so the walk does
       } else if (key.rfind("vertices", 0) == 0 || key.rfind("lines", 0) == 0 || key.rfind("polygons", 0) == 0 ||
                  key.rfind("triangle_strips", 0) == 0) {
-        if (!skip_cells())
+        if (!skip_cells(key, path))
           return;
       } else {
         return; // the point and cell data, or a word the reader will refuse
@@ -405,7 +408,7 @@ private:
     }
   }
 
-  bool skip_cells()
+  bool skip_cells(const std::string& key, const std::string& path)
   {
     if (GetFileMajorVersion() >= 5) {
       vtkSmartPointer<vtkCellArray> cells;
@@ -415,10 +418,23 @@ private:
     if (!Read(&cells) || !Read(&size) || size < 0)
       return false;
     std::vector<int> ids(static_cast<std::size_t>(size));
-    return ReadCellsLegacy(size, ids.data()) != 0;
+    if (!ReadCellsLegacy(size, ids.data()))
+      return false;
+    // Each cell is its count, then that many point ids; the reader takes
+    // them until the list ends, wherever the counts point.
+    std::size_t at = 0;
+    while (at < ids.size()) {
+      const int n = ids[at];
+      if (n < 0 || std::size_t(n) >= ids.size() - at)
+        throw InputError("'" + path + "': a cell of the " + key + " (entry " + std::to_string(at) + ") counts " +
+                         std::to_string(n) + " points, more than its list of " + std::to_string(size) +
+                         " entries holds");
+      at += 1 + std::size_t(n);
+    }
+    return true;
   }
 };
-vtkStandardNewMacro(LegacyDatasetFields);
+vtkStandardNewMacro(LegacyDatasetCheck);
 
 //! Colours as ParaView, MeshLab's VTK export and Blender's VTK add-ons write
 //! them: 3 or 4 unsigned bytes per point (alpha ignored), as the point
@@ -590,7 +606,7 @@ vtkSmartPointer<vtkPolyData> read_polydata_file(const std::string& path)
       throw InputError("'" + path + "': a legacy .vtk file of 2 GiB or more (write it as .vtp)");
     auto r = vtkSmartPointer<vtkPolyDataReader>::New();
     const std::string text = legacy_without_metadata(path);
-    vtkSmartPointer<LegacyDatasetFields>::New()->check(text, path);
+    vtkSmartPointer<LegacyDatasetCheck>::New()->check(text, path);
     r->ReadFromInputStringOn();
     r->SetBinaryInputString(text.data(), int(text.size()));
     r->ReadAllScalarsOn();
