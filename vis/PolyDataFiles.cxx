@@ -347,20 +347,22 @@ private:
 
 //! VTK's legacy polydata reader releases a FIELD block of the dataset
 //! section without checking that it could be read (a null pointer when it
-//! could not), and imports cells of the layout before version 5 without
+//! could not), goes on reading after points it could not read (from a
+//! closed file), and imports cells of the layout before version 5 without
 //! checking that each cell's count stays within the list (a read past it):
 //! fuzz findings. This walks that section first with the reader's own
-//! parts, as the reader will, and refuses the file when one of its FIELD
-//! blocks does not read or a cell list does not fit its size; what else
-//! goes wrong is left for the reader to report.
+//! parts, as the reader will, and refuses the file when its points or one
+//! of its FIELD blocks do not read or a cell list does not fit its size;
+//! what else goes wrong is left for the reader to report.
 class LegacyDatasetCheck : public vtkPolyDataReader
 {
 public:
   static LegacyDatasetCheck* New();
   vtkTypeMacro(LegacyDatasetCheck, vtkPolyDataReader);
 
-  //! \throw InputError when a FIELD block of the dataset section cannot be
-  //! read or a cell list of the old layout does not fit its size.
+  //! \throw InputError when the points or a FIELD block of the dataset
+  //! section cannot be read or a cell list of the old layout does not fit
+  //! its size.
   void check(const std::string& text, const std::string& path)
   {
     ReadFromInputStringOn();
@@ -397,29 +399,44 @@ private:
         vtkIdType n = 0;
         if (!Read(&n))
           return;
-        ReadPointCoordinates(points, n); // the reader goes on whether or not they read, so the walk does
+        // The reader goes on after points it could not read, from a file
+        // it may have closed (a null stream: a fuzz finding).
+        VtkMessagesKept reading;
+        if (!ReadPointCoordinates(points, n)) {
+          const std::string why = reading.kept->message();
+          throw InputError("'" + path + "': its points cannot be read" + (why.empty() ? "" : ": " + why));
+        }
       } else if (key.rfind("vertices", 0) == 0 || key.rfind("lines", 0) == 0 || key.rfind("polygons", 0) == 0 ||
                  key.rfind("triangle_strips", 0) == 0) {
-        if (!skip_cells(key, path))
-          return;
+        skip_cells(key, path);
       } else {
         return; // the point and cell data, or a word the reader will refuse
       }
     }
   }
 
-  bool skip_cells(const std::string& key, const std::string& path)
+  //! \throw InputError when the cell section `key` cannot be read: VTK 9.1's
+  //! reader goes on after a cell list of the old layout it could not read,
+  //! from the file it closed (a null stream: a fuzz finding).
+  void skip_cells(const std::string& key, const std::string& path)
   {
+    VtkMessagesKept reading;
+    const auto refuse = [&] {
+      const std::string why = reading.kept->message();
+      throw InputError("'" + path + "': its " + key + " cannot be read" + (why.empty() ? "" : ": " + why));
+    };
     if (GetFileMajorVersion() >= 5) {
       vtkSmartPointer<vtkCellArray> cells;
-      return ReadCells(cells) != 0;
+      if (!ReadCells(cells))
+        refuse();
+      return;
     }
     vtkIdType cells = 0, size = 0;
     if (!Read(&cells) || !Read(&size) || size < 0)
-      return false;
+      refuse();
     std::vector<int> ids(static_cast<std::size_t>(size));
     if (!ReadCellsLegacy(size, ids.data()))
-      return false;
+      refuse();
     // Each cell is its count, then that many point ids; the reader takes
     // them until the list ends, wherever the counts point.
     std::size_t at = 0;
@@ -431,7 +448,6 @@ private:
                          " entries holds");
       at += 1 + std::size_t(n);
     }
-    return true;
   }
 };
 vtkStandardNewMacro(LegacyDatasetCheck);
