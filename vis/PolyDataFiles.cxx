@@ -241,6 +241,39 @@ void check_legacy_binary_strings(const std::string& path)
   }
 }
 
+//! VTK's legacy reader sizes a field array from its header, `NAME
+//! COMPONENTS TUPLES TYPE`, without checking the two counts (a fuzz
+//! finding: -4 tuples, then a write far outside the array). Read word by
+//! word as the reader reads, two counts before one of its number types must
+//! both be at least 0 and describe no more values than the file could hold.
+void check_legacy_array_counts(const std::string& path)
+{
+  static const std::set<std::string> types{
+    "bit",          "char",          "signed_char",   "unsigned_char", "short",     "unsigned_short",
+    "int",          "unsigned_int",  "long",          "unsigned_long", "float",     "double",
+    "vtkidtype",    "vtktypeint64",  "vtktypeuint64"};
+  const double budget = polydata_budget(path);
+  std::ifstream in(path, std::ios::binary);
+  std::string before[2]; // the two words before this one, the nearer first
+  const auto count = [](const std::string& w, double& n) {
+    if (w.empty() || w.find_first_not_of("-0123456789") != std::string::npos || w.find('-', 1) != std::string::npos)
+      return false;
+    n = std::strtod(w.c_str(), nullptr);
+    return true;
+  };
+  for (std::string word; in >> word;) {
+    std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    double components = 0, tuples = 0;
+    if (types.count(word) && count(before[1], components) && count(before[0], tuples) &&
+        (components < 0 || tuples < 0 || components * tuples > budget))
+      throw InputError("'" + path + "': an array declared with " + excerpt(before[1], 20) + " components and " +
+                       excerpt(before[0], 20) + " tuples of " + word +
+                       " (counts must be 0 or more and fit in the file)");
+    before[1] = std::move(before[0]);
+    before[0] = std::move(word);
+  }
+}
+
 //! The legacy file's bytes without its METADATA blocks (each from its
 //! keyword line to the next empty line, as VTK writes them). They hold only
 //! component names and array information, which nothing here reads, and
@@ -616,6 +649,7 @@ vtkSmartPointer<vtkPolyData> read_polydata_file(const std::string& path)
     check_legacy_version(path);
     check_legacy_points(path);
     check_legacy_binary_strings(path);
+    check_legacy_array_counts(path);
     check_legacy_sections(path);
     // VTK's reader takes the bytes' count as an int.
     if (std::filesystem::file_size(path, ec) > std::uintmax_t(std::numeric_limits<int>::max()))
