@@ -1,6 +1,7 @@
 #include "PolyDataFiles.h"
 
-#include "XmlPolyDataCheck.h" // for meshpaint::check_xml_polydata_arrays
+#include "LegacyPolyDataCheck.h" // for meshpaint::checked_legacy_polydata
+#include "XmlPolyDataCheck.h"    // for meshpaint::check_xml_polydata_arrays
 
 #include "core/errors.h" // for meshpaint::IOError, InputError
 #include "core/format.h" // for meshpaint::lower_extension, excerpt
@@ -17,19 +18,14 @@
 #include <vtkStringArray.h>       // for vtkStringArray
 #include <vtkXMLPolyDataReader.h> // for vtkXMLPolyDataReader
 
-#include <algorithm>  // for std::transform, std::any_of
+#include <algorithm>  // for std::transform
 #include <cctype>     // for std::tolower
 #include <cmath>      // for std::isfinite
 #include <cstdlib>    // for std::strtod, std::getenv
 #include <filesystem> // for std::filesystem::file_size, path
-#include <initializer_list> // for std::initializer_list
 #include <fstream>    // for std::ifstream
-#include <iterator>   // for std::istreambuf_iterator
 #include <limits>     // for std::numeric_limits
-#include <map>        // for std::map
 #include <regex>      // for std::regex, std::sregex_iterator
-#include <set>        // for std::set
-#include <sstream>    // for std::istringstream
 #include <vector>     // for std::vector
 
 namespace meshpaint {
@@ -43,11 +39,10 @@ double polydata_budget(const std::string& path)
   return 1100.0 * double(std::filesystem::file_size(path, ec));
 }
 
-//! VTK's readers allocate what the header says before reading data: counts
-//! and component numbers are bounded by what the file could hold
-//! (polydata_budget()): the XML attributes of .vtp, the POINTS, POLYGONS,
-//! ... and SCALARS/COLOR_SCALARS counts and FIELD array numbers of legacy .vtk.
-void check_polydata_sizes(const std::string& path)
+//! VTK's XML reader allocates what the header says before reading data:
+//! the counts and component numbers of a .vtp are bounded by what the file
+//! could hold (polydata_budget()).
+void check_xml_polydata_sizes(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
   std::string head(1 << 16, '\0');
@@ -58,251 +53,13 @@ void check_polydata_sizes(const std::string& path)
     head.resize(cut);
   const double budget = polydata_budget(path);
   static const std::regex attribute(
-    R"re((NumberOf(Points|Polys|Cells|Verts|Lines|Strips|Components|Tuples))="\s*(-?[0-9]+)\s*"|\n(POINTS|POLYGONS|VERTICES|LINES|TRIANGLE_STRIPS|POINT_DATA|CELL_DATA|COLOR_SCALARS [^ \n]+|SCALARS [^ \n]+ [^ \n]+|FIELD [^ \n]+) +(-?[0-9]+))re");
+    R"re((NumberOf(Points|Polys|Cells|Verts|Lines|Strips|Components|Tuples))="\s*(-?[0-9]+)\s*")re");
   for (auto it = std::sregex_iterator(head.begin(), head.end(), attribute); it != std::sregex_iterator(); ++it) {
-    const bool xml = (*it)[1].matched;
-    const std::string name = xml ? (*it)[1].str() : (*it)[4].str(), value = xml ? (*it)[3].str() : (*it)[5].str();
+    const std::string name = (*it)[1].str(), value = (*it)[3].str();
     const double n = std::strtod(value.c_str(), nullptr);
-    // For legacy SCALARS and COLOR_SCALARS the number is the components.
-    const bool components = name == "NumberOfComponents" || name.rfind("SCALARS", 0) == 0 ||
-                            name.rfind("COLOR_SCALARS", 0) == 0;
-    if (n < 0 || (components && n > 4096) || n > budget)
-      throw InputError("'" + path + "': " + name + (xml ? "=\"" : " ") + value.substr(0, 20) +
-                       (xml ? "\"" : "") + " is more than the file can hold");
+    if (n < 0 || (name == "NumberOfComponents" && n > 4096) || n > budget)
+      throw InputError("'" + path + "': " + name + "=\"" + value.substr(0, 20) + "\" is more than the file can hold");
   }
-}
-
-//! VTK's legacy reader takes the layout of the cells from the header's
-//! version: a body in version 5's layout (OFFSETS, CONNECTIVITY) under an
-//! older or unreadable version makes it dereference a null array (a fuzz
-//! finding). The version must read as M.N, and below 5 no line of the file
-//! may start a version-5 cell section.
-void check_legacy_version(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::string first;
-  std::getline(in, first);
-  static const std::regex version(R"(# vtk DataFile Version ([0-9]{1,4})\.[0-9]{1,4}\s*)");
-  std::smatch m;
-  if (!std::regex_match(first, m, version))
-    throw InputError("'" + path + "': not a legacy VTK file (its first line must be '# vtk DataFile Version M.N')");
-  if (std::stoi(m[1].str()) >= 5)
-    return;
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind("OFFSETS ", 0) == 0 || line.rfind("CONNECTIVITY ", 0) == 0)
-      throw InputError("'" + path + "': cells in the layout of version 5 (OFFSETS, CONNECTIVITY) under a header of "
-                       "version " + m[1].str() + ".x");
-}
-
-//! VTK's legacy reader crashes (a null array in ReadMeshSimple) on an ASCII
-//! POINTS section cut short by other words (a fuzz finding): in an ASCII
-//! file, every POINTS line must be followed by its 3 n numbers.
-void check_legacy_points(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  for (int k = 0; k < 3 && std::getline(in, line); ++k) {
-  }
-  if (line.rfind("ASCII", 0) != 0)
-    return; // binary bodies: left to the size checks above
-  long number = 3;
-  while (std::getline(in, line)) {
-    ++number;
-    if (line.rfind("POINTS ", 0) != 0)
-      continue;
-    std::istringstream words(line.substr(7));
-    double declared = -1;
-    words >> declared;
-    const long at = number;
-    const long count = long(declared) * 3;
-    for (long read = 0; read < count;) {
-      std::string word;
-      if (!(in >> word))
-        throw InputError("'" + path + "': POINTS on line " + std::to_string(at) + " declares " +
-                         std::to_string(count / 3) + " points, but the file ends after " + std::to_string(read) +
-                         " of their " + std::to_string(count) + " coordinates");
-      char* end = nullptr;
-      std::strtod(word.c_str(), &end);
-      if (end == word.c_str() || *end != '\0')
-        throw InputError("'" + path + "': POINTS on line " + std::to_string(at) + " declares " +
-                         std::to_string(count / 3) + " points, but coordinate " + std::to_string(read + 1) + " is '" +
-                         excerpt(word) + "'");
-      ++read;
-    }
-    return;
-  }
-}
-
-//! VTK's legacy reader dereferences a null cell array when a cell section
-//! is repeated or its line malformed (a fuzz finding): each of POINTS,
-//! VERTICES, LINES, POLYGONS and TRIANGLE_STRIPS may start a line once (any
-//! case, as VTK reads them), a cell section's line as `KEYWORD n m`, the
-//! points' as `POINTS n TYPE`.
-void check_legacy_sections(const std::string& path)
-{
-  static const std::set<std::string> sections{"points", "vertices", "lines", "polygons", "triangle_strips"};
-  // A type VTK's reader cannot read leaves the points null (a fuzz finding).
-  static const std::set<std::string> point_types{
-    "char",         "signed_char", "unsigned_char", "short",        "unsigned_short", "int",       "unsigned_int",
-    "long",         "unsigned_long", "vtktypeint64", "vtktypeuint64", "vtkidtype",      "float",     "double"};
-  std::ifstream in(path, std::ios::binary);
-  std::map<std::string, long> seen;
-  long number = 0;
-  for (std::string line; std::getline(in, line);) {
-    ++number;
-    if (line.size() > 256)
-      continue; // binary data
-    std::istringstream words(line);
-    std::string key;
-    words >> key;
-    std::transform(key.begin(), key.end(), key.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    if (!sections.count(key))
-      continue;
-    const std::string where = "'" + path + "': line " + std::to_string(number) + " ('" + excerpt(line, 40) + "') ";
-    if (seen.count(key))
-      throw InputError(where + "repeats the section of line " + std::to_string(seen[key]));
-    seen[key] = number;
-    long long cells = -1, size = -1;
-    std::string type, more;
-    if (key == "points") {
-      words >> cells >> type;
-      std::transform(type.begin(), type.end(), type.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-      if (cells < 0 || !point_types.count(type) || (words >> more))
-        throw InputError(where + "is not 'POINTS N TYPE' with a number type");
-    } else if (!(words >> cells >> size) || cells < 0 || size < 0 || (words >> more)) {
-      throw InputError(where + "is not '" + key + " CELLS SIZE'");
-    }
-  }
-}
-
-//! Whether a lower-case word starts as one of VTK's string array types
-//! (its reader compares only the start of the name).
-bool is_string_type(const std::string& type)
-{
-  return type.rfind("string", 0) == 0 || type.rfind("utf8_string", 0) == 0 || type.rfind("unicode_string", 0) == 0;
-}
-
-//! Whether a word is a count: digits only.
-bool is_count(const std::string& word)
-{
-  return !word.empty() && word.find_first_not_of("0123456789") == std::string::npos;
-}
-
-//! VTK's legacy reader takes the length of each string in a binary string
-//! array from the data and allocates it unchecked (a fuzz finding: 2^56
-//! bytes for a CONNECTIVITY declared utf8_string). meshpaint reads no string
-//! arrays: in a binary file, a line declaring one is refused.
-void check_legacy_binary_strings(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  for (int k = 0; k < 3 && std::getline(in, line); ++k) {
-  }
-  if (line.rfind("BINARY", 0) != 0)
-    return;
-  long number = 3;
-  while (std::getline(in, line)) {
-    ++number;
-    if (!line.empty() && line.back() == '\r')
-      line.pop_back();
-    const auto space = line.find_last_of(' ');
-    if (space == std::string::npos || line.size() > 256)
-      continue;
-    std::string type = line.substr(space + 1);
-    std::transform(type.begin(), type.end(), type.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    // VTK's reader compares only the start of the type's name.
-    if (is_string_type(type))
-      throw InputError("'" + path + "': line " + std::to_string(number) + " ('" + excerpt(line, 40) +
-                       "') declares a binary string array, which VTK's reader cannot read safely (write the file "
-                       "as ASCII or .vtp)");
-  }
-  // VTK's reader takes words, not lines: a type may also follow its count
-  // on the next line, or be run into it ("24string" reads as 24, then
-  // "string"). A string type where the reader takes a type is refused too.
-  in.clear();
-  in.seekg(0);
-  std::string before[2]; // the two words before this one, the nearer first
-  for (std::string word; in >> word;) {
-    std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    const std::size_t digits = word.find_first_not_of("0123456789");
-    const std::string type = digits == std::string::npos ? "" : word.substr(digits);
-    const auto one_of = [](const std::string& w, std::initializer_list<const char*> any) {
-      return std::any_of(any.begin(), any.end(), [&](const char* a) { return w == a; });
-    };
-    const bool typed = (digits > 0 && is_count(before[0])) || (digits == 0 && is_count(before[0]) && is_count(before[1])) ||
-                       one_of(before[1], {"scalars", "vectors", "normals", "tensors", "global_ids", "pedigree_ids", "points"}) ||
-                       one_of(before[0], {"offsets", "connectivity"});
-    if (typed && is_string_type(type))
-      throw InputError("'" + path + "': the word '" + excerpt(word, 40) +
-                       "' declares a binary string array, which VTK's reader cannot read safely (write the file "
-                       "as ASCII or .vtp)");
-    before[1] = std::move(before[0]);
-    before[0] = std::move(word);
-  }
-}
-
-//! VTK's legacy reader sizes a field array from its header, `NAME
-//! COMPONENTS TUPLES TYPE`, without checking the two counts (a fuzz
-//! finding: -4 tuples, then a write far outside the array). Read word by
-//! word as the reader reads, two counts before one of its number types must
-//! both be at least 0 and describe no more values than the file could hold.
-void check_legacy_array_counts(const std::string& path)
-{
-  static const std::set<std::string> types{
-    "bit",          "char",          "signed_char",   "unsigned_char", "short",     "unsigned_short",
-    "int",          "unsigned_int",  "long",          "unsigned_long", "float",     "double",
-    "vtkidtype",    "vtktypeint64",  "vtktypeuint64"};
-  const double budget = polydata_budget(path);
-  std::ifstream in(path, std::ios::binary);
-  std::string before[2]; // the two words before this one, the nearer first
-  const auto count = [](const std::string& w, double& n) {
-    if (w.empty() || w.find_first_not_of("-0123456789") != std::string::npos || w.find('-', 1) != std::string::npos)
-      return false;
-    n = std::strtod(w.c_str(), nullptr);
-    return true;
-  };
-  for (std::string word; in >> word;) {
-    std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    double components = 0, tuples = 0;
-    if (types.count(word) && count(before[1], components) && count(before[0], tuples) &&
-        (components < 0 || tuples < 0 || components * tuples > budget))
-      throw InputError("'" + path + "': an array declared with " + excerpt(before[1], 20) + " components and " +
-                       excerpt(before[0], 20) + " tuples of " + word +
-                       " (counts must be 0 or more and fit in the file)");
-    before[1] = std::move(before[0]);
-    before[0] = std::move(word);
-  }
-}
-
-//! The legacy file's bytes without its METADATA blocks (each from its
-//! keyword line to the next empty line, as VTK writes them). They hold only
-//! component names and array information, which nothing here reads, and
-//! VTK's parser of them hangs or reads past its buffers on damaged ones
-//! (fuzz findings).
-std::string legacy_without_metadata(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  // VTK's reader takes any line whose first 8 bytes read "metadata" in any
-  // case (a fuzz finding: "METADATA" run into other bytes) as such a block.
-  const auto starts_block = [&](std::size_t start) {
-    if (start + 8 > text.size())
-      return false;
-    for (std::size_t k = 0; k < 8; ++k)
-      if (std::tolower(static_cast<unsigned char>(text[start + k])) != "metadata"[k])
-        return false;
-    return true;
-  };
-  for (std::size_t at = text.find('\n'); at != std::string::npos;) {
-    const std::size_t start = at + 1;
-    if (starts_block(start)) {
-      const std::size_t end = text.find("\n\n", start);
-      text.erase(start, end == std::string::npos ? std::string::npos : end + 2 - start);
-      continue; // the line now at `start` may start another
-    }
-    at = text.find('\n', start);
-  }
-  return text;
 }
 
 //! VTK's messages while a reader runs, kept instead of printed: the output
@@ -377,113 +134,6 @@ private:
   vtkSmartPointer<vtkOutputWindow> previous_;
   vtkLogger::Verbosity verbosity_;
 };
-
-//! VTK's legacy polydata reader releases a FIELD block of the dataset
-//! section without checking that it could be read (a null pointer when it
-//! could not), goes on reading after points it could not read (from a
-//! closed file), and imports cells of the layout before version 5 without
-//! checking that each cell's count stays within the list (a read past it):
-//! fuzz findings. This walks that section first with the reader's own
-//! parts, as the reader will, and refuses the file when its points or one
-//! of its FIELD blocks do not read or a cell list does not fit its size;
-//! what else goes wrong is left for the reader to report.
-class LegacyDatasetCheck : public vtkPolyDataReader
-{
-public:
-  static LegacyDatasetCheck* New();
-  vtkTypeMacro(LegacyDatasetCheck, vtkPolyDataReader);
-
-  //! \throw InputError when the points or a FIELD block of the dataset
-  //! section cannot be read or a cell list of the old layout does not fit
-  //! its size.
-  void check(const std::string& text, const std::string& path)
-  {
-    ReadFromInputStringOn();
-    SetBinaryInputString(text.data(), int(text.size()));
-    VtkMessagesKept messages;
-    if (!OpenVTKFile() || !ReadHeader())
-      return;
-    if (next().rfind("dataset", 0) == 0 && next().rfind("polydata", 0) == 0)
-      walk(path);
-    CloseVTKFile();
-  }
-
-private:
-  //! The next word, lower case; empty at the end.
-  std::string next()
-  {
-    char word[256];
-    return ReadString(word) ? std::string(LowerCase(word)) : std::string();
-  }
-
-  void walk(const std::string& path)
-  {
-    auto points = vtkSmartPointer<vtkPolyData>::New();
-    for (std::string key = next(); !key.empty(); key = next()) {
-      if (key.rfind("field", 0) == 0) {
-        VtkMessagesKept reading; // its own reason, not an earlier section's
-        vtkFieldData* fields = ReadFieldData();
-        if (!fields) {
-          const std::string why = reading.kept->message();
-          throw InputError("'" + path + "': the dataset's FIELD data cannot be read" + (why.empty() ? "" : ": " + why));
-        }
-        fields->Delete();
-      } else if (key.rfind("points", 0) == 0) {
-        vtkIdType n = 0;
-        if (!Read(&n))
-          return;
-        // The reader goes on after points it could not read, from a file
-        // it may have closed (a null stream: a fuzz finding).
-        VtkMessagesKept reading;
-        if (!ReadPointCoordinates(points, n)) {
-          const std::string why = reading.kept->message();
-          throw InputError("'" + path + "': its points cannot be read" + (why.empty() ? "" : ": " + why));
-        }
-      } else if (key.rfind("vertices", 0) == 0 || key.rfind("lines", 0) == 0 || key.rfind("polygons", 0) == 0 ||
-                 key.rfind("triangle_strips", 0) == 0) {
-        skip_cells(key, path);
-      } else {
-        return; // the point and cell data, or a word the reader will refuse
-      }
-    }
-  }
-
-  //! \throw InputError when the cell section `key` cannot be read: VTK 9.1's
-  //! reader goes on after a cell list of the old layout it could not read,
-  //! from the file it closed (a null stream: a fuzz finding).
-  void skip_cells(const std::string& key, const std::string& path)
-  {
-    VtkMessagesKept reading;
-    const auto refuse = [&] {
-      const std::string why = reading.kept->message();
-      throw InputError("'" + path + "': its " + key + " cannot be read" + (why.empty() ? "" : ": " + why));
-    };
-    if (GetFileMajorVersion() >= 5) {
-      vtkSmartPointer<vtkCellArray> cells;
-      if (!ReadCells(cells))
-        refuse();
-      return;
-    }
-    vtkIdType cells = 0, size = 0;
-    if (!Read(&cells) || !Read(&size) || size < 0)
-      refuse();
-    std::vector<int> ids(static_cast<std::size_t>(size));
-    if (!ReadCellsLegacy(size, ids.data()))
-      refuse();
-    // Each cell is its count, then that many point ids; the reader takes
-    // them until the list ends, wherever the counts point.
-    std::size_t at = 0;
-    while (at < ids.size()) {
-      const int n = ids[at];
-      if (n < 0 || std::size_t(n) >= ids.size() - at)
-        throw InputError("'" + path + "': a cell of the " + key + " (entry " + std::to_string(at) + ") counts " +
-                         std::to_string(n) + " points, more than its list of " + std::to_string(size) +
-                         " entries holds");
-      at += 1 + std::size_t(n);
-    }
-  }
-};
-vtkStandardNewMacro(LegacyDatasetCheck);
 
 //! Colours as ParaView, MeshLab's VTK export and Blender's VTK add-ons write
 //! them: 3 or 4 unsigned bytes per point (alpha ignored), as the point
@@ -644,25 +294,19 @@ vtkSmartPointer<vtkPolyData> read_polydata_file(const std::string& path)
     throw IOError("cannot open '" + path + "': no such file");
   if (std::filesystem::file_size(path, ec) == 0)
     throw InputError("'" + path + "' is empty");
-  check_polydata_sizes(path);
   if (lower_extension(path) == ".vtk") {
-    check_legacy_version(path);
-    check_legacy_points(path);
-    check_legacy_binary_strings(path);
-    check_legacy_array_counts(path);
-    check_legacy_sections(path);
     // VTK's reader takes the bytes' count as an int.
     if (std::filesystem::file_size(path, ec) > std::uintmax_t(std::numeric_limits<int>::max()))
       throw InputError("'" + path + "': a legacy .vtk file of 2 GiB or more (write it as .vtp)");
+    const std::string text = checked_legacy_polydata(path);
     auto r = vtkSmartPointer<vtkPolyDataReader>::New();
-    const std::string text = legacy_without_metadata(path);
-    vtkSmartPointer<LegacyDatasetCheck>::New()->check(text, path);
     r->ReadFromInputStringOn();
     r->SetBinaryInputString(text.data(), int(text.size()));
     r->ReadAllScalarsOn();
     r->ReadAllColorScalarsOn();
     return read_checked(r, path);
   }
+  check_xml_polydata_sizes(path);
   {
     VtkMessagesKept kept; // the parser's own messages: VTK's reader repeats what matters
     check_xml_polydata_arrays(path, polydata_budget(path));
