@@ -114,6 +114,8 @@ public:
   {
     header();
     dataset();
+    if (removed_.empty())
+      return std::move(t_); // large scans: no second copy
     std::string out;
     out.reserve(t_.size());
     std::size_t from = 0;
@@ -651,7 +653,7 @@ private:
   }
 
   const std::string& path_;
-  const std::string t_;
+  std::string t_; //!< the file's bytes, unchanged until run() hands them back
   std::size_t at_ = 0;
   bool binary_ = false;
   int major_ = 0;
