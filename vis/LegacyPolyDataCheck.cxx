@@ -134,11 +134,15 @@ private:
     std::size_t at = 0;
   };
 
+  //! The line holding byte `at`, from 1.
+  long line_of(std::size_t at) const
+  {
+    return 1 + long(std::count(t_.begin(), t_.begin() + std::ptrdiff_t(std::min(at, t_.size())), '\n'));
+  }
+
   [[noreturn]] void refuse(std::size_t at, const std::string& why) const
   {
-    const auto end = t_.begin() + std::ptrdiff_t(std::min(at, t_.size()));
-    const long line = 1 + long(std::count(t_.begin(), end, '\n'));
-    throw InputError("'" + path_ + "': line " + std::to_string(line) + ": " + why);
+    throw InputError("'" + path_ + "': line " + std::to_string(line_of(at)) + ": " + why);
   }
 
   //! The next word as the reader's `>>` takes it; false at the end.
@@ -245,7 +249,7 @@ private:
     const Word kind = expect("the dataset's type");
     if (lower(kind.text) != "polydata")
       refuse(kind.at, "a dataset of type '" + excerpt(kind.text, 30) + "' (only POLYDATA has polygons)");
-    std::map<std::string, long> seen;
+    std::map<std::string, std::size_t> seen; //!< where each section starts
     Word w;
     while (next(w)) {
       const std::string key = lower(w.text);
@@ -253,10 +257,9 @@ private:
         field(-1);
       } else if (key == "points" || key == "vertices" || key == "lines" || key == "polygons" ||
                  key == "triangle_strips") {
-        const long line = 1 + long(std::count(t_.begin(), t_.begin() + std::ptrdiff_t(w.at), '\n'));
         if (seen.count(key))
-          refuse(w.at, upper(key) + " repeats the section of line " + std::to_string(seen[key]));
-        seen[key] = line;
+          refuse(w.at, upper(key) + " repeats the section of line " + std::to_string(line_of(seen[key])));
+        seen[key] = w.at;
         if (key == "points")
           points();
         else
