@@ -154,7 +154,7 @@ void write_scan_ply(vtkPolyData* scan, const std::string& path)
 
 const std::vector<std::string>& scan_extensions()
 {
-  static const std::vector<std::string> exts = {".vtp", ".ply", ".obj", ".stl", ".off"};
+  static const std::vector<std::string> exts = {".vtp", ".vtk", ".ply", ".obj", ".stl", ".off"};
   return exts;
 }
 
@@ -166,10 +166,10 @@ vtkSmartPointer<vtkPolyData> read_scan(const std::string& path)
   const std::string ext = lower_extension(path);
   const auto& exts = scan_extensions();
   if (std::find(exts.begin(), exts.end(), ext) == exts.end())
-    throw InputError("cannot read scan '" + path + "': unknown format '" + ext + "' (.vtp .ply .obj .stl .off)");
+    throw InputError("cannot read scan '" + path + "': unknown format '" + ext + "' (.vtp .vtk .ply .obj .stl .off)");
   // The one checked path every mesh file takes first: nothing reaches a VTK
   // reader that the census and the strict readers have not accepted.
-  if (ext != ".vtp") {
+  if (!is_polydata_path(path)) {
     const PolygonSoup soup = read_mesh_file(path);
     // STL carries no point arrays: the checked reading is the scan (VTK's
     // reader would also stumble on a byte-order mark).

@@ -621,3 +621,29 @@ def test_binary_legacy_data_must_start_on_the_next_line(tmp_path):
     (tmp_path / "short.vtk").write_bytes(text[:text.index(b"POINTS 50 float\n") + 100])
     r = run("info", str(tmp_path / "short.vtk"))
     assert r.returncode == 2 and "600 bytes of binary data" in r.stderr, r.stderr
+
+
+@pytest.mark.parametrize("binary", [False, True])
+def test_legacy_vtk_scans_are_transferred_onto_and_damaged_ones_refused(tmp_path, project, binary):
+    cube = vtk.vtkCubeSource()
+    cube.Update()
+    tri = vtk.vtkTriangleFilter()
+    tri.SetInputData(cube.GetOutput())
+    tri.Update()
+    scan = tri.GetOutput()
+    w = vtk.vtkPolyDataWriter()
+    w.SetInputData(scan)
+    w.SetFileType(2 if binary else 1)
+    w.SetFileName(str(tmp_path / "scan.vtk"))
+    assert w.Write() == 1
+    out = tmp_path / "o.vtp"
+    r = run("transfer", project, "--to", str(tmp_path / "scan.vtk"), "-o", str(out), "--quiet")
+    assert r.returncode == 0, r.stderr
+    got = read_vtp(out)
+    assert got.GetNumberOfPoints() == scan.GetNumberOfPoints() and got.GetPointData().GetArray("label") is not None
+    # The scan's own arrays come along (the cube's normals and texture coordinates).
+    assert got.GetPointData().GetArray("Normals") is not None
+    (tmp_path / "bad.vtk").write_bytes((tmp_path / "scan.vtk").read_bytes() + b"POINT_DATA 24\n")
+    r = run("transfer", project, "--to", str(tmp_path / "bad.vtk"), "-o", str(tmp_path / "b.vtp"), "--quiet")
+    assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1, r.stderr
+    assert "POINT_DATA repeats" in r.stderr and not (tmp_path / "b.vtp").exists(), r.stderr
