@@ -5,14 +5,17 @@
 #include <CGAL/Polygon_mesh_processing/orientation.h>               // for is_outward_oriented
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>       // for orient_polygon_soup
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h> // for polygon_soup_to_polygon_mesh
-#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>       // for merge_duplicate_points/polygons
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>       // for merge_duplicate_polygons_in_polygon_soup
 #include <CGAL/Surface_mesh.h>                                      // for CGAL::Surface_mesh
 
-#include <algorithm> // for std::min, std::max, std::reverse
-#include <cmath>     // for std::floor, std::sqrt, std::fabs, std::isfinite
-#include <map>       // for std::map
-#include <set>       // for std::set
-#include <tuple>     // for std::tuple
+#include <algorithm>     // for std::sort, std::adjacent_find, std::reverse
+#include <cmath>         // for std::floor, std::fabs, std::isfinite
+#include <cstdint>       // for std::uint64_t
+#include <functional>    // for std::hash
+#include <map>           // for std::map
+#include <numeric>       // for std::iota
+#include <unordered_map> // for std::unordered_map
+#include <utility>       // for std::pair
 
 namespace meshpaint {
 namespace {
@@ -23,64 +26,189 @@ using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 using Polygon = std::vector<std::size_t>;
 
-//! Points within `tolerance` of one another that fall into one grid cell
-//! take that cell's first point, so that CGAL's exact merge joins them.
-std::size_t snap_to_first_in_cell(std::vector<Point>& points, double tolerance)
+//! Kept points are hashed in cells of this many tolerances: a point looks
+//! past its own cell only on the sides it lies within the tolerance of.
+constexpr double kCellTolerances = 4;
+
+struct Cell
 {
-  if (!(tolerance > 0) || !std::isfinite(tolerance))
-    return 0;
-  std::map<std::tuple<long long, long long, long long>, std::size_t> first;
-  std::size_t snapped = 0;
+  long long x, y, z;
+  bool operator==(const Cell& o) const { return x == o.x && y == o.y && z == o.z; }
+};
+
+struct CellHash
+{
+  std::size_t operator()(const Cell& c) const
+  {
+    return std::hash<long long>()(c.x * 73856093LL ^ c.y * 19349663LL ^ c.z * 83492791LL);
+  }
+};
+
+//! Whether each point lies on a border of the faces as listed: its faces'
+//! edges out of it and into it differ (a soup's points all do, a scan's
+//! inner vertices do not). Compared through sums of mixed ids, so one pass.
+std::vector<bool> open_fans(std::size_t points, const std::vector<std::vector<int>>& faces)
+{
+  const auto mixed = [](std::uint64_t x) { // splitmix64's finaliser
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+    return x ^ (x >> 31);
+  };
+  std::vector<std::uint64_t> out(points, 0), in(points, 0);
+  std::vector<bool> used(points, false);
+  for (const auto& f : faces)
+    for (std::size_t k = 0; k < f.size(); ++k) {
+      const auto v = std::size_t(f[k]);
+      out[v] += mixed(std::uint64_t(f[(k + 1) % f.size()]));
+      in[v] += mixed(std::uint64_t(f[(k + f.size() - 1) % f.size()]));
+      used[v] = true;
+    }
+  std::vector<bool> open(points);
+  for (std::size_t v = 0; v < points; ++v)
+    open[v] = !used[v] || out[v] != in[v];
+  return open;
+}
+
+//! For each point, in order, the first earlier kept point it joins, or the
+//! point itself, which is then kept. A point joins a kept point at its very
+//! position, or within `tolerance` when either lies on a border (`open`):
+//! a dense scan's inner vertices can lie closer than the tolerance, and
+//! joining them would tear the surface. Every point lies within the
+//! tolerance of the one it joins.
+std::vector<std::size_t> weld_targets(const std::vector<Vec3>& points, const std::vector<bool>& open, double tolerance)
+{
+  std::vector<std::size_t> target(points.size());
+  std::iota(target.begin(), target.end(), std::size_t(0));
+  const double cell = kCellTolerances * tolerance, tolerance2 = tolerance * tolerance;
+  if (!(cell > 0) || !std::isfinite(cell))
+    return target;
+  constexpr std::size_t kNone = std::size_t(-1);
+  std::unordered_map<Cell, std::size_t, CellHash> first_kept; // a cell's kept points, chained by next_kept
+  first_kept.reserve(points.size());
+  std::vector<std::size_t> next_kept(points.size(), kNone);
   for (std::size_t v = 0; v < points.size(); ++v) {
-    double q[3];
+    const Vec3& p = points[v];
+    long long c[3];
+    int lo[3], hi[3];
     bool fits = true;
     for (int a = 0; a < 3; ++a) {
-      q[a] = std::floor(points[v][a] / tolerance);
-      fits = fits && std::fabs(q[a]) < 9e18; // a cell number as a long long; the rest is refused later
+      const double q = p[a] / cell, floor_q = std::floor(q);
+      fits = fits && std::fabs(floor_q) < 4e18; // a cell number and its neighbour as a long long
+      c[a] = fits ? (long long)floor_q : 0;
+      lo[a] = (q - floor_q) * kCellTolerances <= 1 ? -1 : 0;
+      hi[a] = (floor_q + 1 - q) * kCellTolerances <= 1 ? 1 : 0;
     }
     if (!fits)
+      continue; // kept unwelded; such coordinates are refused later
+    std::size_t best = kNone;
+    for (int dx = lo[0]; dx <= hi[0]; ++dx)
+      for (int dy = lo[1]; dy <= hi[1]; ++dy)
+        for (int dz = lo[2]; dz <= hi[2]; ++dz) {
+          const auto it = first_kept.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          for (std::size_t k = it == first_kept.end() ? kNone : it->second; k != kNone; k = next_kept[k]) {
+            double d2 = 0;
+            for (int a = 0; a < 3; ++a)
+              d2 += (double(points[k][a]) - double(p[a])) * (double(points[k][a]) - double(p[a]));
+            if (d2 <= tolerance2 && k < best && (d2 == 0 || open[v] || open[k]))
+              best = k;
+          }
+        }
+    if (best != kNone) {
+      target[v] = best;
       continue;
-    const auto [it, fresh] = first.emplace(std::make_tuple((long long)q[0], (long long)q[1], (long long)q[2]), v);
-    if (!fresh && points[it->second] != points[v]) {
-      points[v] = points[it->second];
-      ++snapped;
+    }
+    auto [it, fresh] = first_kept.emplace(Cell{c[0], c[1], c[2]}, v);
+    if (!fresh) {
+      next_kept[v] = it->second;
+      it->second = v;
     }
   }
-  return snapped;
+  return target;
 }
 
-//! Per-vertex values, `k` floats each, summed by position before welding.
-using PositionSums = std::map<Point, std::pair<std::vector<float>, int>>;
-
-PositionSums sums_by_position(const std::vector<Point>& points, const float* values, std::size_t k)
+//! `values` (`k` per point) of the points that join at each kept point,
+//! averaged in point order; `index` numbers the kept points.
+std::vector<float> joined_means(const std::vector<float>& values, std::size_t k, const std::vector<std::size_t>& index,
+                                std::size_t kept)
 {
-  PositionSums sums;
-  for (std::size_t v = 0; v < points.size(); ++v) {
-    auto& [s, n] = sums.emplace(points[v], std::make_pair(std::vector<float>(k, 0.f), 0)).first->second;
+  std::vector<float> sum(kept * k, 0.f);
+  std::vector<int> n(kept, 0);
+  for (std::size_t v = 0; v < index.size(); ++v) {
     for (std::size_t a = 0; a < k; ++a)
-      s[a] += values[v * k + a];
-    ++n;
+      sum[index[v] * k + a] += values[v * k + a];
+    ++n[index[v]];
   }
-  return sums;
+  for (std::size_t w = 0; w < kept; ++w)
+    for (std::size_t a = 0; a < k; ++a)
+      sum[w * k + a] /= float(n[w]);
+  return sum;
 }
 
-//! The values of the imported vertices: with welding, the mean over the
-//! vertices merged at each position; without, those of the vertex each one
-//! came from (`origin`).
-template <typename Origin>
-std::vector<float> carried_values(const std::vector<Point>& points, const float* values, std::size_t k, bool weld,
-                                  const PositionSums& sums, Origin origin)
+//! Joins the soup's points closer than `tolerance` (weld_targets()): faces
+//! name the kept points, colours and channel values take the mean of the
+//! points joined, labels the most frequent id (the smallest of a tie).
+//! Returns how many points were joined into others.
+std::size_t weld_points(PolygonSoup& soup, double tolerance)
 {
-  std::vector<float> out(points.size() * k);
-  for (std::size_t v = 0; v < points.size(); ++v)
-    for (std::size_t a = 0; a < k; ++a) {
-      if (!weld) {
-        out[v * k + a] = values[origin(v) * k + a];
-        continue;
+  const std::vector<std::size_t> target = weld_targets(soup.points, open_fans(soup.points.size(), soup.faces), tolerance);
+  std::vector<std::size_t> index(target.size());
+  std::size_t kept = 0;
+  for (std::size_t v = 0; v < target.size(); ++v)
+    index[v] = target[v] == v ? kept++ : index[target[v]];
+  if (kept == soup.points.size())
+    return 0;
+  std::vector<Vec3> points(kept);
+  for (std::size_t v = 0; v < target.size(); ++v)
+    if (target[v] == v)
+      points[index[v]] = soup.points[v];
+  for (auto& f : soup.faces)
+    for (int& v : f)
+      v = int(index[std::size_t(v)]);
+  if (!soup.colours.empty()) {
+    std::vector<float> flat(soup.colours.size() * 3);
+    for (std::size_t v = 0; v < soup.colours.size(); ++v)
+      for (int a = 0; a < 3; ++a)
+        flat[v * 3 + std::size_t(a)] = soup.colours[v][std::size_t(a)];
+    const std::vector<float> mean = joined_means(flat, 3, index, kept);
+    soup.colours.resize(kept);
+    for (std::size_t w = 0; w < kept; ++w)
+      soup.colours[w] = {mean[w * 3], mean[w * 3 + 1], mean[w * 3 + 2]};
+  }
+  for (ChannelArray& a : soup.channels)
+    a.values = joined_means(a.values, std::size_t(a.components), index, kept);
+  if (!soup.labels.empty()) {
+    std::vector<std::pair<std::size_t, int>> votes(index.size()); // (kept point, id), sorted into runs
+    for (std::size_t v = 0; v < index.size(); ++v)
+      votes[v] = {index[v], soup.labels[v]};
+    std::sort(votes.begin(), votes.end());
+    std::vector<int> labels(kept);
+    std::vector<std::size_t> most(kept, 0);
+    for (std::size_t i = 0; i < votes.size();) {
+      std::size_t j = i;
+      while (j < votes.size() && votes[j] == votes[i])
+        ++j;
+      const std::size_t w = votes[i].first;
+      if (j - i > most[w]) { // runs of one point come in increasing id: a tie keeps the smaller
+        most[w] = j - i;
+        labels[w] = votes[i].second;
       }
-      const auto& [s, n] = sums.at(points[v]);
-      out[v * k + a] = s[a] / float(n);
+      i = j;
     }
+    soup.labels = std::move(labels);
+  }
+  soup.points = std::move(points);
+  return target.size() - kept;
+}
+
+//! The values of the imported vertices, `k` floats each: those of the
+//! vertex each one came from (`origin`; orienting may copy vertices).
+template <typename Origin>
+std::vector<float> carried_values(std::size_t count, const float* values, std::size_t k, Origin origin)
+{
+  std::vector<float> out(count * k);
+  for (std::size_t v = 0; v < count; ++v)
+    for (std::size_t a = 0; a < k; ++a)
+      out[v * k + a] = values[origin(v) * k + a];
   return out;
 }
 
@@ -95,6 +223,10 @@ SoupSteps import_soup(PolygonSoup& soup, bool weld)
   const bool coloured = !soup.colours.empty();
   const bool labelled = !soup.labels.empty();
 
+  if (weld) {
+    steps.weld_tolerance = kWeldTolerance * diagonal_of(soup.points);
+    steps.vertices_welded = weld_points(soup, steps.weld_tolerance);
+  }
   std::vector<Point> points;
   points.reserve(soup.points.size());
   for (const Vec3& p : soup.points)
@@ -103,30 +235,14 @@ SoupSteps import_soup(PolygonSoup& soup, bool weld)
   polygons.reserve(soup.faces.size());
   for (const auto& f : soup.faces)
     polygons.emplace_back(f.begin(), f.end());
-  PositionSums colour_sums;                  // by position: colours of the vertices merged there
-  std::vector<PositionSums> channel_sums(soup.channels.size()); // and so for each channel array
-  std::map<Point, std::map<int, int>> label_votes; // by position: label ids of the vertices merged there
-
-  if (weld) {
-    steps.weld_tolerance = kWeldTolerance * diagonal_of(soup.points);
-    snap_to_first_in_cell(points, steps.weld_tolerance);
-    if (coloured)
-      colour_sums = sums_by_position(points, soup.colours[0].data(), 3);
-    for (std::size_t c = 0; c < soup.channels.size(); ++c)
-      channel_sums[c] = sums_by_position(points, soup.channels[c].values.data(),
-                                         std::size_t(soup.channels[c].components));
-    if (labelled)
-      for (std::size_t v = 0; v < points.size(); ++v)
-        ++label_votes[points[v]][soup.labels[v]];
-    steps.vertices_welded = PMP::merge_duplicate_points_in_polygon_soup(points, polygons);
-  }
 
   // Faces that name a vertex twice (also once welding joined two corners).
   std::vector<Polygon> valid;
   valid.reserve(polygons.size());
   for (Polygon& p : polygons) {
-    const std::set<std::size_t> distinct(p.begin(), p.end());
-    if (p.size() < 3 || distinct.size() != p.size())
+    Polygon sorted = p;
+    std::sort(sorted.begin(), sorted.end());
+    if (p.size() < 3 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
       ++steps.degenerate_faces_dropped;
     else
       valid.push_back(std::move(p));
@@ -200,31 +316,17 @@ SoupSteps import_soup(PolygonSoup& soup, bool weld)
   for (std::size_t v = 0; v < points.size(); ++v)
     soup.points[v] = {float(points[v].x()), float(points[v].y()), float(points[v].z())};
   if (coloured) {
-    const std::vector<float> flat = carried_values(points, soup.colours[0].data(), 3, weld, colour_sums, origin);
+    const std::vector<float> flat = carried_values(points.size(), soup.colours[0].data(), 3, origin);
     soup.colours.resize(points.size());
     for (std::size_t v = 0; v < points.size(); ++v)
       soup.colours[v] = {flat[v * 3], flat[v * 3 + 1], flat[v * 3 + 2]};
   }
-  for (std::size_t c = 0; c < soup.channels.size(); ++c) {
-    ChannelArray& a = soup.channels[c];
-    a.values = carried_values(points, a.values.data(), std::size_t(a.components), weld, channel_sums[c], origin);
-  }
+  for (ChannelArray& a : soup.channels)
+    a.values = carried_values(points.size(), a.values.data(), std::size_t(a.components), origin);
   if (labelled) {
     std::vector<int> labels(points.size());
-    for (std::size_t v = 0; v < points.size(); ++v) {
-      if (!weld) {
-        labels[v] = soup.labels[origin(v)];
-        continue;
-      }
-      // The most frequent id among the merged vertices; ties go to the smallest.
-      int best = -1, votes = 0;
-      for (const auto& [id, n] : label_votes.at(points[v]))
-        if (n > votes) {
-          best = id;
-          votes = n;
-        }
-      labels[v] = best;
-    }
+    for (std::size_t v = 0; v < points.size(); ++v)
+      labels[v] = soup.labels[origin(v)];
     soup.labels = std::move(labels);
   }
   soup.faces.assign(polygons.size(), {});

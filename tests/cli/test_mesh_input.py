@@ -188,6 +188,45 @@ def test_a_soup_becomes_one_component(tmp_path, writer):
             "topology     12 components" in kept.stdout, kept.stdout
 
 
+def sphere_mesh(resolution=8):
+    """A closed triangulated sphere about the origin (vertices on the axes' planes)."""
+    sphere = vtk.vtkSphereSource()
+    sphere.SetThetaResolution(resolution)
+    sphere.SetPhiResolution(resolution)
+    sphere.Update()
+    poly = sphere.GetOutput()
+    pts = [poly.GetPoint(i) for i in range(poly.GetNumberOfPoints())]
+    ids = numpy_support.vtk_to_numpy(poly.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    return pts, [tuple(int(i) for i in f) for f in ids]
+
+
+def test_a_soup_jittered_within_the_weld_tolerance_becomes_one_component(tmp_path):
+    # Copies 1e-8 of the diagonal apart, on either side of the coordinate
+    # planes the sphere's poles and seams lie on: no grid of cells may part them.
+    import random
+    pts, faces = mesh_inputs.soup_of(*sphere_mesh())
+    rnd = random.Random(3)
+    jittered = [tuple(c + rnd.choice((-1, 1)) * 1e-8 for c in p) for p in pts]
+    path = write(tmp_path, "jittered.obj", mesh_inputs.obj(points=jittered, faces=faces))
+    r = run("info", path)
+    assert r.returncode == 0, r.stderr
+    assert "topology     1 component, genus 0" in r.stdout, r.stdout
+    assert "cut" not in r.stdout, r.stdout
+
+
+def test_inner_vertices_closer_than_the_tolerance_are_not_welded(tmp_path):
+    # A dense scan can hold distinct neighbouring vertices closer than the
+    # weld tolerance; joining them would tear the surface.
+    pts, faces = sphere_mesh()
+    i, j = faces[5][0], faces[5][1]
+    pts[j] = tuple(a + 1e-7 * (b - a) for a, b in zip(pts[i], pts[j]))
+    path = write(tmp_path, "close.off", mesh_inputs.off(points=pts, faces=faces))
+    r = run("info", path)
+    assert r.returncode == 0, r.stderr
+    assert "import       no repairs" in r.stdout, r.stdout
+    assert f"counts       {len(pts)} vertices" in r.stdout, r.stdout
+
+
 def signed_volume(poly):
     tri = vtk.vtkTriangleFilter()
     tri.SetInputData(poly)
