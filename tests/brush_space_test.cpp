@@ -2,6 +2,7 @@
 // parameter), the back-face policy, and screen strokes ending at silhouettes.
 
 #include "atlas/weld.h"
+#include "mesh/base_mesh.h"
 #include "paint/paint_surface.h"
 #include "support/copies.h"
 #include "support/runtime.h"
@@ -15,6 +16,7 @@
 #include <cstring>  // for std::memcmp
 #include <iterator> // for std::size
 #include <set>      // for std::set
+#include <string>   // for std::string
 
 namespace meshpaint {
 namespace {
@@ -218,6 +220,27 @@ TEST(BrushSpace, ParameterSquaresContinueAcrossPatchSides)
     }
 }
 
+//! The engine's texel size on patch p: the side of the square in the
+//! sphere around the patch's bounding box, over its texels.
+float texel_size(const std::vector<Float4>& pos, const LevelLayout& l, int p)
+{
+  Vec3 lo = xyz(pos[l.index(p, 0, 0)]), hi = lo;
+  for (int j = 0; j < l.tile; ++j)
+    for (int i = 0; i < l.tile; ++i)
+      for (int k = 0; k < 3; ++k) {
+        lo[k] = std::min(lo[k], pos[l.index(p, i, j)][k]);
+        hi[k] = std::max(hi[k], pos[l.index(p, i, j)][k]);
+      }
+  const Vec3 mid{0.5f * (lo[0] + hi[0]), 0.5f * (lo[1] + hi[1]), 0.5f * (lo[2] + hi[2])};
+  float bound = 0.f;
+  for (int j = 0; j < l.tile; ++j)
+    for (int i = 0; i < l.tile; ++i) {
+      const Vec3 d = sub(xyz(pos[l.index(p, i, j)]), mid);
+      bound = std::max(bound, std::sqrt(dot(d, d)));
+    }
+  return std::sqrt(2.f) * bound / float(l.n);
+}
+
 TEST(BrushSpace, ParameterSquaresAtExtraordinaryVertices)
 {
   // A cube's corner, where three patches meet, and a pyramid's apex, where
@@ -244,23 +267,7 @@ TEST(BrushSpace, ParameterSquaresAtExtraordinaryVertices)
         if (dot(xyz(pos[t]), v.towards) > dot(xyz(pos[corner]), v.towards))
           corner = t;
       const int p = int(corner / (std::size_t(l.tile) * l.tile));
-      // The engine's texel size there: the side of the patch's bounding box's
-      // diagonal sphere over its texels.
-      Vec3 lo = xyz(pos[l.index(p, 0, 0)]), hi = lo;
-      for (int j = 0; j < l.tile; ++j)
-        for (int i = 0; i < l.tile; ++i)
-          for (int k = 0; k < 3; ++k) {
-            lo[k] = std::min(lo[k], pos[l.index(p, i, j)][k]);
-            hi[k] = std::max(hi[k], pos[l.index(p, i, j)][k]);
-          }
-      const Vec3 mid{0.5f * (lo[0] + hi[0]), 0.5f * (lo[1] + hi[1]), 0.5f * (lo[2] + hi[2])};
-      float bound = 0.f;
-      for (int j = 0; j < l.tile; ++j)
-        for (int i = 0; i < l.tile; ++i) {
-          const Vec3 d = sub(xyz(pos[l.index(p, i, j)]), mid);
-          bound = std::max(bound, std::sqrt(dot(d, d)));
-        }
-      const float texel = std::sqrt(2.f) * bound / float(l.n);
+      const float texel = texel_size(pos, l, p);
       surface.apply(red_dab(xyz(pos[corner]), (float(half) + 0.5f) * texel, SPACE_PARAMETER));
 
       const std::vector<Float4> diffuse = surface.read_channels().diffuse;
@@ -293,6 +300,57 @@ TEST(BrushSpace, ParameterSquaresAtExtraordinaryVertices)
       const Painted painted = painted_parts(surface, diffuse);
       EXPECT_EQ(painted.vertices.size(), std::size_t(v.valence * (9 - 3) + 1));
     }
+}
+
+TEST(BrushSpace, ParameterDabsOnATriangleScanPaintAboutTheRadius)
+{
+  // Each triangle of a scan makes three patches around a vertex of valence
+  // 3, joined about six round each of its corners: unfolded, their tiles
+  // leave quarters of the plane empty and overlap elsewhere. A dab of the
+  // usual size spans some twelve tiles each way from its centre.
+  const std::string path = test::scan_path("bunny00.off");
+  ASSERT_FALSE(path.empty()) << "data/scans/bunny00.off is missing: run scripts/fetch-scans.sh";
+  const BaseMesh mesh = load_mesh(path);
+  const float radius = 0.03f * float(mesh.diagonal());
+  const Vec3 at = mesh.points[mesh.points.size() / 3];
+  const int level = 2;
+  std::vector<Float4> first;
+  for (const AtlasStorage storage : test::storages()) {
+    SCOPED_TRACE(storage == AtlasStorage::Image ? "images" : "buffers");
+    PaintSurface object(test::runtime(), mesh, level, storage);
+    object.apply(red_dab(at, radius, SPACE_OBJECT));
+    const std::size_t ball = painted_parts(object, object.read_channels().diffuse).vertices.size();
+
+    PaintSurface surface(test::runtime(), mesh, level, storage);
+    surface.apply(red_dab(at, radius, SPACE_PARAMETER));
+    const std::vector<Float4> diffuse = surface.read_channels().diffuse;
+    const std::vector<Float4> pos = surface.atlas().read_limit_positions();
+    const LevelLayout l = surface.atlas().layout(level);
+    EXPECT_EQ(test::differing_copies(surface.atlas().topology(), l, diffuse), 0u);
+    if (first.empty())
+      first = diffuse;
+    else // both storages give the same bits
+      EXPECT_EQ(std::memcmp(first.data(), diffuse.data(), sizeof(Float4) * diffuse.size()), 0);
+
+    // About the object-space dab's area, near the centre, and on many
+    // patches: the square goes on across their sides.
+    const Painted painted = painted_parts(surface, diffuse);
+    EXPECT_GT(painted.vertices.size(), ball / 2);
+    EXPECT_LT(painted.vertices.size(), ball * 2);
+    // The centre: the closest texel, as the dab snaps to it.
+    std::size_t centre = 0;
+    for (std::size_t t = 0; t < pos.size(); ++t)
+      if (dot(sub(xyz(pos[t]), at), sub(xyz(pos[t]), at)) < dot(sub(xyz(pos[centre]), at), sub(xyz(pos[centre]), at)))
+        centre = t;
+    float furthest = 0.f;
+    for (std::size_t t = 0; t < pos.size(); ++t)
+      if (red(diffuse[t]))
+        furthest = std::max(furthest, length(sub(xyz(pos[t]), xyz(pos[centre]))));
+    EXPECT_LT(furthest, 2.f * radius);
+    const float half = radius / texel_size(pos, l, int(centre / (std::size_t(l.tile) * l.tile)));
+    EXPECT_GT(half, 4.f * float(l.n)); // the square spans several tiles
+    EXPECT_GT(painted.patches.size(), std::size_t(half / float(l.n) * half / float(l.n)));
+  }
 }
 
 TEST(BrushSpace, ParameterSculptAtACoarseLevelKeepsCopiesIdentical)

@@ -5,12 +5,18 @@
 #include <algorithm>     // for std::min, std::max
 #include <array>         // for std::array
 #include <climits>       // for INT_MAX
+#include <cstdlib>       // for std::abs
 #include <unordered_map> // for std::unordered_map
 
 namespace meshpaint {
 namespace {
 
 using Point = std::array<int, 2>;
+
+//! The sides a way to a laid patch may cross beyond the straight way: room
+//! to go round a vertex or two where patches are not laid straight on
+//! (around a vertex of valence 3 a quarter of the plane holds none).
+constexpr int kDetour = 4;
 
 //! A map of the plane: a rotation by a multiple of 90 degrees (the images
 //! u, v of the axes) and an offset, in tile sides.
@@ -56,11 +62,9 @@ TexelMap texel_map(const Map& m)
 
 Unfolding unfold(const AtlasTopology& topology, int centre_patch, int n, const float centre[2], float half)
 {
-  // Whether the box of two points of a tile under m (tile sides) meets the
-  // square; one texel of slack, as laying a patch that gets no paint costs
-  // only work.
-  const float reach = half + 1.f;
-  const auto meets = [&](const Map& m, const Point& a, const Point& b) {
+  // Whether the box of two points of a tile under m (tile sides) comes
+  // within `reach` texels of the centre in both directions.
+  const auto within = [&](const Map& m, const Point& a, const Point& b, float reach) {
     const Point p = map_point(m, a), q = map_point(m, b);
     for (int k = 0; k < 2; ++k) {
       const float lo = float(n * std::min(p[k], q[k])), hi = float(n * std::max(p[k], q[k]));
@@ -69,10 +73,22 @@ Unfolding unfold(const AtlasTopology& topology, int centre_patch, int n, const f
     }
     return true;
   };
+  // Whether it meets the square; one texel of slack, as laying a patch that
+  // gets no paint costs only work.
+  const float reach = half + 1.f;
+  const auto meets = [&](const Map& m, const Point& a, const Point& b) { return within(m, a, b, reach); };
 
-  // Breadth-first across sides: each patch laid the first way found.
+  // Breadth-first across sides: each patch laid the first way found whose
+  // tile meets the square and that crosses at most kDetour sides more than
+  // the straight way across a grid of square tiles from the centre's tile
+  // to that tile, counting no side into a tile that holds the centre. Where
+  // more than four patches meet at a vertex the tiles around it overlap in
+  // the plane, and a way winding on around such vertices reaches surface
+  // far along it while its tile still lies in the square: the detour stops
+  // it.
   std::vector<int> laid{centre_patch};
   std::vector<Map> laid_map{Map()};
+  std::vector<int> laid_crossings{0};
   std::unordered_map<int, int> rank{{centre_patch, 0}}; // laid patch -> index in `laid`
   for (std::size_t k = 0; k < laid.size(); ++k) {
     const int p = laid[k];
@@ -83,11 +99,15 @@ Unfolding unfold(const AtlasTopology& topology, int centre_patch, int n, const f
       if (q < 0 || rank.count(q))
         continue;
       const Map m = compose(laid_map[k], across(s, e.side[w]));
-      if (!meets(m, corner(0), corner(2)))
+      const int crossed = laid_crossings[k] + (within(m, corner(0), corner(2), 0.f) ? 0 : 1);
+      const Point a = map_point(m, corner(0)), b = map_point(m, corner(2));
+      const int straight = std::abs(std::min(a[0], b[0])) + std::abs(std::min(a[1], b[1]));
+      if (crossed > straight + kDetour || !meets(m, corner(0), corner(2)))
         continue;
       rank.emplace(q, int(laid.size()));
       laid.push_back(q);
       laid_map.push_back(m);
+      laid_crossings.push_back(crossed);
     }
   }
 

@@ -22,7 +22,9 @@ struct Unfolding
 //! `half` (texels) around `centre` (texels of that patch, n per tile side)
 //! reaches. Patches are laid breadth-first from the centre patch across
 //! their sides, each the first way it is reached while its tile meets the
-//! square; around a vertex of valence other than 4 this is one choice of
+//! square and the way crosses at most a few sides more than a straight one
+//! (so it cannot wind on around irregular vertices to surface far away);
+//! around a vertex of valence other than 4 this is one choice of
 //! several, and a patch the search does not lay gets only the texels it
 //! shares with laid ones. A side or corner texel takes the map of the
 //! earliest laid patch that stores it, in every patch that stores it, so all
