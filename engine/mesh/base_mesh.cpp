@@ -7,8 +7,6 @@
 #include "mesh/openmesh_types.h"
 #include "mesh/quiet_openmesh.h"
 #include "mesh/soup_import.h"
-#include "core/timer.h"
-#include <cstdio>
 
 #include <OpenMesh/Core/IO/IOManager.hh>          // for OpenMesh::IO::IOManager
 #include <OpenMesh/Core/IO/importer/ImporterT.hh> // for OpenMesh::IO::ImporterT
@@ -604,8 +602,7 @@ PolygonSoup read_mesh_file(const std::string& path)
 BaseMesh load_mesh(const std::string& path, const ImportOptions& import)
 {
   namespace fs = std::filesystem;
-  Timer ph; auto soup = read_mesh_file(path); if (getenv("MP_PH")) fprintf(stderr, "read_mesh_file %.0f ms\n", ph.ms());
-  return import_mesh(std::move(soup), fs::path(path).stem().string(), "'" + path + "': ", import);
+  return import_mesh(read_mesh_file(path), fs::path(path).stem().string(), "'" + path + "': ", import);
 }
 
 BaseMesh import_mesh(PolygonSoup soup, const std::string& name, const std::string& where,
@@ -619,12 +616,11 @@ BaseMesh import_mesh(PolygonSoup soup, const std::string& name, const std::strin
     check_coordinates(soup.points[v], v, where);
   const std::size_t file_vertices = soup.points.size();
   take_channel_arrays(soup, import.arrays, where);
-  Timer ph; const SoupSteps steps = import_soup(soup, import.weld); if (getenv("MP_PH")) fprintf(stderr, "import_soup %.0f ms\n", ph.ms()); ph.restart();
+  const SoupSteps steps = import_soup(soup, import.weld);
   if (soup.faces.empty())
     throw InputError(where + "has no faces (every face is degenerate)");
   check_label_ids(soup.labels, where);
   BaseMesh mesh = build(soup.points, soup.faces, name, where, soup.colours, soup.labels, soup.channels);
-  if (getenv("MP_PH")) fprintf(stderr, "build %.0f ms\n", ph.ms());
   mesh.label_classes = soup.label_classes;
   ImportReport& r = mesh.report;
   r.faces_skipped_by_reader = faces_skipped;
