@@ -515,7 +515,11 @@ PolygonSoup read_through_openmesh(const std::string& path, const std::string& ex
   PolyMesh om;
   om.request_vertex_colors();
   SoupImporter importer(om);
-  OpenMesh::IO::Options options = OpenMesh::IO::Options::VertexColor;
+  // STL has no vertex colours, but OpenMesh's STL reader leaves the request
+  // standing in the options as if the file had them: ask only other formats.
+  OpenMesh::IO::Options options;
+  if (ext != ".stl")
+    options += OpenMesh::IO::Options::VertexColor;
   if (census.binary)
     options += OpenMesh::IO::Options::Binary;
   bool ok = false;
@@ -589,9 +593,13 @@ PolygonSoup read_mesh_file(const std::string& path)
     throw InputError("'" + path + "' is empty");
 
   const std::string where = "'" + path + "': ";
-  if (ext == ".off" && !binary_off(path)) {
+  if (ext == ".off") {
     try {
-      return read_off_text(path);
+      if (!binary_off(path))
+        return read_off_text(path);
+      PolygonSoup soup;
+      if (read_off_binary(path, soup))
+        return soup;
     } catch (const InputError& e) {
       throw InputError(where + e.what());
     }
