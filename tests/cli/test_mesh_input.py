@@ -158,6 +158,15 @@ def test_vtk_written_ply_colours_arrive_in_the_diffuse_channel(tmp_path):
     assert diffuse[z > 0.3, 0].min() > 0.9 and diffuse[z < -0.3, 2].min() > 0.9
 
 
+def test_counts_of_one_are_singular(tmp_path):
+    quad = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (5, 5, 5)]  # the last vertex used by no face
+    r = run("info", write(tmp_path, "quad.off", mesh_inputs.off(points=quad, faces=[(0, 1, 2, 3)])))
+    assert r.returncode == 0, r.stderr
+    assert "4 vertices, 4 edges, 1 face (1 quad)\n" in r.stdout, r.stdout
+    assert "boundaries   1 loop, 4 edges\n" in r.stdout, r.stdout
+    assert "removed 1 vertex used by no face" in r.stdout, r.stdout
+
+
 @pytest.mark.parametrize("binary", [False, True], ids=["ascii", "binary"])
 def test_stl_gets_the_uniform_default_diffuse(tmp_path, binary):
     """STL carries no colours: nothing may be taken as the file's colours."""
