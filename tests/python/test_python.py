@@ -387,35 +387,36 @@ def test_polydata_label_array_becomes_the_label_channel():
     assert (label[z > z.max() - 0.05] == 5).all() and (label[z < z.min() + 0.05] == 2).all()
 
 
-def test_polydata_input_with_a_diffuse_array_starts_with_those_colours():
+def painted_cube_with_colours(colours, value, scalars):
+    """A surface at level 2 on the cube soup whose every point has colour `value` in `colours`."""
     poly = cube_soup()
-    colours = vtk.vtkFloatArray()
-    colours.SetName("diffuse")
     colours.SetNumberOfComponents(3)
     for _ in range(poly.GetNumberOfPoints()):
-        colours.InsertNextTuple3(0.2, 0.4, 0.6)
-    poly.GetPointData().AddArray(colours)
+        colours.InsertNextTuple3(*value)
+    if scalars:
+        poly.GetPointData().SetScalars(colours)
+    else:
+        poly.GetPointData().AddArray(colours)
     s = meshpaint.vtkPaintSurface()
     s.SetInputData(poly)
     s.SetLevel(2)
     s.Update()
+    return s
+
+
+def test_polydata_input_with_a_diffuse_array_starts_with_those_colours():
+    colours = vtk.vtkFloatArray()
+    colours.SetName("diffuse")
+    s = painted_cube_with_colours(colours, (0.2, 0.4, 0.6), scalars=False)
     diffuse = vtk_to_numpy(s.GetChannel("diffuse"))
     assert np.allclose(diffuse, [0.2, 0.4, 0.6], atol=1e-6)
     assert "took the polydata's 'diffuse' array as the diffuse channel" in s.GetImportReport(), s.GetImportReport()
 
 
 def test_polydata_byte_colours_are_reported_as_the_polydatas():
-    poly = cube_soup()
     rgb = vtk.vtkUnsignedCharArray()
     rgb.SetName("RGB")
-    rgb.SetNumberOfComponents(3)
-    for _ in range(poly.GetNumberOfPoints()):
-        rgb.InsertNextTuple3(255, 0, 0)
-    poly.GetPointData().SetScalars(rgb)
-    s = meshpaint.vtkPaintSurface()
-    s.SetInputData(poly)
-    s.SetLevel(2)
-    s.Update()
+    s = painted_cube_with_colours(rgb, (255, 0, 0), scalars=True)
     assert "took the polydata's colours as the diffuse channel" in s.GetImportReport(), s.GetImportReport()
     assert "file" not in s.GetImportReport()
 
