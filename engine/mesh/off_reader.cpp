@@ -1,6 +1,7 @@
 #include "mesh/off_reader.h"
 
 #include "core/errors.h"
+#include "core/format.h"
 
 #include <CGAL/IO/OFF/File_scanner_OFF.h> // for CGAL::File_scanner_OFF::get_indexed_color, Geomview's colour map
 #include <CGAL/IO/binary_file_io.h>       // for CGAL::I_Binary_read_big_endian_integer32, Geomview's byte order
@@ -237,13 +238,13 @@ std::string walk_binary_off(const std::string& body, const BinaryOffLayout& layo
     if (k == 1) {
       const float index = components[0];
       if (!(index >= 0 && index <= kLastMapIndex && index == std::floor(index)))
-        return face + std::to_string(f) + " has colour-map index " + std::to_string(index) +
+        return face + std::to_string(f) + " has colour-map index " + format_number(index) +
                ", not one of Geomview's map (0-148)";
       c = map_colour(int(index));
     }
     for (std::int32_t j = 0; j < k && k > 1; ++j)
       if (!(components[j] >= 0 && components[j] <= 1))
-        return face + std::to_string(f) + " has colour component " + std::to_string(components[j]) +
+        return face + std::to_string(f) + " has colour component " + format_number(components[j]) +
                ", outside 0-1";
     if (k > 1)
       c = {components[0], components[1], components[2]};

@@ -139,7 +139,7 @@ def damaged():
         ("huge-nOFF-dimension.off", off(keyword="nOFF\n4"), r"nOFF of dimension 4"),
         ("beyond-float.off", off().replace(b"\n1 1 0\n", b"\n1 1e39 0\n", 1), r"line 5: '1e39' is not a number that fits"),
         ("binary-colour-count-2.off", off_binary(face_colour=lambda k: [1, 0]), r"binary OFF face 0 has a colour count of 2"),
-        ("binary-colour-beyond-one.off", off_binary(face_colour=lambda k: [2, 0, 0]), r"face 0 has colour component 2.0+, outside 0-1"),
+        ("binary-colour-beyond-one.off", off_binary(face_colour=lambda k: [2, 0, 0]), r"face 0 has colour component 2, outside 0-1"),
         ("binary-colour-map-index-fraction.off", off_binary(face_colour=lambda k: [1.5]), r"face 0 has colour-map index 1.5"),
         ("binary-truncated.off", off_binary()[:-6], r"binary OFF face 11 runs past the end of the file"),
         ("binary-index-out-of-range.off", off_binary(faces=CUBE_TRIANGLES[:-1] + [(3, 0, 70)]),
