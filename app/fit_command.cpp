@@ -168,8 +168,8 @@ int fit_command(const Argv& argv)
   const double save_ms = t.ms();
 
   const double diagonal = fit.diagonal;
-  std::cout << "scan       " << path << ": " << grouped(scan.vertex_count()) << " vertices, "
-            << grouped(scan.face_count()) << " faces, diagonal " << diagonal << "\n";
+  std::cout << "scan       " << path << ": " << counted(scan.vertex_count(), "vertex", "vertices", true) << ", "
+            << counted(scan.face_count(), "face", "faces", true) << ", diagonal " << diagonal << "\n";
   std::cout << "base mesh  " << mode << "\n";
   std::cout << "atlas      level " << level << ", " << grouped(surface.atlas().topology().patch_count) << " patches, "
             << grouped(fit.points) << " points fitted in " << passes << " passes, " << grouped(fit.ray_misses)

@@ -18,8 +18,8 @@ std::string histogram(const std::map<int, std::size_t>& h, const std::map<int, s
   std::string out;
   for (const auto& [k, count] : h) {
     const auto it = names.find(k);
-    out += (out.empty() ? "" : ", ") + grouped(count) + " " +
-           (it != names.end() ? it->second : std::to_string(k) + "-gons");
+    const std::string one = it != names.end() ? it->second : std::to_string(k) + "-gon";
+    out += (out.empty() ? "" : ", ") + counted(count, one, one + "s", true);
   }
   return out;
 }
@@ -44,11 +44,13 @@ int info_command(const Argv& argv)
   std::ostream& os = std::cout;
 
   os << "mesh         " << path << "\n";
-  os << "counts       " << grouped(s.vertices) << " vertices, " << grouped(s.edges) << " edges, "
-     << grouped(s.faces) << " faces (" << histogram(s.faces_by_size, {{3, "triangles"}, {4, "quads"}}) << ")\n";
-  os << "topology     " << s.components << (s.components == 1 ? " component" : " components") << ", genus "
-     << s.genus << ", Euler characteristic " << s.euler_characteristic << "\n";
-  os << "boundaries   " << s.boundary_loops << " loops, " << grouped(s.boundary_edges) << " edges\n";
+  os << "counts       " << counted(s.vertices, "vertex", "vertices", true) << ", "
+     << counted(s.edges, "edge", "edges", true) << ", " << counted(s.faces, "face", "faces", true) << " ("
+     << histogram(s.faces_by_size, {{3, "triangle"}, {4, "quad"}}) << ")\n";
+  os << "topology     " << counted(s.components, "component", "components") << ", genus " << s.genus
+     << ", Euler characteristic " << s.euler_characteristic << "\n";
+  os << "boundaries   " << counted(s.boundary_loops, "loop", "loops") << ", "
+     << counted(s.boundary_edges, "edge", "edges", true) << "\n";
   std::size_t vsum = 0;
   for (const auto& [v, count] : s.valences)
     vsum += std::size_t(v) * count;
@@ -69,9 +71,9 @@ int info_command(const Argv& argv)
     std::string names;
     for (const LabelClass& c : p.labels)
       names += (names.empty() ? " (" : ", ") + std::to_string(c.id) + " " + c.name;
-    os << "project      level " << p.level << ", " << grouped(p.positions.size()) << " texels, " << p.labels.size()
-       << " labels" << (names.empty() ? "" : names + ")") << "\n";
-    os << "history      " << stroke_history(p.history).strokes.size() << " strokes\n";
+    os << "project      level " << p.level << ", " << counted(p.positions.size(), "texel", "texels", true) << ", "
+       << counted(p.labels.size(), "label", "labels") << (names.empty() ? "" : names + ")") << "\n";
+    os << "history      " << counted(stroke_history(p.history).strokes.size(), "stroke", "strokes") << "\n";
     os << "scan         "
        << (p.scan.path.empty() ? std::string("none")
                                : p.scan.path + ", " + grouped(p.scan.bytes) + " bytes, CRC-32 " + hex32(p.scan.crc32))

@@ -31,13 +31,15 @@ commands:
   bench subdivide MESH [--level L] [--json] [--repeats N] [--quiet]
                                       kernels against OpenSubdiv's CpuEvaluator (level 3)
   paint MESH --strokes S.json [--level L] [--model-level M] [--lod L] [--two-sided] [--quiet] [-o OUTDIR]
-        [--save P.meshpaint] [--labels labels.json]
-        [--screenshot OUT.png [--camera AZ,EL,ZOOM] [--size WxH]]
+        [--gltf FILE.glb|FILE.gltf] [--save P.meshpaint] [--labels labels.json]
+        [--screenshot OUT.png [--camera AZ,EL,ZOOM] [--size WxH] [--subsurface N] [--show CHANNEL]]
                                       apply a stroke script (docs/strokes.md); writes
                                       OUTDIR/surface.vtp with the paint channels, and
-                                      model.obj + model.mtl + PNG texture maps; --save:
-                                      the project to continue from; --screenshot: a
-                                      rendered picture
+                                      model.obj + model.mtl + model.gltf + PNG texture
+                                      maps; --gltf: the model as one file; --save: the
+                                      project to continue from; --screenshot: a rendered
+                                      picture (--show: which channel, --subsurface N:
+                                      N passes of subsurface scattering)
   view MESH...|PROJECT [--strokes S.json] [--level L] [--lod L] [-o DIR] [--size WxH]
                                       the painting window (docs/window.md); saves the
                                       recorded strokes and the surface into DIR
@@ -66,11 +68,12 @@ commands:
   --version                           the version of meshpaint
 
 MESH: a mesh file (.obj .off .ply .stl .vtp .vtk) or a project (.meshpaint) for info, subdivide,
-paint, view and stats
-options of demo, info, subdivide, paint, view, stats and bench: --device SEL (gpu, cpu, P:D
-or part of a name), --storage buffer|image
+  paint, view and stats
+demo, info, subdivide, paint, view, stats, fit, transfer and bench: --device SEL (gpu, cpu,
+  P:D or part of a name), --storage buffer|image
+info, subdivide, paint, view, stats and fit: --no-weld: keep coincident vertices apart
 info, paint, view and stats: --import-array NAME:CHANNEL (repeatable): the mesh file's vertex
-array NAME as a channel (diffuse, specular, roughness, displacement, label, mask)
+  array NAME as a channel (diffuse, specular, roughness, displacement, label, mask)
 )";
 
 //! The first line of each command's entry in kUsage starts with two spaces
@@ -135,11 +138,13 @@ int main(int argc, char** argv)
   capture_library_messages();
   return run_command("meshpaint", command, [&] {
     if (command == "--version") {
+      if (!rest.empty())
+        throw InputError("takes no arguments, not '" + rest.front() + "'");
       std::cout << "meshpaint " << MESHPAINT_VERSION << "\n";
       return 0;
     }
     if (command == "help" && !rest.empty()) {
-      std::cout << command_usage(rest.front());
+      std::cout << command_usage(asks_for_help(rest) ? command : rest.front());
       return 0;
     }
     if (command == "help" || command == "--help" || command == "-h") {

@@ -111,8 +111,8 @@ int stats_command(const Argv& argv)
     }
     return 0;
   }
-  std::cout << "surface    " << input.path << ": level " << level << ", " << grouped(painted.surface.points.size())
-            << " vertices, " << grouped(painted.surface.quads.size()) << " quads, area " << number(total) << "\n";
+  std::cout << "surface    " << input.path << ": level " << level << ", " << counted(painted.surface.points.size(), "vertex", "vertices", true)
+            << ", " << counted(painted.surface.quads.size(), "quad", "quads", true) << ", area " << number(total) << "\n";
   Table table({"id", "name", "vertices", "area", "area %", "centroid", "bounds min", "bounds max"});
   for (const Row& r : table_rows)
     table.add({std::to_string(r.id), r.name, grouped(r.stats ? r.stats->vertices : 0),

@@ -1,5 +1,7 @@
 #include "table.h"
 
+#include "core/format.h"
+
 #include <algorithm> // for std::max
 
 namespace meshpaint::cli {
@@ -32,10 +34,7 @@ void Table::print(std::ostream& os) const
 
 std::string grouped(unsigned long long n)
 {
-  std::string s = std::to_string(n);
-  for (int i = int(s.size()) - 3; i > 0; i -= 3)
-    s.insert(std::size_t(i), ",");
-  return s;
+  return format_grouped(n);
 }
 
 } // namespace meshpaint::cli

@@ -442,7 +442,7 @@ int vtkPaintSurface::RequestData(vtkInformation*, vtkInformationVector** inputVe
       import.arrays = in.imports;
       const meshpaint::BaseMesh mesh = meshpaint::import_polydata(input, "input", "input polygons: ", import);
       std::string report;
-      for (const auto& lines : {mesh.report.step_lines(), mesh.report.lines()})
+      for (const auto& lines : {mesh.report.step_lines("the polydata", "WeldOff()"), mesh.report.lines()})
         for (const std::string& line : lines)
           report += (report.empty() ? "" : "\n") + line;
       auto runtime = meshpaint::Runtime::open(this->Device);

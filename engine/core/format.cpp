@@ -23,6 +23,19 @@ std::string format_bytes(std::size_t bytes)
   return buf;
 }
 
+std::string format_grouped(unsigned long long n)
+{
+  std::string s = std::to_string(n);
+  for (int i = int(s.size()) - 3; i > 0; i -= 3)
+    s.insert(std::size_t(i), ",");
+  return s;
+}
+
+std::string counted(unsigned long long n, const std::string& one, const std::string& many, bool grouped)
+{
+  return (grouped ? format_grouped(n) : std::to_string(n)) + " " + (n == 1 ? one : many);
+}
+
 std::string format_fixed(double value, int digits)
 {
   char buf[64];

@@ -13,6 +13,14 @@ std::string format_bytes(std::size_t bytes);
 //! A number as printf's %g writes it: "3e+38", "0.5", "nan".
 std::string format_number(double value);
 
+//! "1,234,567": the digits in groups of three.
+std::string format_grouped(unsigned long long n);
+
+//! "1 face", "2 faces": the count and its noun in agreement (`one` for 1,
+//! `many` otherwise); with `grouped`, the digits as format_grouped() writes
+//! them.
+std::string counted(unsigned long long n, const std::string& one, const std::string& many, bool grouped = false);
+
 //! Fixed-point with `digits` decimals.
 std::string format_fixed(double value, int digits);
 

@@ -275,63 +275,60 @@ std::vector<std::string> ImportReport::lines() const
 {
   std::vector<std::string> out;
   if (faces_skipped_by_reader)
-    out.push_back("dropped " + std::to_string(faces_skipped_by_reader) +
-                  " faces the file lists but the reader could not use (repeated or missing vertices)");
+    out.push_back("dropped " + counted(faces_skipped_by_reader, "face", "faces") +
+                  " the file lists but the reader could not use (repeated or missing vertices)");
   if (degenerate_faces_dropped)
-    out.push_back("dropped " + std::to_string(degenerate_faces_dropped) +
-                  " degenerate faces (a vertex named twice, or fewer than 3 vertices)");
+    out.push_back("dropped " + counted(degenerate_faces_dropped, "degenerate face", "degenerate faces") +
+                  " (a vertex named twice, or fewer than 3 vertices)");
   if (duplicate_faces_dropped)
-    out.push_back("dropped " + std::to_string(duplicate_faces_dropped) +
-                  " duplicate faces (the corners of an earlier face, in either orientation)");
+    out.push_back("dropped " + counted(duplicate_faces_dropped, "duplicate face", "duplicate faces") +
+                  " (the corners of an earlier face, in either orientation)");
   if (nonmanifold_faces_detached)
-    out.push_back("detached " + std::to_string(nonmanifold_faces_detached) +
-                  " faces that do not join their neighbours (an edge with more than two faces, or "
+    out.push_back("detached " + counted(nonmanifold_faces_detached, "face that does", "faces that do") +
+                  " not join their neighbours (an edge with more than two faces, or "
                   "faces of opposite orientation); each keeps its own copies of its vertices");
   if (nonmanifold_vertices_split)
-    out.push_back("split " + std::to_string(nonmanifold_vertices_split) +
-                  " non-manifold vertices (one copy per extra surface sheet)");
+    out.push_back("split " + counted(nonmanifold_vertices_split, "non-manifold vertex", "non-manifold vertices") +
+                  " (one copy per extra surface sheet)");
   if (isolated_vertices_removed)
-    out.push_back("removed " + std::to_string(isolated_vertices_removed) + " vertices used by no face");
+    out.push_back("removed " + counted(isolated_vertices_removed, "vertex", "vertices") + " used by no face");
   return out;
 }
 
-std::vector<std::string> ImportReport::step_lines() const
+std::vector<std::string> ImportReport::step_lines(const std::string& source, const std::string& weld_off) const
 {
-  // "1 face", "2 faces": the count and its noun in agreement.
-  const auto count = [](std::size_t n, const std::string& one, const std::string& many) {
-    return std::to_string(n) + " " + (n == 1 ? one : many);
-  };
+  const std::string sources = source + "'s";
   std::vector<std::string> out;
   if (vertices_welded) {
     std::ostringstream t;
     t << weld_tolerance;
-    out.push_back("welded " + count(vertices_welded, "coincident vertex", "coincident vertices") + " (within " +
-                  t.str() + "; --no-weld keeps them)");
+    out.push_back("welded " + counted(vertices_welded, "coincident vertex", "coincident vertices") + " (within " +
+                  t.str() + "; " + weld_off + " keeps them)");
   }
   if (faces_flipped)
-    out.push_back("turned " + count(faces_flipped, "face", "faces") + " to agree with their neighbours");
+    out.push_back("turned " + counted(faces_flipped, "face", "faces") + " to agree with their neighbours");
   if (components_turned_outward)
     out.push_back("turned " +
-                  count(components_turned_outward, "closed component wound inwards", "closed components wound inwards") +
+                  counted(components_turned_outward, "closed component wound inwards", "closed components wound inwards") +
                   " outward");
   if (nonorientable_components)
     out.push_back("cut " +
-                  count(nonorientable_components, "non-orientable or non-manifold component",
+                  counted(nonorientable_components, "non-orientable or non-manifold component",
                         "non-orientable or non-manifold components") +
-                  " open at " + count(vertices_cut, "vertex copy", "vertex copies") + " to orient them");
-  const std::string vertices = count(array_vertices, "vertex", "vertices");
+                  " open at " + counted(vertices_cut, "vertex copy", "vertex copies") + " to orient them");
+  const std::string vertices = counted(array_vertices, "vertex", "vertices");
   if (coloured && colour_array.empty())
-    out.push_back("took the file's colours as the diffuse channel");
+    out.push_back("took " + sources + " colours as the diffuse channel");
   if (coloured && !colour_array.empty())
-    out.push_back("took the file's '" + excerpt(colour_array) + "' array as the diffuse channel (" + vertices + ")");
+    out.push_back("took " + sources + " '" + excerpt(colour_array) + "' array as the diffuse channel (" + vertices + ")");
   for (const auto& [array, channel] : channel_arrays)
-    out.push_back("took the file's '" + excerpt(array) + "' array as the " + channel + " channel (" + vertices + ")");
+    out.push_back("took " + sources + " '" + excerpt(array) + "' array as the " + channel + " channel (" + vertices + ")");
   if (!label_array.empty())
-    out.push_back("took the file's '" + excerpt(label_array) + "' array as the label channel (" +
-                  count(label_classes, "class", "classes") + ")");
+    out.push_back("took " + sources + " '" + excerpt(label_array) + "' array as the label channel (" +
+                  counted(label_classes, "class", "classes") + ")");
   if (named_label_classes)
-    out.push_back("took the names and colours of " + count(named_label_classes, "label class", "label classes") +
-                  " from the file");
+    out.push_back("took the names and colours of " + counted(named_label_classes, "label class", "label classes") +
+                  " from " + source);
   return out;
 }
 
@@ -515,7 +512,11 @@ PolygonSoup read_through_openmesh(const std::string& path, const std::string& ex
   PolyMesh om;
   om.request_vertex_colors();
   SoupImporter importer(om);
-  OpenMesh::IO::Options options = OpenMesh::IO::Options::VertexColor;
+  // STL has no vertex colours, but OpenMesh's STL reader leaves the request
+  // standing in the options as if the file had them: ask only other formats.
+  OpenMesh::IO::Options options;
+  if (ext != ".stl")
+    options += OpenMesh::IO::Options::VertexColor;
   if (census.binary)
     options += OpenMesh::IO::Options::Binary;
   bool ok = false;
@@ -589,9 +590,13 @@ PolygonSoup read_mesh_file(const std::string& path)
     throw InputError("'" + path + "' is empty");
 
   const std::string where = "'" + path + "': ";
-  if (ext == ".off" && !binary_off(path)) {
+  if (ext == ".off") {
     try {
-      return read_off_text(path);
+      if (!binary_off(path))
+        return read_off_text(path);
+      PolygonSoup soup;
+      if (read_off_binary(path, soup))
+        return soup;
     } catch (const InputError& e) {
       throw InputError(where + e.what());
     }

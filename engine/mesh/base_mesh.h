@@ -41,8 +41,11 @@ struct ImportReport
   //! One line per repair, e.g. "removed 2 vertices used by no face".
   std::vector<std::string> lines() const;
   //! One line per import step that did something, e.g. "welded 960
-  //! coincident vertices (tolerance 1e-05)".
-  std::vector<std::string> step_lines() const;
+  //! coincident vertices (within 1e-05; --no-weld keeps them)". `source`
+  //! names where the mesh came from ("the file", "the polydata"), `weld_off`
+  //! the switch that keeps coincident vertices apart.
+  std::vector<std::string> step_lines(const std::string& source = "the file",
+                                      const std::string& weld_off = "--no-weld") const;
 };
 
 //! Polygons as a flat index list. Valid by construction: at least one face,

@@ -1,14 +1,20 @@
 #include "mesh/off_reader.h"
 
 #include "core/errors.h"
+#include "core/format.h"
 
 #include <CGAL/IO/OFF/File_scanner_OFF.h> // for CGAL::File_scanner_OFF::get_indexed_color, Geomview's colour map
+#include <CGAL/IO/binary_file_io.h>       // for CGAL::I_Binary_read_big_endian_integer32, Geomview's byte order
 
+#include <cctype>  // for std::isdigit
 #include <cerrno>  // for errno, ERANGE
 #include <cmath>   // for std::isfinite, std::fabs
+#include <cstdint> // for std::int32_t
 #include <cstdlib> // for std::strtod, std::strtol
 #include <fstream> // for std::ifstream
+#include <iterator> // for std::istreambuf_iterator
 #include <sstream> // for std::istringstream
+#include <type_traits> // for std::is_same_v, std::decay_t
 
 namespace meshpaint {
 namespace {
@@ -147,7 +153,156 @@ Vec3 colour_of(const OffLines& lines, const std::vector<std::string>& w, std::si
   return c;
 }
 
+//! The last index of Geomview's colour map.
+constexpr int kLastMapIndex = 148;
+
+Vec3 map_colour(int index)
+{
+  const auto& m = CGAL::File_scanner_OFF::get_indexed_color(index);
+  return {float(m.red() / 255.0), float(m.green() / 255.0), float(m.blue() / 255.0)};
+}
+
+//! One way to lay out a binary OFF body after the header line: 32-bit
+//! integers and floats in either byte order, each face's vertex indices
+//! followed by a colour count and that many floats (Geomview) or by nothing
+//! (what OpenMesh writes, little-endian).
+struct BinaryOffLayout
+{
+  bool big_endian;
+  bool colour_counts;
+  const char* name;
+};
+
+//! Reads `body` as `layout` lays it out into `soup`. Returns the problem,
+//! empty when the body is exactly its counts, vertices and faces; `reached`
+//! is how far it read before the problem.
+std::string walk_binary_off(const std::string& body, const BinaryOffLayout& layout, PolygonSoup& soup,
+                            std::size_t& reached)
+{
+  std::istringstream in(body, std::ios::binary);
+  // One 32-bit integer or float in the layout's byte order.
+  const auto read = [&](auto& v) {
+    if (!layout.big_endian)
+      in.read(reinterpret_cast<char*>(&v), 4);
+    else if constexpr (std::is_same_v<std::decay_t<decltype(v)>, float>)
+      CGAL::I_Binary_read_big_endian_float32(in, v);
+    else
+      CGAL::I_Binary_read_big_endian_integer32(in, v);
+    if (in)
+      reached = std::size_t(in.tellg());
+    return bool(in);
+  };
+  std::int32_t nv = 0, nf = 0, ne = 0;
+  if (!read(nv) || !read(nf) || !read(ne))
+    return "the binary OFF counts are truncated";
+  // 12 bytes a vertex, at least 8 a face.
+  if (nv < 0 || nf < 0 || 12.0 * nv + 8.0 * nf > double(body.size()))
+    return "the binary OFF declares " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
+           " faces, more than its " + std::to_string(body.size()) + " bytes can hold";
+  soup.points.resize(std::size_t(nv));
+  for (std::int32_t v = 0; v < nv; ++v)
+    for (float& x : soup.points[std::size_t(v)]) {
+      if (!read(x))
+        return "the binary OFF vertices run past the end of the file";
+      if (!std::isfinite(x))
+        return "binary OFF vertex " + std::to_string(v) + " has a non-finite coordinate";
+    }
+  const std::string face = "binary OFF face ";
+  bool any_colour = false;
+  std::vector<Vec3> face_colours;
+  for (std::int32_t f = 0; f < nf; ++f) {
+    std::int32_t n = 0;
+    if (!read(n))
+      return face + std::to_string(f) + " runs past the end of the file";
+    if (n < 1 || n > nv)
+      return face + std::to_string(f) + " has " + std::to_string(n) + " corners, but there are only " +
+             std::to_string(nv) + " vertices";
+    std::vector<int> corners(static_cast<std::size_t>(n));
+    for (int& index : corners) {
+      if (!read(index))
+        return face + std::to_string(f) + " runs past the end of the file";
+      if (index < 0 || index >= nv)
+        return face + std::to_string(f) + " names vertex " + std::to_string(index) + ", but there are only " +
+               std::to_string(nv) + " vertices";
+    }
+    Vec3 c{0.5f, 0.5f, 0.5f};
+    std::int32_t k = 0;
+    if (layout.colour_counts && !read(k))
+      return face + std::to_string(f) + " runs past the end of the file";
+    if (k != 0 && k != 1 && k != 3 && k != 4)
+      return face + std::to_string(f) + " has a colour count of " + std::to_string(k) + " (0, 1, 3 or 4)";
+    float components[4] = {};
+    for (std::int32_t j = 0; j < k; ++j)
+      if (!read(components[j]))
+        return face + std::to_string(f) + " runs past the end of the file";
+    if (k == 1) {
+      const float index = components[0];
+      if (!(index >= 0 && index <= kLastMapIndex && index == std::floor(index)))
+        return face + std::to_string(f) + " has colour-map index " + format_number(index) +
+               ", not one of Geomview's map (0-148)";
+      c = map_colour(int(index));
+    }
+    for (std::int32_t j = 0; j < k && k > 1; ++j)
+      if (!(components[j] >= 0 && components[j] <= 1))
+        return face + std::to_string(f) + " has colour component " + format_number(components[j]) +
+               ", outside 0-1";
+    if (k > 1)
+      c = {components[0], components[1], components[2]};
+    any_colour = any_colour || k > 0;
+    face_colours.push_back(c);
+    soup.faces.push_back(std::move(corners));
+  }
+  if (in.peek() != std::char_traits<char>::eof())
+    return "the binary OFF has " + std::to_string(body.size() - reached) + " bytes after the " +
+           std::to_string(nf) + " faces its counts declare";
+  if (any_colour)
+    soup.face_colours = std::move(face_colours);
+  return {};
+}
+
 } // namespace
+
+bool read_off_binary(const std::string& path, PolygonSoup& soup)
+{
+  std::ifstream file(path, std::ios::binary);
+  if (!file)
+    throw IOError("cannot read '" + path + "'");
+  std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::size_t eol = bytes.find('\n');
+  std::string header = bytes.substr(0, eol);
+  if (!header.empty() && header.back() == '\r')
+    header.pop_back();
+  if (eol == std::string::npos || header != "OFF BINARY")
+    return false; // the census names what is wrong with the header
+  const std::string body = bytes.substr(eol + 1);
+
+  static const BinaryOffLayout layouts[] = {
+    {false, false, "OpenMesh's (little-endian, nothing after each face's indices)"},
+    {true, true, "Geomview's (big-endian, a colour count after each face's indices)"},
+    {false, true, "Geomview's little-endian (a colour count after each face's indices)"}};
+  PolygonSoup read[3];
+  std::string problem[3], names;
+  std::size_t reached[3] = {0, 0, 0};
+  int whole = 0, best = 0;
+  for (int l = 0; l < 3; ++l) {
+    problem[l] = walk_binary_off(body, layouts[l], read[l], reached[l]);
+    if (problem[l].empty()) {
+      names += std::string(whole++ ? " and " : "") + layouts[l].name;
+      best = l;
+    } else if (reached[l] > reached[best] && !problem[best].empty()) {
+      best = l;
+    }
+  }
+  if (whole > 1)
+    throw InputError("the binary OFF reads whole in more than one layout, " + names +
+                     ": ambiguous (write it as text OFF)");
+  if (best == 0)
+    return false; // OpenMesh's own layout, which OpenMesh reads (and the census checks)
+  if (!problem[best].empty())
+    throw InputError(problem[best]);
+  soup = std::move(read[best]);
+  return true;
+}
 
 PolygonSoup read_off_text(const std::string& path)
 {
@@ -157,9 +312,15 @@ PolygonSoup read_off_text(const std::string& path)
     throw InputError("has no OFF keyword and no counts");
   OffHeader h;
   std::size_t at = 0; // first unread word of w
+  const std::size_t off = w[0].find("OFF");
   if (parse_keyword(w[0], h)) {
     at = 1;
-  } else if (w[0].find("OFF") != std::string::npos) {
+  } else if (off != std::string::npos && off + 3 < w[0].size() && std::isdigit(static_cast<unsigned char>(w[0][off + 3])) &&
+             parse_keyword(w[0].substr(0, off + 3), h)) {
+    // ModelNet's files run the first count into the keyword: "OFF490 518 0".
+    w.insert(w.begin() + 1, w[0].substr(off + 3));
+    at = 1;
+  } else if (off != std::string::npos) {
     lines.fail(shown(w[0]) + " is not an OFF keyword ([ST][C][N][4][n]OFF)");
   } // Geomview's keyword is optional: the counts may come first.
   if (at < w.size() && w[at] == "BINARY")
@@ -257,10 +418,9 @@ PolygonSoup read_off_text(const std::string& path)
     Vec3 c{0.5f, 0.5f, 0.5f};
     if (extra == 1) {
       const long index = integer(lines, w[first], "a colour-map index");
-      if (index > 148)
+      if (index > kLastMapIndex)
         lines.fail("colour-map index " + w[first] + " is beyond Geomview's map (0-148)");
-      const auto& m = CGAL::File_scanner_OFF::get_indexed_color(int(index));
-      c = {float(m.red() / 255.0), float(m.green() / 255.0), float(m.blue() / 255.0)};
+      c = map_colour(int(index));
     } else if (extra == 3 || extra == 4) {
       c = colour_of(lines, w, first, extra, false);
     } else if (extra != 0) {

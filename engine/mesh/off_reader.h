@@ -1,5 +1,5 @@
-// Text OFF as Geomview defines it, read strictly: every number checked and
-// every problem named by its line.
+// OFF as Geomview defines it, read strictly: every number checked and every
+// problem named by its line (text) or face (binary).
 #pragma once
 
 #include "mesh/polygon_soup.h"
@@ -20,5 +20,17 @@ namespace meshpaint {
 //! number, an index out of range, a count the file does not hold, or a body
 //! that does not match its counts.
 PolygonSoup read_off_text(const std::string& path);
+
+//! Reads a binary OFF file (first line 'OFF BINARY') laid out as Geomview
+//! defines it: 32-bit big-endian counts, vertex floats and face integers,
+//! each face's vertex indices followed by a colour count (0, 1, 3 or 4) and
+//! that many floats (a colour-map index or RGB[A] 0-1), which become the
+//! face colours; also little-endian. Returns false, reading nothing, when
+//! the file is laid out as OpenMesh writes it (little-endian, nothing after
+//! each face's indices) or its header is not 'OFF BINARY': OpenMesh's
+//! reader and the census take those.
+//! \throw InputError when the body fits no layout, naming the face or
+//! vertex where the closest one fails, or fits more than one (ambiguous).
+bool read_off_binary(const std::string& path, PolygonSoup& soup);
 
 } // namespace meshpaint

@@ -79,6 +79,19 @@ def off(points=CUBE_POINTS, faces=CUBE_QUADS, keyword="OFF", face_extra=None, ve
     return ("\n".join(lines) + "\n").encode()
 
 
+def off_binary(points=CUBE_POINTS, faces=CUBE_TRIANGLES, byte_order=">", face_colour=lambda k: []):
+    """'OFF BINARY': Geomview's layout ('>', a colour count and that many floats
+    after each face's indices), or OpenMesh's (face_colour=None, little-endian)."""
+    body = struct.pack(f"{byte_order}3i", len(points), len(faces), 0)
+    body += b"".join(struct.pack(f"{byte_order}3f", *p) for p in points)
+    for k, f in enumerate(faces):
+        body += struct.pack(f"{byte_order}{len(f) + 1}i", len(f), *f)
+        if face_colour is not None:
+            c = face_colour(k)
+            body += struct.pack(f"{byte_order}i{len(c)}f", len(c), *c)
+    return b"OFF BINARY\n" + body
+
+
 def soup_of(points, faces):
     """Every face with its own copies of its vertices, as many exporters write."""
     pts, fs = [], []
@@ -125,6 +138,12 @@ def damaged():
         ("colour-out-of-range.off", off(face_extra=lambda k: "300 0 0"), r"colour component '300' is outside 0-255"),
         ("huge-nOFF-dimension.off", off(keyword="nOFF\n4"), r"nOFF of dimension 4"),
         ("beyond-float.off", off().replace(b"\n1 1 0\n", b"\n1 1e39 0\n", 1), r"line 5: '1e39' is not a number that fits"),
+        ("binary-colour-count-2.off", off_binary(face_colour=lambda k: [1, 0]), r"binary OFF face 0 has a colour count of 2"),
+        ("binary-colour-beyond-one.off", off_binary(face_colour=lambda k: [2, 0, 0]), r"face 0 has colour component 2, outside 0-1"),
+        ("binary-colour-map-index-fraction.off", off_binary(face_colour=lambda k: [1.5]), r"face 0 has colour-map index 1.5"),
+        ("binary-truncated.off", off_binary()[:-6], r"binary OFF face 11 runs past the end of the file"),
+        ("binary-index-out-of-range.off", off_binary(faces=CUBE_TRIANGLES[:-1] + [(3, 0, 70)]),
+         r"binary OFF face 11 names vertex 70"),
         ("colour-beyond-one.obj", obj(colours=[(2, 0, 0)] * 8), r"line [0-9]+: colour '2' is outside 0-1"),
         ("float-colour-beyond-one.ply", ply_ascii(colours=[(2.5, 0, 0)] * 8).replace(b"uchar", b"float").replace(
             b"property list float int", b"property list uchar int"), r"line [0-9]+: colour red '2.5' is outside 0-1"),
@@ -141,6 +160,8 @@ def valid():
         ("comments-and-blanks.off", b"# written by hand\n\n" + off().replace(b"\n", b"\n\n# a comment\n", 3)),
         ("keyword-with-counts.off", off(keyword="OFF 8 6 0", counts="")),
         ("no-edge-count.off", off(counts="8 6")),
+        ("keyword-run-into-counts.off", off(keyword="OFF8 6 0", counts="")),
+        ("coff-keyword-run-into-counts.off", off(keyword="COFF8 6 0", counts="", vertex_extra=lambda i: " ".join(f"{c:g}" for c in unit[i]))),
         ("coff.off", off(keyword="COFF", vertex_extra=lambda i: " ".join(f"{c:g}" for c in unit[i]) + " 1")),
         ("noff.off", off(keyword="NOFF", vertex_extra=lambda i: "0 0 1")),
         ("stoff.off", off(keyword="STOFF", vertex_extra=lambda i: "0.5 0.5")),
@@ -150,6 +171,11 @@ def valid():
         ("face-colour-index.off", off(face_extra=lambda k: str(k))),
         ("face-colour-rgb-int.off", off(face_extra=lambda k: "255 0 0")),
         ("face-colour-rgba-float.off", off(face_extra=lambda k: "0.1 0.8 0.2 0.75")),
+        ("geomview-binary.off", off_binary()),
+        ("geomview-binary-little-endian.off", off_binary(byte_order="<")),
+        ("geomview-binary-face-colours.off", off_binary(face_colour=lambda k: [[k % 149], [], [1, 0, 0], [0, 1, 0, 1]][k % 4])),
+        ("geomview-binary-red-faces.off", off_binary(face_colour=lambda k: [1, 0, 0])),
+        ("openmesh-binary.off", off_binary(byte_order="<", face_colour=None)),
         ("bom.obj", b"\xef\xbb\xbf" + obj()),
         ("vertex-colours.obj", obj(colours=unit)),
         ("uint-list.ply", ply_ascii(list_type="uint int")),

@@ -3,6 +3,7 @@ for what the libraries print, low memory and hostile values.
 
 Run by CTest with MESHPAINT_BIN (the executable) and MESHPAINT_SOURCE_DIR set.
 """
+import glob
 import json
 import os
 import re
@@ -55,6 +56,43 @@ def test_help_after_other_arguments_and_help_command():
         r = run(*args)
         assert r.returncode == 0 and r.stdout.startswith("usage: meshpaint COMMAND"), r.stderr
         assert "--version" in r.stdout
+
+
+@pytest.mark.parametrize("flag", ["--help", "-h"])
+def test_help_command_help_prints_its_usage(flag):
+    r = run("help", flag)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.startswith("usage: meshpaint help [COMMAND]"), r.stdout
+
+
+def test_version_with_an_argument_is_an_error():
+    r = run("--version", "extra")
+    assert r.returncode == 2 and r.stdout == ""
+    assert "'extra'" in one_line(r)
+
+
+def parsed_options():
+    """Each command's options as app/ parses them: Args args("NAME", argv, {flags}, {options})."""
+    found = {}
+    for path in glob.glob(os.path.join(SOURCE, "app", "*_command.cpp")):
+        with open(path) as f:
+            text = f.read()
+        for m in re.finditer(r'Args args\("(\w+)", argv, \{([^}]*)\},\s*\{([^}]*)\}', text):
+            found[m.group(1)] = re.findall(r'"(-[-\w]+)"', m.group(2) + m.group(3))
+    return found
+
+
+def test_each_command_usage_lists_every_option_it_takes():
+    options = parsed_options()
+    assert {"paint", "fit", "transfer", "info"} <= set(options), options
+    for command, taken in options.items():
+        usage = run(command, "--help").stdout
+        entry, footer = usage.split("\n\n", 1)
+        # A footer entry starts in the first column and names its commands before its first colon.
+        notes = [e for e in re.split(r"\n(?=\S)", footer) if re.search(rf"\b{command}\b", e.split(":")[0])]
+        for option in taken:
+            assert re.search(rf"{option}\b", entry + "\n".join(notes)), (command, option, usage)
+    assert "model.gltf" in run("paint", "--help").stdout
 
 
 def test_help_of_an_unknown_command_is_an_error():

@@ -119,11 +119,12 @@ def diffuse_of(tmp_path, mesh, *flags):
     return poly, numpy_support.vtk_to_numpy(poly.GetPointData().GetArray("diffuse"))
 
 
-@pytest.mark.parametrize("name", ["coff.off", "face-colour-rgb-int.off", "vertex-colours.obj", "uchar-colours.ply"])
+@pytest.mark.parametrize("name", ["coff.off", "face-colour-rgb-int.off", "geomview-binary-red-faces.off",
+                                  "vertex-colours.obj", "uchar-colours.ply"])
 def test_file_colours_arrive_in_the_diffuse_channel(tmp_path, name):
     data = dict(mesh_inputs.valid())[name]
     poly, diffuse = diffuse_of(tmp_path, write(tmp_path, name, data))
-    if name == "face-colour-rgb-int.off":  # every face red
+    if "red" in name or name == "face-colour-rgb-int.off":  # every face red
         assert abs(diffuse[:, 0].min() - 1) < 1e-5 and abs(diffuse[:, 1:]).max() < 1e-5
     else:  # each corner of the cube its own colour: the surface there is nearest to it
         import numpy as np
@@ -155,6 +156,37 @@ def test_vtk_written_ply_colours_arrive_in_the_diffuse_channel(tmp_path):
     out, diffuse = diffuse_of(tmp_path, str(tmp_path / "sphere.ply"))
     z = numpy_support.vtk_to_numpy(out.GetPoints().GetData())[:, 2]
     assert diffuse[z > 0.3, 0].min() > 0.9 and diffuse[z < -0.3, 2].min() > 0.9
+
+
+def test_counts_of_one_are_singular(tmp_path):
+    quad = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (5, 5, 5)]  # the last vertex used by no face
+    r = run("info", write(tmp_path, "quad.off", mesh_inputs.off(points=quad, faces=[(0, 1, 2, 3)])))
+    assert r.returncode == 0, r.stderr
+    assert "4 vertices, 4 edges, 1 face (1 quad)\n" in r.stdout, r.stdout
+    assert "boundaries   1 loop, 4 edges\n" in r.stdout, r.stdout
+    assert "removed 1 vertex used by no face" in r.stdout, r.stdout
+
+
+@pytest.mark.parametrize("binary", [False, True], ids=["ascii", "binary"])
+def test_stl_gets_the_uniform_default_diffuse(tmp_path, binary):
+    """STL carries no colours: nothing may be taken as the file's colours."""
+    sphere = vtk.vtkSphereSource()
+    sphere.Update()
+    w = vtk.vtkSTLWriter()
+    w.SetFileName(str(tmp_path / "sphere.stl"))
+    w.SetInputData(sphere.GetOutput())
+    if binary:
+        w.SetFileTypeToBinary()
+    else:
+        w.SetFileTypeToASCII()
+    w.Write()
+    strokes = tmp_path / "none.json"
+    strokes.write_text('{"strokes": []}')
+    r = run("paint", str(tmp_path / "sphere.stl"), "--strokes", str(strokes), "--level", "1", "-o", str(tmp_path / "out"))
+    assert r.returncode == 0, r.stderr
+    assert "colours" not in r.stderr, r.stderr
+    diffuse = numpy_support.vtk_to_numpy(read_vtp(tmp_path / "out" / "surface.vtp").GetPointData().GetArray("diffuse"))
+    assert (diffuse == diffuse[0]).all(), diffuse[:4]
 
 
 @pytest.mark.parametrize("writer", ["stl", "obj", "off-soup"])

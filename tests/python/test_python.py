@@ -325,6 +325,7 @@ def test_polydata_input_goes_through_the_import_steps():
     s.Update()
     report = s.GetImportReport()
     assert "welded 16 coincident vertices" in report, report
+    assert "WeldOff() keeps them" in report and "--no-weld" not in report, report
     assert "turned 1 closed component wound inwards outward" in report, report
     out = s.GetOutput()
     welded_points = out.GetNumberOfPoints()
@@ -378,7 +379,7 @@ def test_polydata_label_array_becomes_the_label_channel():
     s.SetInputData(labelled_cube(classes=False))
     s.SetLevel(2)
     s.Update()
-    assert "took the file's 'label' array as the label channel (2 classes)" in s.GetImportReport()
+    assert "took the polydata's 'label' array as the label channel (2 classes)" in s.GetImportReport()
     out = s.GetOutput()
     label = vtk_to_numpy(out.GetPointData().GetArray("label"))
     z = vtk_to_numpy(out.GetPoints().GetData())[:, 2]
@@ -386,20 +387,38 @@ def test_polydata_label_array_becomes_the_label_channel():
     assert (label[z > z.max() - 0.05] == 5).all() and (label[z < z.min() + 0.05] == 2).all()
 
 
-def test_polydata_input_with_a_diffuse_array_starts_with_those_colours():
+def painted_cube_with_colours(colours, value, scalars):
+    """A surface at level 2 on the cube soup whose every point has colour `value` in `colours`."""
     poly = cube_soup()
-    colours = vtk.vtkFloatArray()
-    colours.SetName("diffuse")
     colours.SetNumberOfComponents(3)
     for _ in range(poly.GetNumberOfPoints()):
-        colours.InsertNextTuple3(0.2, 0.4, 0.6)
-    poly.GetPointData().AddArray(colours)
+        colours.InsertNextTuple3(*value)
+    if scalars:
+        poly.GetPointData().SetScalars(colours)
+    else:
+        poly.GetPointData().AddArray(colours)
     s = meshpaint.vtkPaintSurface()
     s.SetInputData(poly)
     s.SetLevel(2)
     s.Update()
+    return s
+
+
+def test_polydata_input_with_a_diffuse_array_starts_with_those_colours():
+    colours = vtk.vtkFloatArray()
+    colours.SetName("diffuse")
+    s = painted_cube_with_colours(colours, (0.2, 0.4, 0.6), scalars=False)
     diffuse = vtk_to_numpy(s.GetChannel("diffuse"))
     assert np.allclose(diffuse, [0.2, 0.4, 0.6], atol=1e-6)
+    assert "took the polydata's 'diffuse' array as the diffuse channel" in s.GetImportReport(), s.GetImportReport()
+
+
+def test_polydata_byte_colours_are_reported_as_the_polydatas():
+    rgb = vtk.vtkUnsignedCharArray()
+    rgb.SetName("RGB")
+    s = painted_cube_with_colours(rgb, (255, 0, 0), scalars=True)
+    assert "took the polydata's colours as the diffuse channel" in s.GetImportReport(), s.GetImportReport()
+    assert "file" not in s.GetImportReport()
 
 
 def label_classes(s):
@@ -418,7 +437,7 @@ def test_polydata_label_field_data_gives_the_label_classes(tmp_path):
     s.Update()
     expected = [(2, "shaft", (1.0, 0.0, 0.0)), (5, "head", (0.0, 0.0, 1.0)), (9, "unused", (0.0, 1.0, 0.0))]
     assert label_classes(s) == expected
-    assert "took the names and colours of 3 label classes from the file" in s.GetImportReport()
+    assert "took the names and colours of 3 label classes from the polydata" in s.GetImportReport()
     # ExportModel and SaveProject carry them; the exported surface read back gives them again.
     s.ExportModel(tmp_path / "out")
     r = vtk.vtkXMLPolyDataReader()
@@ -465,8 +484,8 @@ def test_polydata_float_arrays_become_channels():
     s.AddImportArray("Curvature", "mask")
     s.Update()
     report = s.GetImportReport()
-    assert "took the file's 'roughness' array as the roughness channel (24 vertices)" in report, report
-    assert "took the file's 'Curvature' array as the mask channel (24 vertices)" in report, report
+    assert "took the polydata's 'roughness' array as the roughness channel (24 vertices)" in report, report
+    assert "took the polydata's 'Curvature' array as the mask channel (24 vertices)" in report, report
     out_z = vtk_to_numpy(s.GetOutput().GetPoints().GetData())[:, 2]
     assert np.corrcoef(out_z, vtk_to_numpy(s.GetChannel("roughness")))[0, 1] > 0.95
     assert np.corrcoef(out_z, vtk_to_numpy(s.GetChannel("mask")))[0, 1] < -0.95

@@ -71,6 +71,8 @@ def test_other_ranged_settings_raise_instead_of_clamping():
     v = meshpaint.vtkPaintView()
     with pytest.raises(meshpaint.Error, match="Level must be from 1 to 12, not 0"):
         v.SetLevel(0)
+    with pytest.raises(meshpaint.Error, match=r"^UndoBudget must be from 0 to 1,000,000,000, not -0.5$"):
+        v.SetUndoBudget(-0.5)
 
 
 def test_a_script_level_conflicting_with_set_level_raises():

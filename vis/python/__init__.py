@@ -38,6 +38,13 @@ def _quiet(obj):
         obj._meshpaint_quiet = True
 
 
+def _shown(value):
+    """A number as a person writes it: 0 for 0.0, 1,000,000,000 for 1e9, 0.5."""
+    if isinstance(value, float) and value.is_integer() and abs(value) < 1e15:
+        value = int(value)
+    return "{:,}".format(value) if isinstance(value, int) else "%g" % value
+
+
 def _refusing_out_of_range(cls):
     """Makes every setter of a ranged property (VTK's clamping setters, which have
     GetXMinValue/GetXMaxValue) raise Error for a value outside the range instead
@@ -54,7 +61,7 @@ def _refusing_out_of_range(cls):
             low = getattr(self, "Get%sMinValue" % _prop)()
             high = getattr(self, "Get%sMaxValue" % _prop)()
             if not low <= value <= high:
-                raise Error("%s must be from %s to %s, not %s" % (_prop, low, high, value))
+                raise Error("%s must be from %s to %s, not %s" % (_prop, _shown(low), _shown(high), _shown(value)))
             _base(self, value)
 
         checked.__doc__ = base.__doc__
