@@ -26,6 +26,7 @@
 #include "paint/paint_surface.h"        // for meshpaint::PaintSurface
 #include "project/imported_channels.h"   // for meshpaint::apply_imported_channels
 #include "project/imported_labels.h"   // for meshpaint::apply_imported_labels
+#include "project/labels.h"            // for meshpaint::load_labels
 #include "project/project_surface.h"    // for meshpaint::capture_surface, reference_surface, stroke_history
 #include "RasterIO.h"                   // for meshpaint::load_stroke_rasters
 
@@ -171,6 +172,12 @@ void StudioWindow::build_menus()
     if (!out.isEmpty())
       fit_scan(scan, out.endsWith(".meshpaint") ? out : out + ".meshpaint");
   });
+  file->addAction("Load label &classes...", [this] {
+    const QString path = QFileDialog::getOpenFileName(this, "Label classes", QString(),
+                                                      "Labels files (*.json);;All files (*)");
+    if (!path.isEmpty())
+      load_label_classes(path);
+  });
   recent_ = file->addMenu("Open &recent");
   fill_recent();
   file->addSeparator();
@@ -191,7 +198,7 @@ void StudioWindow::build_menus()
   }));
   surface_actions_.push_back(file->addAction("Export the &labelled scan...", [this] {
     const QString scan = QFileDialog::getOpenFileName(this, "The scan to label", QString(),
-                                                      "Scans (*.obj *.off *.ply *.stl *.vtp);;All files (*)");
+                                                      "Scans (*.obj *.off *.ply *.stl *.vtp *.vtk);;All files (*)");
     if (scan.isEmpty())
       return;
     const QString out = QFileDialog::getSaveFileName(this, "The labelled scan to write", QString(),
@@ -257,6 +264,19 @@ bool StudioWindow::open_path(const QString& path)
   add_recent(info.absoluteFilePath());
   setWindowTitle("meshpaint - " + info.fileName());
   borders_of_.clear(); // other surfaces: new lines
+  view_changed();
+  return true;
+}
+
+bool StudioWindow::load_label_classes(const QString& path)
+{
+  try {
+    view_->SetLabelClasses(load_labels(path.toStdString()));
+  } catch (const std::exception& e) {
+    statusBar()->showMessage(e.what(), 10000);
+    return false;
+  }
+  statusBar()->showMessage(QString("label classes from %1: %2").arg(path).arg(view_->GetNumberOfLabelClasses()), 10000);
   view_changed();
   return true;
 }
