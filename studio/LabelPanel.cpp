@@ -1,4 +1,5 @@
 #include "LabelPanel.h"
+#include "ViewPixel.h"
 
 #include "BrushSettings.h"  // for meshpaint::BrushSettings
 #include "ChannelDisplay.h" // for meshpaint::label_colour, unnamed_label_class
@@ -387,9 +388,8 @@ bool LabelPanel::eventFilter(QObject* watched, QEvent* event)
   if (m->button() != Qt::LeftButton)
     return QWidget::eventFilter(watched, event);
   if (press) {
-    // VTK's display pixels: device pixels, origin bottom left.
-    const double scale = render_->devicePixelRatioF();
-    const int x = int(m->pos().x() * scale), y = int((render_->height() - m->pos().y() - 1) * scale);
+    const QPoint at = view_pixel(render_, m);
+    const int x = at.x(), y = at.y();
     if (fill_->isChecked()) {
       view_->FillAt(x, y);
     } else {

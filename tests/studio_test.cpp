@@ -7,6 +7,7 @@
 // window opens.
 
 #include "BackgroundTask.h"
+#include "BrushPanel.h"
 #include "BrushSettings.h"
 #include "FitDialog.h"
 #include "HistoryPanel.h"
@@ -24,6 +25,7 @@
 #include "paint/paint_surface.h"
 #include "project/project.h"
 
+#include <QAbstractSpinBox>         // for QAbstractSpinBox
 #include <QApplication>             // for QApplication
 #include <QCheckBox>                // for QCheckBox
 #include <QComboBox>                // for QComboBox
@@ -621,6 +623,50 @@ private Q_SLOTS:
     QVERIFY2(QFile::exists(out), qPrintable(dialog->log()));
     QTRY_VERIFY(view->GetProject() != nullptr);
     QVERIFY(dialog->log().contains("saved"));
+  }
+
+  void the_colour_panels_eyedropper_takes_the_colour_under_a_click()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("session"));
+    drag(w->render_widget(), {0.4, 0.45}, {0.6, 0.55}); // red
+    w->brush_panel()->set_colour(QColor::fromRgbF(0.0, 0.0, 1.0));
+    view->GetBrush()->set_tool("label"); // the colour's eyedropper picks a colour all the same
+    QPushButton* eyedropper = w->brush_panel()->eyedropper();
+    QTest::mouseClick(eyedropper, Qt::LeftButton);
+    QVERIFY(eyedropper->isChecked());
+    const QPoint centre(w->render_widget()->width() / 2, w->render_widget()->height() / 2);
+    mouse(w->render_widget(), QEvent::MouseButtonPress, centre, Qt::LeftButton, Qt::LeftButton);
+    mouse(w->render_widget(), QEvent::MouseButtonRelease, centre, Qt::LeftButton, Qt::NoButton);
+    QVERIFY(!eyedropper->isChecked());
+    QCOMPARE(int(view->GetScene().history().size()), 1); // the click painted nothing
+    QCOMPARE(QString::fromStdString(view->GetBrush()->tool()), QString("paint"));
+    const std::array<double, 3> c = view->GetBrush()->colour();
+    QVERIFY2(c[0] > 0.8 && c[2] < 0.2, qPrintable(QString("%1 %2 %3").arg(c[0]).arg(c[1]).arg(c[2])));
+  }
+
+  void the_views_keys_work_after_a_click_on_a_panel()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("session"));
+    const std::string before = view->GetBrush()->tool();
+    // A button of the panels has the focus: t still changes the tool.
+    QPushButton* swatch = w->brush_panel()->findChild<QPushButton*>("swatch_3");
+    swatch->setFocus();
+    QTest::keyClick(swatch, Qt::Key_T);
+    QVERIFY(view->GetBrush()->tool() != before);
+    // The label table, not editing: v shows the next channel.
+    const std::string shown = view->GetShownChannel();
+    QTest::keyClick(w->label_panel()->table(), Qt::Key_V);
+    QVERIFY(view->GetShownChannel() != shown);
+    // A number field keeps what is typed into it.
+    const std::string tool = view->GetBrush()->tool();
+    auto* spin = w->brush_panel()->findChild<QAbstractSpinBox*>();
+    QVERIFY(spin);
+    QTest::keyClick(spin, Qt::Key_T);
+    QCOMPARE(view->GetBrush()->tool(), tool);
   }
 
   void the_fit_log_shows_whole_lines()
