@@ -8,6 +8,7 @@
 
 #include "BackgroundTask.h"
 #include "BrushPanel.h"
+#include "ChannelDisplay.h"
 #include "BrushSettings.h"
 #include "FitDialog.h"
 #include "HistoryPanel.h"
@@ -1055,6 +1056,12 @@ private Q_SLOTS:
     QCOMPARE(table->item(0, 3)->text(), QString("label 9"));
     QVERIFY(table->item(0, 5)->text().toDouble() > 0.0);
     QCOMPARE(view->GetNumberOfLabelClasses(), 0);
+    // The legend lists it too, and not the unlabelled surface around it.
+    const std::vector<meshpaint::LabelClass> legend =
+      meshpaint::shown_label_classes(view->GetPaintedPolyData(0), view->GetLabelClasses(), {});
+    QCOMPARE(int(legend.size()), 1);
+    QCOMPARE(legend[0].id, 9);
+    QCOMPARE(QString::fromStdString(legend[0].name), QString("label 9"));
     // Named in the table, it becomes a class.
     table->item(0, 3)->setText("scar");
     QCOMPARE(view->GetNumberOfLabelClasses(), 1);

@@ -88,7 +88,7 @@ std::vector<LabelClass> shown_label_classes(vtkPolyData* surface, const std::vec
   long last = 0;
   for (vtkIdType v = 0; label && v < label->GetNumberOfTuples(); ++v) {
     const long id = std::lround(label->GetComponent(v, 0));
-    if (id != last && !named.count(int(id)))
+    if (id != last && id != 0 && !named.count(int(id))) // 0 without a class: unlabelled surface
       unnamed.insert(int(id));
     last = id;
   }
