@@ -9,15 +9,20 @@
 #include "Studio.h"
 #include "vtkPaintView.h"
 
+#include "atlas/patch_layout.h" // for meshpaint::kMaxLevel
 #include "core/errors.h"
 #include "core/format.h"
+#include "project/labels.h" // for meshpaint::load_labels
 
 #include <vtkNew.h> // for vtkNew
 
-#include <iostream> // for std::cout, std::cerr
+#include <algorithm> // for std::any_of
+#include <iostream>  // for std::cout, std::cerr
 
 namespace meshpaint::cli {
 namespace {
+
+constexpr int kDefaultViewLevelMax = 3;
 
 //! The finest level up to 3 whose surfaces have at most about 1.5M quads in
 //! all, so that a software renderer still draws them interactively.
@@ -28,7 +33,7 @@ int default_view_level(const std::vector<MeshOrProject>& inputs)
     for (int size : input.mesh().face_sizes)
       quads += size; // level 1: one quad per face corner
   int level = 1;
-  while (level < 3 && quads * 4 <= 1.5e6) {
+  while (level < kDefaultViewLevelMax && quads * 4 <= 1.5e6) {
     quads *= 4;
     ++level;
   }
@@ -40,7 +45,7 @@ int default_view_level(const std::vector<MeshOrProject>& inputs)
 int view_command(const Argv& argv)
 {
   Args args("view", argv, {"--no-weld"}, {"--strokes", "--level", "--lod", "-o", "--size", "--device", "--storage",
-                                              "--import-array"});
+                                              "--import-array", "--labels"});
   args.expect_positionals(1, 64, "MESH...|PROJECT [--strokes S.json] [--level L] [--lod L] [-o DIR] [--size WxH]");
   const std::vector<std::string>& paths = args.positionals();
   if (paths.size() > 1)
@@ -56,6 +61,14 @@ int view_command(const Argv& argv)
   const PictureOptions picture = picture_options(args);
   if (args.has("--storage"))
     parse_storage(args.value("--storage"));
+  const std::vector<LabelClass> new_labels =
+    args.has("--labels") ? load_labels(args.value("--labels")) : std::vector<LabelClass>();
+  // The flags' ranges as far as they are known before the meshes are read:
+  // without --level, meshes are viewed at level 3 at most, projects at theirs.
+  const bool projects = std::any_of(paths.begin(), paths.end(), is_project_path);
+  const int asked_level = args.integer("--level", 1, 1, kMaxLevel);
+  args.integer("--lod", -1, 0, args.has("--level") ? asked_level : projects ? kMaxLevel : kDefaultViewLevelMax);
+  require_display(); // VTK aborts without one; checked before any mesh is read
   std::vector<MeshOrProject> inputs;
   for (const std::string& path : paths)
     inputs.push_back(open_mesh_or_project(path, import_options(args)));
@@ -65,7 +78,6 @@ int view_command(const Argv& argv)
   check_edit_levels(script, level);
 
   const int lod = args.integer("--lod", -1, 0, level); // absent: automatic
-  require_display(); // VTK aborts without one
   // The flags, else the studio's preferences (a saved device gone since is passed over with a warning).
   const studio::DeviceChoice saved = studio::preferred_device();
   std::string device = args.value("--device"), storage = args.value("--storage");
@@ -99,6 +111,8 @@ int view_command(const Argv& argv)
       if (!view->AddBaseMesh(in.mesh()))
         throw DeviceError(view->GetLastError());
   }
+  if (args.has("--labels")) // the file's classes replace the mesh's or the project's, as in paint
+    view->SetLabelClasses(new_labels);
   if (!script.strokes.empty() && !view->ApplyScript(script))
     throw DeviceError(view->GetLastError()); // the script was checked: what fails now is the device
   std::string names;

@@ -6,6 +6,7 @@
 #include "progress_bar.h"
 #include "table.h"
 
+#include "DisplayCheck.h"
 #include "vtkPaintView.h"
 #include "vtkSurfacePicker.h"
 
@@ -85,6 +86,7 @@ int bench_view(const Args& args)
 {
   args.expect_positionals(1, 1, "view [--steps N] [--quiet]");
   const int steps = args.integer("--steps", 7, 1, 1000);
+  require_display(); // VTK and Qt abort without one
   open_device(args); // a bad --device fails here, before the window
   std::string renderer;
   Table table({"faces", "mesh", "LoD level", "paint frame ms", "paint frame LoD ms", "LoD, read back ms",

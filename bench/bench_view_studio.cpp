@@ -5,6 +5,7 @@
 #include "benchmarks.h"
 #include "table.h"
 
+#include "DisplayCheck.h"
 #include "Studio.h"
 #include "StudioWindow.h"
 #include "vtkPaintView.h"
@@ -99,6 +100,7 @@ double studio_render_ms(vtkPaintView* view, FrameCounter& counter, int steps, bo
 int bench_view_studio(const Args& args)
 {
   const int steps = args.integer("--steps", 7, 1, 1000);
+  require_display(); // VTK and Qt abort without one
   open_device(args); // a bad --device fails here, before the window
   studio::prepare_qt();
   static int argc = 1;

@@ -1,4 +1,5 @@
 #include "BrushPanel.h"
+#include "ViewPixel.h"
 
 #include "BrushSettings.h"  // for meshpaint::BrushSettings
 #include "ChannelDisplay.h" // for meshpaint::shown_channel_names
@@ -145,7 +146,13 @@ BrushPanel::BrushPanel(vtkPaintView* view, QWidget* parent) : QWidget(parent), v
     if (c.isValid())
       set_colour(c);
   });
-  colour_grid->addWidget(colour_, 0, 0, 1, 5);
+  colour_grid->addWidget(colour_, 0, 0, 1, 4);
+  eyedropper_ = new QPushButton("Eyedropper");
+  eyedropper_->setObjectName("eyedropper");
+  eyedropper_->setCheckable(true);
+  eyedropper_->setToolTip("A click on the surface takes the diffuse colour there into the brush (key e: under the "
+                          "mouse)");
+  colour_grid->addWidget(eyedropper_, 0, 4);
   for (int k = 0; k < 10; ++k) {
     auto* swatch = new QPushButton(QString::number(k));
     swatch->setObjectName(QString("swatch_%1").arg(k));
@@ -172,6 +179,31 @@ BrushPanel::BrushPanel(vtkPaintView* view, QWidget* parent) : QWidget(parent), v
   layout->addWidget(channel_box);
   layout->addStretch();
   sync();
+}
+
+void BrushPanel::watch(QWidget* render)
+{
+  render_ = render;
+  render->installEventFilter(this);
+}
+
+bool BrushPanel::eventFilter(QObject* watched, QEvent* event)
+{
+  const bool press = event->type() == QEvent::MouseButtonPress, release = event->type() == QEvent::MouseButtonRelease;
+  if (watched != render_ || !eyedropper_->isChecked() || !(press || release) ||
+      static_cast<QMouseEvent*>(event)->button() != Qt::LeftButton)
+    return QWidget::eventFilter(watched, event);
+  if (press) {
+    // The colour, not a class: the label tool's eyedropper is the label panel's Pick.
+    if (BrushSettings* b = view_->GetBrush(); b && b->tool() == "label")
+      b->set_tool("paint");
+    const QPoint at = view_pixel(render_, static_cast<QMouseEvent*>(event));
+    view_->PickAt(at.x(), at.y());
+    eyedropper_->setChecked(false);
+    view_->UpdateText();
+    view_->Render();
+  }
+  return true; // the click was the eyedropper's, not a stroke's or the camera's
 }
 
 template <typename F>

@@ -23,6 +23,12 @@ public:
   void sync();
   //! Picks a colour for the colour channels (the picker's dialog sets it so).
   void set_colour(const QColor& colour);
+  //! Clicks on `render` pick the colour there while the Eyedropper button is down.
+  void watch(QWidget* render);
+  QPushButton* eyedropper() { return eyedropper_; }
+
+protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
   //! Applies `change` to the brush, then shows the view's new state.
@@ -43,6 +49,8 @@ private:
   QCheckBox* backfaces_;
   QComboBox* op_;
   QPushButton* colour_;
+  QPushButton* eyedropper_;
+  QWidget* render_ = nullptr;
   QComboBox* channel_;
   QComboBox* shown_;
 };

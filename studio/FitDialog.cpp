@@ -26,13 +26,17 @@ FitDialog::FitDialog(const QString& program, const QString& scan, const QString&
     layout->addWidget(w);
   resize(640, 320);
   connect(cancel_, &QPushButton::clicked, [this] { running() ? cancel() : accept(); });
-  // Progress comes on stderr, one line per step; the report on stdout.
+  // Progress comes on stderr, one line per step; the report on stdout. Each
+  // read brings whatever the pipe holds, parts of lines too: whole lines go
+  // into the log.
   connect(process_, &QProcess::readyReadStandardError,
-          [this] { log_->appendPlainText(QString::fromLocal8Bit(process_->readAllStandardError()).trimmed()); });
+          [this] { take(error_part_, QString::fromLocal8Bit(process_->readAllStandardError())); });
   connect(process_, &QProcess::readyReadStandardOutput,
-          [this] { log_->appendPlainText(QString::fromLocal8Bit(process_->readAllStandardOutput()).trimmed()); });
+          [this] { take(output_part_, QString::fromLocal8Bit(process_->readAllStandardOutput())); });
   connect(process_, QOverload<int, QProcess::ExitStatus>::of(&QProcess::finished),
           [this](int code, QProcess::ExitStatus status) {
+            for (QString* part : {&error_part_, &output_part_}) // a last line without its newline
+              take(*part, part->isEmpty() ? QString() : "\n");
             const bool ok = !cancelled_ && status == QProcess::NormalExit && code == 0;
             busy_->setRange(0, 1);
             busy_->setValue(ok ? 1 : 0);
@@ -77,6 +81,21 @@ void FitDialog::cancel()
 }
 
 bool FitDialog::running() const { return process_->state() != QProcess::NotRunning; }
+
+void FitDialog::take(QString& part, const QString& text)
+{
+  part += text;
+  int end;
+  while ((end = part.indexOf('\n')) >= 0) {
+    // A terminal's progress bar redraws its line after carriage returns: the last drawing stands.
+    const QStringList drawings = part.left(end).split('\r', Qt::SkipEmptyParts);
+    QString line = drawings.isEmpty() ? QString() : drawings.back();
+    line.remove("\x1b[K"); // "clear to the end of the line"
+    part.remove(0, end + 1);
+    if (!line.trimmed().isEmpty())
+      log_->appendPlainText(line.trimmed());
+  }
+}
 
 QString FitDialog::log() const { return log_->toPlainText(); }
 

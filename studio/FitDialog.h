@@ -33,6 +33,11 @@ public:
   QString log() const;
 
 private:
+  //! Adds `text` read from one of the fit's streams to the unfinished line
+  //! `part` of that stream; each line it finishes goes into the log.
+  void take(QString& part, const QString& text);
+
+  QString error_part_, output_part_;
   QString program_, scan_, out_;
   std::function<void(bool)> done_;
   QProcess* process_;

@@ -1,7 +1,8 @@
 #include "LabelPanel.h"
+#include "ViewPixel.h"
 
 #include "BrushSettings.h"  // for meshpaint::BrushSettings
-#include "ChannelDisplay.h" // for meshpaint::label_colour
+#include "ChannelDisplay.h" // for meshpaint::label_colour, unnamed_label_class
 #include "vtkPaintView.h"   // for vtkPaintView
 
 #include "paint/paint_scene.h"   // for meshpaint::PaintScene
@@ -13,7 +14,7 @@
 
 #include <QCheckBox>     // for QCheckBox
 #include <QColorDialog>  // for QColorDialog
-#include <algorithm>     // for std::find, std::max
+#include <algorithm>     // for std::find, std::max, std::any_of, std::stable_sort
 #include <QComboBox>     // for QComboBox
 #include <QLabel>        // for QLabel
 #include <QMouseEvent>   // for QMouseEvent
@@ -141,10 +142,9 @@ LabelPanel::LabelPanel(vtkPaintView* view, QWidget* parent) : QWidget(parent), v
       view_->SetLabelClassVisible(id, item->checkState() == Qt::Checked);
     } else if (item->column() == kLocked) {
       update_locks();
-    } else if (item->column() == kName) { // rename
-      for (const LabelClass& c : view_->GetLabelClasses())
-        if (c.id == id)
-          view_->AddLabelClass(id, item->text().toStdString().c_str(), c.colour[0], c.colour[1], c.colour[2]);
+    } else if (item->column() == kName) { // rename (an id painted without a class becomes one)
+      const LabelClass c = entry(id);
+      view_->AddLabelClass(id, item->text().toStdString().c_str(), c.colour[0], c.colour[1], c.colour[2]);
       sync(); // a name taken or empty is refused: the old one comes back
     }
   });
@@ -204,7 +204,7 @@ void LabelPanel::sync()
   syncing_ = true;
   if (const BrushSettings* b = view_->GetBrush())
     diagonals_->setChecked(b->fill_diagonals());
-  const std::vector<LabelClass>& labels = view_->GetLabelClasses();
+  const std::vector<LabelClass> labels = listed();
   const int selected = table_->currentRow();
   table_->setRowCount(int(labels.size()));
   for (std::size_t k = 0; k < labels.size(); ++k) {
@@ -217,7 +217,10 @@ void LabelPanel::sync()
     auto* id = new QTableWidgetItem(QString::number(c.id));
     id->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
     table_->setItem(row, kId, id);
-    table_->setItem(row, kName, new QTableWidgetItem(QString::fromStdString(c.name)));
+    auto* name = new QTableWidgetItem(QString::fromStdString(c.name));
+    if (!named(c.id)) // painted without a class: a new name makes it one
+      name->setToolTip("painted without a class: name it to keep it");
+    table_->setItem(row, kName, name);
     auto* colour = new QTableWidgetItem(qcolour(c.colour).name());
     colour->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
     colour->setBackground(qcolour(c.colour));
@@ -238,6 +241,30 @@ void LabelPanel::sync()
   if (selected >= 0 && selected < table_->rowCount())
     table_->selectRow(selected);
   syncing_ = false;
+}
+
+bool LabelPanel::named(int id) const
+{
+  const std::vector<LabelClass>& classes = view_->GetLabelClasses();
+  return std::any_of(classes.begin(), classes.end(), [&](const LabelClass& c) { return c.id == id; });
+}
+
+LabelClass LabelPanel::entry(int id) const
+{
+  for (const LabelClass& c : view_->GetLabelClasses())
+    if (c.id == id)
+      return c;
+  return unnamed_label_class(id);
+}
+
+std::vector<LabelClass> LabelPanel::listed() const
+{
+  std::vector<LabelClass> rows = view_->GetLabelClasses();
+  for (const auto& [id, area] : areas_)
+    if (id != 0 && !named(id))
+      rows.push_back(unnamed_label_class(id));
+  std::stable_sort(rows.begin(), rows.end(), [](const LabelClass& a, const LabelClass& b) { return a.id < b.id; });
+  return rows;
 }
 
 int LabelPanel::add_class()
@@ -274,14 +301,10 @@ void LabelPanel::recolour(int row)
 {
   if (row < 0 || row >= table_->rowCount())
     return;
-  const int id = table_->item(row, kId)->text().toInt();
-  for (const LabelClass& c : view_->GetLabelClasses())
-    if (c.id == id) {
-      const QColor q = QColorDialog::getColor(qcolour(c.colour), this, "Colour of " + QString::fromStdString(c.name));
-      if (q.isValid())
-        view_->AddLabelClass(id, c.name.c_str(), q.redF(), q.greenF(), q.blueF());
-      break;
-    }
+  const LabelClass c = entry(table_->item(row, kId)->text().toInt());
+  const QColor q = QColorDialog::getColor(qcolour(c.colour), this, "Colour of " + QString::fromStdString(c.name));
+  if (q.isValid())
+    view_->AddLabelClass(c.id, c.name.c_str(), q.redF(), q.greenF(), q.blueF());
   sync();
 }
 
@@ -297,7 +320,7 @@ void LabelPanel::sync_choices()
   merge_into_->clear();
   only_over_->addItem("any class", -1);
   bool unlabelled = false;
-  for (const LabelClass& c : view_->GetLabelClasses()) {
+  for (const LabelClass& c : listed()) {
     const QString text = QString("%1 %2").arg(c.id).arg(QString::fromStdString(c.name));
     only_over_->addItem(text, c.id);
     merge_into_->addItem(text, c.id);
@@ -338,12 +361,12 @@ bool LabelPanel::merge(int from, int into)
   s.paint().only_over_label = from;
   s.paint().locked_labels = locked;
   script.strokes.push_back(s);
-  const std::vector<LabelClass>& classes = view_->GetLabelClasses();
-  const auto entry = std::find_if(classes.begin(), classes.end(), [&](const LabelClass& c) { return c.id == from; });
-  const LabelClass removed = entry != classes.end() ? *entry : LabelClass{from, "class " + std::to_string(from), {}};
+  const bool had_class = named(from);
+  const LabelClass removed = entry(from);
   if (!view_->ApplyScript(script))
     return false;
-  merged_.push_back({view_->GetScene().history().size() - 1, removed});
+  if (had_class) // an id without a class has no entry to bring back
+    merged_.push_back({view_->GetScene().history().size() - 1, removed});
   view_->RemoveLabelClass(from);
   sync();
   paint_class(into);
@@ -365,9 +388,8 @@ bool LabelPanel::eventFilter(QObject* watched, QEvent* event)
   if (m->button() != Qt::LeftButton)
     return QWidget::eventFilter(watched, event);
   if (press) {
-    // VTK's display pixels: device pixels, origin bottom left.
-    const double scale = render_->devicePixelRatioF();
-    const int x = int(m->pos().x() * scale), y = int((render_->height() - m->pos().y() - 1) * scale);
+    const QPoint at = view_pixel(render_, m);
+    const int x = at.x(), y = at.y();
     if (fill_->isChecked()) {
       view_->FillAt(x, y);
     } else {

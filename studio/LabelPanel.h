@@ -48,6 +48,12 @@ protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
+  //! The rows: the view's classes and, as unnamed_label_class(), each id
+  //! painted without one (naming or recolouring it makes it a class).
+  std::vector<LabelClass> listed() const;
+  bool named(int id) const;
+  //! Class `id`, or its unnamed entry.
+  LabelClass entry(int id) const;
   //! The brush's locked classes from the table's lock column.
   void update_locks();
   //! The combo boxes' lists of classes, their choice kept.

@@ -26,10 +26,17 @@
 #include "paint/paint_surface.h"        // for meshpaint::PaintSurface
 #include "project/imported_channels.h"   // for meshpaint::apply_imported_channels
 #include "project/imported_labels.h"   // for meshpaint::apply_imported_labels
+#include "project/labels.h"            // for meshpaint::load_labels
 #include "project/project_surface.h"    // for meshpaint::capture_surface, reference_surface, stroke_history
 #include "RasterIO.h"                   // for meshpaint::load_stroke_rasters
 
+#include <QAbstractSpinBox>         // for QAbstractSpinBox
 #include <QAction>                  // for QAction
+#include <QApplication>             // for qApp
+#include <QComboBox>                // for QComboBox
+#include <QLineEdit>                // for QLineEdit
+#include <QPlainTextEdit>           // for QPlainTextEdit
+#include <QTextEdit>                // for QTextEdit
 #include <QCheckBox>                // for QCheckBox
 #include <QCoreApplication>         // for QCoreApplication
 #include <QDockWidget>              // for QDockWidget
@@ -107,6 +114,7 @@ StudioWindow::StudioWindow(vtkPaintView* view, QWidget* parent)
     return;
   }
   brush_ = new BrushPanel(view_);
+  brush_->watch(widget_);
   labels_ = new LabelPanel(view_);
   labels_->watch(widget_);
   history_ = new HistoryPanel(view_);
@@ -131,6 +139,7 @@ StudioWindow::StudioWindow(vtkPaintView* view, QWidget* parent)
   setAcceptDrops(true);
   widget_->setAcceptDrops(false);
   widget_->installEventFilter(this);
+  qApp->installEventFilter(this); // keys typed into the panels (eventFilter())
   // The view's size (--size) with the panels around it, but no larger than
   // the screen leaves free: there the view gives way and the docks stay.
   const int* size = view_->GetSize();
@@ -171,6 +180,12 @@ void StudioWindow::build_menus()
     if (!out.isEmpty())
       fit_scan(scan, out.endsWith(".meshpaint") ? out : out + ".meshpaint");
   });
+  file->addAction("Load label &classes...", [this] {
+    const QString path = QFileDialog::getOpenFileName(this, "Label classes", QString(),
+                                                      "Labels files (*.json);;All files (*)");
+    if (!path.isEmpty())
+      load_label_classes(path);
+  });
   recent_ = file->addMenu("Open &recent");
   fill_recent();
   file->addSeparator();
@@ -191,7 +206,7 @@ void StudioWindow::build_menus()
   }));
   surface_actions_.push_back(file->addAction("Export the &labelled scan...", [this] {
     const QString scan = QFileDialog::getOpenFileName(this, "The scan to label", QString(),
-                                                      "Scans (*.obj *.off *.ply *.stl *.vtp);;All files (*)");
+                                                      "Scans (*.obj *.off *.ply *.stl *.vtp *.vtk);;All files (*)");
     if (scan.isEmpty())
       return;
     const QString out = QFileDialog::getSaveFileName(this, "The labelled scan to write", QString(),
@@ -257,6 +272,19 @@ bool StudioWindow::open_path(const QString& path)
   add_recent(info.absoluteFilePath());
   setWindowTitle("meshpaint - " + info.fileName());
   borders_of_.clear(); // other surfaces: new lines
+  view_changed();
+  return true;
+}
+
+bool StudioWindow::load_label_classes(const QString& path)
+{
+  try {
+    view_->SetLabelClasses(load_labels(path.toStdString()));
+  } catch (const std::exception& e) {
+    statusBar()->showMessage(e.what(), 10000);
+    return false;
+  }
+  statusBar()->showMessage(QString("label classes from %1: %2").arg(path).arg(view_->GetNumberOfLabelClasses()), 10000);
   view_changed();
   return true;
 }
@@ -614,8 +642,39 @@ void StudioWindow::dropEvent(QDropEvent* event)
   open_path(files.front());
 }
 
+namespace {
+
+//! Whether `w` takes typed characters itself: text and number fields (a
+//! table cell being edited has such an editor, which has the focus), an
+//! editable combo box.
+bool takes_typing(const QWidget* w)
+{
+  const auto* combo = qobject_cast<const QComboBox*>(w);
+  return qobject_cast<const QLineEdit*>(w) || qobject_cast<const QAbstractSpinBox*>(w) ||
+         qobject_cast<const QPlainTextEdit*>(w) || qobject_cast<const QTextEdit*>(w) || (combo && combo->isEditable());
+}
+
+} // namespace
+
 bool StudioWindow::eventFilter(QObject* watched, QEvent* event)
 {
+  // The view's one-character keys (t, v, q, [, 1 ...) work after a click on
+  // a panel too: a key typed into a panel widget of this window that does
+  // not take typing goes to the view, as if it had the focus.
+  if (event->type() == QEvent::KeyPress && watched != widget_ && widget_ && watched->isWidgetType()) {
+    auto* w = static_cast<QWidget*>(watched);
+    const auto* key = static_cast<QKeyEvent*>(event);
+    const QString text = key->text();
+    const bool character = text.size() == 1 && text[0].isPrint() && !text[0].isSpace() &&
+                           !(key->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier));
+    // Not the window or a dock around the view: a key the view left goes up to them.
+    if (character && w->window() == this && !w->isAncestorOf(widget_) && !takes_typing(w)) {
+      QKeyEvent copy(key->type(), key->key(), key->modifiers(), key->text(), key->isAutoRepeat(), ushort(key->count()));
+      QCoreApplication::sendEvent(widget_, &copy);
+      return true;
+    }
+  }
+
   // Ctrl+E in the view exports in the background, as the menu does, not in the view's own key handler.
   if (watched == widget_ && event->type() == QEvent::KeyPress) {
     const auto* key = static_cast<QKeyEvent*>(event);

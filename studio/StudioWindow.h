@@ -54,6 +54,9 @@ public:
   //! Opens a mesh file or a project (`*.meshpaint`) in place of what is
   //! painted; false (and a message in the status bar) when it cannot.
   bool open_path(const QString& path);
+  //! Takes the classes of labels file `path` (as `--labels`) in place of the
+  //! view's; false (and the file's error in the status bar) when it cannot.
+  bool load_label_classes(const QString& path);
   //! Saves the surface as a project at `path`.
   bool save_project(const QString& path);
   //! Writes what the view shows as a PNG.

@@ -7,21 +7,26 @@
 // window opens.
 
 #include "BackgroundTask.h"
+#include "BrushPanel.h"
+#include "ChannelDisplay.h"
 #include "BrushSettings.h"
 #include "FitDialog.h"
 #include "HistoryPanel.h"
 #include "LabelPanel.h"
 #include "LevelPanel.h"
+#include "PolyDataFiles.h"
 #include "PreferencesDialog.h"
 #include "Studio.h"
 #include "StudioWindow.h"
 #include "vtkPaintView.h"
 
 #include "atlas/atlas.h"
+#include "mesh/base_mesh.h"
 #include "paint/paint_scene.h"
 #include "paint/paint_surface.h"
 #include "project/project.h"
 
+#include <QAbstractSpinBox>         // for QAbstractSpinBox
 #include <QApplication>             // for QApplication
 #include <QCheckBox>                // for QCheckBox
 #include <QComboBox>                // for QComboBox
@@ -75,7 +80,9 @@ namespace {
 
 const QString kCube = QString(MESHPAINT_SOURCE_DIR) + "/tests/support/cube.obj";
 
-//! The test cube with its faces wound the other way, written into `dir`.
+//! The test cube without its back face (z = 0: open, so the import leaves
+//! its winding as it is) and its faces wound the other way, normals
+//! inwards, written into `dir`.
 QString inward_cube(const QTemporaryDir& dir)
 {
   QFile in(kCube);
@@ -83,6 +90,8 @@ QString inward_cube(const QTemporaryDir& dir)
   QString out;
   for (const QString& line : QString(in.readAll()).split('\n')) {
     QStringList parts = line.split(' ', Qt::SkipEmptyParts);
+    if (line.trimmed() == "f 1 4 3 2")
+      continue;
     if (!parts.isEmpty() && parts[0] == "f")
       std::reverse(parts.begin() + 1, parts.end());
     out += parts.join(' ') + "\n";
@@ -96,12 +105,21 @@ QString inward_cube(const QTemporaryDir& dir)
 
 //! A studio on `mesh` at level 4, shown and exposed, its brush twice the
 //! texel spacing (a dab with no texel within its radius is off the surface).
+std::unique_ptr<StudioWindow> show_studio(vtkPaintView* view);
+
 std::unique_ptr<StudioWindow> open_studio(vtkPaintView* view, const QString& mesh, const QString& save_dir)
 {
   view->SetLevel(4);
   view->SetSaveDirectory(save_dir.toStdString().c_str());
   if (!view->LoadMesh(mesh.toStdString().c_str()))
     qFatal("cannot load %s: %s", qPrintable(mesh), view->GetLastError());
+  return show_studio(view);
+}
+
+//! The studio on the surfaces `view` has, shown and exposed, its brush
+//! twice the texel spacing.
+std::unique_ptr<StudioWindow> show_studio(vtkPaintView* view)
+{
   auto window = std::make_unique<StudioWindow>(view);
   if (!window->ready())
     qFatal("no studio: %s", qPrintable(window->error()));
@@ -227,6 +245,15 @@ struct LoopTicks
 };
 
 //! Runs `meshpaint ARGS`; its exit code.
+QString write_file(const QString& path, const QString& text)
+{
+  QFile f(path);
+  if (!f.open(QIODevice::WriteOnly))
+    qFatal("cannot write %s", qPrintable(path));
+  f.write(text.toUtf8());
+  return path;
+}
+
 int run_meshpaint(const QStringList& args)
 {
   QProcess p;
@@ -282,6 +309,18 @@ private Q_SLOTS:
     for (const QString& mesh : {kCube, inward_cube(dir)}) {
       vtkNew<vtkPaintView> view;
       auto w = open_studio(view, mesh, dir.filePath("session"));
+      // The front face (z = 1, towards the camera) as imported: its normal
+      // points out of the cube, or into the open box.
+      const meshpaint::BaseMesh& base = view->GetScene().surface(0).atlas().base_mesh();
+      for (std::size_t f = 0; f < base.face_count(); ++f) {
+        const int* v = &base.face_vertices[std::size_t(base.face_offsets[f])];
+        const meshpaint::Vec3 &a = base.points[std::size_t(v[0])], &b = base.points[std::size_t(v[1])],
+                              &c = base.points[std::size_t(v[2])];
+        if (a[2] == 1.f && b[2] == 1.f && c[2] == 1.f) {
+          const float z = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+          QVERIFY2(mesh == kCube ? z > 0 : z < 0, qPrintable(mesh));
+        }
+      }
       drag(w->render_widget(), {0.4, 0.45}, {0.6, 0.55});
       QCOMPARE(int(view->GetScene().history().size()), 1);
       QVERIFY2(view->GetScene().history()[0].points.size() >= 5, qPrintable(mesh)); // went on with the drag
@@ -585,6 +624,69 @@ private Q_SLOTS:
     QVERIFY2(QFile::exists(out), qPrintable(dialog->log()));
     QTRY_VERIFY(view->GetProject() != nullptr);
     QVERIFY(dialog->log().contains("saved"));
+  }
+
+  void the_colour_panels_eyedropper_takes_the_colour_under_a_click()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("session"));
+    drag(w->render_widget(), {0.4, 0.45}, {0.6, 0.55}); // red
+    w->brush_panel()->set_colour(QColor::fromRgbF(0.0, 0.0, 1.0));
+    view->GetBrush()->set_tool("label"); // the colour's eyedropper picks a colour all the same
+    QPushButton* eyedropper = w->brush_panel()->eyedropper();
+    QTest::mouseClick(eyedropper, Qt::LeftButton);
+    QVERIFY(eyedropper->isChecked());
+    const QPoint centre(w->render_widget()->width() / 2, w->render_widget()->height() / 2);
+    mouse(w->render_widget(), QEvent::MouseButtonPress, centre, Qt::LeftButton, Qt::LeftButton);
+    mouse(w->render_widget(), QEvent::MouseButtonRelease, centre, Qt::LeftButton, Qt::NoButton);
+    QVERIFY(!eyedropper->isChecked());
+    QCOMPARE(int(view->GetScene().history().size()), 1); // the click painted nothing
+    QCOMPARE(QString::fromStdString(view->GetBrush()->tool()), QString("paint"));
+    const std::array<double, 3> c = view->GetBrush()->colour();
+    QVERIFY2(c[0] > 0.8 && c[2] < 0.2, qPrintable(QString("%1 %2 %3").arg(c[0]).arg(c[1]).arg(c[2])));
+  }
+
+  void the_views_keys_work_after_a_click_on_a_panel()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("session"));
+    const std::string before = view->GetBrush()->tool();
+    // A button of the panels has the focus: t still changes the tool.
+    QPushButton* swatch = w->brush_panel()->findChild<QPushButton*>("swatch_3");
+    swatch->setFocus();
+    QTest::keyClick(swatch, Qt::Key_T);
+    QVERIFY(view->GetBrush()->tool() != before);
+    // The label table, not editing: v shows the next channel.
+    const std::string shown = view->GetShownChannel();
+    QTest::keyClick(w->label_panel()->table(), Qt::Key_V);
+    QVERIFY(view->GetShownChannel() != shown);
+    // A number field keeps what is typed into it.
+    const std::string tool = view->GetBrush()->tool();
+    auto* spin = w->brush_panel()->findChild<QAbstractSpinBox*>();
+    QVERIFY(spin);
+    QTest::keyClick(spin, Qt::Key_T);
+    QCOMPARE(view->GetBrush()->tool(), tool);
+  }
+
+  void the_fit_log_shows_whole_lines()
+  {
+    // A program writing its lines in pieces, and a bar redrawn after
+    // carriage returns, as a fit on a terminal draws it.
+    QTemporaryDir dir;
+    const QString program = write_file(dir.filePath("fit.sh"),
+                                       "#!/bin/sh\n"
+                                       "printf 'meshpaint fit' >&2; sleep 0.3; printf ': pass 1' >&2; sleep 0.3\n"
+                                       "printf ' of 2\\n' >&2; sleep 0.3\n"
+                                       "printf '\\rbar [#   ] 25%%' >&2; sleep 0.3; printf '\\rbar [####] 100%%\\033[K\\n' >&2\n"
+                                       "printf 'saved'; sleep 0.3; printf ' it\\n'\n");
+    QFile::setPermissions(program, QFile::permissions(program) | QFileDevice::ExeOwner);
+    bool finished = false;
+    meshpaint::studio::FitDialog dialog(program, kCube, dir.filePath("out.meshpaint"), [&](bool) { finished = true; });
+    dialog.start();
+    QTRY_VERIFY_WITH_TIMEOUT(finished, 10000);
+    QCOMPARE(dialog.log(), QString("meshpaint fit: pass 1 of 2\nbar [####] 100%\nsaved it"));
   }
 
   void ctrl_e_exports_off_the_interface_thread()
@@ -902,6 +1004,79 @@ private Q_SLOTS:
     other.setAccepted(false);
     QApplication::sendEvent(w.get(), &other);
     QVERIFY(!other.isAccepted());
+  }
+
+  void a_vtps_label_classes_come_into_the_table_the_legend_and_saves()
+  {
+    // `meshpaint paint -o` writes the classes into surface.vtp's field data;
+    // `view` adds that file as a scene's first object.
+    QTemporaryDir dir;
+    const QString labels = write_file(dir.filePath("labels.json"),
+                                      R"([{"id": 1, "name": "nose", "colour": [0.1, 0.3, 1.0]},
+                                          {"id": 4, "name": "eye region", "colour": [1.0, 0.85, 0.0]}])");
+    const QString strokes = write_file(dir.filePath("s.json"), R"({"strokes": []})");
+    QCOMPARE(run_meshpaint({"paint", kCube, "--strokes", strokes, "--labels", labels, "--level", "2", "--quiet", "-o",
+                            dir.filePath("out")}),
+             0);
+    vtkNew<vtkPaintView> view;
+    view->SetLevel(4);
+    view->SetSaveDirectory(dir.filePath("session").toStdString().c_str());
+    QVERIFY(view->AddBaseMesh(meshpaint::load_polydata_mesh(dir.filePath("out/surface.vtp").toStdString())));
+    auto w = show_studio(view);
+    QTableWidget* table = w->label_panel()->table();
+    QCOMPARE(table->rowCount(), 2);
+    QCOMPARE(table->item(0, 3)->text(), QString("nose"));
+    QCOMPARE(table->item(1, 3)->text(), QString("eye region"));
+    // Painted with class 4, the window shows its colour, and a save keeps the classes.
+    w->label_panel()->paint_class(4);
+    drag(w->render_widget(), {0.4, 0.45}, {0.6, 0.55});
+    view->Render();
+    QVERIFY(pixels_like(*w, QColor::fromRgbF(1.0, 0.85, 0.0)) > 200);
+    QVERIFY(view->Save());
+    const auto saved = read_vtp(dir.filePath("session/surface.vtp"));
+    vtkAbstractArray* names = saved->GetFieldData()->GetAbstractArray("label_names");
+    QVERIFY(names);
+    QCOMPARE(int(names->GetNumberOfTuples()), 2);
+    QCOMPARE(QString::fromStdString(names->GetVariantValue(1).ToString()), QString("eye region"));
+  }
+
+  void label_classes_load_from_a_labels_file_and_unnamed_ids_are_listed()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("session"));
+    QTableWidget* table = w->label_panel()->table();
+    QCOMPARE(table->rowCount(), 0);
+    // Id 9 painted without a class: listed by its number, in the colour it shows in.
+    view->GetBrush()->set_tool("label");
+    view->GetBrush()->set_label(9);
+    drag(w->render_widget(), {0.4, 0.45}, {0.6, 0.55});
+    QCOMPARE(table->rowCount(), 1);
+    QCOMPARE(table->item(0, 2)->text(), QString("9"));
+    QCOMPARE(table->item(0, 3)->text(), QString("label 9"));
+    QVERIFY(table->item(0, 5)->text().toDouble() > 0.0);
+    QCOMPARE(view->GetNumberOfLabelClasses(), 0);
+    // The legend lists it too, and not the unlabelled surface around it.
+    const std::vector<meshpaint::LabelClass> legend =
+      meshpaint::shown_label_classes(view->GetPaintedPolyData(0), view->GetLabelClasses(), {});
+    QCOMPARE(int(legend.size()), 1);
+    QCOMPARE(legend[0].id, 9);
+    QCOMPARE(QString::fromStdString(legend[0].name), QString("label 9"));
+    // Named in the table, it becomes a class.
+    table->item(0, 3)->setText("scar");
+    QCOMPARE(view->GetNumberOfLabelClasses(), 1);
+    QCOMPARE(QString::fromStdString(view->GetLabelClasses()[0].name), QString("scar"));
+    // A labels file replaces the classes (File > Load label classes...); a bad one is refused.
+    const QString labels = write_file(dir.filePath("labels.json"),
+                                      R"([{"id": 1, "name": "nose", "colour": [0.1, 0.3, 1.0]}])");
+    QVERIFY(w->load_label_classes(labels));
+    QCOMPARE(view->GetNumberOfLabelClasses(), 1);
+    QCOMPARE(table->rowCount(), 2); // nose, and 9 without a class again
+    QCOMPARE(table->item(0, 3)->text(), QString("nose"));
+    QCOMPARE(table->item(1, 3)->text(), QString("label 9"));
+    QVERIFY(!w->load_label_classes(write_file(dir.filePath("bad.json"), R"([{"id": 1}])")));
+    QCOMPARE(view->GetNumberOfLabelClasses(), 1);
+    QVERIFY(!w->statusBar()->currentMessage().isEmpty());
   }
 
   void the_labelled_scan_is_written_as_transfer_writes_it()

@@ -18,6 +18,7 @@
 
 #include <algorithm> // for std::max, std::min, std::find
 #include <cmath>     // for std::fabs, std::lround
+#include <set>       // for std::set
 
 namespace meshpaint {
 namespace {
@@ -63,6 +64,39 @@ std::array<double, 3> label_colour(int id, const std::vector<LabelClass>& labels
     *has_colour = false;
   const double* p = kPalette[(id % 10 + 10) % 10];
   return {p[0], p[1], p[2]};
+}
+
+LabelClass unnamed_label_class(int id)
+{
+  const std::array<double, 3> c = label_colour(id, {});
+  return {id, "label " + std::to_string(id), {float(c[0]), float(c[1]), float(c[2])}};
+}
+
+std::vector<LabelClass> shown_label_classes(vtkPolyData* surface, const std::vector<LabelClass>& labels,
+                                            const std::vector<int>& hidden)
+{
+  const auto shown = [&](int id) { return std::find(hidden.begin(), hidden.end(), id) == hidden.end(); };
+  std::vector<LabelClass> out;
+  std::set<int> named;
+  for (const LabelClass& c : labels) {
+    named.insert(c.id);
+    if (shown(c.id))
+      out.push_back(c);
+  }
+  vtkDataArray* label = surface ? surface->GetPointData()->GetArray("label") : nullptr;
+  std::set<int> unnamed;
+  long last = 0;
+  for (vtkIdType v = 0; label && v < label->GetNumberOfTuples(); ++v) {
+    const long id = std::lround(label->GetComponent(v, 0));
+    if (id != last && id != 0 && !named.count(int(id))) // 0 without a class: unlabelled surface
+      unnamed.insert(int(id));
+    last = id;
+  }
+  for (const int id : unnamed)
+    if (shown(id))
+      out.push_back(unnamed_label_class(id));
+  std::stable_sort(out.begin(), out.end(), [](const LabelClass& a, const LabelClass& b) { return a.id < b.id; });
+  return out;
 }
 
 vtkSmartPointer<vtkScalarsToColors> channel_colour_map(vtkPolyData* surface, ShownChannel channel)

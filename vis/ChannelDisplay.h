@@ -44,6 +44,17 @@ MESHPAINTVIS_EXPORT ShownChannel parse_shown_channel(const std::string& name);
 MESHPAINTVIS_EXPORT std::array<double, 3> label_colour(int id, const std::vector<LabelClass>& labels,
                                                        bool* has_colour = nullptr);
 
+//! The entry shown for label `id` painted without a class: "label ID" in
+//! label_colour()'s palette colour, as the surface shows it.
+MESHPAINTVIS_EXPORT LabelClass unnamed_label_class(int id);
+
+//! The classes a legend of `surface`'s labels lists: those of `labels` not in
+//! `hidden`, and an unnamed_label_class() for each id other than 0 painted on
+//! the surface without a class (and not hidden), in order of id.
+MESHPAINTVIS_EXPORT std::vector<LabelClass> shown_label_classes(vtkPolyData* surface,
+                                                                const std::vector<LabelClass>& labels,
+                                                                const std::vector<int>& hidden);
+
 //! The colour map of a scalar channel (roughness, mask: 0 to 1; displacement:
 //! blue below 0, white at 0, red above, symmetric about 0 over the surface's
 //! largest height); null for diffuse, label and specular, which are colours.

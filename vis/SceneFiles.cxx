@@ -10,8 +10,9 @@
 namespace meshpaint {
 
 std::string save_session(PaintScene& scene, const std::string& recording,
-                         const std::function<vtkPolyData*(std::size_t)>& drawn, const Project* project,
-                         ProjectOrigin& origin, const std::string& dir)
+                         const std::function<vtkPolyData*(std::size_t)>& drawn,
+                         const std::vector<LabelClass>& labels, const Project* project, ProjectOrigin& origin,
+                         const std::string& dir)
 {
   // One recording for the scene; each object's surface in its own folder.
   make_directory(dir);
@@ -22,7 +23,7 @@ std::string save_session(PaintScene& scene, const std::string& recording,
     // As `meshpaint paint -o` writes it: with the label classes as field data.
     auto surface = vtkSmartPointer<vtkPolyData>::New();
     surface->ShallowCopy(drawn(o));
-    add_label_classes(surface, project ? project->labels : std::vector<LabelClass>());
+    add_label_classes(surface, labels);
     write_vtp(surface, folder + "/surface.vtp");
   }
   if (project) {

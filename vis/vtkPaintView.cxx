@@ -223,10 +223,11 @@ void vtkPaintView::Show()
   in.renderer->SetUseFXAA(this->AntiAliasing && !in.moving);
   if (in.initialized && !in.drawings.empty())
     meshpaint::guarded(this->LastError, [&] {
-      std::vector<meshpaint::LabelClass> shown_classes; // hidden ones are not in the legend
-      for (const meshpaint::LabelClass& c : in.labels)
-        if (this->GetLabelClassVisible(c.id))
-          shown_classes.push_back(c);
+      // Hidden classes are not in the legend; ids painted without a class are, by their number.
+      const std::vector<meshpaint::LabelClass> shown_classes =
+        in.shown == meshpaint::ShownChannel::label && !lit
+          ? meshpaint::shown_label_classes(in.drawings.front()->shown, in.labels, in.hidden_labels)
+          : std::vector<meshpaint::LabelClass>();
       in.legend.update(lit ? meshpaint::ShownChannel::diffuse : in.shown, in.drawings.front()->shown, shown_classes);
     });
   in.channel_drawn = in.shown != meshpaint::ShownChannel::diffuse && !lit && in.initialized;
@@ -375,7 +376,7 @@ int vtkPaintView::Save()
   std::string message;
   const int ok = !in.scene.empty() && meshpaint::guarded(this->LastError, [&] {
     message = meshpaint::save_session(
-      in.scene, this->GetRecording(), [&](std::size_t o) { return this->Surface(o, this->Level); },
+      in.scene, this->GetRecording(), [&](std::size_t o) { return this->Surface(o, this->Level); }, in.labels,
       in.project.get(), in.origin, this->SaveDirectory);
   });
   this->Message = ok ? message : this->LastError;

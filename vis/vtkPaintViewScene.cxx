@@ -17,6 +17,8 @@
 #include <vtkBoundingBox.h> // for vtkBoundingBox
 #include <vtkPolyData.h>    // for vtkPolyData
 
+#include <algorithm> // for std::none_of, std::stable_sort
+
 int vtkPaintView::LoadMesh(const char* path)
 {
   return this->LoadObject(path, false);
@@ -82,8 +84,15 @@ int vtkPaintView::MeshObject(const meshpaint::BaseMesh& mesh, bool add)
     if (!add)
       this->RemoveObjects();
     this->AddObject(std::move(surface), mesh.name);
-    if (!add) // the file's classes (or one per label id), shown in their colours, kept by a save
-      in.labels = meshpaint::imported_label_classes(mesh);
+    // The file's classes (or one per label id), shown in their colours, kept
+    // by a save; an object added keeps the classes there and brings its own ids.
+    std::vector<meshpaint::LabelClass> labels = add ? in.labels : std::vector<meshpaint::LabelClass>();
+    for (const meshpaint::LabelClass& c : meshpaint::imported_label_classes(mesh))
+      if (std::none_of(labels.begin(), labels.end(), [&](const meshpaint::LabelClass& k) { return k.id == c.id; }))
+        labels.push_back(c);
+    std::stable_sort(labels.begin(), labels.end(),
+                     [](const meshpaint::LabelClass& a, const meshpaint::LabelClass& b) { return a.id < b.id; });
+    in.labels = labels;
   });
 }
 

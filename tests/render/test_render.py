@@ -269,10 +269,25 @@ def test_without_a_display_view_and_screenshot_say_so(tmp_path, display):
     script = tmp_path / "s.json"
     script.write_text(json.dumps({"strokes": []}))
     cube = write_cube(tmp_path)
+    # Wound inwards and closed: its import turns it and says so, which view
+    # must not get to before it finds no display.
+    inward = tmp_path / "inward.obj"
+    inward.write_text("\n".join(" ".join(["f"] + l.split()[1:][::-1]) if l.startswith("f ") else l
+                                 for l in CUBE_OBJ.splitlines()) + "\n")
+    labels = tmp_path / "labels.json"
+    labels.write_text(json.dumps([{"id": 1, "name": "nose", "colour": [0.1, 0.3, 1.0]}]))
     for args in (["paint", cube, "--strokes", str(script), "-o", str(tmp_path / "o"),
-                  "--screenshot", str(tmp_path / "a.png")], ["view", cube]):
+                  "--screenshot", str(tmp_path / "a.png")], ["view", cube], ["view", str(inward)],
+                 ["view", str(inward), "--labels", str(labels)],
+                 ["bench", "view", "--steps", "1"], ["bench", "view", "--studio", "--steps", "1"]):
         r = subprocess.run([BIN, *args], capture_output=True, text=True, timeout=600, env=env)
-        assert r.returncode == 3, (args[0], r.returncode, r.stderr)
+        assert r.returncode == 3, (args, r.returncode, r.stderr)
         (line,) = r.stderr.splitlines()
         assert "xvfb-run" in line and "DISPLAY" in line
     assert not (tmp_path / "a.png").exists()
+    # Bad flags are found before the mesh is read, display or not.
+    for flags in (["--level", "0"], ["--lod", "9"], ["--labels", str(tmp_path / "none.json")]):
+        r = subprocess.run([BIN, "view", str(inward), *flags], capture_output=True, text=True, timeout=600, env=env)
+        assert r.returncode == 2, (flags, r.returncode, r.stderr)
+        (line,) = r.stderr.splitlines()
+        assert "turned" not in line, line
