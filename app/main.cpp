@@ -40,7 +40,7 @@ commands:
                                       project to continue from; --screenshot: a rendered
                                       picture (--show: which channel, --subsurface N:
                                       N passes of subsurface scattering)
-  view MESH...|PROJECT [--strokes S.json] [--level L] [--lod L] [-o DIR] [--size WxH]
+  view MESH...|PROJECT [--strokes S.json] [--labels labels.json] [--level L] [--lod L] [-o DIR] [--size WxH]
                                       the painting window (docs/window.md); saves the
                                       recorded strokes and the surface into DIR
   stats MESH [--labels labels.json] [--json|--csv] [--level L]

@@ -46,7 +46,7 @@ int view_command(const Argv& argv)
 {
   Args args("view", argv, {"--no-weld"}, {"--strokes", "--level", "--lod", "-o", "--size", "--device", "--storage",
                                               "--import-array", "--labels"});
-  args.expect_positionals(1, 64, "MESH...|PROJECT [--strokes S.json] [--level L] [--lod L] [-o DIR] [--size WxH]");
+  args.expect_positionals(1, 64, "MESH...|PROJECT [--strokes S.json] [--labels labels.json] [--level L] [--lod L] [-o DIR] [--size WxH]");
   const std::vector<std::string>& paths = args.positionals();
   if (paths.size() > 1)
     for (const std::string& path : paths)
