@@ -86,22 +86,37 @@ ImportOptions import_options(const Args& args)
   return options;
 }
 
-BaseMesh load_reported(const std::string& path, const ImportOptions& options)
+namespace {
+
+//! A mesh file by its extension's reader, through the import steps.
+BaseMesh load_any(const std::string& path, const ImportOptions& options)
 {
   const auto& exts = readable_mesh_extensions();
   if (!is_polydata_path(path) && std::find(exts.begin(), exts.end(), lower_extension(path)) == exts.end() &&
       std::filesystem::is_regular_file(path))
     throw InputError("cannot read '" + path + "': unknown mesh format '" + lower_extension(path) +
                      "' (readable: .obj .off .ply .stl .vtp .vtk)");
-  BaseMesh mesh = is_polydata_path(path) ? load_polydata_mesh(path, options) : load_mesh(path, options);
+  return is_polydata_path(path) ? load_polydata_mesh(path, options) : load_mesh(path, options);
+}
+
+} // namespace
+
+BaseMesh load_reported(const std::string& path, const ImportOptions& options)
+{
+  BaseMesh mesh = load_any(path, options);
+  report_import(path, mesh);
+  return mesh;
+}
+
+void report_import(const std::string& path, const BaseMesh& mesh)
+{
   for (const std::string& line : mesh.report.lines())
     std::cerr << "meshpaint: " << path << ": repaired: " << line << "\n";
   for (const std::string& line : mesh.report.step_lines())
     std::cerr << "meshpaint: " << path << ": imported: " << line << "\n";
-  return mesh;
 }
 
-MeshOrProject open_mesh_or_project(const std::string& path, const ImportOptions& options)
+MeshOrProject open_mesh_or_project(const std::string& path, const ImportOptions& options, bool report)
 {
   MeshOrProject input;
   input.path = path;
@@ -111,7 +126,7 @@ MeshOrProject open_mesh_or_project(const std::string& path, const ImportOptions&
     input.project = load_project(path);
   }
   else
-    input.loaded = load_reported(path, options);
+    input.loaded = report ? load_reported(path, options) : load_any(path, options);
   return input;
 }
 

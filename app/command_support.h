@@ -33,6 +33,9 @@ ImportOptions import_options(const Args& args);
 //! steps did ("meshpaint: PATH: repaired: ...", "... imported: ...").
 BaseMesh load_reported(const std::string& path, const ImportOptions& options = {});
 
+//! The report of load_reported() for a mesh loaded without it.
+void report_import(const std::string& path, const BaseMesh& mesh);
+
 //! What the commands that take a mesh take: a mesh file, or a project.
 struct MeshOrProject
 {
@@ -43,8 +46,8 @@ struct MeshOrProject
   const BaseMesh& mesh() const { return project ? project->mesh : loaded; }
 };
 //! Loads PATH as a project when it ends in .meshpaint, else as a mesh
-//! (reporting repairs).
-MeshOrProject open_mesh_or_project(const std::string& path, const ImportOptions& options = {});
+//! (reporting repairs unless `report` is false: report_import() later).
+MeshOrProject open_mesh_or_project(const std::string& path, const ImportOptions& options = {}, bool report = true);
 //! The level to work at: a project's own level (a differing --level is an
 //! error), else --level, else `fallback`.
 int input_level(const Args& args, const MeshOrProject& input, int fallback);

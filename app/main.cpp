@@ -60,7 +60,7 @@ commands:
                                       the window's frame times while painting, with and
                                       without level of detail, and pick latency (needs X);
                                       --studio: the studio's own frames
-  bench fit [--level L] [--max-triangles N] [--json]
+  bench fit [--level L] [--max-triangles N] [--json] [--quiet]
                                       fit's time, peak memory and error on every scan and
                                       against scan size; decimation against VTK and CGAL
   devices                             the OpenCL devices (for --device / MESHPAINT_DEVICE)

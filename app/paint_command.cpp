@@ -81,12 +81,10 @@ void paint_job(PaintScene& scene, const StrokeScript& script, int model_level, c
     table.print(std::cout);
   if (dir.empty())
     return;
-  ProgressTask writing(&bar, "writing " + dir, scene.size());
   for (std::size_t o = 0; o < scene.size(); ++o) {
     PaintSurface& surface = scene.surface(o);
     const std::string out = scene.folder(dir, o);
-    const PaintingExportReport written = export_painting(surface, model_level, out, labels);
-    writing.step(o + 1);
+    const PaintingExportReport written = export_painting(surface, model_level, out, labels, &bar);
     std::cout << "wrote      " << written.surface_path << ", " << out << "/model.obj (level " << model_level << ", "
               << written.model_quads << " quads) with model.mtl, model.gltf and " << written.map_width << "x"
               << written.map_height << " texture maps\n";

@@ -68,16 +68,22 @@ int view_command(const Argv& argv)
   const bool projects = std::any_of(paths.begin(), paths.end(), is_project_path);
   const int asked_level = args.integer("--level", 1, 1, kMaxLevel);
   args.integer("--lod", -1, 0, args.has("--level") ? asked_level : projects ? kMaxLevel : kDefaultViewLevelMax);
-  require_display(); // VTK aborts without one; checked before any mesh is read
+  // Every input is read and checked before the display (bad input: exit 2),
+  // and the display before the import notes, so that without one its line
+  // comes alone (exit 3).
   std::vector<MeshOrProject> inputs;
   for (const std::string& path : paths)
-    inputs.push_back(open_mesh_or_project(path, import_options(args)));
+    inputs.push_back(open_mesh_or_project(path, import_options(args), false));
   const MeshOrProject& input = inputs.front();
   const BaseMesh& mesh = input.mesh();
   const int level = scene_level(args, inputs, script.level > 0 ? script.level : default_view_level(inputs));
   check_edit_levels(script, level);
-
   const int lod = args.integer("--lod", -1, 0, level); // absent: automatic
+  require_display(); // VTK aborts without one
+  for (const MeshOrProject& in : inputs)
+    if (!in.project)
+      report_import(in.path, in.loaded);
+
   // The flags, else the studio's preferences (a saved device gone since is passed over with a warning).
   const studio::DeviceChoice saved = studio::preferred_device();
   std::string device = args.value("--device"), storage = args.value("--storage");

@@ -7,6 +7,7 @@
 
 #include "benchmarks.h"
 #include "decimation_peers.h"
+#include "progress_bar.h"
 #include "table.h"
 
 #include "PolyDataFiles.h"
@@ -26,7 +27,8 @@
 #include <algorithm>  // for std::sort
 #include <filesystem> // for std::filesystem
 #include <fstream>    // for std::ifstream
-#include <iostream>   // for std::cout, std::cerr
+#include <iostream>   // for std::cout
+#include <optional>   // for std::optional
 #include <random>     // for std::mt19937, std::normal_distribution
 #include <sstream>    // for std::ostringstream
 
@@ -178,7 +180,7 @@ nlohmann::json run_json(const FitRun& run)
 
 int bench_fit(const Args& args)
 {
-  args.expect_positionals(1, 1, "fit [--level L] [--max-triangles N] [--json]");
+  args.expect_positionals(1, 1, "fit [--level L] [--max-triangles N] [--json] [--quiet]");
   const int level = args.integer("--level", 3, 1, kMaxLevel);
   const std::size_t max_triangles = std::size_t(args.integer("--max-triangles", 10000000, 1000, 200000000));
   const bool json = args.flag("--json");
@@ -210,14 +212,19 @@ int bench_fit(const Args& args)
     if (entry.is_regular_file() || entry.is_symlink())
       scans.push_back(entry.path());
   std::sort(scans.begin(), scans.end());
+  ProgressBar bar("meshpaint bench", args.flag("--quiet"));
   Table scan_table({"scan", "triangles", "budget", "faces after each stage", "wall s", "decimate s", "fit s", "peak MiB",
                     "scan->fit RMS %", "max %", "fit->scan RMS %", "max %", "folds"});
   nlohmann::json scan_rows = nlohmann::json::array();
-  for (const fs::path& scan : scans) {
-    std::cerr << "meshpaint bench: fitting " << scan.filename().string() << " at level " << level << "\n";
+  std::optional<ProgressTask> task;
+  task.emplace(&bar, "fitting " + counted(scans.size(), "scan", "scans") + " at level " + std::to_string(level),
+               scans.size());
+  for (std::size_t k = 0; k < scans.size(); ++k) {
+    const fs::path& scan = scans[k];
+    task->step(k);
     const FitRun run = fit_scan(program, scan, level, passed, folder);
     if (!run.failure.empty()) {
-      std::cerr << "meshpaint bench: the fit of " << scan.string() << " failed (" << run.failure << ")\n";
+      bar.print("meshpaint bench: the fit of " + scan.string() + " failed (" + run.failure + ")");
       continue;
     }
     const nlohmann::json& r = run.report;
@@ -235,13 +242,16 @@ int bench_fit(const Args& args)
     j["name"] = scan.stem().string();
     scan_rows.push_back(j);
   }
+  task->step(scans.size());
 
   // The decimation step alone against its peers, on the scan as fit imports
   // it and at fit's default budget.
   Table peer_table({"scan", "budget", "method", "faces", "median s", "scan->decimated RMS %", "max %"});
   nlohmann::json peer_rows = nlohmann::json::array();
-  for (const fs::path& scan : scans) {
-    std::cerr << "meshpaint bench: decimating " << scan.filename().string() << " by each method\n";
+  task.emplace(&bar, "decimating " + counted(scans.size(), "scan", "scans") + " by each method", scans.size());
+  for (std::size_t k = 0; k < scans.size(); ++k) {
+    const fs::path& scan = scans[k];
+    task->step(k);
     const BaseMesh mesh = is_polydata_path(scan.string()) ? load_polydata_mesh(scan.string()) : load_mesh(scan.string());
     const std::size_t budget = default_base_faces(mesh.face_count());
     const double diagonal = mesh.diagonal();
@@ -258,11 +268,16 @@ int bench_fit(const Args& args)
                            {"scan_to_decimated_max_percent", max}});
     }
   }
+  task->step(scans.size());
 
   Table table({"triangles", "vertices", "subdivisions", "wall s", "decimate s", "fit s", "peak MiB", "base faces",
                "scan->fit RMS %", "max %", "fit->scan RMS %", "max %", "folds"});
   nlohmann::json rows = nlohmann::json::array();
   OpenMesh::Subdivider::Uniform::LoopT<TriMesh> loop;
+  std::size_t sizes = 0, sized = 0;
+  for (std::size_t faces = mesh.n_faces(); faces * 4 <= max_triangles; faces *= 4)
+    sizes += faces * 4 >= kSmallest;
+  task.emplace(&bar, "fitting the femur at " + counted(sizes, "size", "sizes"), sizes);
   for (int steps = 1; mesh.n_faces() * 4 <= max_triangles; ++steps) {
     loop.attach(mesh);
     loop(1);
@@ -271,22 +286,22 @@ int bench_fit(const Args& args)
       continue;
     const fs::path scan = folder / "scan.ply";
     write_noisy(mesh, sigma, unsigned(steps), scan);
-    std::cerr << "meshpaint bench: fitting " << grouped(mesh.n_faces()) << " triangles at level " << level << "\n";
+    task->step(sized++);
     FitRun run = fit_scan(program, scan, level, passed, folder);
     run.triangles = mesh.n_faces();
     run.vertices = mesh.n_vertices();
     fs::remove(scan);
     if (!run.failure.empty()) {
-      std::cerr << "meshpaint bench: the fit of " << grouped(run.triangles) << " triangles failed (" << run.failure
-                << "); larger scans are not tried\n";
+      bar.print("meshpaint bench: the fit of " + grouped(run.triangles) + " triangles failed (" + run.failure +
+                "); larger scans are not tried");
       break;
     }
     const nlohmann::json& r = run.report;
     // Each fit can take minutes: its numbers as soon as it ends.
-    std::cerr << "meshpaint bench: " << grouped(run.triangles) << " triangles: " << format_fixed(run.wall_s, 1)
-              << " s, peak " << format_fixed(run.peak_mib, 0) << " MiB, scan->fit RMS "
-              << format_fixed(r["scan_to_fit"]["rms_percent"].get<double>(), 4) << "%, max "
-              << format_fixed(r["scan_to_fit"]["max_percent"].get<double>(), 4) << "%\n";
+    bar.note(grouped(run.triangles) + " triangles: " + format_fixed(run.wall_s, 1) + " s, peak " +
+             format_fixed(run.peak_mib, 0) + " MiB, scan->fit RMS " +
+             format_fixed(r["scan_to_fit"]["rms_percent"].get<double>(), 4) + "%, max " +
+             format_fixed(r["scan_to_fit"]["max_percent"].get<double>(), 4) + "%");
     std::vector<std::string> cells = {grouped(run.triangles), grouped(run.vertices), std::to_string(steps),
                                       format_fixed(run.wall_s, 1), format_fixed(r["decimate_s"].get<double>(), 1),
                                       format_fixed(r["fit_s"].get<double>(), 1), format_fixed(run.peak_mib, 0),
@@ -297,6 +312,9 @@ int bench_fit(const Args& args)
     table.add(cells);
     rows.push_back(run_json(run));
   }
+  if (sized == sizes)
+    task->step(sized);
+  task.reset();
   fs::remove_all(folder);
   if (json) {
     const nlohmann::json out = {{"scan", "femur"}, {"level", level}, {"noise", kNoise}, {"fits", rows},

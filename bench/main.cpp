@@ -50,7 +50,7 @@ int bench(const Argv& argv)
     {"subdivide", {"--phases", "--steps", "--tool", "--mesh", "--max-triangles", "--studio"}},
     {"paint", {"--level", "--repeats", "--max-triangles", "--studio"}},
     {"view", {"--json", "--phases", "--level", "--repeats", "--tool", "--mesh", "--max-triangles"}},
-    {"fit", {"--phases", "--repeats", "--steps", "--tool", "--mesh", "--quiet", "--studio"}}};
+    {"fit", {"--phases", "--repeats", "--steps", "--tool", "--mesh", "--studio"}}};
   if (const auto found = foreign.find(what); found != foreign.end())
     for (const std::string& option : found->second)
       if (args.has(option) || args.flag(option))

@@ -36,17 +36,34 @@ void make_directory(const std::string& dir)
       batch->made_directory(made);
 }
 
-PaintingExportReport export_model(PaintSurface& surface, int model_level, const std::string& dir, CancelFlag cancel)
+namespace {
+
+//! The points between an export's steps: where a cancel is looked at and
+//! progress counted.
+struct ExportSteps
 {
-  stop_if_cancelled(cancel);
-  AtomicWriteBatch batch; // every file of the model, or none
-  make_directory(dir);
+  CancelFlag cancel;
+  ProgressTask* task = nullptr;
+  std::size_t done = 0;
+  void next()
+  {
+    stop_if_cancelled(cancel);
+    if (task)
+      task->step(++done);
+  }
+};
+
+//! ExportSteps::next() calls in write_model().
+constexpr std::size_t kModelSteps = 4;
+
+PaintingExportReport write_model(PaintSurface& surface, int model_level, const std::string& dir, ExportSteps& steps)
+{
   ExportModel model;
   TextureMaps maps;
   build_export(surface, model_level, model, maps);
-  stop_if_cancelled(cancel);
+  steps.next();
   write_texture_maps(maps, dir);
-  stop_if_cancelled(cancel);
+  steps.next();
   write_obj_model(model, maps, dir);
   GltfImages images;
   for (const bool inside : {false, true}) {
@@ -62,11 +79,10 @@ PaintingExportReport export_model(PaintSurface& surface, int model_level, const 
                                     maps.width, maps.height, 3, path);
     write_bytes_atomically(path, {png});
   }
-  stop_if_cancelled(cancel);
+  steps.next();
   const std::string gltf = gltf_bytes(model, maps, images, false);
   write_bytes_atomically(dir + "/model.gltf", {gltf});
-  stop_if_cancelled(cancel);
-  batch.commit();
+  steps.next();
   PaintingExportReport report;
   report.model_quads = model.mesh.quads.size();
   report.map_width = maps.width;
@@ -74,16 +90,32 @@ PaintingExportReport export_model(PaintSurface& surface, int model_level, const 
   return report;
 }
 
+} // namespace
+
+PaintingExportReport export_model(PaintSurface& surface, int model_level, const std::string& dir, CancelFlag cancel)
+{
+  stop_if_cancelled(cancel);
+  AtomicWriteBatch batch; // every file of the model, or none
+  make_directory(dir);
+  ExportSteps steps{cancel};
+  PaintingExportReport report = write_model(surface, model_level, dir, steps);
+  batch.commit();
+  return report;
+}
+
 PaintingExportReport export_painting(PaintSurface& surface, int model_level, const std::string& dir,
-                                     const std::vector<LabelClass>& labels)
+                                     const std::vector<LabelClass>& labels, Progress* progress)
 {
   AtomicWriteBatch batch; // the surface and the model together
   make_directory(dir);
+  ProgressTask task(progress, "writing " + dir, 1 + kModelSteps);
+  ExportSteps steps{nullptr, &task};
   const std::string surface_path = dir + "/surface.vtp";
   vtkSmartPointer<vtkPolyData> poly = to_polydata(surface.painted_surface());
   add_label_classes(poly, labels);
   write_vtp(poly, surface_path);
-  PaintingExportReport report = export_model(surface, model_level, dir);
+  steps.next();
+  PaintingExportReport report = write_model(surface, model_level, dir, steps);
   batch.commit();
   report.surface_path = surface_path;
   return report;

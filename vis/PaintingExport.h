@@ -6,6 +6,7 @@
 #include "meshpaintVisModule.h" // for MESHPAINTVIS_EXPORT
 
 #include "core/cancellation.h"   // for meshpaint::CancelFlag
+#include "core/progress.h"       // for meshpaint::Progress
 #include "paint/paint_surface.h" // for meshpaint::PaintSurface
 #include "project/labels.h"      // for meshpaint::LabelClass
 
@@ -41,12 +42,14 @@ MESHPAINTVIS_EXPORT PaintingExportReport export_model(PaintSurface& surface, int
 
 //! export_model(), and before it DIR/surface.vtp: the painted limit surface
 //! with its channel arrays and the label classes as field data
-//! (add_label_classes()) (`meshpaint paint -o DIR`, ExportModel()).
+//! (add_label_classes()) (`meshpaint paint -o DIR`, ExportModel()); one
+//! task "writing DIR" on `progress`, a step per file or group of files.
 //! \throw IOError when DIR cannot be created or a file not written;
 //! StorageError when the disk is full.
 MESHPAINTVIS_EXPORT PaintingExportReport export_painting(PaintSurface& surface, int model_level,
                                                          const std::string& dir,
-                                                         const std::vector<LabelClass>& labels = {});
+                                                         const std::vector<LabelClass>& labels = {},
+                                                         Progress* progress = nullptr);
 
 //! Writes the model at `model_level` as one self-contained glTF 2.0 file,
 //! textures inside: binary .glb or text .gltf by the extension of `path`

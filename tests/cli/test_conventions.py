@@ -247,12 +247,12 @@ def test_quiet_prints_no_progress(command, tmp_path):
     assert all(": warning: " in line for line in r.stderr.splitlines()), r.stderr
 
 
-def test_progress_is_a_bar_on_a_terminal(tmp_path):
+def shown_on_a_terminal(args):
+    """What `meshpaint ARGS` draws on a terminal's stderr; its exit status."""
     pty = pytest.importorskip("pty")
     master, slave = pty.openpty()
     try:
-        p = subprocess.Popen([BIN, "subdivide", CUBE, "--level", "3", "-o", str(tmp_path / "s.vtp")],
-                             stdout=subprocess.PIPE, stderr=slave, env=dict(os.environ, TERM="xterm"))
+        p = subprocess.Popen([BIN, *args], stdout=subprocess.PIPE, stderr=slave, env=dict(os.environ, TERM="xterm"))
         os.close(slave)
         p.communicate(timeout=600)
         shown = b""
@@ -266,12 +266,27 @@ def test_progress_is_a_bar_on_a_terminal(tmp_path):
             shown += chunk
     finally:
         os.close(master)
-    assert p.returncode == 0
-    text = shown.decode()
+    return shown.decode(), p.returncode
+
+
+def test_progress_is_a_bar_on_a_terminal(tmp_path):
+    text, status = shown_on_a_terminal(["subdivide", CUBE, "--level", "3", "-o", str(tmp_path / "s.vtp")])
+    assert status == 0
     # Redrawn in place: a bar with the percentage and the time left, then the line finished.
     assert re.search(r"\rmeshpaint subdivide: level 3 into .*s\.vtp \[[#.]{30}\] \d+% (--:--|\d+:\d\d) left\x1b\[K",
                      text), repr(text)
     assert re.search(r"\rmeshpaint subdivide: level 3 into .*s\.vtp: 100% \([0-9.]+ s\)\x1b\[K", text), repr(text)
+
+
+def test_the_writing_bar_moves_as_files_are_written(tmp_path):
+    # The femur at level 4 writes for seconds: the bar moves between files.
+    strokes = tmp_path / "none.json"
+    strokes.write_text('{"strokes": []}')
+    femur = os.path.join(SCANS, "femur.off")
+    text, status = shown_on_a_terminal(["paint", femur, "--strokes", str(strokes), "--level", "4",
+                                        "-o", str(tmp_path / "out")])
+    assert status == 0, text
+    assert re.search(r"\rmeshpaint paint: writing .*out \[[#.]{30}\] [1-9]\d?% ", text), repr(text)
 
 
 def test_docs_show_the_usage_text_as_printed():

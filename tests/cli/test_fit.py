@@ -288,6 +288,9 @@ def test_bench_fit_decimation_rows_agree_with_fit(tmp_path):
         pytest.skip("data/scans missing (scripts/fetch-scans.sh)")
     r = run("bench", "fit", "--max-triangles", "1000", "--json")
     assert r.returncode == 0, r.stderr
+    # Progress as plain lines (stderr is a pipe): each task's finishing line.
+    for task in (r"fitting \d+ scans at level 3", r"decimating \d+ scans by each method"):
+        assert re.search(r"^meshpaint bench: " + task + r": 100% \([0-9.]+ s\)$", r.stderr, re.M), r.stderr
     out = json.loads(r.stdout)
     methods = {"meshpaint decimate()", "vtkQuadricDecimation", "vtkQuadricDecimation, volume preservation",
                "CGAL edge collapse, Garland-Heckbert planes"}
