@@ -2,7 +2,6 @@
 #include "ViewPixel.h"
 
 #include "BrushSettings.h"  // for meshpaint::BrushSettings
-#include "ChannelDisplay.h" // for meshpaint::shown_channel_names
 #include "vtkPaintView.h"   // for vtkPaintView
 
 #include <QButtonGroup>   // for QButtonGroup
@@ -171,11 +170,6 @@ BrushPanel::BrushPanel(vtkPaintView* view, QWidget* parent) : QWidget(parent), v
   connect(channel_, QOverload<int>::of(&QComboBox::activated), [this](int k) {
     change([&](BrushSettings& b) { b.set_channel(BrushSettings::channels()[std::size_t(k)]); });
   });
-  shown_ = combo(shown_channel_names());
-  shown_->setObjectName("shown_channel");
-  channel_form->addRow("Shown", shown_);
-  connect(shown_, QOverload<int>::of(&QComboBox::activated),
-          [this](int k) { view_->SetShownChannel(shown_channel_names()[std::size_t(k)].c_str()); });
   layout->addWidget(channel_box);
   layout->addStretch();
   sync();
@@ -257,7 +251,6 @@ void BrushPanel::sync()
   const QColor c = qcolour(b->colour());
   colour_->setStyleSheet(QString("background-color: %1; color: %2").arg(c.name(), c.lightness() > 128 ? "black" : "white"));
   channel_->setCurrentIndex(index(BrushSettings::channels(), b->channel()));
-  shown_->setCurrentIndex(index(shown_channel_names(), view_->GetShownChannel()));
   syncing_ = false;
 }
 

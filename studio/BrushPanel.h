@@ -1,5 +1,5 @@
 // The studio's brush panel: the tool, the brush's settings, its colour (a
-// picker and the swatches) and the channels painted and shown. Every change
+// picker and the swatches) and the channel painted. Every change
 // goes to the view's BrushSettings, the same the keys change.
 #pragma once
 
@@ -52,7 +52,6 @@ private:
   QPushButton* eyedropper_;
   QWidget* render_ = nullptr;
   QComboBox* channel_;
-  QComboBox* shown_;
 };
 
 } // namespace meshpaint::studio

@@ -5,7 +5,6 @@
 
 #include "atlas/patch_layout.h" // for meshpaint::kMaxLevel
 
-#include <QCheckBox>      // for QCheckBox
 #include <QComboBox>      // for QComboBox
 #include <QDoubleSpinBox> // for QDoubleSpinBox
 #include <QFormLayout>    // for QFormLayout
@@ -21,7 +20,7 @@
 namespace meshpaint::studio {
 
 LevelPanel::LevelPanel(vtkPaintView* view, std::function<void(int)> change_level,
-                       std::function<void(bool)> show_borders, QWidget* parent)
+                       QWidget* parent)
   : QWidget(parent), view_(view), change_level_(std::move(change_level))
 {
   auto* form = new QFormLayout(this);
@@ -53,10 +52,6 @@ LevelPanel::LevelPanel(vtkPaintView* view, std::function<void(int)> change_level
   form->addRow("Aim at", rate_);
   lod_in_use_ = new QLabel;
   form->addRow("Drawn moving", lod_in_use_);
-  borders_ = new QCheckBox("Patch borders");
-  borders_->setObjectName("patch_borders");
-  borders_->setToolTip("Lines along the borders of the atlas's patches");
-  form->addRow(borders_);
 
   connect(apply_, &QPushButton::clicked, [this] {
     if (!busy_ && level_->value() != view_->GetLevel())
@@ -81,7 +76,6 @@ LevelPanel::LevelPanel(vtkPaintView* view, std::function<void(int)> change_level
       sync();
     }
   });
-  connect(borders_, &QCheckBox::toggled, [show_borders = std::move(show_borders)](bool on) { show_borders(on); });
   sync();
 }
 

@@ -1,14 +1,13 @@
 // The studio's level panel: the painting level (a change rebuilds the
 // surfaces at the new level off the interface thread and replays their
 // strokes), the level geometry tools edit, the level of detail drawn while
-// the camera moves, and the patch borders over the surface.
+// the camera moves.
 #pragma once
 
 #include <QWidget> // for QWidget
 
 #include <functional> // for std::function
 
-class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
@@ -22,8 +21,8 @@ class LevelPanel : public QWidget
 {
 public:
   //! `change_level(L)` rebuilds the scene at painting level L (the window
-  //! runs it in the background); `show_borders(on)` shows the patch borders.
-  LevelPanel(vtkPaintView* view, std::function<void(int)> change_level, std::function<void(bool)> show_borders,
+  //! runs it in the background).
+  LevelPanel(vtkPaintView* view, std::function<void(int)> change_level,
              QWidget* parent = nullptr);
   //! Shows the view's levels as they are now.
   void sync();
@@ -31,7 +30,6 @@ public:
   void set_busy(bool busy);
   QSpinBox* level() { return level_; }
   QPushButton* apply() { return apply_; }
-  QCheckBox* borders() { return borders_; }
 
 private:
   //! The quads at the level chosen, and whether it can be applied.
@@ -48,7 +46,6 @@ private:
   QComboBox* lod_;
   QDoubleSpinBox* rate_;
   QLabel* lod_in_use_;
-  QCheckBox* borders_;
 };
 
 } // namespace meshpaint::studio

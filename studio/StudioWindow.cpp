@@ -6,6 +6,7 @@
 #include "HistoryPanel.h"
 #include "LabelPanel.h"
 #include "LevelPanel.h"
+#include "DisplayPanel.h"
 #include "PreferencesDialog.h"
 
 #include "BrushSettings.h"    // for meshpaint::BrushSettings
@@ -118,9 +119,10 @@ StudioWindow::StudioWindow(vtkPaintView* view, QWidget* parent)
   labels_ = new LabelPanel(view_);
   labels_->watch(widget_);
   history_ = new HistoryPanel(view_);
-  levels_ = new LevelPanel(
-    view_, [this](int level) { change_level(level); }, [this](bool on) { show_patch_borders(on); });
+  levels_ = new LevelPanel(view_, [this](int level) { change_level(level); });
+  display_ = new DisplayPanel(view_, [this](bool on) { show_patch_borders(on); });
   QDockWidget* brush_dock = dock(this, "Brush", brush_, Qt::LeftDockWidgetArea);
+  QDockWidget* display_dock = dock(this, "Display", display_, Qt::LeftDockWidgetArea);
   QDockWidget* level_dock = dock(this, "Level", levels_, Qt::LeftDockWidgetArea);
   QDockWidget* label_dock = dock(this, "Label classes", labels_, Qt::RightDockWidgetArea);
   QDockWidget* history_dock = dock(this, "History", history_, Qt::RightDockWidgetArea);
@@ -129,7 +131,7 @@ StudioWindow::StudioWindow(vtkPaintView* view, QWidget* parent)
   statusBar()->addWidget(status_, 1);
   build_menus();
   QMenu* panels = menuBar()->addMenu("&Panels");
-  for (QDockWidget* d : {brush_dock, level_dock, label_dock, history_dock})
+  for (QDockWidget* d : {brush_dock, display_dock, level_dock, label_dock, history_dock})
     panels->addAction(d->toggleViewAction());
   observers_[0] = view_->AddObserver(vtkCommand::UpdateDataEvent, this, &StudioWindow::view_changed);
   observers_[3] = view_->AddObserver(vtkCommand::ExitEvent, this, &StudioWindow::quit_key);
@@ -350,6 +352,7 @@ void StudioWindow::view_changed()
     labels_->sync();
   history_->sync();
   levels_->sync();
+  display_->sync();
   update_patch_borders();
   show_status();
 }
@@ -557,8 +560,8 @@ void StudioWindow::show_patch_borders(bool on)
 {
   if (borders_action_ && borders_action_->isChecked() != on)
     borders_action_->setChecked(on);
-  if (levels_ && levels_->borders()->isChecked() != on)
-    levels_->borders()->setChecked(on);
+  if (display_ && display_->borders()->isChecked() != on)
+    display_->borders()->setChecked(on);
   if (!on) {
     for (const auto& actor : borders_)
       view_->GetRenderer()->RemoveActor(actor);

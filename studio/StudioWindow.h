@@ -32,6 +32,7 @@ class FitDialog;
 class HistoryPanel;
 class LabelPanel;
 class LevelPanel;
+class DisplayPanel;
 class PreferencesDialog;
 
 class StudioWindow : public QMainWindow
@@ -49,6 +50,7 @@ public:
   LabelPanel* label_panel() { return labels_; }
   HistoryPanel* history_panel() { return history_; }
   LevelPanel* level_panel() { return levels_; }
+  DisplayPanel* display_panel() { return display_; }
   vtkPaintView* view() { return view_; }
 
   //! Opens a mesh file or a project (`*.meshpaint`) in place of what is
@@ -125,6 +127,7 @@ private:
   LabelPanel* labels_ = nullptr;
   HistoryPanel* history_ = nullptr;
   LevelPanel* levels_ = nullptr;
+  DisplayPanel* display_ = nullptr;
   BackgroundTask* task_ = nullptr;
   PreferencesDialog* preferences_ = nullptr;
   std::vector<QAction*> surface_actions_; // what changes the surfaces: off while a task runs

@@ -14,6 +14,7 @@
 #include "HistoryPanel.h"
 #include "LabelPanel.h"
 #include "LevelPanel.h"
+#include "DisplayPanel.h"
 #include "PolyDataFiles.h"
 #include "PreferencesDialog.h"
 #include "Studio.h"
@@ -914,7 +915,7 @@ private Q_SLOTS:
              qPrintable(QString("%1x%2 on %3x%4").arg(w.width()).arg(w.height()).arg(screen.width()).arg(screen.height())));
     // Every panel shown and inside the window, the view between them.
     const QList<QDockWidget*> docks = w.findChildren<QDockWidget*>();
-    QCOMPARE(docks.size(), 4);
+    QCOMPARE(docks.size(), 5);
     for (QDockWidget* d : docks) {
       QVERIFY2(d->isVisible() && d->width() > 100, qPrintable(d->windowTitle()));
       QVERIFY2(w.rect().contains(d->geometry()), qPrintable(d->windowTitle()));
@@ -928,6 +929,22 @@ private Q_SLOTS:
     QCOMPARE(int(view->GetScene().history().size()), 1);
   }
 
+  void the_display_panel_chooses_the_channel_shown()
+  {
+    QTemporaryDir dir;
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("session"));
+    QComboBox* shown = w->display_panel()->shown();
+    QCOMPARE(QString(view->GetShownChannel()), QString("diffuse"));
+    QCOMPARE(shown->currentText(), QString("diffuse"));
+    shown->setFocus();
+    QTest::keyClick(shown, Qt::Key_Down); // the next channel, as a choice in the list
+    QVERIFY(QString(view->GetShownChannel()) != "diffuse");
+    QCOMPARE(QString(view->GetShownChannel()), shown->currentText());
+    QTest::keyClick(w->render_widget(), Qt::Key_V); // the view's key: the panel follows
+    QCOMPARE(shown->currentText(), QString(view->GetShownChannel()));
+  }
+
   void patch_borders_show_over_the_surface()
   {
     QTemporaryDir dir;
@@ -937,7 +954,7 @@ private Q_SLOTS:
     const QColor line = QColor::fromRgbF(0.05, 0.15, 0.45);
     QCOMPARE(pixels_like(*w, line), 0);
     QVERIFY(w->patch_border_lines() == nullptr);
-    QCheckBox* borders = w->level_panel()->borders();
+    QCheckBox* borders = w->display_panel()->borders();
     const QPoint box(6, borders->height() / 2); // on the box, not the empty width the layout gives it
     QTest::mouseClick(borders, Qt::LeftButton, Qt::NoModifier, box);
     QVERIFY(borders->isChecked());
