@@ -133,6 +133,9 @@ int fit_command(const Argv& argv)
     const std::size_t budget = base_faces > 0 ? std::size_t(base_faces) : default_base_faces(scan.face_count());
     say("decimating to " + grouped(budget) + " faces");
     decimation = decimate(scan, budget);
+    if (decimation->passes.passes > 0)
+      say("quadric passes: " + std::to_string(decimation->passes.passes) + " reduced the scan to " +
+          grouped(decimation->passes.faces) + " faces");
     base = decimation->base;
     mode = "decimated to " + grouped(base.face_count()) + " faces (budget " + grouped(budget) + ")";
     for (int s = 0; s + 1 < decimation->stages; ++s)
@@ -193,6 +196,10 @@ int fit_command(const Argv& argv)
                         {"budget", decimation ? nlohmann::json(decimation->budget) : nlohmann::json(nullptr)},
                         {"decimation_stages", decimation ? decimation->stages : 0},
                         {"decimation_stage_faces", stage_faces},
+                        {"quadric_passes", decimation ? decimation->passes.passes : 0},
+                        {"quadric_pass_faces", decimation && decimation->passes.passes > 0
+                                                   ? nlohmann::json(decimation->passes.faces)
+                                                   : nlohmann::json(nullptr)},
                         {"level", level},
                         {"patches", surface.atlas().topology().patch_count},
                         {"points", fit.points},

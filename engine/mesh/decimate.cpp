@@ -1,6 +1,7 @@
 #include "mesh/decimate.h"
 
 #include "mesh/edge_collapse.h"
+#include "mesh/quadric_passes.h"
 
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Bounded_normal_change_filter.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_plane_policies.h>
@@ -47,6 +48,11 @@ Decimation decimate(const BaseMesh& mesh, std::size_t target_faces)
 
   Decimation result;
   result.budget = target_faces;
+  if (cm.number_of_faces() > kQuadricPassesAbove && cm.number_of_faces() > kQuadricPassesLeave * target_faces)
+  {
+    result.passes = reduce_in_passes(cm, kQuadricPassesLeave * target_faces);
+    cm.collect_garbage(); // the ordered collapse indexes vertices densely
+  }
   for (int stage = 1; stage <= 2 && (stage == 1 || cm.number_of_faces() > target_faces); ++stage) {
     decimate_stage(cm, target_faces, stage);
     result.stage_faces[stage - 1] = cm.number_of_faces();

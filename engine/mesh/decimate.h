@@ -2,6 +2,7 @@
 #pragma once
 
 #include "mesh/base_mesh.h"
+#include "mesh/quadric_passes.h"
 
 #include <cstddef> // for std::size_t
 
@@ -13,17 +14,28 @@ namespace meshpaint {
 //! diagonal; at 2,500 under 0.8%.
 std::size_t default_base_faces(std::size_t faces);
 
+//! Scans of more triangles than this are first reduced by
+//! reduce_in_passes(), which is linear per pass; below it the ordered
+//! collapse alone takes under 20 s on a 2-core host.
+constexpr std::size_t kQuadricPassesAbove = 1000000;
+//! The passes stop at this many times the face budget, leaving the last
+//! collapses, which shape the base mesh most, to the ordered collapse.
+constexpr std::size_t kQuadricPassesLeave = 10;
+
 //! How the decimation went.
 struct Decimation
 {
   BaseMesh base;              //!< the decimated mesh
+  QuadricPasses passes;       //!< the first reduction (0 passes when the scan is small)
   std::size_t budget = 0;     //!< the face budget asked for
   int stages = 0;             //!< stages run, 1 or 2 (see decimate())
   std::size_t stage_faces[2] = {0, 0}; //!< triangles after each stage run
 };
 
 //! `mesh` (polygons fanned into triangles) decimated by edge collapses to
-//! at most `target_faces` triangles, CGAL's Garland-Heckbert plane
+//! at most `target_faces` triangles: on scans of over kQuadricPassesAbove
+//! triangles reduce_in_passes() first, down to kQuadricPassesLeave times
+//! the budget; then CGAL's Garland-Heckbert plane
 //! quadrics ordering the collapses and placing the new vertices (borders
 //! weighted, so that they stay on the scan's borders), in up to two stages,
 //! the second going on from where the first stopped above the budget:

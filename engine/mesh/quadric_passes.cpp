@@ -1,0 +1,205 @@
+#include "mesh/quadric_passes.h"
+
+#include <CGAL/boost/graph/Euler_operations.h> // for collapse_edge, does_satisfy_link_condition
+
+#include <algorithm> // for std::nth_element, std::sort
+#include <array>     // for std::array
+#include <cmath>     // for std::sqrt
+#include <cstdint>   // for std::uint32_t, std::uint8_t
+#include <vector>    // for std::vector
+
+namespace meshpaint {
+namespace {
+
+using Point = CgalKernel::Point_3;
+using Vector = CgalKernel::Vector_3;
+
+//! A symmetric 4x4 plane quadric: the summed squared distances to its
+//! planes, each weighted. a: the 3x3 part (xx xy xz yy yz zz), b, c.
+struct Quadric
+{
+  std::array<double, 6> a{};
+  Vector b{0, 0, 0};
+  double c = 0;
+
+  void add_plane(const Vector& n, const Point& on, double weight)
+  {
+    const double d = -(n.x() * on.x() + n.y() * on.y() + n.z() * on.z());
+    a[0] += weight * n.x() * n.x();
+    a[1] += weight * n.x() * n.y();
+    a[2] += weight * n.x() * n.z();
+    a[3] += weight * n.y() * n.y();
+    a[4] += weight * n.y() * n.z();
+    a[5] += weight * n.z() * n.z();
+    b = b + weight * d * n;
+    c += weight * d * d;
+  }
+  Quadric operator+(const Quadric& o) const
+  {
+    Quadric q;
+    for (int k = 0; k < 6; ++k)
+      q.a[k] = a[k] + o.a[k];
+    q.b = b + o.b;
+    q.c = c + o.c;
+    return q;
+  }
+  double cost(const Point& p) const
+  {
+    const double x = p.x(), y = p.y(), z = p.z();
+    return a[0] * x * x + 2 * a[1] * x * y + 2 * a[2] * x * z + a[3] * y * y + 2 * a[4] * y * z + a[5] * z * z +
+           2 * (b.x() * x + b.y() * y + b.z() * z) + c;
+  }
+};
+
+// Planes across border edges weigh this much more than faces of the same
+// extent, so that a border moves only along itself.
+constexpr double kBorderWeight = 100;
+// cos 60 degrees: the largest turn of a face of a collapse's star.
+constexpr double kMinNormalCosine = 0.5;
+// Valence of the kept vertex beyond which a collapse is refused (slivers).
+constexpr int kMaxValence = 24;
+
+enum Where : std::uint8_t { kSource, kTarget, kMidpoint };
+
+struct Candidate
+{
+  float cost;
+  std::uint32_t edge;
+  Where where;
+};
+
+std::vector<Quadric> vertex_quadrics(const CgalMesh& mesh)
+{
+  std::vector<Quadric> q(mesh.num_vertices());
+  for (const CgalMesh::Face_index f : mesh.faces()) {
+    const CgalMesh::Halfedge_index h = mesh.halfedge(f);
+    const CgalMesh::Vertex_index v[3] = {mesh.source(h), mesh.target(h), mesh.target(mesh.next(h))};
+    const Vector n = CGAL::cross_product(mesh.point(v[1]) - mesh.point(v[0]), mesh.point(v[2]) - mesh.point(v[0]));
+    const double twice_area = std::sqrt(n.squared_length());
+    if (twice_area == 0)
+      continue;
+    for (const CgalMesh::Vertex_index u : v)
+      q[u].add_plane(n / twice_area, mesh.point(v[0]), 0.5 * twice_area);
+  }
+  for (const CgalMesh::Halfedge_index h : mesh.halfedges()) {
+    if (!mesh.is_border(mesh.opposite(h)) || mesh.is_border(h))
+      continue;
+    const Point& s = mesh.point(mesh.source(h));
+    const Vector along = mesh.point(mesh.target(h)) - s;
+    const Vector face_normal =
+        CGAL::cross_product(along, mesh.point(mesh.target(mesh.next(h))) - s);
+    const Vector across = CGAL::cross_product(along, face_normal);
+    const double length = std::sqrt(across.squared_length());
+    if (length == 0)
+      continue;
+    for (const CgalMesh::Vertex_index u : {mesh.source(h), mesh.target(h)})
+      q[u].add_plane(across / length, s, kBorderWeight * along.squared_length());
+  }
+  return q;
+}
+
+//! Whether moving `moved` (and `other`, the edge's far end) to `p` keeps
+//! every face of `moved`'s star that survives the collapse turned by at
+//! most 60 degrees and not degenerate; counts the faces into `valence`.
+bool star_keeps_its_faces(const CgalMesh& mesh, CgalMesh::Vertex_index moved, CgalMesh::Vertex_index other,
+                          const Point& p, int& valence)
+{
+  for (const CgalMesh::Halfedge_index h : CGAL::halfedges_around_target(mesh.halfedge(moved), mesh)) {
+    ++valence;
+    if (mesh.is_border(h))
+      continue;
+    const CgalMesh::Vertex_index x = mesh.target(mesh.next(h)), y = mesh.source(h);
+    if (x == other || y == other)
+      continue;
+    const Point& a = mesh.point(moved);
+    const Vector before = CGAL::cross_product(mesh.point(x) - a, mesh.point(y) - a);
+    const Vector after = CGAL::cross_product(mesh.point(x) - p, mesh.point(y) - p);
+    const double dot = before * after;
+    if (dot <= 0 || dot * dot <= kMinNormalCosine * kMinNormalCosine * before.squared_length() * after.squared_length())
+      return false;
+  }
+  return true;
+}
+
+} // namespace
+
+QuadricPasses reduce_in_passes(CgalMesh& mesh, std::size_t target_faces)
+{
+  QuadricPasses result;
+  std::vector<Quadric> quadrics = vertex_quadrics(mesh);
+  std::vector<char> border(mesh.num_vertices()), touched(mesh.num_vertices());
+  std::vector<Candidate> candidates;
+  while (mesh.number_of_faces() > target_faces) {
+    const std::size_t faces_before = mesh.number_of_faces();
+    std::fill(border.begin(), border.end(), 0);
+    for (const CgalMesh::Halfedge_index h : mesh.halfedges())
+      if (mesh.is_border(h))
+        border[mesh.source(h)] = border[mesh.target(h)] = 1;
+
+    candidates.clear();
+    for (const CgalMesh::Edge_index e : mesh.edges()) {
+      const CgalMesh::Halfedge_index h = mesh.halfedge(e);
+      const CgalMesh::Vertex_index s = mesh.source(h), t = mesh.target(h);
+      const bool border_edge = mesh.is_border(e);
+      if (!border_edge && border[s] && border[t])
+        continue; // would pinch the surface across
+      const Quadric q = quadrics[s] + quadrics[t];
+      Candidate best{0, std::uint32_t(e), kSource};
+      double cost = -1;
+      auto consider = [&](Where where, const Point& p) {
+        const double c = q.cost(p);
+        if (cost < 0 || c < cost) {
+          cost = c;
+          best.where = where;
+        }
+      };
+      if (border_edge || !border[t])
+        consider(kSource, mesh.point(s));
+      if (border_edge || !border[s])
+        consider(kTarget, mesh.point(t));
+      if (border_edge || (!border[s] && !border[t]))
+        consider(kMidpoint, CGAL::midpoint(mesh.point(s), mesh.point(t)));
+      best.cost = float(std::max(cost, 0.0));
+      candidates.push_back(best);
+    }
+    if (candidates.empty())
+      break;
+
+    const auto cheaper = [](const Candidate& x, const Candidate& y) { return x.cost < y.cost; };
+    const auto end = candidates.begin() + std::ptrdiff_t((candidates.size() + 3) / 4);
+    std::nth_element(candidates.begin(), end - 1, candidates.end(), cheaper);
+    std::sort(candidates.begin(), end, cheaper);
+
+    std::fill(touched.begin(), touched.end(), 0);
+    for (auto c = candidates.begin(); c != end && mesh.number_of_faces() > target_faces; ++c) {
+      const CgalMesh::Edge_index e(c->edge);
+      if (mesh.is_removed(e))
+        continue;
+      const CgalMesh::Halfedge_index h = mesh.halfedge(e);
+      const CgalMesh::Vertex_index s = mesh.source(h), t = mesh.target(h);
+      if (touched[s] || touched[t])
+        continue;
+      const Point p = c->where == kSource   ? mesh.point(s)
+                      : c->where == kTarget ? mesh.point(t)
+                                            : CGAL::midpoint(mesh.point(s), mesh.point(t));
+      int valence = 0;
+      if (!star_keeps_its_faces(mesh, s, t, p, valence) || !star_keeps_its_faces(mesh, t, s, p, valence) ||
+          valence - 4 > kMaxValence || !CGAL::Euler::does_satisfy_link_condition(e, mesh))
+        continue;
+      const Quadric q = quadrics[s] + quadrics[t];
+      const CgalMesh::Vertex_index kept = CGAL::Euler::collapse_edge(e, mesh);
+      mesh.point(kept) = p;
+      quadrics[kept] = q;
+      touched[kept] = 1;
+      for (const CgalMesh::Vertex_index u : CGAL::vertices_around_target(mesh.halfedge(kept), mesh))
+        touched[u] = 1;
+    }
+    ++result.passes;
+    if (100 * (faces_before - mesh.number_of_faces()) < faces_before)
+      break;
+  }
+  result.faces = mesh.number_of_faces();
+  return result;
+}
+
+} // namespace meshpaint
