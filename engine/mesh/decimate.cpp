@@ -32,7 +32,7 @@ void decimate_stage(CgalMesh& mesh, std::size_t target_faces, int stage)
 
 std::size_t default_base_faces(std::size_t faces) { return std::min<std::size_t>(20000, std::max<std::size_t>(2500, faces / 50)); }
 
-Decimation decimate(const BaseMesh& mesh, std::size_t target_faces)
+CgalMesh cgal_triangles(const BaseMesh& mesh)
 {
   CgalMesh cm;
   cm.reserve(CgalMesh::size_type(mesh.vertex_count()), CgalMesh::size_type(3 * mesh.face_count()),
@@ -45,7 +45,12 @@ Decimation decimate(const BaseMesh& mesh, std::size_t target_faces)
       cm.add_face(CgalMesh::Vertex_index(CgalMesh::size_type(v[0])), CgalMesh::Vertex_index(CgalMesh::size_type(v[k])),
                   CgalMesh::Vertex_index(CgalMesh::size_type(v[k + 1])));
   }
+  return cm;
+}
 
+Decimation decimate(const BaseMesh& mesh, std::size_t target_faces)
+{
+  CgalMesh cm = cgal_triangles(mesh);
   Decimation result;
   result.budget = target_faces;
   if (cm.number_of_faces() > kQuadricPassesAbove && cm.number_of_faces() > kQuadricPassesLeave * target_faces)

@@ -32,6 +32,9 @@ struct Decimation
   std::size_t stage_faces[2] = {0, 0}; //!< triangles after each stage run
 };
 
+//! `mesh` as a CGAL surface mesh, its polygons fanned into triangles.
+CgalMesh cgal_triangles(const BaseMesh& mesh);
+
 //! `mesh` (polygons fanned into triangles) decimated by edge collapses to
 //! at most `target_faces` triangles: on scans of over kQuadricPassesAbove
 //! triangles reduce_in_passes() first, down to kQuadricPassesLeave times
