@@ -59,13 +59,16 @@ constexpr double kMinNormalCosine = 0.5;
 // Valence of the kept vertex beyond which a collapse is refused (slivers).
 constexpr int kMaxValence = 24;
 
-enum Where : std::uint8_t { kSource, kTarget, kMidpoint };
+// Where the kept vertex goes: onto an end, named by its vertex index
+// (an edge's halfedge may turn around in a collapse nearby, so "source"
+// would not last), or the midpoint.
+constexpr std::uint32_t kMidpoint = ~std::uint32_t(0);
 
 struct Candidate
 {
   float cost;
   std::uint32_t edge;
-  Where where;
+  std::uint32_t at; //!< vertex index, or kMidpoint
 };
 
 std::vector<Quadric> vertex_quadrics(const CgalMesh& mesh)
@@ -144,19 +147,19 @@ QuadricPasses reduce_in_passes(CgalMesh& mesh, std::size_t target_faces)
       if (!border_edge && border[s] && border[t])
         continue; // would pinch the surface across
       const Quadric q = quadrics[s] + quadrics[t];
-      Candidate best{0, std::uint32_t(e), kSource};
+      Candidate best{0, std::uint32_t(e), kMidpoint};
       double cost = -1;
-      auto consider = [&](Where where, const Point& p) {
+      auto consider = [&](std::uint32_t at, const Point& p) {
         const double c = q.cost(p);
         if (cost < 0 || c < cost) {
           cost = c;
-          best.where = where;
+          best.at = at;
         }
       };
       if (border_edge || !border[t])
-        consider(kSource, mesh.point(s));
+        consider(std::uint32_t(s), mesh.point(s));
       if (border_edge || !border[s])
-        consider(kTarget, mesh.point(t));
+        consider(std::uint32_t(t), mesh.point(t));
       if (border_edge || (!border[s] && !border[t]))
         consider(kMidpoint, CGAL::midpoint(mesh.point(s), mesh.point(t)));
       best.cost = float(std::max(cost, 0.0));
@@ -179,9 +182,8 @@ QuadricPasses reduce_in_passes(CgalMesh& mesh, std::size_t target_faces)
       const CgalMesh::Vertex_index s = mesh.source(h), t = mesh.target(h);
       if (touched[s] || touched[t])
         continue;
-      const Point p = c->where == kSource   ? mesh.point(s)
-                      : c->where == kTarget ? mesh.point(t)
-                                            : CGAL::midpoint(mesh.point(s), mesh.point(t));
+      const Point p = c->at == kMidpoint ? CGAL::midpoint(mesh.point(s), mesh.point(t))
+                                         : mesh.point(CgalMesh::Vertex_index(c->at));
       int valence = 0;
       if (!star_keeps_its_faces(mesh, s, t, p, valence) || !star_keeps_its_faces(mesh, t, s, p, valence) ||
           valence - 4 > kMaxValence || !CGAL::Euler::does_satisfy_link_condition(e, mesh))
