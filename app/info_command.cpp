@@ -4,7 +4,9 @@
 #include "atlas/atlas.h"
 #include "core/errors.h"
 #include "core/format.h"
+#include "core/host_memory.h"
 #include "mesh/mesh_stats.h"
+#include "project/fit_memory.h"
 #include "project/project_surface.h"
 
 #include <cstdio>   // for std::snprintf
@@ -35,8 +37,11 @@ std::string hex32(std::uint32_t v)
 
 int info_command(const Argv& argv)
 {
-  Args args("info", argv, {"--no-weld"}, {"--device", "--storage", "--import-array"});
+  Args args("info", argv, {"--no-weld"}, {"--device", "--storage", "--import-array", "--level", "--base-faces"});
   args.expect_positionals(1, 1, "MESH|PROJECT");
+  // What `meshpaint fit` of this mesh would need, at fit's options.
+  const int fit_level = args.integer("--level", 3, 1, kMaxLevel);
+  const int fit_base_faces = args.integer("--base-faces", 0, 4, 10000000);
   const std::string path = args.positionals()[0];
   const MeshOrProject input = open_mesh_or_project(path, import_options(args));
   const BaseMesh& mesh = input.mesh();
@@ -107,6 +112,17 @@ int info_command(const Argv& argv)
                runtime ? (fit_problem(topo, l, runtime->info(), storage).empty() ? "yes" : "no") : "?"});
   }
   table.print(os);
+
+  std::size_t triangles = 0;
+  for (const int size : mesh.face_sizes)
+    triangles += std::size_t(size - 2);
+  const FitMemory fit = plan_fit_memory(triangles, std::size_t(fit_base_faces), fit_level);
+  const std::size_t available = available_host_memory();
+  os << "\nfit          level " << fit_level << ", base mesh " << counted(fit.base_faces, "face", "faces", true)
+     << ": about " << grouped(fit.points) << " points, " << format_bytes(fit.bytes) << " of host memory at the peak"
+     << (available == 0 ? std::string(" (available memory unknown)")
+         : ", " + format_bytes(available) + " available: " + (fit.bytes <= available ? "fits" : "does not fit"))
+     << "\n";
   return 0;
 }
 

@@ -24,7 +24,8 @@ commands:
                                       subdivide the bunny scan (or MESH), write its limit
                                       surface as DIR/NAME_levelL_limit.vtp, then paint the
                                       bundled strokes into DIR/painted/; print timings
-  info MESH                           counts, genus, boundaries, valences, atlas per level
+  info MESH                           counts, genus, boundaries, valences, atlas per level,
+                                      the memory a fit needs
   subdivide MESH --level L [--limit] [--quiet] -o OUT.{obj,ply,vtp}
                                       the level-L surface (welded quads); --limit: limit
                                       positions and point array Normals

@@ -5,6 +5,8 @@ import math
 import os
 import random
 import re
+import subprocess
+import sys
 
 import pytest
 import vtk
@@ -208,7 +210,7 @@ def noisy_bowl(path, sigma=0.01):
 
 
 REPORT_KEYS = {"scan", "scan_vertices", "scan_faces", "diagonal", "mode", "base_faces", "budget", "decimation_stages",
-               "decimation_stage_faces",
+               "decimation_stage_faces", "quadric_passes", "quadric_pass_faces",
                "level", "patches", "points", "passes", "ray_misses", "scan_to_fit", "fit_to_scan", "folded_patches",
                "stretched_patches", "decimate_s", "fit_s", "save_s", "total_s", "project"}
 
@@ -242,6 +244,7 @@ def test_fit_report_has_the_documented_keys_and_the_printed_values(tmp_path):
     assert (j["scan"], j["project"], j["mode"], j["level"], j["passes"]) == (str(scan), str(project), "decimated", 1, 2)
     assert (j["scan_vertices"], j["scan_faces"]) == (2562, 5120)
     assert j["budget"] == 2500 and j["base_faces"] <= 2500 and j["patches"] == 3 * j["base_faces"]
+    assert (j["quadric_passes"], j["quadric_pass_faces"]) == (0, None)  # a small scan: the ordered collapse alone
     m = re.search(r"^atlas +level 1, ([0-9,]+) patches, ([0-9,]+) points", r.stdout, re.M)
     assert (int(m[1].replace(",", "")), int(m[2].replace(",", ""))) == (j["patches"], j["points"])
     printed = fit_numbers(r.stdout)
@@ -309,3 +312,32 @@ def test_bench_fit_decimation_rows_agree_with_fit(tmp_path):
         if row["method"] == "meshpaint decimate()":
             assert row["faces"] == fits[row["name"]]["base_faces"], row
     assert len(rows) == len(methods) * len(fits)
+
+
+def planned_fit_bytes(stdout):
+    m = re.search(r"^fit +level (\d+), base mesh ([0-9,]+) faces: about ([0-9,]+) points, ([0-9.]+) (MiB|GiB) of host "
+                  r"memory at the peak, [0-9.]+ [KMG]i?B available: (fits|does not fit)$", stdout, re.M)
+    assert m, stdout
+    return int(m[1]), int(m[2].replace(",", "")), int(m[3].replace(",", "")), float(m[4]) * (2**20 if m[5] == "MiB" else 2**30)
+
+
+@pytest.mark.skipif(os.environ.get("MESHPAINT_SANITIZED") == "1", reason="the sanitizers' shadow memory inflates the peak")
+def test_info_plans_the_memory_a_fit_needs_and_the_fit_stays_within_it(tmp_path):
+    scan = os.path.join(SCANS, "bunny00.off")
+    r = run("info", scan)
+    assert r.returncode == 0, r.stderr
+    level, base, points, planned = planned_fit_bytes(r.stdout)
+    assert (level, base, points) == (3, 2500, 3 * 2500 * 16)  # fit's defaults: level 3, budget 2,500 for 75,408 triangles
+    r4 = run("info", scan, "--level", "4", "--base-faces", "5000")
+    assert planned_fit_bytes(r4.stdout)[:3] == (4, 5000, 3 * 5000 * 64) and planned_fit_bytes(r4.stdout)[3] > planned
+    assert run("info", scan, "--level", "13").returncode == 2
+
+    # the plan bounds the fit's real peak, and not by an order of magnitude (the peak measured
+    # by a child Python, so that this process's own memory does not count)
+    code = ("import resource, subprocess, sys; r = subprocess.run(sys.argv[1:], capture_output=True); "
+            "print(r.returncode, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)")
+    out = subprocess.run([sys.executable, "-c", code, os.environ["MESHPAINT_BIN"], "fit", scan, "--quiet", "-o",
+                          str(tmp_path / "b.meshpaint")], capture_output=True, text=True, timeout=600).stdout.split()
+    assert out[0] == "0"
+    peak = int(out[1]) * 1024
+    assert peak <= planned <= 3 * peak, (peak, planned)

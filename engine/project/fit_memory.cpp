@@ -1,0 +1,32 @@
+#include "project/fit_memory.h"
+
+#include "mesh/decimate.h"
+
+#include <algorithm> // for std::min
+
+namespace meshpaint {
+namespace {
+
+// Measured peaks of `meshpaint fit` at level 3 on the noisy femur series of
+// `meshpaint bench fit`, 124,768 to 7,985,152 triangles, fitted as
+// fixed + per triangle + per point (docs/benchmarks.md).
+constexpr double kFixedBytes = 149.0 * 1048576;
+constexpr double kBytesPerTriangle = 477.0;
+constexpr double kBytesPerPoint = 634.0;
+constexpr double kMargin = 1.15;
+
+} // namespace
+
+FitMemory plan_fit_memory(std::size_t scan_triangles, std::size_t base_faces, int level)
+{
+  FitMemory m;
+  // fit decimates only a scan larger than its budget
+  m.base_faces = std::min(scan_triangles, base_faces > 0 ? base_faces : default_base_faces(scan_triangles));
+  // each base triangle becomes 3 patches of 4^(level-1) points
+  m.points = 3 * m.base_faces << (2 * (level - 1));
+  m.bytes = std::size_t(kMargin * (kFixedBytes + kBytesPerTriangle * double(scan_triangles) +
+                                   kBytesPerPoint * double(m.points)));
+  return m;
+}
+
+} // namespace meshpaint
