@@ -118,6 +118,50 @@ TEST(MeshImport, DuplicateFacesAreDroppedNotDetached)
   EXPECT_EQ(compute_stats(back).components, 1u);
 }
 
+//! The import of `faces` on `points`, as a file's soup.
+BaseMesh imported(const std::vector<Vec3>& points, const std::vector<std::vector<int>>& faces)
+{
+  PolygonSoup soup;
+  soup.points = points;
+  soup.faces = faces;
+  return import_mesh(soup, "soup", "soup: ");
+}
+
+TEST(MeshImport, OrientedManifoldSoupsKeepTheirFacesAndOthersAreOriented)
+{
+  // An oriented closed tetrahedron is taken as it is: no face turned, no vertex cut.
+  const std::vector<Vec3> tet = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const std::vector<std::vector<int>> outward = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  const BaseMesh clean = imported(tet, outward);
+  EXPECT_EQ(clean.report.faces_flipped, 0u);
+  EXPECT_EQ(clean.report.vertices_cut, 0u);
+  EXPECT_EQ(clean.face_vertices, (std::vector<int>{0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3}));
+
+  // One face turned against its neighbours: oriented again.
+  std::vector<std::vector<int>> one_turned = outward;
+  std::reverse(one_turned[3].begin(), one_turned[3].end());
+  EXPECT_EQ(imported(tet, one_turned).report.faces_flipped, 1u);
+
+  // Two closed tetrahedra touching at one vertex: every edge is manifold and
+  // oriented, but the shared vertex has two closed fans, and is cut in two.
+  std::vector<Vec3> pair = tet;
+  for (const Vec3& p : {Vec3{0, 0, -1}, Vec3{-1, 0, 0}, Vec3{0, -1, 0}})
+    pair.push_back(p);
+  std::vector<std::vector<int>> faces = outward;
+  for (const std::vector<int>& f : outward) { // the mirror image through the origin, still outward
+    std::vector<int> g;
+    for (const int v : f)
+      g.push_back(v == 0 ? 0 : v + 3);
+    std::reverse(g.begin(), g.end());
+    faces.push_back(g);
+  }
+  const BaseMesh touching = imported(pair, faces);
+  EXPECT_EQ(touching.vertex_count(), 8u);
+  EXPECT_EQ(touching.report.vertices_cut, 1u); // by CGAL's orienter, before the OpenMesh build
+  EXPECT_EQ(touching.report.nonmanifold_vertices_split, 0u);
+  EXPECT_EQ(compute_stats(touching).components, 2u);
+}
+
 TEST(MeshImport, BadInputNamesTheProblem)
 {
   EXPECT_THROW(load_mesh("/nonexistent/mesh.off"), IOError);
