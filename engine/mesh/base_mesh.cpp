@@ -216,30 +216,38 @@ void split_nonmanifold_vertices(BaseMesh& mesh)
 
 //! Takes the faces out of OpenMesh, checks coordinates, drops unused vertices
 //! and splits non-manifold ones.
-BaseMesh finish(const PolyMesh& om, const ImportReport& report, const std::string& name,
-                const std::string& where, const std::vector<Vec3>& colours, const std::vector<int>& labels,
-                const std::vector<ChannelArray>& channels, const std::map<int, int>& copied_from)
+//! A base mesh of the vertices that `faces` use, in their order: checks
+//! coordinates, drops unused vertices, carries colours, labels and
+//! channels (a vertex copy's from `copied_from`). `point(v)` gives vertex
+//! v; `faces(visit)` calls visit(corners) once per face, in order.
+template <typename PointOf, typename Faces>
+BaseMesh assemble(std::size_t vertices, const PointOf& point, const Faces& faces, const ImportReport& report,
+                  const std::string& name, const std::string& where, const std::vector<Vec3>& colours,
+                  const std::vector<int>& labels, const std::vector<ChannelArray>& channels,
+                  const std::map<int, int>& copied_from)
 {
   BaseMesh mesh;
   mesh.name = name;
   mesh.report = report;
   mesh.channels = without_values(channels);
-  if (om.n_faces() == 0)
+  std::vector<int> remap(vertices, -1);
+  std::size_t face_count = 0;
+  faces([&](const auto& corners) {
+    ++face_count;
+    for (const int v : corners)
+      remap[std::size_t(v)] = 0;
+  });
+  if (face_count == 0)
     throw InputError(where + "has no faces");
-
-  std::vector<int> remap(om.n_vertices(), -1);
-  for (const auto fh : om.faces())
-    for (const auto vh : om.fv_range(fh))
-      remap[vh.idx()] = 0;
-  for (std::size_t v = 0; v < om.n_vertices(); ++v) {
-    const auto& p = om.point(PolyMesh::VertexHandle(int(v)));
-    check_coordinates({p[0], p[1], p[2]}, v, where);
+  for (std::size_t v = 0; v < vertices; ++v) {
+    const Vec3 p = point(v);
+    check_coordinates(p, v, where);
     if (remap[v] < 0) {
       ++mesh.report.isolated_vertices_removed;
       continue;
     }
     remap[v] = int(mesh.points.size());
-    mesh.points.push_back({p[0], p[1], p[2]});
+    mesh.points.push_back(p);
     const auto copy = copied_from.find(int(v));
     const std::size_t source = std::size_t(copy == copied_from.end() ? int(v) : copy->second);
     if (!colours.empty())
@@ -248,20 +256,55 @@ BaseMesh finish(const PolyMesh& om, const ImportReport& report, const std::strin
       mesh.labels.push_back(labels[source]);
     append_vertex(mesh.channels, channels, source);
   }
+  mesh.face_sizes.reserve(face_count);
+  mesh.face_offsets.reserve(face_count + 1);
   mesh.face_offsets.push_back(0);
-  for (const auto fh : om.faces()) {
+  faces([&](const auto& corners) {
     int n = 0;
-    for (const auto vh : om.fv_range(fh)) {
-      mesh.face_vertices.push_back(remap[vh.idx()]);
+    for (const int v : corners) {
+      mesh.face_vertices.push_back(remap[std::size_t(v)]);
       ++n;
     }
     mesh.face_sizes.push_back(n);
     mesh.face_offsets.push_back(int(mesh.face_vertices.size()));
-  }
+  });
+  return mesh;
+}
+
+//! Takes the faces out of OpenMesh (assemble()) and splits non-manifold vertices.
+BaseMesh finish(const PolyMesh& om, const ImportReport& report, const std::string& name,
+                const std::string& where, const std::vector<Vec3>& colours, const std::vector<int>& labels,
+                const std::vector<ChannelArray>& channels, const std::map<int, int>& copied_from)
+{
+  const auto point = [&](std::size_t v) {
+    const auto& p = om.point(PolyMesh::VertexHandle(int(v)));
+    return Vec3{p[0], p[1], p[2]};
+  };
+  const auto faces = [&](const auto& visit) {
+    std::vector<int> corners;
+    for (const auto fh : om.faces()) {
+      corners.clear();
+      for (const auto vh : om.fv_range(fh))
+        corners.push_back(vh.idx());
+      visit(corners);
+    }
+  };
+  BaseMesh mesh =
+      assemble(om.n_vertices(), point, faces, report, name, where, colours, labels, channels, copied_from);
   split_nonmanifold_vertices(mesh);
   return mesh;
 }
 
+//! Refuses a mesh too small for single precision's limit normals.
+void check_extent(const BaseMesh& mesh, const std::string& where)
+{
+  if (!(mesh.diagonal() >= kMinDiagonal)) {
+    std::ostringstream size;
+    size << mesh.diagonal();
+    throw InputError(where + "is only " + size.str() + " across: its limit normals would underflow single precision; "
+                     "scale the mesh up (at least 1e-12 across)");
+  }
+}
 
 } // namespace
 
@@ -366,12 +409,7 @@ BaseMesh build(const std::vector<Vec3>& points, const std::vector<std::vector<in
       throw InputError(where + importer.problem_);
   }
   BaseMesh mesh = finish(om, importer.report, name, where, colours, labels, channels, importer.copied_from);
-  if (!(mesh.diagonal() >= kMinDiagonal)) {
-    std::ostringstream size;
-    size << mesh.diagonal();
-    throw InputError(where + "is only " + size.str() + " across: its limit normals would underflow single precision; "
-                     "scale the mesh up (at least 1e-12 across)");
-  }
+  check_extent(mesh, where);
   return mesh;
 }
 
@@ -625,7 +663,20 @@ BaseMesh import_mesh(PolygonSoup soup, const std::string& name, const std::strin
   if (soup.faces.empty())
     throw InputError(where + "has no faces (every face is degenerate)");
   check_label_ids(soup.labels, where);
-  BaseMesh mesh = build(soup.points, soup.faces, name, where, soup.colours, soup.labels, soup.channels);
+  BaseMesh mesh;
+  if (steps.oriented_manifold) {
+    // Faces that join as they are (checked by import_soup()): OpenMesh's
+    // build would change nothing and find no non-manifold vertex to split.
+    const auto point = [&](std::size_t v) { return soup.points[v]; };
+    const auto faces = [&](const auto& visit) {
+      for (const std::vector<int>& f : soup.faces)
+        visit(f);
+    };
+    mesh = assemble(soup.points.size(), point, faces, ImportReport(), name, where, soup.colours, soup.labels,
+                    soup.channels, {});
+    check_extent(mesh, where);
+  } else
+    mesh = build(soup.points, soup.faces, name, where, soup.colours, soup.labels, soup.channels);
   mesh.label_classes = soup.label_classes;
   ImportReport& r = mesh.report;
   r.faces_skipped_by_reader = faces_skipped;

@@ -339,6 +339,7 @@ SoupSteps import_soup(PolygonSoup& soup, bool weld)
 
   const std::size_t before_points = points.size();
   const bool oriented = oriented_manifold(points.size(), polygons);
+  steps.oriented_manifold = oriented;
   const std::vector<Polygon> unoriented = oriented ? std::vector<Polygon>() : polygons;
   if (!oriented)
     PMP::orient_polygon_soup(points, polygons);

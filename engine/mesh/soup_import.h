@@ -20,6 +20,9 @@ struct SoupSteps
   std::size_t components_turned_outward = 0;
   std::size_t nonorientable_components = 0; //!< cut open at vertices to orient them
   std::size_t vertices_cut = 0;             //!< vertex copies made for those cuts
+  //! The faces were an oriented manifold as given (no edge in more than two
+  //! faces, one fan per vertex), so they join as they are.
+  bool oriented_manifold = false;
 };
 
 //! Relative weld tolerance: a fraction of the bounding-box diagonal.
