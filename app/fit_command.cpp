@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp> // for nlohmann::json
 
 #include <algorithm> // for std::min
+#include <future>   // for std::async
 #include <iostream> // for std::cout, std::cerr
 #include <optional> // for std::optional
 #include <sstream>  // for std::ostringstream
@@ -123,6 +124,12 @@ int fit_command(const Argv& argv)
   say("read " + path + ": " + grouped(scan.vertex_count()) + " vertices, " + grouped(scan.face_count()) +
       " faces (" + format_fixed(t.ms(), 0) + " ms)");
   t.restart();
+  // The scan's index for the fit's queries does not depend on the base
+  // mesh: it is built on another core while the scan is decimated (the
+  // decimation runs on one).
+  say("indexing the scan: " + grouped(scan.face_count()) + " faces");
+  std::future<std::unique_ptr<SurfaceQuery>> scan_index =
+      std::async(std::launch::async, [&scan] { return aabb_surface_queries()(scan.points, triangles_of(scan)); });
   std::string mode;
   BaseMesh base;
   std::optional<Decimation> decimation;
@@ -155,6 +162,8 @@ int fit_command(const Argv& argv)
   FitOptions options;
   options.passes = passes;
   options.progress = &bar;
+  const std::unique_ptr<SurfaceQuery> scan_query = scan_index.get();
+  options.scan_query = scan_query.get();
   const FitReport fit = fit_atlas(surface.atlas(), scan, aabb_surface_queries(), options);
   surface.geometry_changed();
   const double fit_ms = t.ms();

@@ -216,8 +216,12 @@ FitReport fit_atlas(Atlas& atlas, const BaseMesh& scan, const SurfaceQueryFactor
   if (!(scan_area(scan) > kMinScanArea * report.diagonal * report.diagonal))
     throw InputError(scan.name + ": the scan has no area (its faces lie on a line or at a point): nothing to fit to");
   report.points = welded;
-  say("indexing the scan: " + std::to_string(scan.face_count()) + " faces");
-  const std::unique_ptr<SurfaceQuery> scan_query = make_query(scan.points, triangles_of(scan));
+  std::unique_ptr<SurfaceQuery> own_query;
+  if (!options.scan_query) {
+    say("indexing the scan: " + std::to_string(scan.face_count()) + " faces");
+    own_query = make_query(scan.points, triangles_of(scan));
+  }
+  const SurfaceQuery* scan_query = options.scan_query ? options.scan_query : own_query.get();
   const float min_reach = float(1e-3 * report.diagonal);
 
   atlas.subdivide(1, level);

@@ -63,6 +63,9 @@ struct FitOptions
   //! Receives each pass as a task (steps: points moved) and notes between
   //! them; may be null.
   Progress* progress = nullptr;
+  //! The scan's query, built beforehand (fit builds it while the scan is
+  //! decimated); null: fit_atlas() makes it with its factory.
+  const SurfaceQuery* scan_query = nullptr;
 };
 
 //! Smallest scan area fit_atlas() accepts, relative to the squared diagonal.
