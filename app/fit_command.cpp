@@ -11,8 +11,10 @@
 #include "core/errors.h"
 #include "core/file_lock.h"
 #include "core/format.h"
+#include "core/host_memory.h"
 #include "core/timer.h"
 #include "mesh/decimate.h"
+#include "project/fit_memory.h"
 #include "project/project_surface.h"
 #include "project/scan_fit.h"
 
@@ -119,10 +121,20 @@ int fit_command(const Argv& argv)
 
   Timer total, t;
   const std::string path = args.positionals()[0];
+  const std::size_t available = available_host_memory(); // its setting checked before the scan is read
   const BaseMesh scan = load_reported(path, import_options(args));
   const ScanReference scan_file = scan_reference(path);
   say("read " + path + ": " + grouped(scan.vertex_count()) + " vertices, " + grouped(scan.face_count()) +
       " faces (" + format_fixed(t.ms(), 0) + " ms)");
+  // What the fit will take, planned before its large allocations (the
+  // decimation's mesh, the scan's index, the atlas): refused, not swapped.
+  const std::size_t triangles = scan.triangle_count();
+  const FitMemory plan = plan_fit_memory(triangles, args.flag("--direct") ? triangles : std::size_t(base_faces), level);
+  if (available > 0 && plan.bytes > available)
+    throw ResourceError("a fit of " + counted(triangles, "triangle", "triangles", true) + " at level " +
+                        std::to_string(level) + " needs about " + format_bytes(plan.bytes) + " of memory, and " +
+                        format_bytes(available) + " is available (meshpaint info " + path +
+                        " --level L plans other levels)");
   t.restart();
   // The scan's index for the fit's queries does not depend on the base
   // mesh: it is built on another core while the scan is decimated (the

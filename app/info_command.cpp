@@ -113,10 +113,7 @@ int info_command(const Argv& argv)
   }
   table.print(os);
 
-  std::size_t triangles = 0;
-  for (const int size : mesh.face_sizes)
-    triangles += std::size_t(size - 2);
-  const FitMemory fit = plan_fit_memory(triangles, std::size_t(fit_base_faces), fit_level);
+  const FitMemory fit = plan_fit_memory(mesh.triangle_count(), std::size_t(fit_base_faces), fit_level);
   const std::size_t available = available_host_memory();
   os << "\nfit          level " << fit_level << ", base mesh " << counted(fit.base_faces, "face", "faces", true)
      << ": about " << grouped(fit.points) << " points, " << format_bytes(fit.bytes) << " of host memory at the peak"

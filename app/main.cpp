@@ -24,8 +24,9 @@ commands:
                                       subdivide the bunny scan (or MESH), write its limit
                                       surface as DIR/NAME_levelL_limit.vtp, then paint the
                                       bundled strokes into DIR/painted/; print timings
-  info MESH                           counts, genus, boundaries, valences, atlas per level,
-                                      the memory a fit needs
+  info MESH [--level L] [--base-faces N]
+                                      counts, genus, boundaries, valences, atlas per level,
+                                      the memory a fit at L with N base faces needs
   subdivide MESH --level L [--limit] [--quiet] -o OUT.{obj,ply,vtp}
                                       the level-L surface (welded quads); --limit: limit
                                       positions and point array Normals

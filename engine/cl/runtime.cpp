@@ -2,12 +2,12 @@
 
 #include "cl/quirks.h"
 #include "core/errors.h"
+#include "core/format.h"
 
 #include <algorithm> // for std::search, std::min
-#include <cctype>    // for std::tolower, std::isdigit
-#include <cerrno>    // for errno, ERANGE
+#include <cctype>    // for std::tolower
 #include <cstdio>    // for std::snprintf, std::fopen, std::fscanf
-#include <cstdlib>   // for std::getenv, std::strtoull
+#include <cstdlib>   // for std::getenv
 #include <string>    // for std::string, std::to_string
 
 #include <sys/resource.h> // for getrlimit, RLIMIT_AS
@@ -36,24 +36,7 @@ std::string lower(std::string s)
 std::uint64_t memory_cap()
 {
   const char* text = std::getenv("MESHPAINT_DEVICE_MEMORY");
-  if (!text || !*text)
-    return 0;
-  // strtoull would take a sign ("-1" as the largest number) or blanks.
-  if (!std::isdigit(static_cast<unsigned char>(text[0])))
-    throw InputError(std::string("MESHPAINT_DEVICE_MEMORY must be a size such as 512M or 2G, not '") + text +
-                     "'");
-  char* end = nullptr;
-  errno = 0;
-  const unsigned long long n = std::strtoull(text, &end, 10);
-  int shift = 0;
-  if (end != text && *end && !end[1])
-    shift = *end == 'K' ? 10 : *end == 'M' ? 20 : *end == 'G' ? 30 : -1;
-  else if (end == text || *end)
-    shift = -1;
-  if (shift < 0 || n == 0 || errno == ERANGE || n > (~0ull >> shift))
-    throw InputError(std::string("MESHPAINT_DEVICE_MEMORY must be a size such as 512M or 2G, not '") + text +
-                     "'");
-  return std::uint64_t(n) << shift;
+  return text && *text ? parse_memory_size("MESHPAINT_DEVICE_MEMORY", text) : 0;
 }
 
 //! Bytes of address space this process may still map under its limit

@@ -2,7 +2,9 @@
 
 #include "core/errors.h"
 
-#include <cctype>     // for std::tolower
+#include <cctype>     // for std::tolower, std::isdigit
+#include <cerrno>     // for errno, ERANGE
+#include <cstdlib>    // for std::strtoull
 #include <cstdint>    // for std::uint32_t
 #include <cstdio>     // for std::snprintf
 #include <filesystem> // for std::filesystem::path
@@ -133,6 +135,25 @@ int index_of_name(const std::vector<std::string>& names, const std::string& name
   for (const std::string& n : names)
     all += (all.empty() ? "" : ", ") + n;
   throw InputError(what + " must be one of " + all + ", not '" + excerpt(name) + "'");
+}
+
+std::uint64_t parse_memory_size(const std::string& variable, const std::string& text)
+{
+  const std::string problem = variable + " must be a size such as 512M or 2G, not '" + text + "'";
+  // strtoull would take a sign ("-1" as the largest number) or blanks.
+  if (text.empty() || !std::isdigit(static_cast<unsigned char>(text[0])))
+    throw InputError(problem);
+  char* end = nullptr;
+  errno = 0;
+  const unsigned long long n = std::strtoull(text.c_str(), &end, 10);
+  int shift = 0;
+  if (*end && !end[1])
+    shift = *end == 'K' ? 10 : *end == 'M' ? 20 : *end == 'G' ? 30 : -1;
+  else if (*end)
+    shift = -1;
+  if (shift < 0 || n == 0 || errno == ERANGE || n > (~0ull >> shift))
+    throw InputError(problem);
+  return std::uint64_t(n) << shift;
 }
 
 } // namespace meshpaint

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef> // for std::size_t
+#include <cstdint> // for std::uint64_t
 #include <string>  // for std::string
 #include <vector>  // for std::vector
 
@@ -46,5 +47,10 @@ std::string excerpt(const std::string& s, std::size_t limit = 60);
 //! Index of `name` in `names`.
 //! \throw InputError "`what` must be one of a, b, c, not 'name'".
 int index_of_name(const std::vector<std::string>& names, const std::string& name, const std::string& what);
+
+//! A memory size in bytes as the environment gives it: a number, optionally
+//! followed by K, M or G (binary units), more than 0.
+//! \throw InputError "`variable` must be a size such as 512M or 2G, not 'text'".
+std::uint64_t parse_memory_size(const std::string& variable, const std::string& text);
 
 } // namespace meshpaint

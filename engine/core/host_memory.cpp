@@ -1,5 +1,8 @@
 #include "core/host_memory.h"
 
+#include "core/format.h"
+
+#include <cstdlib> // for std::getenv
 #include <fstream> // for std::ifstream
 #include <string>  // for std::string
 
@@ -9,6 +12,8 @@ namespace meshpaint {
 
 std::size_t available_host_memory()
 {
+  if (const char* text = std::getenv("MESHPAINT_HOST_MEMORY"); text && *text)
+    return std::size_t(parse_memory_size("MESHPAINT_HOST_MEMORY", text));
   std::ifstream meminfo("/proc/meminfo");
   std::string key;
   std::size_t kib = 0;

@@ -375,6 +375,14 @@ std::vector<std::string> ImportReport::step_lines(const std::string& source, con
   return out;
 }
 
+std::size_t BaseMesh::triangle_count() const
+{
+  std::size_t n = 0;
+  for (const int size : face_sizes)
+    n += std::size_t(size - 2);
+  return n;
+}
+
 double BaseMesh::diagonal() const
 {
   return diagonal_of(points);

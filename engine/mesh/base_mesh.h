@@ -66,6 +66,8 @@ struct BaseMesh
 
   std::size_t vertex_count() const { return points.size(); }
   std::size_t face_count() const { return face_sizes.size(); }
+  //! Triangles of the faces fanned (a face of n corners gives n - 2).
+  std::size_t triangle_count() const;
   //! Length of the bounding-box diagonal.
   double diagonal() const;
 };

@@ -10,11 +10,11 @@ namespace {
 // Measured peaks of `meshpaint fit` at level 3 on the noisy femur series of
 // `meshpaint bench fit`, 124,768 to 7,985,152 triangles, fitted as
 // fixed + per triangle + per point by least squares (docs/benchmarks.md);
-// with the margin, the plan is above every measured peak (279 to 4,401 MiB).
-constexpr double kFixedBytes = 188.0 * 1048576;
-constexpr double kBytesPerTriangle = 482.0;
-constexpr double kBytesPerPoint = 590.0;
-constexpr double kMargin = 1.15;
+// with the margin, the plan is above every measured peak (291 to 4,258 MiB).
+constexpr double kFixedBytes = 246.0 * 1048576;
+constexpr double kBytesPerTriangle = 470.0;
+constexpr double kBytesPerPoint = 464.0;
+constexpr double kMargin = 1.2;
 
 } // namespace
 

@@ -20,7 +20,7 @@ struct FitMemory
 //! half-edge mesh, the AABB tree of the queries) and in the points fitted
 //! (the atlas, on a CPU device in host memory, and the fit's arrays per
 //! point); the constants are the bytes measured per triangle and per point
-//! by `meshpaint bench fit` (docs/benchmarks.md), with a margin of 15%.
+//! by `meshpaint bench fit` (docs/benchmarks.md), with a margin of 20%.
 FitMemory plan_fit_memory(std::size_t scan_triangles, std::size_t base_faces, int level);
 
 } // namespace meshpaint

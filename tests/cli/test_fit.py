@@ -341,3 +341,25 @@ def test_info_plans_the_memory_a_fit_needs_and_the_fit_stays_within_it(tmp_path)
     assert out[0] == "0"
     peak = int(out[1]) * 1024
     assert peak <= planned <= 3 * peak, (peak, planned)
+
+
+def run_with_host_memory(size, *args):
+    env = dict(os.environ, MESHPAINT_HOST_MEMORY=size)
+    return subprocess.run([os.environ["MESHPAINT_BIN"], *args], capture_output=True, text=True, timeout=600, env=env)
+
+
+def test_fit_refuses_a_scan_whose_plan_exceeds_the_memory_available(tmp_path):
+    scan = os.path.join(SCANS, "bunny00.off")
+    out = tmp_path / "b.meshpaint"
+    r = run_with_host_memory("64M", "fit", scan, "-o", str(out))
+    assert r.returncode == 2, r.stderr  # as a level that does not fit the device
+    lines = [l for l in r.stderr.splitlines() if "warning" not in l and not l.startswith("meshpaint fit: read")]
+    assert lines[-1].startswith("meshpaint fit: a fit of 75,408 triangles at level 3 needs about "), r.stderr
+    assert lines[-1].endswith(f"of memory, and 64.0 MiB is available (meshpaint info {scan} --level L plans other levels)")
+    assert not out.exists()
+    # info says the same, and a size that is not one is refused as the device's is
+    info = run_with_host_memory("64M", "info", scan)
+    assert info.returncode == 0 and info.stdout.rstrip().endswith("64.0 MiB available: does not fit"), info.stdout
+    bad = run_with_host_memory("lots", "fit", scan, "-o", str(out))
+    assert bad.returncode == 2
+    assert bad.stderr.strip() == "meshpaint fit: MESHPAINT_HOST_MEMORY must be a size such as 512M or 2G, not 'lots'"
