@@ -53,6 +53,9 @@ constexpr double kNoise = 1e-4;
 constexpr std::size_t kSmallest = 100000;
 //! Runs of each decimation method; the median's time is reported.
 constexpr int kDecimationRepeats = 3;
+// The decimation peers of the size series stop here: above, VTK's and
+// CGAL's ordered collapses take minutes each (204 s for CGAL's at 8M).
+constexpr std::size_t kSeriesPeerTriangles = 2000000;
 
 struct FitRun
 {
@@ -273,6 +276,8 @@ int bench_fit(const Args& args)
   Table table({"triangles", "vertices", "subdivisions", "wall s", "decimate s", "fit s", "peak MiB", "base faces",
                "scan->fit RMS %", "max %", "fit->scan RMS %", "max %", "folds"});
   nlohmann::json rows = nlohmann::json::array();
+  Table series_peers({"triangles", "budget", "method", "faces", "s", "scan->decimated RMS %", "max %"});
+  nlohmann::json series_peer_rows = nlohmann::json::array();
   OpenMesh::Subdivider::Uniform::LoopT<TriMesh> loop;
   std::size_t sizes = 0, sized = 0;
   for (std::size_t faces = mesh.n_faces(); faces * 4 <= max_triangles; faces *= 4)
@@ -290,13 +295,30 @@ int bench_fit(const Args& args)
     FitRun run = fit_scan(program, scan, level, passed, folder);
     run.triangles = mesh.n_faces();
     run.vertices = mesh.n_vertices();
-    fs::remove(scan);
     if (!run.failure.empty()) {
       bar.print("meshpaint bench: the fit of " + grouped(run.triangles) + " triangles failed (" + run.failure +
                 "); larger scans are not tried");
       break;
     }
     const nlohmann::json& r = run.report;
+    if (run.triangles <= kSeriesPeerTriangles) {
+      // The decimation's peers on the same scan at the budget the fit used.
+      const BaseMesh imported = load_mesh(scan.string());
+      const std::size_t budget = r["budget"].get<std::size_t>();
+      for (const DecimationPeer& peer : decimation_peers(imported, budget, 1)) {
+        const double d = imported.diagonal();
+        series_peers.add({grouped(run.triangles), grouped(budget), peer.method, grouped(peer.faces),
+                          format_fixed(peer.seconds, 2), format_fixed(100 * peer.scan_to_mesh.rms / d, 4),
+                          format_fixed(100 * peer.scan_to_mesh.max / d, 4)});
+        series_peer_rows.push_back({{"triangles", run.triangles},
+                                    {"budget", budget},
+                                    {"method", peer.method},
+                                    {"faces", peer.faces},
+                                    {"time_s", peer.seconds},
+                                    {"scan_to_decimated_rms_percent", 100 * peer.scan_to_mesh.rms / d},
+                                    {"scan_to_decimated_max_percent", 100 * peer.scan_to_mesh.max / d}});
+      }
+    }
     // Each fit can take minutes: its numbers as soon as it ends.
     bar.note(grouped(run.triangles) + " triangles: " + format_fixed(run.wall_s, 1) + " s, peak " +
              format_fixed(run.peak_mib, 0) + " MiB, scan->fit RMS " +
@@ -311,6 +333,7 @@ int bench_fit(const Args& args)
     cells.insert(cells.end(), errors.begin(), errors.end());
     table.add(cells);
     rows.push_back(run_json(run));
+    fs::remove(scan);
   }
   if (sized == sizes)
     task->step(sized);
@@ -318,7 +341,8 @@ int bench_fit(const Args& args)
   fs::remove_all(folder);
   if (json) {
     const nlohmann::json out = {{"scan", "femur"}, {"level", level}, {"noise", kNoise}, {"fits", rows},
-                                {"scans", scan_rows}, {"decimation", peer_rows}};
+                                {"scans", scan_rows}, {"decimation", peer_rows},
+                                {"series_decimation", series_peer_rows}};
     std::cout << out.dump() << "\n";
     return 0;
   }
@@ -331,6 +355,10 @@ int bench_fit(const Args& args)
   std::cout << "meshpaint fit on femur refined by Loop subdivision, noise " << kNoise * 100
             << "% of the diagonal per coordinate, level " << level << "\n";
   table.print(std::cout);
+  std::cout << "\n";
+  std::cout << "decimation of those scans up to " << grouped(kSeriesPeerTriangles)
+            << " triangles at the budget fit used, one run each\n";
+  series_peers.print(std::cout);
   return 0;
 }
 

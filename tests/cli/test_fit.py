@@ -289,7 +289,7 @@ def test_bench_fit_decimation_rows_agree_with_fit(tmp_path):
     budget, and meshpaint's row the base mesh fit itself reached."""
     if not os.path.exists(os.path.join(SCANS, "femur.off")):
         pytest.skip("data/scans missing (scripts/fetch-scans.sh)")
-    r = run("bench", "fit", "--max-triangles", "1000", "--json")
+    r = run("bench", "fit", "--max-triangles", "130000", "--json")  # the series' first scan only
     assert r.returncode == 0, r.stderr
     # Progress as plain lines (stderr is a pipe): each task's finishing line.
     for task in (r"fitting \d+ scans at level 3", r"decimating \d+ scans by each method"):
@@ -312,6 +312,17 @@ def test_bench_fit_decimation_rows_agree_with_fit(tmp_path):
         if row["method"] == "meshpaint decimate()":
             assert row["faces"] == fits[row["name"]]["base_faces"], row
     assert len(rows) == len(methods) * len(fits)
+
+    # the series' scan, and its decimation by each method at the budget that fit used
+    [fit] = out["fits"]
+    series = out["series_decimation"]
+    assert {row["method"] for row in series} == methods and len(series) == len(methods), series
+    for row in series:
+        assert (row["triangles"], row["budget"]) == (fit["triangles"], fit["budget"]) == (124768, 2500), row
+        assert 0.5 * row["budget"] <= row["faces"] <= row["budget"] and row["time_s"] > 0, row
+        assert 0 < row["scan_to_decimated_rms_percent"] <= row["scan_to_decimated_max_percent"] < 10, row
+        if row["method"] == "meshpaint decimate()":
+            assert row["faces"] == fit["base_faces"], row
 
 
 def planned_fit_bytes(stdout):
