@@ -129,7 +129,8 @@ int fit_command(const Argv& argv)
   // What the fit will take, planned before its large allocations (the
   // decimation's mesh, the scan's index, the atlas): refused, not swapped.
   const std::size_t triangles = scan.triangle_count();
-  const FitMemory plan = plan_fit_memory(triangles, args.flag("--direct") ? triangles : std::size_t(base_faces), level);
+  const std::size_t budget = base_faces > 0 ? std::size_t(base_faces) : default_base_faces(scan.face_count());
+  const FitMemory plan = plan_fit_memory(triangles, args.flag("--direct") ? triangles : budget, level);
   if (available > 0 && plan.bytes > available)
     throw ResourceError("a fit of " + counted(triangles, "triangle", "triangles", true) + " at level " +
                         std::to_string(level) + " needs about " + format_bytes(plan.bytes) + " of memory, and " +
@@ -149,7 +150,6 @@ int fit_command(const Argv& argv)
     base = scan;
     mode = "direct: the scan is the base mesh";
   } else {
-    const std::size_t budget = base_faces > 0 ? std::size_t(base_faces) : default_base_faces(scan.face_count());
     say("decimating to " + grouped(budget) + " faces");
     decimation = decimate(scan, budget);
     if (decimation->passes.passes > 0)

@@ -5,6 +5,7 @@
 #include "core/errors.h"
 #include "core/format.h"
 #include "core/host_memory.h"
+#include "mesh/decimate.h"
 #include "mesh/mesh_stats.h"
 #include "project/fit_memory.h"
 #include "project/project_surface.h"
@@ -113,7 +114,9 @@ int info_command(const Argv& argv)
   }
   table.print(os);
 
-  const FitMemory fit = plan_fit_memory(mesh.triangle_count(), std::size_t(fit_base_faces), fit_level);
+  const FitMemory fit = plan_fit_memory(
+      mesh.triangle_count(), fit_base_faces > 0 ? std::size_t(fit_base_faces) : default_base_faces(mesh.face_count()),
+      fit_level);
   const std::size_t available = available_host_memory();
   os << "\nfit          level " << fit_level << ", base mesh " << counted(fit.base_faces, "face", "faces", true)
      << ": about " << grouped(fit.points) << " points, " << format_bytes(fit.bytes) << " of host memory at the peak"

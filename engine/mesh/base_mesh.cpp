@@ -214,8 +214,6 @@ void split_nonmanifold_vertices(BaseMesh& mesh)
   }
 }
 
-//! Takes the faces out of OpenMesh, checks coordinates, drops unused vertices
-//! and splits non-manifold ones.
 //! A base mesh of the vertices that `faces` use, in their order: checks
 //! coordinates, drops unused vertices, carries colours, labels and
 //! channels (a vertex copy's from `copied_from`). `point(v)` gives vertex

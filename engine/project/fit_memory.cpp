@@ -1,7 +1,5 @@
 #include "project/fit_memory.h"
 
-#include "mesh/decimate.h"
-
 #include <algorithm> // for std::min
 
 namespace meshpaint {
@@ -22,7 +20,7 @@ FitMemory plan_fit_memory(std::size_t scan_triangles, std::size_t base_faces, in
 {
   FitMemory m;
   // fit decimates only a scan larger than its budget
-  m.base_faces = std::min(scan_triangles, base_faces > 0 ? base_faces : default_base_faces(scan_triangles));
+  m.base_faces = std::min(scan_triangles, base_faces);
   // each base triangle becomes 3 patches of 4^(level-1) points
   m.points = 3 * m.base_faces << (2 * (level - 1));
   m.bytes = std::size_t(kMargin * (kFixedBytes + kBytesPerTriangle * double(scan_triangles) +

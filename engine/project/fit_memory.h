@@ -15,7 +15,8 @@ struct FitMemory
 };
 
 //! The peak host memory of `meshpaint fit` on a scan of `scan_triangles`
-//! triangles, decimated to `base_faces` (0: fit's default budget), at
+//! triangles, decimated to a budget of `base_faces` (none when the scan has
+//! fewer triangles), at
 //! atlas `level`. Linear in the scan's triangles (its mesh, the decimation's
 //! half-edge mesh, the AABB tree of the queries) and in the points fitted
 //! (the atlas, on a CPU device in host memory, and the fit's arrays per
