@@ -113,13 +113,9 @@ DecimationPeer vtk_quadric(const BaseMesh& scan, const Triangles& triangles, std
                   surface_of(output), scan);
 }
 
-DecimationPeer cgal_garland_heckbert(const BaseMesh& scan, const Triangles& triangles, std::size_t budget, int repeats)
+DecimationPeer cgal_garland_heckbert(const BaseMesh& scan, std::size_t budget, int repeats)
 {
-  CgalMesh input;
-  for (const Vec3& v : scan.points)
-    input.add_vertex(CgalKernel::Point_3(v[0], v[1], v[2]));
-  for (const auto& t : triangles)
-    input.add_face(CgalMesh::Vertex_index(t[0]), CgalMesh::Vertex_index(t[1]), CgalMesh::Vertex_index(t[2]));
+  const CgalMesh input = cgal_triangles(scan); // the polygons fanned as `triangles` are
   CgalMesh mesh;
   const double seconds = median_seconds(repeats, [&] {
     mesh = input;
@@ -155,7 +151,7 @@ std::vector<DecimationPeer> decimation_peers(const BaseMesh& scan, std::size_t b
   peers.push_back(measured("meshpaint decimate()", seconds, {ours.base.points, triangles_of(ours.base)}, scan));
   peers.push_back(vtk_quadric(scan, triangles, budget, false, repeats));
   peers.push_back(vtk_quadric(scan, triangles, budget, true, repeats));
-  peers.push_back(cgal_garland_heckbert(scan, triangles, budget, repeats));
+  peers.push_back(cgal_garland_heckbert(scan, budget, repeats));
   return peers;
 }
 

@@ -105,25 +105,24 @@ bool oriented_manifold(std::size_t points, const std::vector<Polygon>& polygons)
   return true;
 }
 
-//! Whether two of `polygons` may have the same corners: their sorted
-//! corners' hashes collide. False means no duplicate for certain, so that
-//! CGAL's merge (whose ordered map of polygons is slow on millions) runs
-//! only where it may find something.
-bool may_have_duplicates(const std::vector<Polygon>& polygons)
+//! A hash of a polygon's corners, sorted: the same for two polygons with
+//! the same corners in any order or orientation (FNV-1a).
+std::uint64_t corner_set_hash(const Polygon& sorted)
 {
-  std::vector<std::uint64_t> keys;
-  keys.reserve(polygons.size());
-  Polygon sorted;
-  for (const Polygon& p : polygons) {
-    sorted.assign(p.begin(), p.end());
-    std::sort(sorted.begin(), sorted.end());
-    std::uint64_t h = 1469598103934665603ULL; // FNV-1a over the sorted ids
-    for (const std::size_t v : sorted)
-      h = (h ^ std::uint64_t(v)) * 1099511628211ULL;
-    keys.push_back(h);
-  }
-  std::sort(keys.begin(), keys.end());
-  return std::adjacent_find(keys.begin(), keys.end()) != keys.end();
+  std::uint64_t h = 1469598103934665603ULL;
+  for (const std::size_t v : sorted)
+    h = (h ^ std::uint64_t(v)) * 1099511628211ULL;
+  return h;
+}
+
+//! Whether two polygons may have the same corners: two of their
+//! corner_set_hash() values agree. False means no duplicate for certain, so
+//! that CGAL's merge (whose ordered map of polygons is slow on millions)
+//! runs only where it may find something.
+bool may_have_duplicates(std::vector<std::uint64_t> hashes)
+{
+  std::sort(hashes.begin(), hashes.end());
+  return std::adjacent_find(hashes.begin(), hashes.end()) != hashes.end();
 }
 
 //! Whether each point lies on a border of the faces as listed: its faces'
@@ -319,18 +318,24 @@ SoupSteps import_soup(PolygonSoup& soup, bool weld)
     polygons.emplace_back(f.begin(), f.end());
 
   // Faces that name a vertex twice (also once welding joined two corners).
+  // Their sorted corners serve the duplicate check too.
   std::vector<Polygon> valid;
   valid.reserve(polygons.size());
+  std::vector<std::uint64_t> hashes;
+  hashes.reserve(polygons.size());
+  Polygon sorted;
   for (Polygon& p : polygons) {
-    Polygon sorted = p;
+    sorted.assign(p.begin(), p.end());
     std::sort(sorted.begin(), sorted.end());
     if (p.size() < 3 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
       ++steps.degenerate_faces_dropped;
-    else
+    else {
       valid.push_back(std::move(p));
+      hashes.push_back(corner_set_hash(sorted));
+    }
   }
   polygons = std::move(valid);
-  if (may_have_duplicates(polygons))
+  if (may_have_duplicates(std::move(hashes)))
     steps.duplicate_faces_dropped = PMP::merge_duplicate_polygons_in_polygon_soup(points, polygons);
   if (polygons.empty()) {
     soup.faces.clear();
