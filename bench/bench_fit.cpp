@@ -1,6 +1,6 @@
 // meshpaint bench fit: `meshpaint fit` on every scan in data/scans, then
-// against scan size: the femur scan refined by Loop subdivision (OpenMesh's
-// subdivider) until it has 10^5 triangles and more, each with seeded
+// against scan size: the femur scan refined by OpenMesh's Loop and sqrt(3)
+// subdividers from 10^5 triangles to 10^7, each with seeded
 // Gaussian noise. Every fit runs as the meshpaint program in a child
 // process, whose wall time and peak resident memory (wait4's rusage) are
 // what a user's run would take; its numbers come from its JSON report.
@@ -21,6 +21,7 @@
 #include <OpenMesh/Core/IO/MeshIO.hh>                   // for OpenMesh::IO::read_mesh, write_mesh
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>   // for TriMesh_ArrayKernelT
 #include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>   // for LoopT
+#include <OpenMesh/Tools/Subdivider/Uniform/Sqrt3T.hh>  // for Sqrt3T
 
 #include <cerrno>     // for errno
 #include <cstring>    // for std::strerror
@@ -51,6 +52,8 @@ using TriMesh = OpenMesh::TriMesh_ArrayKernelT<>;
 constexpr double kNoise = 1e-4;
 //! Smallest scan measured.
 constexpr std::size_t kSmallest = 100000;
+// The largest of the default series: the scan of 10^7 triangles (10,106,208).
+constexpr int kLargest = 10200000;
 //! Runs of each decimation method; the median's time is reported.
 constexpr int kDecimationRepeats = 3;
 // The decimation peers of the size series stop here: above, VTK's and
@@ -185,7 +188,7 @@ int bench_fit(const Args& args)
 {
   args.expect_positionals(1, 1, "fit [--level L] [--max-triangles N] [--json] [--quiet]");
   const int level = args.integer("--level", 3, 1, kMaxLevel);
-  const std::size_t max_triangles = std::size_t(args.integer("--max-triangles", 10000000, 1000, 200000000));
+  const std::size_t max_triangles = std::size_t(args.integer("--max-triangles", kLargest, 1000, 200000000));
   const bool json = args.flag("--json");
   const std::string source = scans_dir() + "/femur.off";
   TriMesh mesh;
@@ -278,20 +281,36 @@ int bench_fit(const Args& args)
   nlohmann::json rows = nlohmann::json::array();
   Table series_peers({"triangles", "budget", "method", "faces", "s", "scan->decimated RMS %", "max %"});
   nlohmann::json series_peer_rows = nlohmann::json::array();
-  OpenMesh::Subdivider::Uniform::LoopT<TriMesh> loop;
-  std::size_t sizes = 0, sized = 0;
-  for (std::size_t faces = mesh.n_faces(); faces * 4 <= max_triangles; faces *= 4)
-    sizes += faces * 4 >= kSmallest;
-  task.emplace(&bar, "fitting the femur at " + counted(sizes, "size", "sizes"), sizes);
-  for (int steps = 1; mesh.n_faces() * 4 <= max_triangles; ++steps) {
+  // The series: Loop steps (4 times the triangles each), then the scan of
+  // 10^7, which no number of Loop steps makes: two Loop steps and four of
+  // Kobbelt's sqrt(3) (3 times each).
+  struct Refinement
+  {
+    int loop = 0, sqrt3 = 0;
+  };
+  std::vector<Refinement> series;
+  const std::size_t femur_faces = mesh.n_faces();
+  for (int k = 1; femur_faces << (2 * k) <= max_triangles; ++k)
+    if (femur_faces << (2 * k) >= kSmallest)
+      series.push_back({k, 0});
+  if (femur_faces * 16 * 81 <= max_triangles)
+    series.push_back({2, 4});
+  const TriMesh femur = mesh;
+  task.emplace(&bar, "fitting the femur at " + counted(series.size(), "size", "sizes"), series.size());
+  for (std::size_t sized = 0; sized < series.size(); ++sized) {
+    const Refinement step = series[sized];
+    mesh = femur;
+    OpenMesh::Subdivider::Uniform::LoopT<TriMesh> loop;
     loop.attach(mesh);
-    loop(1);
+    loop(std::size_t(step.loop));
     loop.detach();
-    if (mesh.n_faces() < kSmallest)
-      continue;
+    OpenMesh::Subdivider::Uniform::Sqrt3T<TriMesh> sqrt3;
+    sqrt3.attach(mesh);
+    sqrt3(std::size_t(step.sqrt3));
+    sqrt3.detach();
     const fs::path scan = folder / "scan.ply";
-    write_noisy(mesh, sigma, unsigned(steps), scan);
-    task->step(sized++);
+    write_noisy(mesh, sigma, unsigned(step.loop + 10 * step.sqrt3), scan);
+    task->step(sized);
     FitRun run = fit_scan(program, scan, level, passed, folder);
     run.triangles = mesh.n_faces();
     run.vertices = mesh.n_vertices();
@@ -324,7 +343,9 @@ int bench_fit(const Args& args)
              format_fixed(run.peak_mib, 0) + " MiB, scan->fit RMS " +
              format_fixed(r["scan_to_fit"]["rms_percent"].get<double>(), 4) + "%, max " +
              format_fixed(r["scan_to_fit"]["max_percent"].get<double>(), 4) + "%");
-    std::vector<std::string> cells = {grouped(run.triangles), grouped(run.vertices), std::to_string(steps),
+    const std::string steps =
+      "Loop " + std::to_string(step.loop) + (step.sqrt3 > 0 ? ", sqrt3 " + std::to_string(step.sqrt3) : "");
+    std::vector<std::string> cells = {grouped(run.triangles), grouped(run.vertices), steps,
                                       format_fixed(run.wall_s, 1), format_fixed(r["decimate_s"].get<double>(), 1),
                                       format_fixed(r["fit_s"].get<double>(), 1), format_fixed(run.peak_mib, 0),
                                       grouped(r["base_faces"].get<std::size_t>()) + " (" +
@@ -332,11 +353,13 @@ int bench_fit(const Args& args)
     const std::vector<std::string> errors = error_cells(r);
     cells.insert(cells.end(), errors.begin(), errors.end());
     table.add(cells);
-    rows.push_back(run_json(run));
+    nlohmann::json row = run_json(run);
+    row["loop_steps"] = step.loop;
+    row["sqrt3_steps"] = step.sqrt3;
+    rows.push_back(row);
     fs::remove(scan);
   }
-  if (sized == sizes)
-    task->step(sized);
+  task->step(series.size());
   task.reset();
   fs::remove_all(folder);
   if (json) {
@@ -352,7 +375,7 @@ int bench_fit(const Args& args)
   std::cout << "decimation alone at fit's default budget, median of " << kDecimationRepeats << " runs\n";
   peer_table.print(std::cout);
   std::cout << "\n";
-  std::cout << "meshpaint fit on femur refined by Loop subdivision, noise " << kNoise * 100
+  std::cout << "meshpaint fit on femur refined by Loop and sqrt(3) subdivision, noise " << kNoise * 100
             << "% of the diagonal per coordinate, level " << level << "\n";
   table.print(std::cout);
   std::cout << "\n";

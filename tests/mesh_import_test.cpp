@@ -162,6 +162,68 @@ TEST(MeshImport, OrientedManifoldSoupsKeepTheirFacesAndOthersAreOriented)
   EXPECT_EQ(compute_stats(touching).components, 2u);
 }
 
+TEST(MeshImport, ClosedComponentsFacingInwardAreTurnedAndNoOthers)
+{
+  // Three components: a tetrahedron facing inward, one facing outward, an
+  // open sheet facing down. Oriented manifolds all, so the linear path
+  // judges them; one face of the sheet reversed sends the soup through
+  // CGAL's orienter instead, with the same verdict on the tetrahedra.
+  const std::vector<Vec3> tet = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const std::vector<std::vector<int>> outward = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  std::vector<Vec3> points;
+  std::vector<std::vector<int>> faces;
+  const auto add = [&](const std::vector<Vec3>& ps, std::vector<std::vector<int>> fs, Vec3 shift, bool reverse) {
+    const int base = int(points.size());
+    for (const Vec3& p : ps)
+      points.push_back({p[0] + shift[0], p[1] + shift[1], p[2] + shift[2]});
+    for (std::vector<int>& f : fs) {
+      for (int& v : f)
+        v += base;
+      if (reverse)
+        std::reverse(f.begin(), f.end());
+      faces.push_back(f);
+    }
+  };
+  add(tet, outward, {0, 0, 0}, true);
+  add(tet, outward, {3, 0, 0}, false);
+  add({{0, 0, 5}, {1, 0, 5}, {1, 1, 5}, {0, 1, 5}}, {{0, 2, 1}, {0, 3, 2}}, {0, 0, 0}, false);
+  const BaseMesh linear = imported(points, faces);
+  EXPECT_EQ(linear.report.components_turned_outward, 1u);
+  EXPECT_EQ(linear.report.faces_flipped, 0u);
+  for (int f = 0; f < 4; ++f) // the inward tetrahedron, turned back: the outward faces
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(linear.face_vertices[std::size_t(3 * f + k)], outward[std::size_t(f)][std::size_t(k)]);
+  for (int f = 4; f < 10; ++f) // the others as they were
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(linear.face_vertices[std::size_t(3 * f + k)], faces[std::size_t(f)][std::size_t(k)]);
+
+  std::vector<std::vector<int>> one_turned = faces;
+  std::reverse(one_turned.back().begin(), one_turned.back().end());
+  const BaseMesh oriented = imported(points, one_turned);
+  EXPECT_EQ(oriented.report.components_turned_outward, 1u);
+  EXPECT_EQ(oriented.report.faces_flipped, 1u);
+}
+
+TEST(MeshImport, ClosedSurfacesWeldOnlyPointsAtOnePosition)
+{
+  // Two closed tetrahedra, each with its own vertices, one pair of them at
+  // one position: joined (then cut again, two closed fans). Every fan is
+  // closed, so no other pair could join, however close.
+  const std::vector<Vec3> tet = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const std::vector<std::vector<int>> outward = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  std::vector<Vec3> points = tet;
+  for (const Vec3& p : tet)
+    points.push_back({-p[0], -p[1], -p[2]}); // the mirror image, vertex 4 at -0
+  std::vector<std::vector<int>> faces = outward;
+  for (const std::vector<int>& f : outward)
+    faces.push_back({f[2] + 4, f[1] + 4, f[0] + 4});
+  EXPECT_EQ(imported(points, faces).report.vertices_welded, 1u);
+  for (Vec3& p : points)
+    if (&p >= &points[4])
+      p[0] += 1e-7f; // within the weld tolerance, but no border
+  EXPECT_EQ(imported(points, faces).report.vertices_welded, 0u);
+}
+
 TEST(MeshImport, BadInputNamesTheProblem)
 {
   EXPECT_THROW(load_mesh("/nonexistent/mesh.off"), IOError);

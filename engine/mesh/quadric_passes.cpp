@@ -129,12 +129,23 @@ bool star_keeps_its_faces(const CgalMesh& mesh, CgalMesh::Vertex_index moved, Cg
 QuadricPasses reduce_in_passes(CgalMesh& mesh, std::size_t target_faces)
 {
   QuadricPasses result;
-  std::vector<Quadric> quadrics = vertex_quadrics(mesh);
-  std::vector<char> border(mesh.num_vertices()), touched(mesh.num_vertices());
+  // On the mesh, so that collecting its garbage moves them along.
+  auto quadrics = mesh.add_property_map<CgalMesh::Vertex_index, Quadric>("v:meshpaint_quadric").first;
+  {
+    const std::vector<Quadric> q = vertex_quadrics(mesh);
+    for (const CgalMesh::Vertex_index v : mesh.vertices())
+      quadrics[v] = q[v];
+  }
+  std::vector<char> border, touched;
   std::vector<Candidate> candidates;
   while (mesh.number_of_faces() > target_faces) {
+    // Each pass walks every slot, removed ones too: once most are removed,
+    // compact (the passes remove about a tenth of the faces each).
+    if (mesh.number_of_removed_faces() > mesh.number_of_faces())
+      mesh.collect_garbage();
     const std::size_t faces_before = mesh.number_of_faces();
-    std::fill(border.begin(), border.end(), 0);
+    border.assign(mesh.num_vertices(), 0);
+    touched.resize(mesh.num_vertices());
     for (const CgalMesh::Halfedge_index h : mesh.halfedges())
       if (mesh.is_border(h))
         border[mesh.source(h)] = border[mesh.target(h)] = 1;
@@ -200,6 +211,7 @@ QuadricPasses reduce_in_passes(CgalMesh& mesh, std::size_t target_faces)
     if (100 * (faces_before - mesh.number_of_faces()) < faces_before)
       break;
   }
+  mesh.remove_property_map(quadrics);
   result.faces = mesh.number_of_faces();
   return result;
 }

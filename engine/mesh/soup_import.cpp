@@ -10,7 +10,8 @@
 
 #include <algorithm>     // for std::sort, std::adjacent_find, std::reverse
 #include <cmath>         // for std::floor, std::fabs, std::isfinite
-#include <cstdint>       // for std::uint64_t
+#include <cstdint>       // for std::uint64_t, std::uint32_t
+#include <cstring>       // for std::memcpy
 #include <functional>    // for std::hash
 #include <map>           // for std::map
 #include <numeric>       // for std::iota
@@ -47,11 +48,13 @@ struct CellHash
 //! Whether `polygons` already form an oriented manifold, on which CGAL's
 //! orient_polygon_soup() would change nothing: no directed edge twice (so
 //! no edge in three faces and no two faces across an edge that disagree),
-//! and the corners around each vertex one fan. Linear, on flat arrays: on
+//! and the corners around each vertex one fan; `closed_fan` says whose fan
+//! closes (a vertex in no polygon counts as closed). Linear, on flat arrays: on
 //! scans of millions of faces the orienter's maps take several times as
 //! long, and most files are oriented manifolds already.
-bool oriented_manifold(std::size_t points, const std::vector<Polygon>& polygons)
+bool oriented_manifold(std::size_t points, const std::vector<Polygon>& polygons, std::vector<char>& closed_fan)
 {
+  closed_fan.assign(points, 1);
   // Corners grouped by their vertex (counting sort): each as (prev, next).
   std::vector<std::size_t> first(points + 1, 0);
   for (const Polygon& p : polygons)
@@ -91,10 +94,12 @@ bool oriented_manifold(std::size_t points, const std::vector<Polygon>& polygons)
     seen.assign(n, 0);
     std::size_t visited = 1;
     seen[0] = 1;
-    for (std::size_t c = across_out(begin[0].second); c < n && !seen[c]; c = across_out(begin[std::ptrdiff_t(c)].second)) {
+    std::size_t c = across_out(begin[0].second);
+    for (; c < n && !seen[c]; c = across_out(begin[std::ptrdiff_t(c)].second)) {
       seen[c] = 1;
       ++visited;
     }
+    closed_fan[v] = c < n; // back at the first corner
     for (std::size_t c = across_in(begin[0].first); c < n && !seen[c]; c = across_in(begin[std::ptrdiff_t(c)].first)) {
       seen[c] = 1;
       ++visited;
@@ -105,13 +110,117 @@ bool oriented_manifold(std::size_t points, const std::vector<Polygon>& polygons)
   return true;
 }
 
+//! The components of an oriented manifold's polygons (oriented_manifold()),
+//! numbered from 0 in the order of their first polygons, into
+//! `component_of`, and whether each is closed. In such a soup the polygons
+//! around a vertex are one fan, joined across edges, so the components are
+//! those of the shared vertices: one union-find pass instead of a CGAL mesh.
+std::size_t manifold_components(const std::vector<Polygon>& polygons, const std::vector<char>& closed_fan,
+                                std::vector<std::size_t>& component_of, std::vector<bool>& closed)
+{
+  std::vector<std::size_t> parent(closed_fan.size());
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  const auto root = [&](std::size_t v) {
+    while (parent[v] != v)
+      v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const Polygon& p : polygons)
+    for (std::size_t k = 1; k < p.size(); ++k) {
+      const std::size_t a = root(p[0]), b = root(p[k]);
+      parent[std::max(a, b)] = std::min(a, b);
+    }
+  constexpr std::size_t kNone = std::size_t(-1);
+  std::vector<std::size_t> number(parent.size(), kNone);
+  closed.clear();
+  for (std::size_t f = 0; f < polygons.size(); ++f) {
+    std::size_t& n = number[root(polygons[f][0])];
+    if (n == kNone) {
+      n = closed.size();
+      closed.push_back(true);
+    }
+    component_of[f] = n;
+  }
+  for (std::size_t v = 0; v < parent.size(); ++v)
+    if (!closed_fan[v])
+      closed[number[root(v)]] = false; // an open fan is in some polygon
+  return closed.size();
+}
+
+//! Which components face inward, of those `judged` (closed ones), by
+//! CGAL's test (PMP::is_outward_oriented). That test decides at a
+//! component's first vertex of greatest z from the triangles around it
+//! alone; those triangles (each polygon fanned from its first corner, as
+//! the whole component would be) make a small CGAL mesh per component,
+//! where the whole component as one costs seconds on a scan of millions of
+//! faces. Their points keep their order, so that the test finds the same
+//! vertex. A star that is no disk is not judged.
+std::vector<bool> inward_components(const std::vector<Point>& points, const std::vector<Polygon>& polygons,
+                                    const std::vector<std::size_t>& component_of, const std::vector<bool>& judged)
+{
+  if (judged.empty())
+    return {};
+  const std::size_t none = points.size();
+  std::vector<std::size_t> top(judged.size(), none);
+  for (std::size_t f = 0; f < polygons.size(); ++f) {
+    std::size_t& t = top[component_of[f]];
+    for (const std::size_t v : polygons[f])
+      if (t == none || points[v].z() > points[t].z() || (points[v].z() == points[t].z() && v < t))
+        t = v;
+  }
+  std::vector<std::vector<Polygon>> stars(judged.size());
+  for (std::size_t f = 0; f < polygons.size(); ++f) {
+    const std::size_t c = component_of[f];
+    const Polygon& p = polygons[f];
+    for (std::size_t k = 1; judged[c] && k + 1 < p.size(); ++k)
+      if (p[0] == top[c] || p[k] == top[c] || p[k + 1] == top[c])
+        stars[c].push_back({p[0], p[k], p[k + 1]});
+  }
+  std::vector<bool> inward(judged.size(), false);
+  for (std::size_t c = 0; c < judged.size(); ++c) {
+    if (!judged[c])
+      continue;
+    std::vector<std::size_t> used;
+    for (const Polygon& t : stars[c])
+      used.insert(used.end(), t.begin(), t.end());
+    std::sort(used.begin(), used.end());
+    used.erase(std::unique(used.begin(), used.end()), used.end());
+    const auto local = [&](std::size_t v) {
+      return std::size_t(std::lower_bound(used.begin(), used.end(), v) - used.begin());
+    };
+    std::vector<Point> star_points;
+    for (const std::size_t v : used)
+      star_points.push_back(points[v]);
+    for (Polygon& t : stars[c])
+      for (std::size_t& v : t)
+        v = local(v);
+    Mesh mesh;
+    PMP::polygon_soup_to_polygon_mesh(star_points, stars[c], mesh);
+    const Mesh::Vertex_index v_top(Mesh::size_type(local(top[c])));
+    inward[c] = mesh.number_of_faces() == stars[c].size() && !mesh.is_border(v_top) &&
+                !PMP::internal::is_outward_oriented(v_top, mesh, CGAL::parameters::default_values());
+  }
+  return inward;
+}
+
+//! FNV-1a over 64-bit words: its offset basis and one step.
+constexpr std::uint64_t kFnvBasis = 1469598103934665603ULL;
+constexpr std::uint64_t fnv_step(std::uint64_t h, std::uint64_t x) { return (h ^ x) * 1099511628211ULL; }
+
+//! Whether no two of `hashes` agree.
+bool all_distinct(std::vector<std::uint64_t> hashes)
+{
+  std::sort(hashes.begin(), hashes.end());
+  return std::adjacent_find(hashes.begin(), hashes.end()) == hashes.end();
+}
+
 //! A hash of a polygon's corners, sorted: the same for two polygons with
-//! the same corners in any order or orientation (FNV-1a).
+//! the same corners in any order or orientation.
 std::uint64_t corner_set_hash(const Polygon& sorted)
 {
-  std::uint64_t h = 1469598103934665603ULL;
+  std::uint64_t h = kFnvBasis;
   for (const std::size_t v : sorted)
-    h = (h ^ std::uint64_t(v)) * 1099511628211ULL;
+    h = fnv_step(h, std::uint64_t(v));
   return h;
 }
 
@@ -121,8 +230,7 @@ std::uint64_t corner_set_hash(const Polygon& sorted)
 //! runs only where it may find something.
 bool may_have_duplicates(std::vector<std::uint64_t> hashes)
 {
-  std::sort(hashes.begin(), hashes.end());
-  return std::adjacent_find(hashes.begin(), hashes.end()) != hashes.end();
+  return !all_distinct(std::move(hashes));
 }
 
 //! Whether each point lies on a border of the faces as listed: its faces'
@@ -150,6 +258,26 @@ std::vector<bool> open_fans(std::size_t points, const std::vector<std::vector<in
   return open;
 }
 
+//! Whether two of `points` may lie at one position: two hashes of their
+//! coordinates agree (-0 taken as 0). False means no two coincide for
+//! certain; on a closed scan that is all the weld needs to know, found by
+//! a sort instead of millions of lookups in a hash grid.
+bool may_coincide(const std::vector<Vec3>& points)
+{
+  std::vector<std::uint64_t> hashes(points.size());
+  for (std::size_t v = 0; v < points.size(); ++v) {
+    std::uint64_t h = kFnvBasis;
+    for (int a = 0; a < 3; ++a) {
+      const float x = points[v][std::size_t(a)] + 0.0f; // -0 + 0 is +0
+      std::uint32_t bits;
+      std::memcpy(&bits, &x, sizeof bits);
+      h = fnv_step(h, bits);
+    }
+    hashes[v] = h;
+  }
+  return !all_distinct(std::move(hashes));
+}
+
 //! For each point, in order, the first earlier kept point it joins, or the
 //! point itself, which is then kept. A point joins a kept point at its very
 //! position, or within `tolerance` when either lies on a border (`open`):
@@ -163,6 +291,8 @@ std::vector<std::size_t> weld_targets(const std::vector<Vec3>& points, const std
   const double cell = kCellTolerances * tolerance, tolerance2 = tolerance * tolerance;
   if (!(cell > 0) || !std::isfinite(cell))
     return target;
+  if (std::find(open.begin(), open.end(), true) == open.end() && !may_coincide(points))
+    return target; // only points at one position could join, and there are none
   constexpr std::size_t kNone = std::size_t(-1);
   std::unordered_map<Cell, std::size_t, CellHash> first_kept; // a cell's kept points, chained by next_kept
   first_kept.reserve(points.size());
@@ -343,7 +473,8 @@ SoupSteps import_soup(PolygonSoup& soup, bool weld)
   }
 
   const std::size_t before_points = points.size();
-  const bool oriented = oriented_manifold(points.size(), polygons);
+  std::vector<char> closed_fan;
+  const bool oriented = oriented_manifold(points.size(), polygons, closed_fan);
   steps.oriented_manifold = oriented;
   const std::vector<Polygon> unoriented = oriented ? std::vector<Polygon>() : polygons;
   if (!oriented)
@@ -365,43 +496,40 @@ SoupSteps import_soup(PolygonSoup& soup, bool weld)
     steps.faces_flipped += same ? 0 : 1;
   }
 
-  Mesh mesh;
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   std::vector<std::size_t> component_of(polygons.size(), 0);
   std::size_t components = 0;
-  if (mesh.number_of_faces() == polygons.size()) {
-    auto fcc = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:component", 0).first;
-    components = PMP::connected_components(mesh, fcc);
-    for (const auto f : mesh.faces())
-      component_of[std::size_t(f)] = fcc[f];
+  std::vector<bool> closed;
+  if (oriented)
+    components = manifold_components(polygons, closed_fan, component_of, closed);
+  else {
+    Mesh mesh;
+    PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+    if (mesh.number_of_faces() == polygons.size()) {
+      auto fcc = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:component", 0).first;
+      components = PMP::connected_components(mesh, fcc);
+      for (const auto f : mesh.faces())
+        component_of[std::size_t(f)] = fcc[f];
+    }
+    closed.assign(components, true);
+    for (const auto h : mesh.halfedges())
+      if (mesh.is_border(h))
+        closed[component_of[std::size_t(mesh.face(mesh.opposite(h)))]] = false;
   }
-  std::vector<bool> closed(components, true), cut(components, false);
-  for (const auto h : mesh.halfedges())
-    if (mesh.is_border(h))
-      closed[component_of[std::size_t(mesh.face(mesh.opposite(h)))]] = false;
+  std::vector<bool> cut(components, false);
   for (std::size_t f = 0; f < polygons.size(); ++f)
     for (const std::size_t v : polygons[f])
       if (v >= before_points && components > 0)
         cut[component_of[f]] = true;
+  std::vector<bool> judged(components);
   for (std::size_t c = 0; c < components; ++c) {
     steps.nonorientable_components += cut[c] ? 1 : 0;
-    if (!closed[c] || cut[c])
-      continue;
-    // CGAL decides outwardness on triangles: fan the component's polygons.
-    std::vector<Polygon> triangles;
-    for (std::size_t f = 0; f < polygons.size(); ++f)
-      if (component_of[f] == c)
-        for (std::size_t k = 1; k + 1 < polygons[f].size(); ++k)
-          triangles.push_back({polygons[f][0], polygons[f][k], polygons[f][k + 1]});
-    Mesh tm;
-    PMP::polygon_soup_to_polygon_mesh(points, triangles, tm);
-    if (!CGAL::is_closed(tm) || PMP::is_outward_oriented(tm))
-      continue;
-    ++steps.components_turned_outward;
-    for (std::size_t f = 0; f < polygons.size(); ++f)
-      if (component_of[f] == c)
-        std::reverse(polygons[f].begin(), polygons[f].end());
+    judged[c] = closed[c] && !cut[c];
   }
+  const std::vector<bool> inward = inward_components(points, polygons, component_of, judged);
+  steps.components_turned_outward = std::size_t(std::count(inward.begin(), inward.end(), true));
+  for (std::size_t f = 0; f < polygons.size(); ++f)
+    if (components > 0 && inward[component_of[f]])
+      std::reverse(polygons[f].begin(), polygons[f].end());
 
   soup.points.resize(points.size());
   for (std::size_t v = 0; v < points.size(); ++v)

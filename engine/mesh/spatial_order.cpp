@@ -1,8 +1,9 @@
 #include "mesh/spatial_order.h"
 
-#include <algorithm> // for std::stable_sort, std::min, std::max
+#include <algorithm> // for std::stable_sort, std::sort, std::min, std::max
 #include <cstdint>   // for std::uint32_t, std::uint64_t
 #include <numeric>   // for std::iota
+#include <utility>   // for std::pair
 
 namespace meshpaint {
 namespace {
@@ -19,17 +20,56 @@ std::uint64_t spread3(std::uint64_t x)
   return x;
 }
 
+//! Morton codes over a box: 21 bits per axis.
+struct MortonBox
+{
+  Vec3 lo, hi;
+
+  explicit MortonBox(const std::vector<Vec3>& points) : lo(points.front()), hi(points.front())
+  {
+    for (const Vec3& p : points)
+      for (int a = 0; a < 3; ++a) {
+        lo[a] = std::min(lo[a], p[a]);
+        hi[a] = std::max(hi[a], p[a]);
+      }
+  }
+
+  std::uint64_t code(const double c[3]) const
+  {
+    std::uint64_t q[3];
+    for (int a = 0; a < 3; ++a) {
+      const double extent = double(hi[a]) - double(lo[a]);
+      const double u = extent > 0 ? (c[a] - lo[a]) / extent : 0.0;
+      q[a] = std::uint64_t(std::min(std::max(u, 0.0), 1.0) * double((1u << 21) - 1));
+    }
+    return spread3(q[0]) | spread3(q[1]) << 1 | spread3(q[2]) << 2;
+  }
+};
+
 } // namespace
+
+std::vector<std::size_t> morton_order(const std::vector<Vec3>& points)
+{
+  std::vector<std::size_t> order(points.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  if (points.empty())
+    return order;
+  const MortonBox box(points);
+  std::vector<std::pair<std::uint64_t, std::size_t>> keyed(points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const double c[3] = {points[k][0], points[k][1], points[k][2]};
+    keyed[k] = {box.code(c), k};
+  }
+  std::sort(keyed.begin(), keyed.end());
+  for (std::size_t k = 0; k < points.size(); ++k)
+    order[k] = keyed[k].second;
+  return order;
+}
 
 BaseMesh spatially_ordered(const BaseMesh& mesh, std::vector<int>* face_order)
 {
   const std::size_t nf = mesh.face_count();
-  Vec3 lo = mesh.points.front(), hi = lo;
-  for (const Vec3& p : mesh.points)
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = std::min(lo[a], p[a]);
-      hi[a] = std::max(hi[a], p[a]);
-    }
+  const MortonBox box(mesh.points);
   std::vector<std::uint64_t> code(nf);
   for (std::size_t f = 0; f < nf; ++f) {
     double c[3] = {0, 0, 0};
@@ -37,13 +77,9 @@ BaseMesh spatially_ordered(const BaseMesh& mesh, std::vector<int>* face_order)
     for (int k = 0; k < n; ++k)
       for (int a = 0; a < 3; ++a)
         c[a] += mesh.points[mesh.face_vertices[mesh.face_offsets[f] + k]][a];
-    std::uint64_t q[3];
-    for (int a = 0; a < 3; ++a) {
-      const double extent = double(hi[a]) - double(lo[a]);
-      const double u = extent > 0 ? (c[a] / n - lo[a]) / extent : 0.0;
-      q[a] = std::uint64_t(std::min(std::max(u, 0.0), 1.0) * double((1u << 21) - 1));
-    }
-    code[f] = spread3(q[0]) | spread3(q[1]) << 1 | spread3(q[2]) << 2;
+    for (int a = 0; a < 3; ++a)
+      c[a] /= n;
+    code[f] = box.code(c);
   }
   std::vector<int> order(nf);
   std::iota(order.begin(), order.end(), 0);

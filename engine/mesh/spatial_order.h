@@ -3,7 +3,8 @@
 
 #include "mesh/base_mesh.h"
 
-#include <vector> // for std::vector
+#include <cstddef> // for std::size_t
+#include <vector>  // for std::vector
 
 namespace meshpaint {
 
@@ -13,5 +14,9 @@ namespace meshpaint {
 //! and pages, which the table-driven kernels depend on for speed.
 //! `face_order[k]` is the input face that became face k.
 BaseMesh spatially_ordered(const BaseMesh& mesh, std::vector<int>* face_order = nullptr);
+
+//! The indices of `points` sorted along a Morton curve through their box:
+//! queries asked in this order walk a spatial index through the cache.
+std::vector<std::size_t> morton_order(const std::vector<Vec3>& points);
 
 } // namespace meshpaint

@@ -1,5 +1,7 @@
 #include "project/aabb_surface_query.h"
 
+#include "mesh/spatial_order.h"
+
 #include <CGAL/AABB_traits.h>             // for CGAL::AABB_traits
 #include <CGAL/AABB_tree.h>               // for CGAL::AABB_tree
 #include <CGAL/AABB_triangle_primitive.h> // for CGAL::AABB_triangle_primitive
@@ -26,13 +28,25 @@ class AabbQuery : public SurfaceQuery
 public:
   AabbQuery(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles)
   {
+    // The tree's leaves read their triangles from triangles_: stored along
+    // a Morton curve, a query's leaves lie near each other in memory
+    // rather than spread over a scan's whole file order.
+    std::vector<Vec3> centres(triangles.size());
+    for (std::size_t k = 0; k < triangles.size(); ++k)
+      for (int a = 0; a < 3; ++a)
+        centres[k][std::size_t(a)] = (points[std::size_t(triangles[k][0])][std::size_t(a)] +
+                                      points[std::size_t(triangles[k][1])][std::size_t(a)] +
+                                      points[std::size_t(triangles[k][2])][std::size_t(a)]) / 3;
+    const std::vector<std::size_t> order = morton_order(centres);
+    centres = {};
     triangles_.reserve(triangles.size());
-    for (const auto& t : triangles) {
+    for (const std::size_t k : order) {
+      const auto& t = triangles[k];
       const Triangle tri(point(points[std::size_t(t[0])]), point(points[std::size_t(t[1])]),
                          point(points[std::size_t(t[2])]));
       if (!tri.is_degenerate()) {
         triangles_.push_back(tri);
-        ids_.push_back(int(&t - triangles.data()));
+        ids_.push_back(int(k));
       }
     }
     tree_.insert(triangles_.cbegin(), triangles_.cend());
