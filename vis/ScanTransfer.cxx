@@ -9,6 +9,7 @@
 #include "core/format.h"     // for meshpaint::lower_extension
 #include "mesh/base_mesh.h"  // for meshpaint::load_mesh
 #include "mesh/property_ply.h" // for meshpaint::write_property_ply
+#include "mesh/spatial_order.h" // for meshpaint::morton_order
 
 #include <vtkAlgorithm.h>         // for vtkAlgorithm
 #include <vtkCellData.h>          // for vtkCellData
@@ -216,9 +217,14 @@ TransferReport transfer_to_scan(const PaintedSurface& painted, const WeldedSurfa
   const std::unique_ptr<SurfaceQuery> query = aabb_surface_queries()(reference.points, corners);
   std::vector<int> nearest_triangle(at.size());
   std::vector<Vec3> nearest_point(at.size());
+  // Asked along a Morton curve, so that neighbouring queries walk the same
+  // branches of the tree (a scan's file order jumps about).
+  const std::vector<std::size_t> order = morton_order(at);
   parallel_for(at.size(), 4096, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t v = begin; v < end; ++v)
+    for (std::size_t i = begin; i < end; ++i) {
+      const std::size_t v = order[i];
       nearest_triangle[v] = query->closest_triangle(at[v], nearest_point[v]);
+    }
   });
   auto label = vtkSmartPointer<vtkIntArray>::New();
   label->SetName("label");
