@@ -7,7 +7,8 @@
 #include <CGAL/AABB_triangle_primitive.h> // for CGAL::AABB_triangle_primitive
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h> // for CGAL::Epick
 
-#include <cmath>  // for std::sqrt
+#include <cmath>    // for std::sqrt
+#include <iterator> // for std::back_inserter
 #include <memory> // for std::unique_ptr
 #include <vector> // for std::vector
 
@@ -78,19 +79,38 @@ public:
     const Point from = point(a), to = point(b);
     if (triangles_.empty() || from == to)
       return false;
-    const auto found = tree_.first_intersection(Kernel::Ray_3(from, to));
-    if (!found)
-      return false;
+    // The triangles that the segment meets: the tree walks only the boxes
+    // along it, where a ray would go on through the scan until it met one
+    // (through a bone to its far wall, for every point aimed inwards). Each
+    // is then met by the ray from `a`, as the ray's own walk would meet it,
+    // and the nearest is kept.
+    thread_local std::vector<Primitive::Id> met;
+    met.clear();
+    tree_.all_intersected_primitives(Kernel::Segment_3(from, to), std::back_inserter(met));
+    const Kernel::Ray_3 ray(from, to);
+    bool found = false;
+    double nearest = 0;
     Point at;
-    if (const Point* p = boost::get<Point>(&found->first))
-      at = *p;
-    else if (const Kernel::Segment_3* s = boost::get<Kernel::Segment_3>(&found->first))
-      at = CGAL::squared_distance(from, s->source()) <= CGAL::squared_distance(from, s->target()) ? s->source()
-                                                                                                   : s->target();
-    else
-      return false;
-    // A ray, so the hit must lie within the segment.
-    if (CGAL::squared_distance(from, at) > CGAL::squared_distance(from, to))
+    for (const Primitive::Id& triangle : met) {
+      const auto crossing = CGAL::intersection(ray, *triangle);
+      if (!crossing)
+        continue;
+      Point p;
+      if (const Point* q = boost::get<Point>(&*crossing))
+        p = *q;
+      else if (const Kernel::Segment_3* s = boost::get<Kernel::Segment_3>(&*crossing))
+        p = CGAL::squared_distance(from, s->source()) <= CGAL::squared_distance(from, s->target()) ? s->source()
+                                                                                                    : s->target();
+      else
+        continue;
+      const double d = CGAL::squared_distance(from, p);
+      if (!found || d < nearest) {
+        found = true;
+        nearest = d;
+        at = p;
+      }
+    }
+    if (!found || nearest > CGAL::squared_distance(from, to))
       return false;
     hit = vec(at);
     return true;
