@@ -71,9 +71,11 @@ struct Candidate
   std::uint32_t at; //!< vertex index, or kMidpoint
 };
 
-std::vector<Quadric> vertex_quadrics(const CgalMesh& mesh)
+using QuadricMap = CgalMesh::Property_map<CgalMesh::Vertex_index, Quadric>;
+
+//! Sums each vertex's plane quadrics into `q` (zero to begin with).
+void add_vertex_quadrics(const CgalMesh& mesh, QuadricMap& q)
 {
-  std::vector<Quadric> q(mesh.num_vertices());
   for (const CgalMesh::Face_index f : mesh.faces()) {
     const CgalMesh::Halfedge_index h = mesh.halfedge(f);
     const CgalMesh::Vertex_index v[3] = {mesh.source(h), mesh.target(h), mesh.target(mesh.next(h))};
@@ -98,7 +100,6 @@ std::vector<Quadric> vertex_quadrics(const CgalMesh& mesh)
     for (const CgalMesh::Vertex_index u : {mesh.source(h), mesh.target(h)})
       q[u].add_plane(across / length, s, kBorderWeight * along.squared_length());
   }
-  return q;
 }
 
 //! Whether moving `moved` (and `other`, the edge's far end) to `p` keeps
@@ -130,12 +131,8 @@ QuadricPasses reduce_in_passes(CgalMesh& mesh, std::size_t target_faces)
 {
   QuadricPasses result;
   // On the mesh, so that collecting its garbage moves them along.
-  auto quadrics = mesh.add_property_map<CgalMesh::Vertex_index, Quadric>("v:meshpaint_quadric").first;
-  {
-    const std::vector<Quadric> q = vertex_quadrics(mesh);
-    for (const CgalMesh::Vertex_index v : mesh.vertices())
-      quadrics[v] = q[v];
-  }
+  QuadricMap quadrics = mesh.add_property_map<CgalMesh::Vertex_index, Quadric>("v:meshpaint_quadric").first;
+  add_vertex_quadrics(mesh, quadrics);
   std::vector<char> border, touched;
   std::vector<Candidate> candidates;
   while (mesh.number_of_faces() > target_faces) {
