@@ -163,13 +163,16 @@ bool unit_number(const std::string& w)
   return end != w.c_str() && end == w.c_str() + w.size() && v >= 0 && v <= 1;
 }
 
+//! Whether a PLY type is a float or a double.
+bool is_real_type(const std::string& t) { return t == "float" || t == "float32" || t == "double" || t == "float64"; }
+
 //! A colour property stored as a real number: OpenMesh scales it by 255
 //! into a byte, which is only defined for 0-1.
 bool is_real_colour(const std::string& name, const std::string& type)
 {
   const bool colour = name == "red" || name == "green" || name == "blue" || name == "alpha" ||
                       name == "diffuse_red" || name == "diffuse_green" || name == "diffuse_blue";
-  return colour && (type == "float" || type == "float32" || type == "double" || type == "float64");
+  return colour && is_real_type(type);
 }
 
 //! Bytes of a PLY scalar type.
@@ -184,24 +187,58 @@ int ply_size(const std::string& t)
   return 4;
 }
 
-//! A binary PLY integer of type `t` as a signed value.
-long long ply_integer(const unsigned char* b, const std::string& t, bool big_endian)
+//! How one property of a binary PLY element is laid out, resolved from
+//! the header's words once, not per element.
+struct PlyField
 {
-  const int n = ply_size(t);
+  bool list = false;
+  int bytes = 4;       //!< a scalar's, a list item's
+  int count_bytes = 0; //!< a list's count
+  bool count_signed = false;
+  bool real = false;   //!< float or double
+  bool coordinate = false;      //!< x, y or z of a vertex, stored as a real
+  bool colour_in_unit = false;  //!< a vertex colour stored as a real: 0-1
+};
+
+bool is_signed_type(const std::string& t)
+{
+  return t == "char" || t == "int8" || t == "short" || t == "int16" || t == "int" || t == "int32";
+}
+
+std::vector<PlyField> ply_fields(const PlyElement& e)
+{
+  std::vector<PlyField> fields(e.types.size());
+  for (std::size_t p = 0; p < fields.size(); ++p) {
+    PlyField& f = fields[p];
+    f.list = e.lists[p];
+    f.bytes = ply_size(e.types[p]);
+    f.real = is_real_type(e.types[p]);
+    if (f.list) {
+      f.count_bytes = ply_size(e.count_types[p]);
+      f.count_signed = is_signed_type(e.count_types[p]);
+    }
+    const std::string& name = e.names[p];
+    f.coordinate = !f.list && f.real && e.name == "vertex" && (name == "x" || name == "y" || name == "z");
+    f.colour_in_unit = !f.list && e.name == "vertex" && is_real_colour(name, e.types[p]);
+  }
+  return fields;
+}
+
+//! A binary PLY integer of `n` bytes as a signed value.
+long long ply_integer(const unsigned char* b, int n, bool is_signed, bool big_endian)
+{
   unsigned long long u = 0;
   for (int k = 0; k < n; ++k)
     u |= (unsigned long long)b[big_endian ? n - 1 - k : k] << (8 * k);
-  const bool is_signed = t == "char" || t == "int8" || t == "short" || t == "int16" || t == "int" || t == "int32";
   if (is_signed && n < 8 && (u >> (8 * n - 1)) & 1)
     return (long long)u - (1LL << (8 * n));
   return (long long)u;
 }
 
-//! A binary PLY float or double as a double.
-double ply_real(const unsigned char* b, const std::string& t, bool big_endian)
+//! A binary PLY float (`n` 4) or double (8) as a double.
+double ply_real(const unsigned char* b, int n, bool big_endian)
 {
   unsigned char le[8];
-  const int n = ply_size(t);
   for (int k = 0; k < n; ++k)
     le[k] = b[big_endian ? n - 1 - k : k];
   if (n == 4) {
@@ -227,49 +264,45 @@ void check_ply_binary_body(std::istream& in, const std::vector<PlyElement>& elem
   const auto* b = reinterpret_cast<const unsigned char*>(body.data());
   const std::size_t n = body.size();
   std::size_t at = 0;
-  for (const PlyElement& e : elements)
+  for (const PlyElement& e : elements) {
+    const std::vector<PlyField> fields = ply_fields(e);
+    const auto where = [&](long k) { return e.name + " " + std::to_string(k); };
     for (long k = 0; k < e.count; ++k)
-      for (std::size_t p = 0; p < e.types.size(); ++p) {
-        const std::string where = e.name + " " + std::to_string(k);
-        if (!e.lists[p]) {
-          const std::size_t bytes = std::size_t(ply_size(e.types[p]));
-          if (at + bytes > n) {
-            c.problem = "the binary PLY body ends inside " + where + " (truncated?)";
+      for (std::size_t p = 0; p < fields.size(); ++p) {
+        const PlyField& f = fields[p];
+        if (!f.list) {
+          if (at + std::size_t(f.bytes) > n) {
+            c.problem = "the binary PLY body ends inside " + where(k) + " (truncated?)";
             return;
           }
-          const std::string& name = e.names[p];
-          if (e.name == "vertex" && (name == "x" || name == "y" || name == "z") &&
-              (e.types[p] == "float" || e.types[p] == "float32" || e.types[p] == "double" ||
-               e.types[p] == "float64") &&
-              !std::isfinite(ply_real(b + at, e.types[p], big_endian))) {
-            c.problem = "vertex " + std::to_string(k) + " has a non-finite coordinate " + name;
+          if (f.coordinate && !std::isfinite(ply_real(b + at, f.bytes, big_endian))) {
+            c.problem = "vertex " + std::to_string(k) + " has a non-finite coordinate " + e.names[p];
             return;
           }
-          if (e.name == "vertex" && is_real_colour(name, e.types[p])) {
-            const double v = ply_real(b + at, e.types[p], big_endian);
+          if (f.colour_in_unit) {
+            const double v = ply_real(b + at, f.bytes, big_endian);
             if (!(v >= 0 && v <= 1)) {
-              c.problem = "vertex " + std::to_string(k) + " has a colour " + name + " outside 0-1";
+              c.problem = "vertex " + std::to_string(k) + " has a colour " + e.names[p] + " outside 0-1";
               return;
             }
           }
-          at += bytes;
+          at += std::size_t(f.bytes);
           continue;
         }
-        const std::size_t count_bytes = std::size_t(ply_size(e.count_types[p]));
-        if (at + count_bytes > n) {
-          c.problem = "the binary PLY body ends inside " + where + " (truncated?)";
+        if (at + std::size_t(f.count_bytes) > n) {
+          c.problem = "the binary PLY body ends inside " + where(k) + " (truncated?)";
           return;
         }
-        const long long items = ply_integer(b + at, e.count_types[p], big_endian);
-        at += count_bytes;
-        const std::size_t item = std::size_t(ply_size(e.types[p]));
-        if (items < 0 || items > nv || at + std::size_t(items) * item > n) {
-          c.problem = where + " has a list of " + std::to_string(items) + " items, but there are " +
+        const long long items = ply_integer(b + at, f.count_bytes, f.count_signed, big_endian);
+        at += std::size_t(f.count_bytes);
+        if (items < 0 || items > nv || at + std::size_t(items) * std::size_t(f.bytes) > n) {
+          c.problem = where(k) + " has a list of " + std::to_string(items) + " items, but there are " +
                       std::to_string(nv) + " vertices and " + std::to_string(n - at) + " bytes left";
           return;
         }
-        at += std::size_t(items) * item;
+        at += std::size_t(items) * std::size_t(f.bytes);
       }
+  }
   if (at != n)
     c.problem = "the binary PLY body has " + std::to_string(n - at) + " bytes after the elements its header declares";
 }
