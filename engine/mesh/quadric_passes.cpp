@@ -6,6 +6,7 @@
 #include <array>     // for std::array
 #include <cmath>     // for std::sqrt
 #include <cstdint>   // for std::uint32_t, std::uint8_t
+#include <limits>    // for std::numeric_limits
 #include <vector>    // for std::vector
 
 namespace meshpaint {
@@ -72,6 +73,12 @@ struct Candidate
 };
 
 using QuadricMap = CgalMesh::Property_map<CgalMesh::Vertex_index, Quadric>;
+using RefusedMap = CgalMesh::Property_map<CgalMesh::Edge_index, bool>;
+
+// About this many of the candidates under the limit collapse in a pass (a
+// tenth to a fifth, measured): when that would overshoot the budget, the
+// pass goes in cost order.
+constexpr double kCollapsedPerCandidate = 0.15;
 
 //! Sums each vertex's plane quadrics into `q` (zero to begin with).
 void add_vertex_quadrics(const CgalMesh& mesh, QuadricMap& q)
@@ -133,8 +140,12 @@ QuadricPasses reduce_in_passes(CgalMesh& mesh, std::size_t target_faces)
   // On the mesh, so that collecting its garbage moves them along.
   QuadricMap quadrics = mesh.add_property_map<CgalMesh::Vertex_index, Quadric>("v:meshpaint_quadric").first;
   add_vertex_quadrics(mesh, quadrics);
-  std::vector<char> border, touched;
+  // Edges whose collapse was refused (a fold, a sliver, the link): left
+  // out of their neighbours' comparison, lest they hold them back forever.
+  RefusedMap refused = mesh.add_property_map<CgalMesh::Edge_index, bool>("e:meshpaint_refused", false).first;
+  std::vector<char> border, kept_this_pass;
   std::vector<Candidate> candidates;
+  std::vector<float> costs, cheapest;
   while (mesh.number_of_faces() > target_faces) {
     // Each pass walks every slot, removed ones too: once most are removed,
     // compact (the passes remove about a tenth of the faces each).
@@ -142,7 +153,7 @@ QuadricPasses reduce_in_passes(CgalMesh& mesh, std::size_t target_faces)
       mesh.collect_garbage();
     const std::size_t faces_before = mesh.number_of_faces();
     border.assign(mesh.num_vertices(), 0);
-    touched.resize(mesh.num_vertices());
+    kept_this_pass.resize(mesh.num_vertices());
     for (const CgalMesh::Halfedge_index h : mesh.halfedges())
       if (mesh.is_border(h))
         border[mesh.source(h)] = border[mesh.target(h)] = 1;
@@ -176,39 +187,71 @@ QuadricPasses reduce_in_passes(CgalMesh& mesh, std::size_t target_faces)
     if (candidates.empty())
       break;
 
-    const auto cheaper = [](const Candidate& x, const Candidate& y) { return x.cost < y.cost; };
-    const auto end = candidates.begin() + std::ptrdiff_t((candidates.size() + 3) / 4);
-    std::nth_element(candidates.begin(), end - 1, candidates.end(), cheaper);
-    std::sort(candidates.begin(), end, cheaper);
+    // The cheapest quarter may collapse. Where that would remove more than
+    // is left to remove, cost order decides which go before the budget is
+    // met; otherwise an edge goes if none at its ends is cheaper (edges
+    // refused before do not count), in memory order, which keeps the
+    // collapses' reads near each other instead of scattered by cost.
+    const std::size_t quarter = (candidates.size() + 3) / 4;
+    const bool in_cost_order = double(quarter) * kCollapsedPerCandidate > double(faces_before - target_faces) / 2;
+    auto end = candidates.end();
+    float limit = 0;
+    if (in_cost_order) {
+      const auto cheaper = [](const Candidate& x, const Candidate& y) { return x.cost < y.cost; };
+      end = candidates.begin() + std::ptrdiff_t(quarter);
+      std::nth_element(candidates.begin(), end - 1, candidates.end(), cheaper);
+      std::sort(candidates.begin(), end, cheaper);
+      limit = end[-1].cost;
+    } else {
+      costs.resize(candidates.size());
+      for (std::size_t i = 0; i < candidates.size(); ++i)
+        costs[i] = candidates[i].cost;
+      std::nth_element(costs.begin(), costs.begin() + std::ptrdiff_t(quarter - 1), costs.end());
+      limit = costs[quarter - 1];
+      cheapest.assign(mesh.num_vertices(), std::numeric_limits<float>::infinity());
+      for (const Candidate& c : candidates) {
+        const CgalMesh::Edge_index e(c.edge);
+        if (refused[e])
+          continue;
+        float& at_source = cheapest[mesh.source(mesh.halfedge(e))];
+        float& at_target = cheapest[mesh.target(mesh.halfedge(e))];
+        at_source = std::min(at_source, c.cost);
+        at_target = std::min(at_target, c.cost);
+      }
+    }
 
-    std::fill(touched.begin(), touched.end(), 0);
+    // Only the kept vertex is marked: a collapse changes no other vertex's
+    // quadric or point, so every other edge's cost stays exact.
+    std::fill(kept_this_pass.begin(), kept_this_pass.end(), 0);
     for (auto c = candidates.begin(); c != end && mesh.number_of_faces() > target_faces; ++c) {
       const CgalMesh::Edge_index e(c->edge);
-      if (mesh.is_removed(e))
+      if (c->cost > limit || mesh.is_removed(e))
         continue;
       const CgalMesh::Halfedge_index h = mesh.halfedge(e);
       const CgalMesh::Vertex_index s = mesh.source(h), t = mesh.target(h);
-      if (touched[s] || touched[t])
+      if (kept_this_pass[s] || kept_this_pass[t] ||
+          (!in_cost_order && (c->cost > cheapest[s] || c->cost > cheapest[t])))
         continue;
       const Point p = c->at == kMidpoint ? CGAL::midpoint(mesh.point(s), mesh.point(t))
                                          : mesh.point(CgalMesh::Vertex_index(c->at));
       int valence = 0;
       if (!star_keeps_its_faces(mesh, s, t, p, valence) || !star_keeps_its_faces(mesh, t, s, p, valence) ||
-          valence - 4 > kMaxValence || !CGAL::Euler::does_satisfy_link_condition(e, mesh))
+          valence - 4 > kMaxValence || !CGAL::Euler::does_satisfy_link_condition(e, mesh)) {
+        refused[e] = true;
         continue;
+      }
       const Quadric q = quadrics[s] + quadrics[t];
       const CgalMesh::Vertex_index kept = CGAL::Euler::collapse_edge(e, mesh);
       mesh.point(kept) = p;
       quadrics[kept] = q;
-      touched[kept] = 1;
-      for (const CgalMesh::Vertex_index u : CGAL::vertices_around_target(mesh.halfedge(kept), mesh))
-        touched[u] = 1;
+      kept_this_pass[kept] = 1;
     }
     ++result.passes;
     if (100 * (faces_before - mesh.number_of_faces()) < faces_before)
       break;
   }
   mesh.remove_property_map(quadrics);
+  mesh.remove_property_map(refused);
   result.faces = mesh.number_of_faces();
   return result;
 }

@@ -19,9 +19,11 @@ struct QuadricPasses
 //! most `target_faces` triangles, or until a pass removes under 1% of them.
 //! Each pass ranks every edge by its Garland-Heckbert plane quadric cost
 //! (faces weighted by area, border edges by planes across them, so borders
-//! stay where they are), then collapses the cheapest quarter in order,
-//! skipping an edge whose ends a collapse of this pass has already touched:
-//! the costs stay exact within a pass, and no priority queue is kept. The
+//! stay where they are). Of the cheapest quarter, an edge collapses when no
+//! edge at its ends is cheaper (edges refused earlier aside) and neither
+//! end was kept by a collapse of this pass; the edges go in memory order.
+//! The costs stay exact within a pass, and no priority queue is kept. A
+//! pass that would overshoot the budget goes in cost order instead. The
 //! kept vertex goes to whichever of the two ends or the midpoint costs
 //! least. A collapse must keep the mesh a manifold (CGAL's link condition),
 //! must not pinch a border, and must not turn any face of its star by more
