@@ -13,7 +13,6 @@
 
 #include <vtkAlgorithm.h>         // for vtkAlgorithm
 #include <vtkCellData.h>          // for vtkCellData
-#include <vtkIdList.h>            // for vtkIdList
 #include <vtkCellArray.h>         // for vtkCellArray
 #include <vtkFloatArray.h>        // for vtkFloatArray
 #include <vtkGenericCell.h>       // for vtkGenericCell
@@ -138,19 +137,25 @@ void write_scan_ply(vtkPolyData* scan, const std::string& path)
     scan->GetPoint(v, x);
     points[std::size_t(v)] = {float(x[0]), float(x[1]), float(x[2])};
   }
-  std::vector<std::vector<int>> faces(std::size_t(scan->GetNumberOfPolys()));
-  auto ids = vtkSmartPointer<vtkIdList>::New();
-  for (vtkIdType f = 0; f < scan->GetNumberOfPolys(); ++f) {
-    scan->GetCellPoints(f, ids);
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-      faces[std::size_t(f)].push_back(int(ids->GetId(k)));
+  // The polygons as offsets and corners (cell f is polygon f: there are no
+  // other cells).
+  std::vector<int> offsets{0}, corners;
+  offsets.reserve(std::size_t(scan->GetNumberOfPolys()) + 1);
+  vtkCellArray* polys = scan->GetPolys();
+  corners.reserve(std::size_t(polys->GetNumberOfConnectivityIds()));
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(count, ids);) {
+    for (vtkIdType k = 0; k < count; ++k)
+      corners.push_back(int(ids[k]));
+    offsets.push_back(int(corners.size()));
   }
   std::vector<PlyProperty> vertex; // the colours first: what MeshLab and CloudCompare show
   if (vtkDataArray* diffuse = scan->GetPointData()->GetArray("diffuse"); diffuse && diffuse->GetNumberOfComponents() == 3)
     vertex = colour_properties(diffuse);
   for (PlyProperty& p : component_properties(scan->GetPointData()))
     vertex.push_back(std::move(p));
-  write_property_ply(points, faces, vertex, component_properties(scan->GetCellData()), path);
+  write_property_ply(points, offsets, corners, vertex, component_properties(scan->GetCellData()), path);
 }
 
 const std::vector<std::string>& scan_extensions()

@@ -18,13 +18,14 @@ struct PlyProperty
 };
 
 //! Writes points, polygons and their properties as binary little-endian PLY
-//! through OpenMesh (each property a persistent custom property), keeping
-//! the vertex and face order. Atomic.
-//! \throw InputError when OpenMesh cannot keep a face (it would join a
-//! non-manifold edge) or a property has the wrong count; IOError when
-//! writing fails.
-void write_property_ply(const std::vector<Vec3>& points, const std::vector<std::vector<int>>& faces,
-                        const std::vector<PlyProperty>& vertex_properties,
+//! through OpenMesh's writer (each property a persistent custom property),
+//! keeping the vertex and face order; polygon f has the corners
+//! face_corners[face_offsets[f]] to face_corners[face_offsets[f + 1] - 1]. Any
+//! polygons are kept, non-manifold ones too. Atomic.
+//! \throw InputError when a face names a vertex that is not there or a
+//! property has the wrong count; IOError when writing fails.
+void write_property_ply(const std::vector<Vec3>& points, const std::vector<int>& face_offsets,
+                        const std::vector<int>& face_corners, const std::vector<PlyProperty>& vertex_properties,
                         const std::vector<PlyProperty>& face_properties, const std::string& path);
 
 } // namespace meshpaint

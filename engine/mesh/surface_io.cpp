@@ -40,10 +40,16 @@ void write_surface(const WeldedSurface& s, const std::string& path)
 
 void write_openmesh(const PolyMesh& mesh, const std::string& path, OpenMesh::IO::Options options)
 {
+  OpenMesh::IO::ExporterT<PolyMesh> exporter(mesh);
+  write_exported(exporter, path, options);
+}
+
+void write_exported(OpenMesh::IO::BaseExporter& exporter, const std::string& path, OpenMesh::IO::Options options)
+{
   std::ostringstream bytes(std::ios::binary);
   {
     QuietOpenMesh quiet;
-    if (!OpenMesh::IO::write_mesh(mesh, bytes, lower_extension(path), options))
+    if (!OpenMesh::IO::IOManager().write(bytes, lower_extension(path), exporter, options))
       throw IOError("cannot write '" + path + "': OpenMesh could not write it");
   }
   const std::string text = bytes.str();

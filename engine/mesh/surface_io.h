@@ -4,7 +4,8 @@
 #include "mesh/openmesh_types.h"
 #include "mesh/welded_surface.h"
 
-#include <OpenMesh/Core/IO/Options.hh> // for OpenMesh::IO::Options
+#include <OpenMesh/Core/IO/Options.hh>                // for OpenMesh::IO::Options
+#include <OpenMesh/Core/IO/exporter/BaseExporter.hh> // for OpenMesh::IO::BaseExporter
 
 #include <string> // for std::string
 
@@ -20,5 +21,9 @@ void write_surface(const WeldedSurface& surface, const std::string& path);
 //! writers do not all report a short write to a file.
 //! \throw IOError when OpenMesh refuses; StorageError or IOError from the write.
 void write_openmesh(const PolyMesh& mesh, const std::string& path, OpenMesh::IO::Options options);
+
+//! The same for any source of points, polygons and properties that
+//! OpenMesh's writers can read.
+void write_exported(OpenMesh::IO::BaseExporter& exporter, const std::string& path, OpenMesh::IO::Options options);
 
 } // namespace meshpaint

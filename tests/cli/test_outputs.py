@@ -85,6 +85,24 @@ def test_transfer_ply_has_uchar_colours_and_an_int_label(project, plane, tmp_pat
     assert rgb.GetTuple3(6) == (255, 64, 0)
 
 
+def test_transfer_ply_keeps_a_non_manifold_scan_as_it_is(project, tmp_path):
+    # a fin on an inner edge of the plane: three faces at one edge
+    scan = tmp_path / "fin.obj"
+    scan.write_text(PLANE_OBJ + "v 1.5 1 1\nf 7 8 26\n")
+    r = run("transfer", str(project), "--to", str(scan), "-o", str(tmp_path / "o.ply"), "--quiet")
+    assert r.returncode == 0, r.stderr
+    reader = vtk.vtkPLYReader()
+    reader.SetFileName(str(tmp_path / "o.ply"))
+    reader.Update()
+    out = reader.GetOutput()
+    assert (out.GetNumberOfPoints(), out.GetNumberOfPolys()) == (26, 17)
+    corners = vtk.vtkIdList()
+    out.GetCellPoints(16, corners)
+    assert [corners.GetId(k) for k in range(3)] == [6, 7, 25]
+    vertices, _ = read_ply(tmp_path / "o.ply")
+    assert len(vertices["label"]) == 26
+
+
 def label_classes(poly):
     fd = poly.GetFieldData()
     ids, names, colours = (fd.GetAbstractArray(n) for n in ("label_ids", "label_names", "label_colors"))
