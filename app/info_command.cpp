@@ -12,6 +12,7 @@
 
 #include <cstdio>   // for std::snprintf
 #include <iostream> // for std::cout
+#include <optional> // for std::optional
 
 namespace meshpaint::cli {
 namespace {
@@ -85,9 +86,22 @@ int info_command(const Argv& argv)
                                : p.scan.path + ", " + grouped(p.scan.bytes) + " bytes, CRC-32 " + hex32(p.scan.crc32))
        << "\n";
   }
-  const AtlasTopology topo = atlas_topology_of(mesh);
-  os << "atlas        " << grouped(topo.patch_count) << " patches (quads after the first Catmull-Clark step), "
-     << grouped(topo.rings.size()) << " corner rings, " << grouped(topo.edges.size()) << " patch edges\n";
+  // A scan of millions of faces as its own base mesh: its atlas tables
+  // alone can take more memory than a fit of it, so they are planned first.
+  const std::size_t available = available_host_memory();
+  const std::size_t topology_bytes = atlas_topology_bytes(mesh);
+  const bool tabled = available == 0 || topology_bytes <= available / 2;
+  std::optional<AtlasTopology> topo;
+  if (tabled) {
+    topo = atlas_topology_of(mesh);
+    os << "atlas        " << grouped(topo->patch_count) << " patches (quads after the first Catmull-Clark step), "
+       << grouped(topo->rings.size()) << " corner rings, " << grouped(topo->edges.size()) << " patch edges\n";
+  } else {
+    os << "atlas        " << grouped(mesh.face_vertices.size())
+       << " patches (quads after the first Catmull-Clark step), not tabled: their tables would take about "
+       << format_bytes(topology_bytes) << ", over half of the " << format_bytes(available)
+       << " available (fit makes a base mesh to paint: see below)\n";
+  }
 
   std::shared_ptr<Runtime> runtime;
   std::string no_device;
@@ -99,25 +113,27 @@ int info_command(const Argv& argv)
   const AtlasStorage storage = args.has("--storage") ? parse_storage(args.value("--storage"))
                                : runtime ? default_storage(runtime->info()) : AtlasStorage::Buffer;
   os << "device       " << (runtime ? runtime->info().summary() + ", " + storage_name(storage) + " storage"
-                                    : "none: " + no_device) << "\n\n";
+                                    : "none: " + no_device) << "\n";
 
-  Table table({"level", "patch", "atlas texels", "vertices", "faces", "layer", "atlas 1..L", "fits"});
-  const int top = runtime ? std::min(kMaxLevel, largest_fitting_level(topo, runtime->info(), storage) + 1) : 6;
-  for (int l = 1; l <= std::max(top, 1); ++l) {
-    const MemoryPlan plan = plan_memory(topo, l, storage);
-    const LevelLayout& lay = plan.finest;
-    table.add({std::to_string(l), std::to_string(lay.tile) + "x" + std::to_string(lay.tile),
-               std::to_string(lay.width) + "x" + std::to_string(lay.height), grouped(topo.unique_vertices(l)),
-               grouped(std::size_t(topo.patch_count) * lay.n * lay.n), format_bytes(layer_bytes(lay, storage)),
-               format_bytes(plan.total),
-               runtime ? (fit_problem(topo, l, runtime->info(), storage).empty() ? "yes" : "no") : "?"});
+  if (topo) {
+    os << "\n";
+    Table table({"level", "patch", "atlas texels", "vertices", "faces", "layer", "atlas 1..L", "fits"});
+    const int top = runtime ? std::min(kMaxLevel, largest_fitting_level(*topo, runtime->info(), storage) + 1) : 6;
+    for (int l = 1; l <= std::max(top, 1); ++l) {
+      const MemoryPlan plan = plan_memory(*topo, l, storage);
+      const LevelLayout& lay = plan.finest;
+      table.add({std::to_string(l), std::to_string(lay.tile) + "x" + std::to_string(lay.tile),
+                 std::to_string(lay.width) + "x" + std::to_string(lay.height), grouped(topo->unique_vertices(l)),
+                 grouped(std::size_t(topo->patch_count) * lay.n * lay.n), format_bytes(layer_bytes(lay, storage)),
+                 format_bytes(plan.total),
+                 runtime ? (fit_problem(*topo, l, runtime->info(), storage).empty() ? "yes" : "no") : "?"});
+    }
+    table.print(os);
   }
-  table.print(os);
 
   const FitMemory fit = plan_fit_memory(
       mesh.triangle_count(), fit_base_faces > 0 ? std::size_t(fit_base_faces) : default_base_faces(mesh.face_count()),
       fit_level);
-  const std::size_t available = available_host_memory();
   os << "\nfit          level " << fit_level << ", base mesh " << counted(fit.base_faces, "face", "faces", true)
      << ": about " << grouped(fit.points) << " points, " << format_bytes(fit.bytes) << " of host memory at the peak"
      << (available == 0 ? std::string(" (available memory unknown)")

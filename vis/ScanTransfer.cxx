@@ -240,54 +240,64 @@ TransferReport transfer_to_scan(const PaintedSurface& painted, const WeldedSurfa
   moved->SetDataType(scan->GetPoints()->GetDataType());
   moved->SetNumberOfPoints(n);
 
+  // Every vertex on its own, on every core: GetCell into a cell of each
+  // thread's own reads only, once the cells are built.
+  triangles->BuildCells();
+  std::vector<double> dist2(static_cast<std::size_t>(n)), shift_length(geometry ? std::size_t(n) : 0);
+  parallel_for(std::size_t(n), 4096, [&](std::size_t begin, std::size_t end) {
+    auto cell = vtkSmartPointer<vtkGenericCell>::New();
+    for (vtkIdType v = vtkIdType(begin); v < vtkIdType(end); ++v) {
+      double x[3], pcoords[3], weights[3], ignored[3], ignored_dist2 = 0;
+      int sub = 0;
+      scan->GetPoint(v, x);
+      const vtkIdType triangle = nearest_triangle[std::size_t(v)];
+      if (triangle < 0)
+        throw InputError("the painted surface has no area to transfer from");
+      const Vec3& c = nearest_point[std::size_t(v)];
+      double closest[3] = {c[0], c[1], c[2]};
+      dist2[std::size_t(v)] = (x[0] - closest[0]) * (x[0] - closest[0]) + (x[1] - closest[1]) * (x[1] - closest[1]) +
+                              (x[2] - closest[2]) * (x[2] - closest[2]);
+      triangles->GetCell(triangle, cell);
+      cell->EvaluatePosition(closest, ignored, sub, pcoords, ignored_dist2, weights);
+      const auto& q = reference.quads[std::size_t(triangle / 2)];
+      const int corner[3] = {q[0], triangle % 2 ? q[2] : q[1], triangle % 2 ? q[3] : q[2]};
+      const int nearest = corner[std::max_element(weights, weights + 3) - weights];
+      label->SetValue(v, painted.label[std::size_t(nearest)]);
+      double d[3] = {0, 0, 0}, s[3] = {0, 0, 0}, r = 0, h = 0, shift[3] = {0, 0, 0};
+      for (int k = 0; k < 3; ++k) {
+        const std::size_t at_corner = std::size_t(corner[k]);
+        const double w = weights[k];
+        for (int a = 0; a < 3; ++a) {
+          d[a] += w * painted.diffuse[at_corner][a];
+          s[a] += w * painted.specular[at_corner][a];
+          shift[a] += w * (double(painted.surface.points[at_corner][a]) - reference.points[at_corner][a]);
+        }
+        r += w * painted.roughness[at_corner];
+        h += w * painted.displacement[at_corner];
+      }
+      diffuse->SetTuple(v, d);
+      specular->SetTuple(v, s);
+      roughness->SetValue(v, float(r));
+      displacement->SetValue(v, float(h));
+      if (geometry) {
+        // Untouched regions carry exactly zero shift: the vertex stays bit for bit.
+        if (shift[0] != 0 || shift[1] != 0 || shift[2] != 0)
+          for (int a = 0; a < 3; ++a)
+            x[a] += shift[a];
+        shift_length[std::size_t(v)] = std::sqrt(shift[0] * shift[0] + shift[1] * shift[1] + shift[2] * shift[2]);
+        moved->SetPoint(v, x);
+      }
+    }
+  });
+  // Summed in order, so that the report does not depend on the threads.
   TransferReport report;
   double sum2 = 0;
-  auto cell = vtkSmartPointer<vtkGenericCell>::New();
-  for (vtkIdType v = 0; v < n; ++v) {
-    double x[3], pcoords[3], weights[3], ignored[3], ignored_dist2 = 0;
-    int sub = 0;
-    scan->GetPoint(v, x);
-    const vtkIdType triangle = nearest_triangle[std::size_t(v)];
-    if (triangle < 0)
-      throw InputError("the painted surface has no area to transfer from");
-    const Vec3& c = nearest_point[std::size_t(v)];
-    double closest[3] = {c[0], c[1], c[2]};
-    const double dist2 = (x[0] - closest[0]) * (x[0] - closest[0]) + (x[1] - closest[1]) * (x[1] - closest[1]) +
-                         (x[2] - closest[2]) * (x[2] - closest[2]);
-    triangles->GetCell(triangle, cell);
-    cell->EvaluatePosition(closest, ignored, sub, pcoords, ignored_dist2, weights);
-    report.max_distance = std::max(report.max_distance, std::sqrt(dist2));
-    sum2 += dist2;
-    const auto& q = reference.quads[std::size_t(triangle / 2)];
-    const int corner[3] = {q[0], triangle % 2 ? q[2] : q[1], triangle % 2 ? q[3] : q[2]};
-    const int nearest = corner[std::max_element(weights, weights + 3) - weights];
-    label->SetValue(v, painted.label[std::size_t(nearest)]);
-    double d[3] = {0, 0, 0}, s[3] = {0, 0, 0}, r = 0, h = 0, shift[3] = {0, 0, 0};
-    for (int k = 0; k < 3; ++k) {
-      const std::size_t c = std::size_t(corner[k]);
-      const double w = weights[k];
-      for (int a = 0; a < 3; ++a) {
-        d[a] += w * painted.diffuse[c][a];
-        s[a] += w * painted.specular[c][a];
-        shift[a] += w * (double(painted.surface.points[c][a]) - reference.points[c][a]);
-      }
-      r += w * painted.roughness[c];
-      h += w * painted.displacement[c];
-    }
-    diffuse->SetTuple(v, d);
-    specular->SetTuple(v, s);
-    roughness->SetValue(v, float(r));
-    displacement->SetValue(v, float(h));
-    if (geometry) {
-      // Untouched regions carry exactly zero shift: the vertex stays bit for bit.
-      if (shift[0] != 0 || shift[1] != 0 || shift[2] != 0)
-        for (int a = 0; a < 3; ++a)
-          x[a] += shift[a];
-      report.max_moved = std::max(report.max_moved, std::sqrt(shift[0] * shift[0] + shift[1] * shift[1] +
-                                                              shift[2] * shift[2]));
-      moved->SetPoint(v, x);
-    }
+  for (std::size_t v = 0; v < dist2.size(); ++v) {
+    report.max_distance = std::max(report.max_distance, std::sqrt(dist2[v]));
+    sum2 += dist2[v];
   }
+  for (const double moved_by : shift_length)
+    report.max_moved = std::max(report.max_moved, moved_by);
   report.rms_distance = n > 0 ? std::sqrt(sum2 / double(n)) : 0.0;
   vtkPointData* pd = scan->GetPointData();
   for (vtkDataArray* a : {static_cast<vtkDataArray*>(label), static_cast<vtkDataArray*>(diffuse),

@@ -6,6 +6,15 @@
 #include <string> // for std::to_string
 
 namespace meshpaint {
+namespace {
+
+// Measured: `meshpaint info` on the scan of 10,106,208 triangles of `bench
+// fit` (30,318,624 patches) peaks this much higher per patch with the atlas
+// topology than without it.
+constexpr double kAtlasTopologyBytesPerPatch = 321;
+constexpr double kAtlasTopologyMargin = 1.2;
+
+} // namespace
 
 std::size_t AtlasTopology::unique_vertices(int level) const
 {
@@ -128,6 +137,12 @@ std::vector<int> AtlasTopology::corner_neighbourhood(const std::vector<int>& pat
     from = to;
   }
   return marked_in_order(std::move(out), in, std::size_t(patch_count));
+}
+
+std::size_t atlas_topology_bytes(const BaseMesh& mesh)
+{
+  // One patch per face corner.
+  return std::size_t(kAtlasTopologyMargin * kAtlasTopologyBytesPerPatch * double(mesh.face_vertices.size()));
 }
 
 AtlasTopology atlas_topology_of(const BaseMesh& mesh)

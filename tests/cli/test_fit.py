@@ -374,3 +374,21 @@ def test_fit_refuses_a_scan_whose_plan_exceeds_the_memory_available(tmp_path):
     bad = run_with_host_memory("lots", "fit", scan, "-o", str(out))
     assert bad.returncode == 2
     assert bad.stderr.strip() == "meshpaint fit: MESHPAINT_HOST_MEMORY must be a size such as 512M or 2G, not 'lots'"
+
+
+def test_info_tables_a_direct_atlas_only_when_planning_it_fits_in_memory():
+    scan = os.path.join(SCANS, "bunny00.off")  # 75,408 triangles: 226,224 patches
+    roomy = run_with_host_memory("4G", "info", scan)
+    assert roomy.returncode == 0, roomy.stderr
+    assert re.search(r"^atlas +226,224 patches \(quads after the first Catmull-Clark step\), [0-9,]+ corner rings",
+                     roomy.stdout, re.M), roomy.stdout
+    assert re.search(r"^ *level +patch +atlas texels", roomy.stdout, re.M), roomy.stdout
+    # in 64 MiB the tables (about 385 bytes a patch) would take more than half
+    tight = run_with_host_memory("64M", "info", scan)
+    assert tight.returncode == 0, tight.stderr
+    m = re.search(r"^atlas +226,224 patches \(quads after the first Catmull-Clark step\), not tabled: their tables "
+                  r"would take about ([0-9.]+) MiB, over half of the 64.0 MiB available \(fit makes a base mesh to "
+                  r"paint: see below\)$", tight.stdout, re.M)
+    assert m and 32 < float(m[1]) < 200, tight.stdout
+    assert not re.search(r"^ *level +patch", tight.stdout, re.M), tight.stdout
+    assert tight.stdout.rstrip().endswith("64.0 MiB available: does not fit"), tight.stdout
