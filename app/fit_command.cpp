@@ -14,6 +14,7 @@
 #include "core/host_memory.h"
 #include "core/timer.h"
 #include "mesh/decimate.h"
+#include "mesh/file_census.h"
 #include "project/fit_memory.h"
 #include "project/project_surface.h"
 #include "project/scan_fit.h"
@@ -122,6 +123,22 @@ int fit_command(const Argv& argv)
   Timer total, t;
   const std::string path = args.positionals()[0];
   const std::size_t available = available_host_memory(); // its setting checked before the scan is read
+  const auto budget_for = [&](std::size_t faces) {
+    return base_faces > 0 ? std::size_t(base_faces) : default_base_faces(faces);
+  };
+  const auto refuse_beyond = [&](const FitMemory& plan, const std::string& triangles) {
+    if (available > 0 && plan.bytes > available)
+      throw ResourceError("a fit of " + triangles + " at level " + std::to_string(level) + " needs about " +
+                          format_bytes(plan.bytes) + " of memory, and " + format_bytes(available) +
+                          " is available (meshpaint info " + path + " --level L plans other levels)");
+  };
+  // Where the file's header states its faces (each at least a triangle), a
+  // scan far beyond the memory is refused before it is read.
+  if (const long declared = header_face_count(path, lower_extension(path)); declared > 0) {
+    const std::size_t faces = std::size_t(declared);
+    refuse_beyond(plan_fit_memory(faces, args.flag("--direct") ? faces : budget_for(faces), level),
+                  "at least " + counted(faces, "triangle", "triangles", true));
+  }
   const BaseMesh scan = load_reported(path, import_options(args));
   const ScanReference scan_file = scan_reference(path);
   say("read " + path + ": " + grouped(scan.vertex_count()) + " vertices, " + grouped(scan.face_count()) +
@@ -129,13 +146,9 @@ int fit_command(const Argv& argv)
   // What the fit will take, planned before its large allocations (the
   // decimation's mesh, the scan's index, the atlas): refused, not swapped.
   const std::size_t triangles = scan.triangle_count();
-  const std::size_t budget = base_faces > 0 ? std::size_t(base_faces) : default_base_faces(scan.face_count());
-  const FitMemory plan = plan_fit_memory(triangles, args.flag("--direct") ? triangles : budget, level);
-  if (available > 0 && plan.bytes > available)
-    throw ResourceError("a fit of " + counted(triangles, "triangle", "triangles", true) + " at level " +
-                        std::to_string(level) + " needs about " + format_bytes(plan.bytes) + " of memory, and " +
-                        format_bytes(available) + " is available (meshpaint info " + path +
-                        " --level L plans other levels)");
+  const std::size_t budget = budget_for(scan.face_count());
+  refuse_beyond(plan_fit_memory(triangles, args.flag("--direct") ? triangles : budget, level),
+                counted(triangles, "triangle", "triangles", true));
   t.restart();
   // The scan's index for the fit's queries does not depend on the base
   // mesh: it is built on another core while the scan is decimated (the

@@ -32,6 +32,7 @@
 #include <optional>   // for std::optional
 #include <random>     // for std::mt19937, std::normal_distribution
 #include <sstream>    // for std::ostringstream
+#include <utility>    // for std::pair
 
 #include <csignal>        // for SIGKILL
 #include <fcntl.h>        // for O_WRONLY
@@ -150,6 +151,59 @@ FitRun fit_scan(const std::string& program, const fs::path& scan, int level, con
   if (run.failure.empty())
     run.report = nlohmann::json::parse(read_text(report));
   return run;
+}
+
+//! A stroke script for the femur's fitted projects: a label stroke and a
+//! paint stroke along its length, through its vertices on the +x side (on
+//! the surface of every refinement of it, to within the noise).
+void write_femur_strokes(const TriMesh& femur, const fs::path& path)
+{
+  TriMesh::Point lo = femur.point(*femur.vertices_begin()), hi = lo;
+  for (auto v : femur.vertices()) {
+    lo.minimize(femur.point(v));
+    hi.maximize(femur.point(v));
+  }
+  nlohmann::json points = nlohmann::json::array();
+  constexpr int kPoints = 20;
+  for (int k = 0; k < kPoints; ++k) {
+    const TriMesh::Point aim(hi[0], (lo[1] + hi[1]) / 2, lo[2] + (hi[2] - lo[2]) * (k + 0.5f) / kPoints);
+    TriMesh::Point nearest = femur.point(*femur.vertices_begin());
+    for (auto v : femur.vertices())
+      if ((femur.point(v) - aim).sqrnorm() < (nearest - aim).sqrnorm())
+        nearest = femur.point(v);
+    points.push_back({nearest[0], nearest[1], nearest[2]});
+  }
+  const double radius = 0.03 * (hi - lo).norm();
+  const nlohmann::json script = {
+      {"strokes",
+       {{{"tool", "label"}, {"points", points}, {"radius", radius}, {"falloff", "constant"}, {"channels", {{"label", 3}}}},
+        {{"tool", "paint"}, {"points", points}, {"radius", 2 * radius}, {"channels", {{"diffuse", {1, 0.2, 0.1}}}}}}}};
+  std::ofstream(path) << script.dump();
+}
+
+//! `meshpaint paint` of the stroke script on the fitted project (saved as a
+//! project), then `meshpaint transfer` of that back onto the scan as PLY,
+//! each in a child process.
+std::pair<FitRun, FitRun> paint_and_transfer(const std::string& program, const fs::path& scan,
+                                             const fs::path& strokes, const std::vector<std::string>& passed,
+                                             const fs::path& folder)
+{
+  const fs::path painted = folder / "painted.meshpaint";
+  std::vector<std::string> paint = {program, "paint", (folder / "scan.meshpaint").string(), "--strokes",
+                                    strokes.string(), "--save", painted.string(), "--quiet",
+                                    "-o", (folder / "painted").string()};
+  paint.insert(paint.end(), passed.begin(), passed.end());
+  const FitRun painting = run_measured(paint, folder / "paint.txt", folder / "paint.err");
+  FitRun transfer;
+  if (painting.failure.empty()) {
+    std::vector<std::string> argv = {program, "transfer", painted.string(), "--to", scan.string(),
+                                     "-o", (folder / "transferred.ply").string(), "--quiet"};
+    argv.insert(argv.end(), passed.begin(), passed.end());
+    transfer = run_measured(argv, folder / "transfer.txt", folder / "transfer.err");
+  }
+  fs::remove_all(folder / "painted");
+  fs::remove(folder / "transferred.ply");
+  return {painting, transfer};
 }
 
 //! A row's error cells: RMS and max % both ways, and the folded patches.
@@ -296,6 +350,9 @@ int bench_fit(const Args& args)
   if (femur_faces * 16 * 81 <= max_triangles)
     series.push_back({2, 4});
   const TriMesh femur = mesh;
+  const fs::path strokes = folder / "strokes.json";
+  write_femur_strokes(femur, strokes);
+  Table painting({"triangles", "scan vertices", "paint s", "paint peak MiB", "transfer s", "transfer peak MiB"});
   task.emplace(&bar, "fitting the femur at " + counted(series.size(), "size", "sizes"), series.size());
   for (std::size_t sized = 0; sized < series.size(); ++sized) {
     const Refinement step = series[sized];
@@ -356,6 +413,19 @@ int bench_fit(const Args& args)
     nlohmann::json row = run_json(run);
     row["loop_steps"] = step.loop;
     row["sqrt3_steps"] = step.sqrt3;
+    const auto [paint, transfer] = paint_and_transfer(program, scan, strokes, passed, folder);
+    if (!paint.failure.empty() || !transfer.failure.empty())
+      bar.print("meshpaint bench: painting or transferring the fit of " + grouped(run.triangles) + " triangles failed (" +
+                (paint.failure.empty() ? transfer.failure : paint.failure) + ")");
+    else {
+      painting.add({grouped(run.triangles), grouped(run.vertices), format_fixed(paint.wall_s, 1),
+                    format_fixed(paint.peak_mib, 0), format_fixed(transfer.wall_s, 1),
+                    format_fixed(transfer.peak_mib, 0)});
+      row["paint_wall_s"] = paint.wall_s;
+      row["paint_peak_mib"] = paint.peak_mib;
+      row["transfer_wall_s"] = transfer.wall_s;
+      row["transfer_peak_mib"] = transfer.peak_mib;
+    }
     rows.push_back(row);
     fs::remove(scan);
   }
@@ -378,6 +448,10 @@ int bench_fit(const Args& args)
   std::cout << "meshpaint fit on femur refined by Loop and sqrt(3) subdivision, noise " << kNoise * 100
             << "% of the diagonal per coordinate, level " << level << "\n";
   table.print(std::cout);
+  std::cout << "\n";
+  std::cout << "the stroke script (a label and a paint stroke along the femur) painted on each fitted project, "
+               "and the result transferred back onto the scan's vertices as PLY\n";
+  painting.print(std::cout);
   std::cout << "\n";
   std::cout << "decimation of those scans up to " << grouped(kSeriesPeerTriangles)
             << " triangles at the budget fit used, one run each\n";

@@ -698,4 +698,60 @@ FileCensus take_census(const std::string& path, const std::string& ext)
   return c;
 }
 
+long header_face_count(const std::string& path, const std::string& ext)
+{
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in)
+    return -1;
+  const long size = long(in.tellg());
+  in.seekg(0);
+  long faces = -1, min_bytes = 12;
+  if (ext == ".stl") {
+    char header[84];
+    std::uint32_t n = 0;
+    if (in.read(header, 84) && (std::memcpy(&n, header + 80, 4), size == 84 + 50 * long(n)))
+      faces = long(n);
+  } else if (ext == ".ply") {
+    std::string line;
+    for (int k = 0; k < 10000 && std::getline(in, line); ++k) {
+      std::istringstream words(line);
+      std::string keyword, element;
+      long count = 0;
+      words >> keyword;
+      if (keyword == "format" && line.find("ascii") != std::string::npos)
+        min_bytes = 6;
+      if (keyword == "end_header")
+        break;
+      if (keyword == "element" && words >> element >> count && element == "face")
+        faces = std::max(0L, faces) + count;
+    }
+  } else if (ext == ".off") {
+    std::string first;
+    if (!std::getline(in, first))
+      return -1;
+    if (first.rfind("OFF BINARY", 0) == 0) {
+      std::int32_t counts[3] = {0, 0, 0};
+      if (in.read(reinterpret_cast<char*>(counts), sizeof counts))
+        faces = counts[1];
+    } else if (first.rfind("OFF", 0) == 0) {
+      // "OFF" alone, or followed by the counts; comments may come between.
+      // (Other OFF headers, COFF and the like, give no plan.)
+      std::istringstream counts(first.substr(3));
+      long vertices = 0;
+      std::string line;
+      for (int k = 0; !(counts >> vertices >> faces); ++k) {
+        faces = -1;
+        const bool blank = counts.str().find_first_not_of(" \t\r") == std::string::npos;
+        if ((!blank && counts.str()[counts.str().find_first_not_of(" \t\r")] != '#') || k > 100 ||
+            !std::getline(in, line))
+          return -1;
+        counts.clear();
+        counts.str(line);
+      }
+      min_bytes = 6;
+    }
+  }
+  return faces < 0 || faces > size / min_bytes + 1 ? -1 : faces;
+}
+
 } // namespace meshpaint

@@ -26,4 +26,10 @@ struct FileCensus
 //! file that ends before its header's counts are met is a problem.
 FileCensus take_census(const std::string& path, const std::string& lower_extension);
 
+//! The faces a PLY, OFF or binary STL file's header says it has, read from
+//! the header alone (no body): a plan before reading. -1 where the format
+//! states none (OBJ, ASCII STL) or the header is unreadable or claims more
+//! than the file's bytes can hold (the reader then says what is wrong).
+long header_face_count(const std::string& path, const std::string& lower_extension);
+
 } // namespace meshpaint

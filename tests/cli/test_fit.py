@@ -359,8 +359,22 @@ def run_with_host_memory(size, *args):
     return subprocess.run([os.environ["MESHPAINT_BIN"], *args], capture_output=True, text=True, timeout=600, env=env)
 
 
+def off_as_obj(off, obj):
+    """The polygons of a text OFF file (no comments) as OBJ, which states no face count."""
+    words = open(off).read().split()
+    nv, nf = int(words[1]), int(words[2])
+    at, lines = 4 + 3 * nv, [f"v {' '.join(words[4 + 3 * k:7 + 3 * k])}" for k in range(nv)]
+    for _ in range(nf):
+        n = int(words[at])
+        lines.append("f " + " ".join(str(int(i) + 1) for i in words[at + 1:at + 1 + n]))
+        at += 1 + n
+    obj.write_text("\n".join(lines) + "\n")
+    return obj
+
+
 def test_fit_refuses_a_scan_whose_plan_exceeds_the_memory_available(tmp_path):
-    scan = os.path.join(SCANS, "bunny00.off")
+    # as OBJ, which states no face count: the plan is made once the scan is read
+    scan = str(off_as_obj(os.path.join(SCANS, "bunny00.off"), tmp_path / "bunny00.obj"))
     out = tmp_path / "b.meshpaint"
     r = run_with_host_memory("64M", "fit", scan, "-o", str(out))
     assert r.returncode == 2, r.stderr  # as a level that does not fit the device
@@ -392,3 +406,23 @@ def test_info_tables_a_direct_atlas_only_when_planning_it_fits_in_memory():
     assert m and 32 < float(m[1]) < 200, tight.stdout
     assert not re.search(r"^ *level +patch", tight.stdout, re.M), tight.stdout
     assert tight.stdout.rstrip().endswith("64.0 MiB available: does not fit"), tight.stdout
+
+
+def test_fit_refuses_from_the_header_before_reading_a_scan_far_beyond_the_memory(tmp_path):
+    # bunny00.off states its 75,408 faces in its header: refused before the read (no "read" line)
+    scan = os.path.join(SCANS, "bunny00.off")
+    out = tmp_path / "b.meshpaint"
+    r = run_with_host_memory("64M", "fit", scan, "-o", str(out))
+    assert r.returncode == 2, r.stderr
+    assert not any(l.startswith("meshpaint fit: read") for l in r.stderr.splitlines()), r.stderr
+    assert r.stderr.strip().splitlines()[-1].startswith(
+        "meshpaint fit: a fit of at least 75,408 triangles at level 3 needs about "), r.stderr
+    assert not out.exists()
+    # a header that claims more faces than its file can hold gives no plan: the reader says what is wrong
+    liar = tmp_path / "liar.ply"
+    liar.write_bytes(b"ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                     b"property float z\nelement face 100000000\nproperty list uchar int vertex_indices\nend_header\n"
+                     + bytes(36))
+    r = run_with_host_memory("64M", "fit", str(liar), "-o", str(out))
+    assert r.returncode == 2 and "needs about" not in r.stderr, r.stderr
+    assert "100000000 faces" in r.stderr, r.stderr
