@@ -87,7 +87,7 @@ public:
   OpenMesh::Vec2f texcoord(VertexHandle) const override { return {0, 0}; }
   OpenMesh::Vec2f texcoord(HalfedgeHandle) const override { return {0, 0}; }
   Status status(VertexHandle) const override { return {}; }
-  HalfedgeHandle getHeh(FaceHandle, VertexHandle) const override { return {}; }
+  HalfedgeHandle getHeh(FaceHandle, VertexHandle) const override { return HalfedgeHandle(); }
   unsigned int get_face_texcoords(std::vector<OpenMesh::Vec2f>&) const override { return 0; }
   OpenMesh::Vec3f normal(FaceHandle) const override { return {0, 0, 0}; }
   OpenMesh::Vec3d normald(FaceHandle) const override { return {0, 0, 0}; }
