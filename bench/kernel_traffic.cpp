@@ -17,7 +17,7 @@ double edge_reads(const AtlasTopology& t, int n)
   return texels;
 }
 
-//! Texels the corner kernels read: each ring's vertex and its one-ring
+//! Texels a corner kernel reads: each ring's vertex and its one-ring
 //! (the next texel along each slot's side and across its diagonal).
 double ring_reads(const AtlasTopology& t)
 {
@@ -38,15 +38,20 @@ double border_entries(const AtlasTopology& t, int n)
 
 } // namespace
 
-std::vector<FamilyTraffic> subdivide_traffic(const AtlasTopology& t, int from, int to)
+std::vector<FamilyTraffic> subdivide_traffic(const AtlasTopology& t, int from, int to, bool corners_in_one_pass)
 {
   FamilyTraffic edges{"subdivide edges", {"subdivide_edges"}, 0};
-  FamilyTraffic corners{"subdivide corners", {"subdivide_corners"}, 0};
+  FamilyTraffic corners{"subdivide corners", {"subdivide_corners", "subdivide_corner_levels"}, 0};
+  // In one pass: the first level's rings read once, every level's corners
+  // written, a mark per ring written once and read by each later step.
+  const bool one_pass = corners_in_one_pass && to - from > 1;
+  if (one_pass)
+    corners.bytes = kTexel * ring_reads(t) + double(t.rings.size()) * (to - from);
   FamilyTraffic tiles{"subdivide tiles", {"subdivide_tiles", "subdivide_patches"}, 0};
   for (int l = from; l < to; ++l) {
     const int ns = level_layout(t.patch_count, l).n, nd = level_layout(t.patch_count, l + 1).n;
     edges.bytes += kTexel * (edge_reads(t, ns) + double(t.edges.size()) * (nd - 1));
-    corners.bytes += kTexel * (ring_reads(t) + double(t.rings.size()));
+    corners.bytes += one_pass ? kTexel * double(t.rings.size()) : kTexel * (ring_reads(t) + double(t.rings.size()));
     tiles.bytes += kTexel * (tile_texels(t, l) + border_entries(t, nd) + tile_texels(t, l + 1));
   }
   return {edges, corners, tiles};

@@ -25,7 +25,8 @@ struct FamilyTraffic
 
 //! The families of Catmull-Clark steps from level `from` to `to` over every
 //! patch, bytes summed over the steps.
-std::vector<FamilyTraffic> subdivide_traffic(const AtlasTopology& topology, int from, int to);
+std::vector<FamilyTraffic> subdivide_traffic(const AtlasTopology& topology, int from, int to,
+                                             bool corners_in_one_pass);
 //! The families of the limit (positions and normals) of level `level` over
 //! every patch; the bounds' kernel, where it runs, reads the positions once.
 std::vector<FamilyTraffic> limit_traffic(const AtlasTopology& topology, int level);

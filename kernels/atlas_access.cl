@@ -327,6 +327,20 @@ inline int border_entry(int2 ij, int n, int4 sides, int4 rings, int *corner)
 /* Item k of a table-driven kernel: list[k], or k itself when list is null. */
 #define LISTED(list, k) ((list) ? (list)[k] : (k))
 
+/* The body's start of a kernel over rings (range: count): declares index
+ * (list[item], or item when list is null) and its CornerRing ring, asks for
+ * the tiles of a ring further on, and ends the kernel for the rounding tail
+ * and for a ring outside a set's flags. */
+#define RING_ITEM(src, g, rings, slots, list, count, flags, generation) \
+  const int ring_item = get_global_id(0);                                \
+  if (ring_item >= (count))                                              \
+    return;                                                              \
+  const int index = LISTED(list, ring_item);                             \
+  if (UNFLAGGED(flags, generation, index))                               \
+    return;                                                              \
+  const CornerRing ring = (rings)[index];                                \
+  PREFETCH_RING_AHEAD(src, g, rings, slots, list, ring_item, count)
+
 /* A set worked out on the device (select.cl) comes as flags over every
  * item, not as a list: item x is in it when flags[x] holds the set's
  * generation. Kernels that take one run over every item (list null) and

@@ -301,14 +301,7 @@ __kernel void limit_corners(ATLAS_IN src, __global float4 *restrict corners, __g
                             __global const int *list, int count, __global const uchar *flags, int generation,
                             int2 g)
 {
-  const int k = get_global_id(0);
-  if (k >= count)
-    return;
-  const int r = LISTED(list, k);
-  if (UNFLAGGED(flags, generation, r))
-    return;
-  const CornerRing ring = rings[r];
-  PREFETCH_RING_AHEAD(src, g, rings, slots, list, k, count);
+  RING_ITEM(src, g, rings, slots, list, count, flags, generation);
   const int m = ring.count;
   const CornerSlot first = slots[ring.first], last = slots[ring.first + m - 1];
   const float4 v = CORNER_LOAD(src, g, first, 0, 0);
@@ -366,5 +359,5 @@ __kernel void limit_corners(ATLAS_IN src, __global float4 *restrict corners, __g
     }
     p = (fm * fm * v + 4.0f * es + ds) * (1.0f / (fm * (fm + 5.0f)));
   }
-  PAIR_STORE(corners, r, p, (float4)(normalize(cross(t1.xyz, t2.xyz)), 0.0f));
+  PAIR_STORE(corners, index, p, (float4)(normalize(cross(t1.xyz, t2.xyz)), 0.0f));
 }

@@ -1,5 +1,6 @@
 // The two atlas storage paths (linear buffers, image2d objects) run the same
-// kernel source and must give the same bits for every operation.
+// kernel source and must give the same bits for every operation; so must
+// the two ways of taking the corners of several subdivision steps.
 
 #include "atlas/atlas.h"
 #include "support/runtime.h"
@@ -7,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>   // for M_PI, std::cos
 #include <cstring> // for std::memcmp
 
 namespace meshpaint {
@@ -48,6 +50,69 @@ TEST_P(StoragePaths, BufferAndImageAgreeBitForBit)
     a->reduce(level, 1);
   for (int l = 1; l < level; ++l)
     EXPECT_EQ(differing_texels(buffer.read_positions(l), image.read_positions(l)), 0u) << "reduced level " << l;
+}
+
+// On CPUs the corners of every step come from one gather of the first
+// level's rings; a corner kernel per step (the GPUs' way) must give the same
+// bits. Level 5 takes the rings three steps beyond the first.
+void expect_corner_paths_agree(const BaseMesh& mesh)
+{
+  const int level = 5;
+  Atlas one_pass(test::runtime(), mesh, level, AtlasStorage::Buffer);
+  Atlas per_step(test::runtime(), mesh, level, AtlasStorage::Buffer);
+  per_step.set_patch_items(false);
+  if (!one_pass.evaluator().corners_in_one_pass())
+    GTEST_SKIP() << test::runtime()->info().name << " runs a corner kernel per step";
+  ASSERT_FALSE(per_step.evaluator().corners_in_one_pass());
+  for (Atlas* a : {&one_pass, &per_step})
+    a->subdivide(1, level);
+  for (int l = 2; l <= level; ++l)
+    EXPECT_EQ(differing_texels(one_pass.read_positions(l), per_step.read_positions(l)), 0u) << "level " << l;
+  // From a level above the first, as multiresolution edits subdivide.
+  for (Atlas* a : {&one_pass, &per_step})
+    a->subdivide(2, level);
+  EXPECT_EQ(differing_texels(one_pass.read_positions(level), per_step.read_positions(level)), 0u) << "from level 2";
+}
+
+TEST_P(StoragePaths, CornersInOnePassAgreeWithACornerKernelPerStep)
+{
+  expect_corner_paths_agree(test::shape(GetParam()));
+}
+
+// Signed zeros: the one-pass kernel cannot see the zero-weighted taps that
+// decide the sign of a zero sum, and must leave those rings to the levels
+// themselves. A grid whose z is -0 on one half and rises on the other.
+TEST(StoragePaths, CornersInOnePassKeepTheSignOfZeros)
+{
+  const int n = 8;
+  std::vector<Vec3> pts;
+  for (int y = 0; y <= n; ++y)
+    for (int x = 0; x <= n; ++x)
+      pts.push_back({float(x), float(y), x > n / 2 ? 0.01f * float(x - n / 2) : -0.0f});
+  std::vector<std::vector<int>> faces;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x)
+      faces.push_back({y * (n + 1) + x, y * (n + 1) + x + 1, (y + 1) * (n + 1) + x + 1, (y + 1) * (n + 1) + x});
+  expect_corner_paths_agree(make_base_mesh(pts, faces, "signed_zeros"));
+}
+
+// Rings of more slots than the one-pass kernel holds are taken from the
+// levels: a cone over a 40-gon (apex and base centre of valence 40).
+TEST(StoragePaths, CornersInOnePassLeaveWideRingsToEachLevel)
+{
+  const int n = 40;
+  std::vector<Vec3> pts;
+  for (int k = 0; k < n; ++k) {
+    const double a = 2.0 * M_PI * k / n;
+    pts.push_back({float(std::cos(a)), float(std::sin(a)), 0.f});
+  }
+  pts.push_back({0.f, 0.f, 2.f});
+  std::vector<std::vector<int>> faces(1);
+  for (int k = n - 1; k >= 0; --k)
+    faces[0].push_back(k);
+  for (int k = 0; k < n; ++k)
+    faces.push_back({k, (k + 1) % n, n});
+  expect_corner_paths_agree(make_base_mesh(pts, faces, "cone40"));
 }
 
 TEST(StoragePaths, HostRoundTripKeepsPatchMajorOrder)

@@ -1,5 +1,6 @@
 #include "atlas/atlas_evaluator.h"
 
+#include "atlas/memory_plan.h"
 #include "atlas/tile_ranges.h"
 #include "cl/kernel_programs.h"
 #include "cl/launch.h"
@@ -42,6 +43,7 @@ AtlasEvaluator::AtlasEvaluator(Runtime& runtime, const AtlasTables& tables, Atla
   subdivide_patches_ = cl::Kernel(program, "subdivide_patches");
   subdivide_edges_ = cl::Kernel(program, "subdivide_edges");
   subdivide_corners_ = cl::Kernel(program, "subdivide_corners");
+  subdivide_corner_levels_ = cl::Kernel(program, "subdivide_corner_levels");
   limit_tiles_ = cl::Kernel(program, "limit_tiles");
   limit_patches_ = cl::Kernel(program, "limit_patches");
   limit_edges_ = cl::Kernel(program, "limit_edges");
@@ -59,7 +61,10 @@ AtlasEvaluator::AtlasEvaluator(Runtime& runtime, const AtlasTables& tables, Atla
   side_work_ = cl::Buffer(context, CL_MEM_READ_WRITE,
                           std::max<std::size_t>(1, topo.edges.size() * std::size_t(finest.n - 1)) * 2 *
                               sizeof(cl_float4));
-  corner_work_ = cl::Buffer(context, CL_MEM_READ_WRITE, topo.rings.size() * 2 * sizeof(cl_float4));
+  corner_work_ = cl::Buffer(context, CL_MEM_READ_WRITE,
+                            std::max<std::size_t>(1, topo.rings.size() * corner_work_layers(finest.level)) *
+                                sizeof(cl_float4));
+  ring_marks_ = cl::Buffer(context, CL_MEM_READ_WRITE, std::max<std::size_t>(1, topo.rings.size()));
   const auto flags = [&](std::size_t n) {
     const std::size_t bytes = round_up(std::max<std::size_t>(1, n), sizeof(cl_uint)); // whole fill patterns
     cl::Buffer b(context, CL_MEM_READ_WRITE, bytes);
@@ -113,21 +118,34 @@ void AtlasEvaluator::subdivide(int from_level, const std::vector<cl::Memory>& la
 {
   const Arguments a = arguments(set);
   cl::CommandQueue& q = runtime_.queue();
-  const int patch_count = tables_.topology().patch_count;
-  for (std::size_t k = 0; k + 1 < layers.size(); ++k) {
-    const int l = from_level + int(k);
+  const int patch_count = tables_.topology().patch_count, steps = int(layers.size()) - 1;
+  const cl_int stride = cl_int(tables_.topology().rings.size());
+  // One gather of the source level's rings gives the corners of every step;
+  // the rings it marks are taken again from each level.
+  const bool corner_levels = corners_in_one_pass() && steps > 1 && a.ring_count > 0;
+  const cl_uchar mark = 1;
+  if (corner_levels)
+    launch(q, subdivide_corner_levels_, range1d(a.ring_count), kLocal1D, layers[0], corner_work_, cl_int(0), stride,
+           cl_int(steps), ring_marks_, mark, tables_.rings(), tables_.slots(), a.rings, a.ring_count, a.ring_flags,
+           a.generation, grid(level_layout(patch_count, from_level)));
+  for (int k = 0; k < steps; ++k) {
+    const int l = from_level + k;
     const LevelLayout s = level_layout(patch_count, l), d = level_layout(patch_count, l + 1);
     const cl::Memory &in = layers[k], &out = layers[k + 1];
+    const cl_int corner_base = corner_levels ? k * stride : 0;
     if (a.edge_count > 0)
       launch(q, subdivide_edges_, range1d(a.edge_count), kLocal1D, in, side_work_, tables_.edges(), a.edges,
              a.edge_count, a.edge_flags, a.generation, grid(s), grid(d));
-    if (a.ring_count > 0)
-      launch(q, subdivide_corners_, range1d(a.ring_count), kLocal1D, in, corner_work_, tables_.rings(),
+    if (!corner_levels && a.ring_count > 0)
+      launch(q, subdivide_corners_, range1d(a.ring_count), kLocal1D, in, corner_work_, corner_base, tables_.rings(),
              tables_.slots(), a.rings, a.ring_count, a.ring_flags, a.generation, grid(s));
+    else if (corner_levels && k > 0)
+      launch(q, subdivide_corners_, range1d(a.ring_count), kLocal1D, in, corner_work_, corner_base, tables_.rings(),
+             tables_.slots(), a.rings, a.ring_count, ring_marks_, cl_int(mark), grid(s));
     if (a.patch_count > 0) {
       const TileLaunch t = tile_launch(subdivide_tiles_, subdivide_patches_, d, a.patch_count);
       launch(q, t.kernel, t.global, t.local, in, out, grid(s), grid(d), a.patches, a.patch_count, a.patch_flags,
-             a.generation, tables_.patch_sides(), tables_.patch_rings(), side_work_, corner_work_);
+             a.generation, tables_.patch_sides(), tables_.patch_rings(), side_work_, corner_work_, corner_base);
     }
   }
   // No wait: a list released here lives on until the kernels using it end,

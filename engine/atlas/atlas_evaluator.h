@@ -35,6 +35,11 @@ public:
   //! is there to compare them.
   bool patch_items() const { return patch_items_; }
   void set_patch_items(bool on) { patch_items_ = on; }
+  //! Whether subdivide() takes the corners of all its steps from one gather
+  //! of the first level's rings (CPU devices: subdivide_corner_levels), or
+  //! runs a corner kernel per step (GPUs, whose registers the rings would
+  //! not fit). The same bits either way.
+  bool corners_in_one_pass() const { return patch_items_; }
   //! A whole-tile kernel over `count` patches of a level: the per-patch
   //! kernel over count items, or the per-texel one over range_tiles(). The
   //! arguments are the same for both.
@@ -58,7 +63,9 @@ public:
   PatchSet flag_neighbourhood(const std::vector<int>& changed, const cl::Buffer* list);
 
   //! The side and corner kernels' results at the finest level (two float4
-  //! per edge texel and per ring), for whole-tile kernels of other families.
+  //! per edge texel; per ring two, or one per subdivision step from level 1
+  //! where that is more: corner_work_layers()), for whole-tile kernels of
+  //! other families.
   const cl::Buffer& side_work() const { return side_work_; }
   const cl::Buffer& corner_work() const { return corner_work_; }
 
@@ -72,11 +79,14 @@ private:
   const AtlasTables& tables_;
   AtlasStorage storage_;
   bool patch_items_;
-  cl::Kernel subdivide_tiles_, subdivide_patches_, subdivide_edges_, subdivide_corners_;
+  cl::Kernel subdivide_tiles_, subdivide_patches_, subdivide_edges_, subdivide_corners_, subdivide_corner_levels_;
   cl::Kernel limit_tiles_, limit_patches_, limit_edges_, limit_corners_, patch_bounds_;
   cl::Kernel reduce_interior_, reduce_edges_, reduce_corners_;
   cl::Kernel flag_corners_, flag_ring_patches_, flag_borders_;
   cl::Buffer side_work_, corner_work_;
+  // A byte per ring: subdivide_corner_levels' rings whose later corners are
+  // taken again from the levels.
+  cl::Buffer ring_marks_;
   // Device sets: a byte per patch, edge and ring, and the generation of the
   // last set.
   cl::Buffer patch_flags_, edge_flags_, ring_flags_;

@@ -13,10 +13,14 @@ namespace {
 std::size_t border_work_bytes(const AtlasTopology& topo, const LevelLayout& l)
 {
   return std::size_t(topo.patch_count) * 2 * sizeof(cl_int4) +
-         (topo.edges.size() * std::size_t(l.n - 1) + topo.rings.size()) * 2 * sizeof(cl_float4);
+         (topo.edges.size() * std::size_t(l.n - 1) * 2 + topo.rings.size() * corner_work_layers(l.level)) *
+             sizeof(cl_float4) +
+         topo.rings.size(); // a mark per ring
 }
 
 } // namespace
+
+std::size_t corner_work_layers(int finest_level) { return std::size_t(std::max(2, finest_level - 1)); }
 
 std::size_t layer_bytes(const LevelLayout& l, AtlasStorage storage)
 {

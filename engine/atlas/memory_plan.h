@@ -15,6 +15,11 @@ namespace meshpaint {
 //! Bytes of one float4 layer of a level in the given storage.
 std::size_t layer_bytes(const LevelLayout& layout, AtlasStorage storage);
 
+//! float4 per ring of the corner results an atlas subdivided up to
+//! `finest_level` keeps: position and normal of the limit, or the corners of
+//! every step from level 1, which CPUs compute in one pass.
+std::size_t corner_work_layers(int finest_level);
+
 //! Device memory an atlas up to `level` needs, checked before allocating.
 struct MemoryPlan
 {
