@@ -258,20 +258,18 @@ __kernel void subdivide_corner_levels(ATLAS_IN src, __global float4 *restrict co
      * (kept from before their update) and e_{m+1} (not updated yet). */
     const float4 e0 = e[0];
     float4 e_before = e[count - 1], d_before = d[count - 1];
+    es = (float4)(0.0f);
+    ds = (float4)(0.0f);
     for (int m = 0; m < count; ++m) {
       const float4 em = e[m], dm = d[m], en = m + 1 < count ? e[m + 1] : e0;
       e[m] = 0.5f * (0.75f * (v + em) + 0.125f * ((en + dm) + (e_before + d_before)));
       d[m] = ring_face_point(corner[m], v, em, en, dm);
+      es += e[m];
+      ds += d[m];
       e_before = em;
       d_before = dm;
     }
     v = r;
-    es = (float4)(0.0f);
-    ds = (float4)(0.0f);
-    for (int m = 0; m < count; ++m) {
-      es += e[m];
-      ds += d[m];
-    }
     r = ring_vertex_point(v, es, ds, count);
     out[l * stride] = r;
   }

@@ -13,6 +13,9 @@ namespace {
 
 // Work-group size of the table-driven kernels: runs of edges or rings.
 constexpr std::size_t kGroup1D = 64;
+// RING_LEVELS_MAX of subdivide.cl: the most slots subdivide_corner_levels
+// holds; wider rings take their later corners from each level.
+constexpr int kRingLevelsMax = 16;
 const cl::NDRange kLocalEdges(1, kGroup1D), kLocal1D(kGroup1D);
 
 cl::NDRange range_edges(int positions, int edges)
@@ -61,10 +64,13 @@ AtlasEvaluator::AtlasEvaluator(Runtime& runtime, const AtlasTables& tables, Atla
   side_work_ = cl::Buffer(context, CL_MEM_READ_WRITE,
                           std::max<std::size_t>(1, topo.edges.size() * std::size_t(finest.n - 1)) * 2 *
                               sizeof(cl_float4));
+  corner_layers_ = int(corner_work_layers(finest.level));
   corner_work_ = cl::Buffer(context, CL_MEM_READ_WRITE,
-                            std::max<std::size_t>(1, topo.rings.size() * corner_work_layers(finest.level)) *
+                            std::max<std::size_t>(1, topo.rings.size() * std::size_t(corner_layers_)) *
                                 sizeof(cl_float4));
   ring_marks_ = cl::Buffer(context, CL_MEM_READ_WRITE, std::max<std::size_t>(1, topo.rings.size()));
+  wide_rings_ = std::any_of(topo.rings.begin(), topo.rings.end(),
+                            [](const CornerRing& r) { return !r.boundary && r.count > kRingLevelsMax; });
   const auto flags = [&](std::size_t n) {
     const std::size_t bytes = round_up(std::max<std::size_t>(1, n), sizeof(cl_uint)); // whole fill patterns
     cl::Buffer b(context, CL_MEM_READ_WRITE, bytes);
@@ -122,12 +128,8 @@ void AtlasEvaluator::subdivide(int from_level, const std::vector<cl::Memory>& la
   const cl_int stride = cl_int(tables_.topology().rings.size());
   // One gather of the source level's rings gives the corners of every step;
   // the rings it marks are taken again from each level.
-  const bool corner_levels = corners_in_one_pass() && steps > 1 && a.ring_count > 0;
+  const bool corner_levels = corners_in_one_pass() && steps > 1 && steps <= corner_layers_ && a.ring_count > 0;
   const cl_uchar mark = 1;
-  if (corner_levels)
-    launch(q, subdivide_corner_levels_, range1d(a.ring_count), kLocal1D, layers[0], corner_work_, cl_int(0), stride,
-           cl_int(steps), ring_marks_, mark, tables_.rings(), tables_.slots(), a.rings, a.ring_count, a.ring_flags,
-           a.generation, grid(level_layout(patch_count, from_level)));
   for (int k = 0; k < steps; ++k) {
     const int l = from_level + k;
     const LevelLayout s = level_layout(patch_count, l), d = level_layout(patch_count, l + 1);
@@ -136,10 +138,15 @@ void AtlasEvaluator::subdivide(int from_level, const std::vector<cl::Memory>& la
     if (a.edge_count > 0)
       launch(q, subdivide_edges_, range1d(a.edge_count), kLocal1D, in, side_work_, tables_.edges(), a.edges,
              a.edge_count, a.edge_flags, a.generation, grid(s), grid(d));
-    if (!corner_levels && a.ring_count > 0)
+    // After the side kernel, which leaves the source level in the caches.
+    if (corner_levels && k == 0)
+      launch(q, subdivide_corner_levels_, range1d(a.ring_count), kLocal1D, in, corner_work_, cl_int(0), stride,
+             cl_int(steps), ring_marks_, mark, tables_.rings(), tables_.slots(), a.rings, a.ring_count,
+             a.ring_flags, a.generation, grid(s));
+    else if (!corner_levels && a.ring_count > 0)
       launch(q, subdivide_corners_, range1d(a.ring_count), kLocal1D, in, corner_work_, corner_base, tables_.rings(),
              tables_.slots(), a.rings, a.ring_count, a.ring_flags, a.generation, grid(s));
-    else if (corner_levels && k > 0)
+    else if (corner_levels && wide_rings_)
       launch(q, subdivide_corners_, range1d(a.ring_count), kLocal1D, in, corner_work_, corner_base, tables_.rings(),
              tables_.slots(), a.rings, a.ring_count, ring_marks_, cl_int(mark), grid(s));
     if (a.patch_count > 0) {

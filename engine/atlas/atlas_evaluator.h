@@ -84,9 +84,11 @@ private:
   cl::Kernel reduce_interior_, reduce_edges_, reduce_corners_;
   cl::Kernel flag_corners_, flag_ring_patches_, flag_borders_;
   cl::Buffer side_work_, corner_work_;
+  int corner_layers_ = 2; // float4 per ring in corner_work_
   // A byte per ring: subdivide_corner_levels' rings whose later corners are
   // taken again from the levels.
   cl::Buffer ring_marks_;
+  bool wide_rings_ = false; // any interior ring over subdivide_corner_levels' slots
   // Device sets: a byte per patch, edge and ring, and the generation of the
   // last set.
   cl::Buffer patch_flags_, edge_flags_, ring_flags_;
