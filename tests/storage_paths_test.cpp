@@ -8,7 +8,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>   // for M_PI, std::cos
 #include <cstring> // for std::memcmp
 
 namespace meshpaint {
@@ -97,22 +96,10 @@ TEST(StoragePaths, CornersInOnePassKeepTheSignOfZeros)
 }
 
 // Rings of more slots than the one-pass kernel holds are taken from the
-// levels: a cone over a 40-gon (apex and base centre of valence 40).
+// levels: a pyramid over a 40-gon (apex and base centre of valence 40).
 TEST(StoragePaths, CornersInOnePassLeaveWideRingsToEachLevel)
 {
-  const int n = 40;
-  std::vector<Vec3> pts;
-  for (int k = 0; k < n; ++k) {
-    const double a = 2.0 * M_PI * k / n;
-    pts.push_back({float(std::cos(a)), float(std::sin(a)), 0.f});
-  }
-  pts.push_back({0.f, 0.f, 2.f});
-  std::vector<std::vector<int>> faces(1);
-  for (int k = n - 1; k >= 0; --k)
-    faces[0].push_back(k);
-  for (int k = 0; k < n; ++k)
-    faces.push_back({k, (k + 1) % n, n});
-  expect_corner_paths_agree(make_base_mesh(pts, faces, "cone40"));
+  expect_corner_paths_agree(test::high_valence(40));
 }
 
 TEST(StoragePaths, HostRoundTripKeepsPatchMajorOrder)

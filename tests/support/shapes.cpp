@@ -123,9 +123,8 @@ BaseMesh open_fan()
   return make_base_mesh(pts, faces, "open_fan");
 }
 
-BaseMesh high_valence()
+BaseMesh high_valence(int n)
 {
-  const int n = 12;
   std::vector<Vec3> pts;
   for (int k = 0; k < n; ++k) {
     const double a = 2.0 * M_PI * k / n;

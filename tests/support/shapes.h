@@ -21,8 +21,8 @@ BaseMesh open_grid();
 //! Open triangle fan of 5 triangles around a boundary vertex (a boundary
 //! vertex with more than two faces) plus a quad.
 BaseMesh open_fan();
-//! Pyramid over a 12-gon: an apex of valence 12 and a 12-sided face.
-BaseMesh high_valence();
+//! Pyramid over an n-gon: an apex of valence n and an n-sided face.
+BaseMesh high_valence(int n = 12);
 //! Two cubes that do not touch: several components.
 BaseMesh two_components();
 
