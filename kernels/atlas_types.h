@@ -32,6 +32,11 @@ typedef struct {
   mp_int pad;
 } CornerRing;
 
+/* The most slots of an interior ring whose corners a multi-step
+ * subdivision refines in private memory (subdivide_corner_levels); wider
+ * rings take theirs from each level. */
+#define RING_LEVELS_MAX 16
+
 /* A patch and which of its corners (0..3) the ring vertex is. */
 typedef struct {
   mp_int patch;

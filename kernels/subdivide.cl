@@ -178,7 +178,6 @@ __kernel void subdivide_corners(ATLAS_IN src, __global float4 *restrict corners,
  *
  * Range: #rings; level from + 1 + l into corners[base + l * stride + ring]
  * for l < levels. */
-#define RING_LEVELS_MAX 16
 
 /* subdivide_inside() at texel (1, 1) of a slot whose corner is `corner`,
  * from the slot's v, e, its texel (0, 1) f and d, less the taps of weight 0. */

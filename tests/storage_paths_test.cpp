@@ -99,7 +99,9 @@ TEST(StoragePaths, CornersInOnePassKeepTheSignOfZeros)
 // levels: a pyramid over a 40-gon (apex and base centre of valence 40).
 TEST(StoragePaths, CornersInOnePassLeaveWideRingsToEachLevel)
 {
-  expect_corner_paths_agree(test::high_valence(40));
+  const int valence = 40;
+  static_assert(valence > RING_LEVELS_MAX, "the ring must be too wide for one pass");
+  expect_corner_paths_agree(test::high_valence(valence));
 }
 
 TEST(StoragePaths, HostRoundTripKeepsPatchMajorOrder)

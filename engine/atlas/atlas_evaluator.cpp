@@ -13,9 +13,6 @@ namespace {
 
 // Work-group size of the table-driven kernels: runs of edges or rings.
 constexpr std::size_t kGroup1D = 64;
-// RING_LEVELS_MAX of subdivide.cl: the most slots subdivide_corner_levels
-// holds; wider rings take their later corners from each level.
-constexpr int kRingLevelsMax = 16;
 const cl::NDRange kLocalEdges(1, kGroup1D), kLocal1D(kGroup1D);
 
 cl::NDRange range_edges(int positions, int edges)
@@ -70,7 +67,7 @@ AtlasEvaluator::AtlasEvaluator(Runtime& runtime, const AtlasTables& tables, Atla
                                 sizeof(cl_float4));
   ring_marks_ = cl::Buffer(context, CL_MEM_READ_WRITE, std::max<std::size_t>(1, topo.rings.size()));
   wide_rings_ = std::any_of(topo.rings.begin(), topo.rings.end(),
-                            [](const CornerRing& r) { return !r.boundary && r.count > kRingLevelsMax; });
+                            [](const CornerRing& r) { return !r.boundary && r.count > RING_LEVELS_MAX; });
   const auto flags = [&](std::size_t n) {
     const std::size_t bytes = round_up(std::max<std::size_t>(1, n), sizeof(cl_uint)); // whole fill patterns
     cl::Buffer b(context, CL_MEM_READ_WRITE, bytes);
