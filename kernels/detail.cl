@@ -70,19 +70,68 @@ TEXEL_INLINE void encode_texel(ATLAS_IN fine, ATLAS_IN smooth, int2 g, int p, in
   details[PATCH_MAJOR_INDEX(g, p, ij)] = (float4)(dot(d, t), dot(d, b), dot(d, n), 0.0f);
 }
 
+/* Longest grid edge of patch p's tile, to measure how far an edit
+ * stretches the sampling. Squared lengths, one square root at the end;
+ * along each row, then between each row and the one before it. */
+TEXEL_INLINE float tile_extent(ATLAS_IN pos, int2 g, int p)
+{
+  float longest = 0.0f;
+  for (int j = 0; j < g.x; ++j)
+    for (int i = 1; i < g.x; ++i) {
+      const float3 along = ATLAS_LOAD(pos, g, p, (int2)(i, j)).xyz - ATLAS_LOAD(pos, g, p, (int2)(i - 1, j)).xyz;
+      const float3 across = ATLAS_LOAD(pos, g, p, (int2)(j, i)).xyz - ATLAS_LOAD(pos, g, p, (int2)(j, i - 1)).xyz;
+      longest = max(longest, max(dot(along, along), dot(across, across))); /* finite: see tile_bounds() */
+    }
+  return sqrt(longest);
+}
+
+/* Decoding reads a side's details in its edge's first patch only, and a
+ * corner's in its ring's first slot (decode_edges, decode_corners): the
+ * other copies are never read and are not encoded (they hold 0, as the
+ * buffer was filled). `owned` per patch: the texel_border() bits of the
+ * parts it decodes, the sides and corners; the inside is always its own. */
+inline int part_bit(int2 ij, int n)
+{
+  const int part = tile_part(ij, n);
+  return part >= UNFOLD_CORNER ? 16 << (part - UNFOLD_CORNER) : part >= UNFOLD_SIDE ? 1 << (part - UNFOLD_SIDE) : 0;
+}
+
 /* Range: (tile, tile * count), every patch. */
-__kernel void encode_details(ATLAS_IN fine, ATLAS_IN smooth, int2 g, int count, __global float4 *details)
+__kernel void encode_details(ATLAS_IN fine, ATLAS_IN smooth, int2 g, int count, __global const uchar *restrict owned,
+                             __global float4 *details)
 {
   int p;
   int2 ij;
-  if (tile_texel(g, 0, count, &p, &ij))
+  if (!tile_texel(g, 0, count, &p, &ij))
+    return;
+  const int bit = part_bit(ij, g.x - 1);
+  if (bit == 0 || (owned[p] & bit))
     encode_texel(fine, smooth, g, p, ij, details);
 }
 
-/* Range: count; the same with a work item per patch (see FOR_EACH_PATCH_TEXEL). */
-__kernel void encode_patches(ATLAS_IN fine, ATLAS_IN smooth, int2 g, int count, __global float4 *details)
+/* Range: count; the same with a work item per patch walking its tile
+ * (FOR_EACH_TILE_PART, whose entries into compact arrays go unused), and
+ * the tile's tile_extent() into `extent` (unless null) while it is in the
+ * cache, instead of patch_extent's pass over the level. */
+__kernel void encode_patches(ATLAS_IN fine, ATLAS_IN smooth, int2 g, int count, __global const uchar *restrict owned,
+                             __global float4 *details, __global float *restrict extent)
 {
-  FOR_EACH_PATCH_TEXEL(g, (__global const int *)0, count, encode_texel(fine, smooth, g, p, ij, details));
+  const int p = get_global_id(0);
+  if (p >= count)
+    return;
+  const int n = g.x - 1, own = owned[p];
+  const int4 unused = (int4)(0);
+#define ENCODE_BORDER(ij, k, corner, bit)             \
+  do {                                                \
+    if (own & (bit))                                  \
+      encode_texel(fine, smooth, g, p, ij, details);  \
+  } while (0)
+#define ENCODE_INSIDE(ij) encode_texel(fine, smooth, g, p, ij, details)
+  FOR_EACH_TILE_PART(n, unused, unused, ENCODE_BORDER, ENCODE_INSIDE);
+#undef ENCODE_INSIDE
+#undef ENCODE_BORDER
+  if (extent)
+    extent[p] = tile_extent(fine, g, p);
 }
 
 /* U + frame(U) details at texel ij of patch p. */
@@ -189,22 +238,11 @@ __kernel void decode_corners(ATLAS_IN smooth, int2 g, __global const CornerRing 
   corners[list[k]] = decoded(smooth, g, first.patch, side_frame(first.patch, first.corner, g.x - 1).o, details);
 }
 
-/* Range: count. Longest grid edge of each listed patch (null: every patch),
- * to measure how far an edit stretches the sampling. */
+/* Range: count. tile_extent() of each listed patch (null: every patch). */
 __kernel void patch_extent(ATLAS_IN pos, int2 g, __global const int *list, int count, __global float *out)
 {
   const int k = get_global_id(0);
   if (k >= count)
     return;
-  const int p = LISTED(list, k);
-  /* Squared lengths, one square root at the end; along each row, then
-   * between each row and the one before it. */
-  float longest = 0.0f;
-  for (int j = 0; j < g.x; ++j)
-    for (int i = 1; i < g.x; ++i) {
-      const float3 along = ATLAS_LOAD(pos, g, p, (int2)(i, j)).xyz - ATLAS_LOAD(pos, g, p, (int2)(i - 1, j)).xyz;
-      const float3 across = ATLAS_LOAD(pos, g, p, (int2)(j, i)).xyz - ATLAS_LOAD(pos, g, p, (int2)(j, i - 1)).xyz;
-      longest = max(longest, max(dot(along, along), dot(across, across))); /* finite: see tile_bounds() */
-    }
-  out[k] = sqrt(longest);
+  out[k] = tile_extent(pos, g, LISTED(list, k));
 }

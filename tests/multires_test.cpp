@@ -12,9 +12,10 @@
 
 #include <algorithm> // for std::sort
 #include <array>   // for std::array
-#include <cmath>   // for std::sqrt, std::sin, std::cos
+#include <cmath>   // for std::sqrt, std::sin, std::cos, std::isnan
 #include <cstdio>  // for std::printf
 #include <cstring> // for std::memcmp
+#include <limits>  // for std::numeric_limits
 #include <numeric> // for std::iota
 
 namespace meshpaint {
@@ -174,24 +175,29 @@ Stroke coarse_inflate(const Vec3& centre, float radius, float amount, int edit_l
   return s;
 }
 
-//! Heights of the fine detail: the normal coordinate of the details over
-//! `level`, less its mean over each patch (which holds the slow part that
-//! changes with the curvature of the base).
+//! Heights of the fine detail per finest texel: the normal coordinate of
+//! the details over `level`, less its mean over the patch (which holds the
+//! slow part that changes with the curvature of the base); on texels strictly
+//! inside tiles only (a side's or corner's copies hold details in one patch
+//! alone), NaN elsewhere.
 std::vector<double> bump_heights(Atlas& atlas, int level)
 {
   Multires probe(atlas);
   probe.encode(level);
   const std::vector<Float4> details = probe.read_details();
   const LevelLayout l = atlas.layout(atlas.max_level());
-  const std::size_t per_patch = std::size_t(l.tile) * l.tile;
-  std::vector<double> h(details.size());
+  const std::size_t tile = std::size_t(l.tile);
+  std::vector<double> h(details.size(), std::numeric_limits<double>::quiet_NaN());
   for (std::size_t p = 0; p < std::size_t(l.patches); ++p) {
+    const auto at = [&](std::size_t i, std::size_t j) { return (p * tile + j) * tile + i; };
     double mean = 0;
-    for (std::size_t t = p * per_patch; t < (p + 1) * per_patch; ++t)
-      mean += details[t][2];
-    mean /= double(per_patch);
-    for (std::size_t t = p * per_patch; t < (p + 1) * per_patch; ++t)
-      h[t] = details[t][2] - mean;
+    for (std::size_t j = 1; j + 1 < tile; ++j)
+      for (std::size_t i = 1; i + 1 < tile; ++i)
+        mean += details[at(i, j)][2];
+    mean /= double((tile - 2) * (tile - 2));
+    for (std::size_t j = 1; j + 1 < tile; ++j)
+      for (std::size_t i = 1; i + 1 < tile; ++i)
+        h[at(i, j)] = details[at(i, j)][2] - mean;
   }
   return h;
 }
@@ -234,7 +240,7 @@ TEST(Multires, ACoarseEditKeepsTheBumpsAndMakesTheEdit)
 
   std::vector<double> h0, h1;
   for (std::size_t t = 0; t < before.size(); ++t)
-    if (distance(after[t], before[t]) > 0.5 * lift) {
+    if (!std::isnan(heights_before[t]) && distance(after[t], before[t]) > 0.5 * lift) {
       h0.push_back(heights_before[t]);
       h1.push_back(heights_after[t]);
     }
@@ -353,6 +359,19 @@ TEST(Multires, StretchTellsWhenTheEditLevelIsTooCoarse)
   EXPECT_LT(surface.apply(pull).stretch, 1.2f);
   pull.points = {{4.f, 4.f, 0.05f}, {4.f, 4.f, 6.f}};
   EXPECT_GT(surface.apply(pull).stretch, 2.f);
+}
+
+// Encoding measures each tile's extent as it encodes it (on CPUs) and
+// stretch() measures it again with patch_extent: with nothing moved since,
+// the two must be the same bits, so no patch grew.
+TEST(Multires, StretchRightAfterEncodingIsOne)
+{
+  BumpyAtlas b;
+  Multires multires(b.atlas);
+  for (const int edit : {1, 3}) {
+    multires.encode(edit);
+    EXPECT_EQ(multires.stretch(every_patch(b.atlas)), 1.f) << "edit level " << edit;
+  }
 }
 
 TEST(Multires, EditLevelFinerThanTheSurfaceIsRefused)

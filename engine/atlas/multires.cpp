@@ -24,7 +24,27 @@ struct Multires::Device
   cl::Buffer weights;   // edit-level weights
   cl::Memory positions, normals; // edit-level limit (layers of the finest size, used in part)
   cl::Buffer extent;    // per patch
+  cl::Buffer owned;     // per patch: the parts whose details it holds (encode_details)
 };
+
+namespace {
+
+//! Per patch, the texel_border() bits of the sides and corners whose
+//! details decoding reads there: a side in its edge's first patch, a
+//! corner in its ring's first slot's patch.
+std::vector<std::uint8_t> owned_parts(const AtlasTopology& topo)
+{
+  std::vector<std::uint8_t> owned(std::size_t(topo.patch_count), 0);
+  for (const PatchEdge& e : topo.edges)
+    owned[std::size_t(e.patch[0])] |= std::uint8_t(1 << e.side[0]);
+  for (const CornerRing& r : topo.rings) {
+    const CornerSlot& first = topo.slots[std::size_t(r.first)];
+    owned[std::size_t(first.patch)] |= std::uint8_t(16 << first.corner);
+  }
+  return owned;
+}
+
+} // namespace
 
 Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Device>())
 {
@@ -44,6 +64,11 @@ Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Devic
     d.positions = allocate_layer(rt, f, atlas_.storage());
     d.normals = allocate_layer(rt, f, atlas_.storage());
     d.details = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, f.texels() * sizeof(cl_float4));
+    // Encoding leaves the copies that decoding never reads: they hold 0.
+    rt.queue().enqueueFillBuffer(d.details, cl_float4{}, 0, f.texels() * sizeof(cl_float4));
+    std::vector<std::uint8_t> owned = owned_parts(atlas_.topology());
+    owned.resize(std::max<std::size_t>(owned.size(), 1));
+    d.owned = cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, owned.size(), owned.data());
     d.weights = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, f.texels() * sizeof(float));
     d.extent = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, std::max(f.patches, 1) * sizeof(float));
   } catch (const cl::Error& e) {
@@ -128,9 +153,14 @@ void Multires::encode(int level)
     atlas_.reduce(finest, level);
     atlas_.subdivide(level, finest, PatchSet(), &d.smooth);
     const Atlas::TileLaunch t = atlas_.tile_launch(d.encode_details, d.encode_patches, f, f.patches);
-    launch(q, t.kernel, t.global, t.local, fine, d.smooth, grid(f), f.patches, d.details);
-    launch(q, d.patch_extent, cl::NDRange(round_up(f.patches, kGroup)), cl::NDRange(kGroup), fine, grid(f),
-           cl::Buffer(), f.patches, d.extent);
+    // The per-patch kernel measures each tile's extent as it goes.
+    const bool measures = &t.kernel == &d.encode_patches;
+    if (measures)
+      d.encode_patches.setArg(6, d.extent); // its last, beyond encode_details' own
+    launch(q, t.kernel, t.global, t.local, fine, d.smooth, grid(f), f.patches, d.owned, d.details);
+    if (!measures)
+      launch(q, d.patch_extent, cl::NDRange(round_up(f.patches, kGroup)), cl::NDRange(kGroup), fine, grid(f),
+             cl::Buffer(), f.patches, d.extent);
     extent_.resize(std::size_t(f.patches));
     q.enqueueReadBuffer(d.extent, CL_TRUE, 0, extent_.size() * sizeof(float), extent_.data());
   } catch (const cl::Error& e) {
