@@ -25,6 +25,20 @@ __kernel void reduce_interior(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, int
   ATLAS_STORE(dst, dg, p, ij, acc);
 }
 
+/* Into acc: texel t along a patch side, corners excluded, from the source
+ * level around it (the frames of EDGE_FRAMES); lo = -2 with a patch
+ * across, 0 on a mesh boundary. */
+#define REDUCE_SIDE_TEXEL(acc, src, sg, lo, t)                     \
+  do {                                                            \
+    acc = (float4)(0.0f);                                         \
+    for (int b = (lo); b <= -(lo); ++b) {                         \
+      float4 row = (float4)(0.0f);                                \
+      for (int a = -2; a <= 2; ++a)                               \
+        row += BINOMIAL5(a) * EDGE_LOAD(src, sg, 2 * (t) + a, b); \
+      acc += ((lo) < 0 ? BINOMIAL5(b) : 1.0f) * row;              \
+    }                                                             \
+  } while (0)
+
 /* Range: (n - 1, #edges); texels on patch sides, corners excluded. */
 __kernel void reduce_edges(ATLAS_IN src, ATLAS_OUT dst, __global const PatchEdge *edges,
                            int edge_count, int2 sg, int2 dg)
@@ -34,15 +48,29 @@ __kernel void reduce_edges(ATLAS_IN src, ATLAS_OUT dst, __global const PatchEdge
     return;
   const PatchEdge e = edges[k];
   EDGE_FRAMES(e, sg);
-  const int lo = e.patch[1] >= 0 ? -2 : 0, hi = e.patch[1] >= 0 ? 2 : 0;
-  float4 acc = (float4)(0.0f);
-  for (int b = lo; b <= hi; ++b) {
-    float4 row = (float4)(0.0f);
-    for (int a = -2; a <= 2; ++a)
-      row += BINOMIAL5(a) * EDGE_LOAD(src, sg, 2 * t + a, b);
-    acc += (lo < 0 ? BINOMIAL5(b) : 1.0f) * row;
-  }
+  float4 acc;
+  REDUCE_SIDE_TEXEL(acc, src, sg, e.patch[1] >= 0 ? -2 : 0, t);
   EDGE_STORE(dst, dg, e, t, acc);
+}
+
+/* Range: #edges; the same with a work item walking each side: its frames
+ * set up once, and the tiles of an edge further on asked for ahead (CPUs,
+ * whose items run one after another). */
+__kernel void reduce_edge_walks(ATLAS_IN src, ATLAS_OUT dst, __global const PatchEdge *edges, int edge_count,
+                                int2 sg, int2 dg)
+{
+  const int k = get_global_id(0);
+  if (k >= edge_count)
+    return;
+  const PatchEdge e = edges[k];
+  PREFETCH_EDGE_AHEAD(src, sg, edges, (__global const int *)0, k, edge_count);
+  EDGE_FRAMES(e, sg);
+  const int lo = e.patch[1] >= 0 ? -2 : 0;
+  for (int t = 1; t < dg.x - 1; ++t) {
+    float4 acc;
+    REDUCE_SIDE_TEXEL(acc, src, sg, lo, t);
+    EDGE_STORE(dst, dg, e, t, acc);
+  }
 }
 
 /* Range: #rings; every copy of each patch corner. */
@@ -53,6 +81,7 @@ __kernel void reduce_corners(ATLAS_IN src, ATLAS_OUT dst, __global const CornerR
   if (k >= ring_count)
     return;
   const CornerRing ring = rings[k];
+  PREFETCH_RING_AHEAD(src, sg, rings, slots, (__global const int *)0, k, ring_count);
   const CornerSlot first = slots[ring.first], last = slots[ring.first + ring.count - 1];
   const float4 v = CORNER_LOAD(src, sg, first, 0, 0);
   float4 r;

@@ -1,6 +1,7 @@
 // The two atlas storage paths (linear buffers, image2d objects) run the same
 // kernel source and must give the same bits for every operation; so must
-// the two ways of taking the corners of several subdivision steps.
+// the two ways of taking the corners of several subdivision steps, and
+// the reductions per side and per texel.
 
 #include "atlas/atlas.h"
 #include "support/runtime.h"
@@ -76,6 +77,25 @@ void expect_corner_paths_agree(const BaseMesh& mesh)
 TEST_P(StoragePaths, CornersInOnePassAgreeWithACornerKernelPerStep)
 {
   expect_corner_paths_agree(test::shape(GetParam()));
+}
+
+// CPUs run the reduction's sides as one work item walking each (and the
+// tile kernels per patch); GPUs a work item per texel. Both the same bits,
+// at every level a reduction from level 5 passes.
+TEST_P(StoragePaths, ReductionPerSideAgreesWithPerTexel)
+{
+  const BaseMesh mesh = test::shape(GetParam());
+  const int level = 5;
+  Atlas walks(test::runtime(), mesh, level, AtlasStorage::Buffer);
+  Atlas texels(test::runtime(), mesh, level, AtlasStorage::Buffer);
+  walks.set_patch_items(true);
+  texels.set_patch_items(false);
+  for (Atlas* a : {&walks, &texels}) {
+    a->subdivide(1, level);
+    a->reduce(level, 1);
+  }
+  for (int l = 1; l < level; ++l)
+    EXPECT_EQ(differing_texels(walks.read_positions(l), texels.read_positions(l)), 0u) << "reduced level " << l;
 }
 
 // Signed zeros: the one-pass kernel cannot see the zero-weighted taps that

@@ -54,6 +54,7 @@ AtlasEvaluator::AtlasEvaluator(Runtime& runtime, const AtlasTables& tables, Atla
   flag_borders_ = cl::Kernel(program, "flag_borders");
   reduce_interior_ = cl::Kernel(program, "reduce_interior");
   reduce_edges_ = cl::Kernel(program, "reduce_edges");
+  reduce_edge_walks_ = cl::Kernel(program, "reduce_edge_walks");
   reduce_corners_ = cl::Kernel(program, "reduce_corners");
 
   const AtlasTopology& topo = tables_.topology();
@@ -165,8 +166,11 @@ void AtlasEvaluator::reduce(int level, const cl::Memory& in, const cl::Memory& o
   if (d.n > 1) {
     const auto inside = range_interiors(d, d.patches);
     launch(q, reduce_interior_, inside.first, inside.second, in, out, grid(s), grid(d), patches);
-    launch(q, reduce_edges_, range_edges(d.n - 1, edges), kLocalEdges, in, out, tables_.edges(), edges, grid(s),
-           grid(d));
+    if (patch_items_)
+      launch(q, reduce_edge_walks_, range1d(edges), kLocal1D, in, out, tables_.edges(), edges, grid(s), grid(d));
+    else
+      launch(q, reduce_edges_, range_edges(d.n - 1, edges), kLocalEdges, in, out, tables_.edges(), edges, grid(s),
+             grid(d));
   }
   launch(q, reduce_corners_, range1d(rings), kLocal1D, in, out, tables_.rings(), tables_.slots(), rings, grid(s),
          grid(d));
