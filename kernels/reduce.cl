@@ -8,13 +8,9 @@
 
 #define BINOMIAL5(k) ((k) == 0 ? 0.375f : ((k) == 1 || (k) == -1) ? 0.25f : 0.0625f)
 
-/* Range: (dst n - 1, (dst n - 1) * patches); texels strictly inside patches. */
-__kernel void reduce_interior(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, int patches)
+/* Texel ij strictly inside patch p at the destination level. */
+TEXEL_INLINE float4 reduced_inside(ATLAS_IN src, int2 sg, int p, int2 ij)
 {
-  int p;
-  int2 ij;
-  if (!interior_texel(dg, 0, patches, &p, &ij))
-    return;
   float4 acc = (float4)(0.0f);
   for (int b = -2; b <= 2; ++b) {
     float4 row = (float4)(0.0f);
@@ -22,7 +18,16 @@ __kernel void reduce_interior(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, int
       row += BINOMIAL5(a) * ATLAS_LOAD(src, sg, p, 2 * ij + (int2)(a, b));
     acc += BINOMIAL5(b) * row;
   }
-  ATLAS_STORE(dst, dg, p, ij, acc);
+  return acc;
+}
+
+/* Range: (dst n - 1, (dst n - 1) * patches); texels strictly inside patches. */
+__kernel void reduce_interior(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, int patches)
+{
+  int p;
+  int2 ij;
+  if (interior_texel(dg, 0, patches, &p, &ij))
+    ATLAS_STORE(dst, dg, p, ij, reduced_inside(src, sg, p, ij));
 }
 
 /* Into acc: texel t along a patch side, corners excluded, from the source
@@ -53,11 +58,17 @@ __kernel void reduce_edges(ATLAS_IN src, ATLAS_OUT dst, __global const PatchEdge
   EDGE_STORE(dst, dg, e, t, acc);
 }
 
-/* Range: #edges; the same with a work item walking each side: its frames
- * set up once, and the tiles of an edge further on asked for ahead (CPUs,
- * whose items run one after another). */
-__kernel void reduce_edge_walks(ATLAS_IN src, ATLAS_OUT dst, __global const PatchEdge *edges, int edge_count,
-                                int2 sg, int2 dg)
+/* CPUs, whose work items run one after another, take the reduction as the
+ * subdivision does: the sides and corners into compact arrays (a work item
+ * per edge walking it, its frames set up once and the tiles of an edge
+ * further on asked for ahead; a work item per ring), then each destination
+ * tile written whole by one work item (reduce_patches), its border copied
+ * from there, instead of every copy stored into its tile where it lies. */
+
+/* Range: #edges; into sides[edge * (dst n - 1) + t - 1], t along the edge's
+ * first patch's side. */
+__kernel void reduce_edge_walks(ATLAS_IN src, __global float4 *restrict sides, __global const PatchEdge *edges,
+                                int edge_count, int2 sg, int2 dg)
 {
   const int k = get_global_id(0);
   if (k >= edge_count)
@@ -66,16 +77,31 @@ __kernel void reduce_edge_walks(ATLAS_IN src, ATLAS_OUT dst, __global const Patc
   PREFETCH_EDGE_AHEAD(src, sg, edges, (__global const int *)0, k, edge_count);
   EDGE_FRAMES(e, sg);
   const int lo = e.patch[1] >= 0 ? -2 : 0;
+  const int first = k * (dg.x - 2) - 1;
   for (int t = 1; t < dg.x - 1; ++t) {
     float4 acc;
     REDUCE_SIDE_TEXEL(acc, src, sg, lo, t);
-    EDGE_STORE(dst, dg, e, t, acc);
+    sides[first + t] = acc;
   }
 }
 
-/* Range: #rings; every copy of each patch corner. */
+/* Range: count; every patch's destination tile. */
+__kernel void reduce_patches(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, int count,
+                             __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
+                             __global const float4 *restrict sides, __global const float4 *restrict corners)
+{
+#define REDUCE_COPY(ij, k, corner, bit) ATLAS_STORE(dst, dg, p, ij, (corner) ? corners[k] : sides[k])
+#define REDUCE_INSIDE(ij) ATLAS_STORE(dst, dg, p, ij, reduced_inside(src, sg, p, ij))
+  PATCH_ITEM_PARTS(dg, (__global const int *)0, count, NO_SKIP, patch_sides, patch_rings, REDUCE_COPY, REDUCE_INSIDE);
+#undef REDUCE_INSIDE
+#undef REDUCE_COPY
+}
+
+/* Range: #rings; each ring's corner into corners[ring], or with `corners`
+ * null every copy of it into its tile. */
 __kernel void reduce_corners(ATLAS_IN src, ATLAS_OUT dst, __global const CornerRing *rings,
-                             __global const CornerSlot *slots, int ring_count, int2 sg, int2 dg)
+                             __global const CornerSlot *slots, int ring_count, int2 sg, int2 dg,
+                             __global float4 *restrict corners)
 {
   const int k = get_global_id(0);
   if (k >= ring_count)
@@ -103,6 +129,10 @@ __kernel void reduce_corners(ATLAS_IN src, ATLAS_OUT dst, __global const CornerR
                  CORNER_LOAD(src, sg, s, 2, 2);
     }
     r = (36.0f * v + (4.0f / (float)ring.count) * sectors) * (1.0f / 256.0f);
+  }
+  if (corners) {
+    corners[k] = r;
+    return;
   }
   for (int m = 0; m < ring.count; ++m)
     CORNER_STORE(dst, dg, slots[ring.first + m], r);

@@ -55,6 +55,7 @@ AtlasEvaluator::AtlasEvaluator(Runtime& runtime, const AtlasTables& tables, Atla
   reduce_interior_ = cl::Kernel(program, "reduce_interior");
   reduce_edges_ = cl::Kernel(program, "reduce_edges");
   reduce_edge_walks_ = cl::Kernel(program, "reduce_edge_walks");
+  reduce_patches_ = cl::Kernel(program, "reduce_patches");
   reduce_corners_ = cl::Kernel(program, "reduce_corners");
 
   const AtlasTopology& topo = tables_.topology();
@@ -163,17 +164,24 @@ void AtlasEvaluator::reduce(int level, const cl::Memory& in, const cl::Memory& o
   cl::CommandQueue& q = runtime_.queue();
   const int edges = int(topo.edges.size()), rings = int(topo.rings.size()), patches = topo.patch_count;
   const LevelLayout s = level_layout(patches, level), d = level_layout(patches, level - 1);
+  if (patch_items_) { // sides and corners into the compact arrays, then whole tiles
+    if (d.n > 1)
+      launch(q, reduce_edge_walks_, range1d(edges), kLocal1D, in, side_work_, tables_.edges(), edges, grid(s),
+             grid(d));
+    launch(q, reduce_corners_, range1d(rings), kLocal1D, in, out, tables_.rings(), tables_.slots(), rings, grid(s),
+           grid(d), corner_work_);
+    launch(q, reduce_patches_, range1d(patches), kLocal1D, in, out, grid(s), grid(d), patches,
+           tables_.patch_sides(), tables_.patch_rings(), side_work_, corner_work_);
+    return;
+  }
   if (d.n > 1) {
     const auto inside = range_interiors(d, d.patches);
     launch(q, reduce_interior_, inside.first, inside.second, in, out, grid(s), grid(d), patches);
-    if (patch_items_)
-      launch(q, reduce_edge_walks_, range1d(edges), kLocal1D, in, out, tables_.edges(), edges, grid(s), grid(d));
-    else
-      launch(q, reduce_edges_, range_edges(d.n - 1, edges), kLocalEdges, in, out, tables_.edges(), edges, grid(s),
-             grid(d));
+    launch(q, reduce_edges_, range_edges(d.n - 1, edges), kLocalEdges, in, out, tables_.edges(), edges, grid(s),
+           grid(d));
   }
   launch(q, reduce_corners_, range1d(rings), kLocal1D, in, out, tables_.rings(), tables_.slots(), rings, grid(s),
-         grid(d));
+         grid(d), cl::Buffer());
 }
 
 void AtlasEvaluator::limit(int level, const cl::Memory& in, const cl::Memory& pos, const cl::Memory& nrm,
