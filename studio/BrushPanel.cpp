@@ -83,7 +83,7 @@ BrushPanel::BrushPanel(vtkPaintView* view, QWidget* parent) : QWidget(parent), v
     tools_->addButton(b, int(k));
     tool_grid->addWidget(b, int(k) / 3, int(k) % 3);
   }
-  connect(tools_, QOverload<int>::of(&QButtonGroup::buttonClicked),
+  connect(tools_, &QButtonGroup::idClicked,
           [this](int k) { change([&](BrushSettings& b) { b.set_tool(BrushSettings::tools()[std::size_t(k)]); }); });
   layout->addWidget(tool_box);
 
