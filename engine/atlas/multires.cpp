@@ -66,9 +66,7 @@ Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Devic
     d.details = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, f.texels() * sizeof(cl_float4));
     // Encoding leaves the copies that decoding never reads: they hold 0.
     rt.queue().enqueueFillBuffer(d.details, cl_float4{}, 0, f.texels() * sizeof(cl_float4));
-    std::vector<std::uint8_t> owned = owned_parts(atlas_.topology());
-    owned.resize(std::max<std::size_t>(owned.size(), 1));
-    d.owned = cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, owned.size(), owned.data());
+    d.owned = device_copy(rt.context(), owned_parts(atlas_.topology()));
     d.weights = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, f.texels() * sizeof(float));
     d.extent = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, std::max(f.patches, 1) * sizeof(float));
   } catch (const cl::Error& e) {

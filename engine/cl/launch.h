@@ -29,13 +29,20 @@ void launch(cl::CommandQueue& queue, cl::Kernel& kernel, const cl::NDRange& glob
   queue.enqueueNDRangeKernel(kernel, cl::NullRange, global, local);
 }
 
-//! A read-only device copy of a list of ints (one element for an empty
-//! list, so it is always a valid argument).
+//! A read-only device copy of `v` (one zero element for an empty one, so it
+//! is always a valid argument).
+template <typename T>
+cl::Buffer device_copy(const cl::Context& context, const std::vector<T>& v)
+{
+  static const T none{};
+  return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(T) * std::max<std::size_t>(1, v.size()),
+                    const_cast<T*>(v.empty() ? &none : v.data()));
+}
+
+//! device_copy() of a list of ints.
 inline cl::Buffer device_ints(const cl::Context& context, const std::vector<int>& list)
 {
-  static const int none = 0;
-  return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(int) * std::max<std::size_t>(1, list.size()),
-                    const_cast<int*>(list.empty() ? &none : list.data()));
+  return device_copy(context, list);
 }
 
 } // namespace meshpaint
