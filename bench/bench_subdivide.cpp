@@ -49,7 +49,7 @@ std::vector<FamilyRate> family_times(Runtime& runtime, Atlas& atlas, int from, i
   KernelClock clock(runtime);
   for (int r = 0; r < runs; ++r)
     atlas.subdivide(from, to);
-  return family_rates(subdivide_traffic(atlas.topology(), from, to, atlas.evaluator().corners_in_one_pass()),
+  return family_rates(subdivide_traffic(atlas.topology(), from, to, atlas.evaluator()),
                       clock.take(), runs);
 }
 

@@ -38,21 +38,29 @@ double border_entries(const AtlasTopology& t, int n)
 
 } // namespace
 
-std::vector<FamilyTraffic> subdivide_traffic(const AtlasTopology& t, int from, int to, bool corners_in_one_pass)
+std::vector<FamilyTraffic> subdivide_traffic(const AtlasTopology& t, int from, int to, const AtlasEvaluator& evaluator)
 {
   FamilyTraffic edges{"subdivide edges", {"subdivide_edges"}, 0};
   FamilyTraffic corners{"subdivide corners", {"subdivide_corners", "subdivide_corner_levels"}, 0};
   // In one pass: the first level's rings read once, every level's corners
   // written, a mark per ring written once and read by each later step.
-  const bool one_pass = corners_in_one_pass && to - from > 1;
+  const bool one_pass = evaluator.corners_in_one_pass() && to - from > 1;
   if (one_pass)
     corners.bytes = kTexel * ring_reads(t) + double(t.rings.size()) * (to - from);
-  FamilyTraffic tiles{"subdivide tiles", {"subdivide_tiles", "subdivide_patches"}, 0};
+  FamilyTraffic tiles{"subdivide tiles",
+                      {"subdivide_tiles", "subdivide_patches", "subdivide_first_step", "subdivide_second_step"},
+                      0};
   for (int l = from; l < to; ++l) {
     const int ns = level_layout(t.patch_count, l).n, nd = level_layout(t.patch_count, l + 1).n;
-    edges.bytes += kTexel * (edge_reads(t, ns) + double(t.edges.size()) * (nd - 1));
     corners.bytes += one_pass ? kTexel * double(t.rings.size()) : kTexel * (ring_reads(t) + double(t.rings.size()));
-    tiles.bytes += kTexel * (tile_texels(t, l) + border_entries(t, nd) + tile_texels(t, l + 1));
+    if (evaluator.tiles_walk_sides(l)) {
+      // The source tile, the row across each side (in the neighbour's
+      // tile), four corners and the written tile.
+      tiles.bytes += kTexel * (tile_texels(t, l) + double(t.patch_count) * (4.0 * (ns + 1) + 4.0) + tile_texels(t, l + 1));
+    } else {
+      edges.bytes += kTexel * (edge_reads(t, ns) + double(t.edges.size()) * (nd - 1));
+      tiles.bytes += kTexel * (tile_texels(t, l) + border_entries(t, nd) + tile_texels(t, l + 1));
+    }
   }
   return {edges, corners, tiles};
 }

@@ -4,6 +4,7 @@
 // set beside its device time from a KernelClock.
 #pragma once
 
+#include "atlas/atlas_evaluator.h"
 #include "atlas/atlas_topology.h"
 #include "atlas/patch_layout.h"
 #include "table.h"
@@ -24,9 +25,9 @@ struct FamilyTraffic
 };
 
 //! The families of Catmull-Clark steps from level `from` to `to` over every
-//! patch, bytes summed over the steps.
+//! patch, bytes summed over the steps, as `evaluator` runs them.
 std::vector<FamilyTraffic> subdivide_traffic(const AtlasTopology& topology, int from, int to,
-                                             bool corners_in_one_pass);
+                                             const AtlasEvaluator& evaluator);
 //! The families of the limit (positions and normals) of level `level` over
 //! every patch; the bounds' kernel, where it runs, reads the positions once.
 std::vector<FamilyTraffic> limit_traffic(const AtlasTopology& topology, int level);

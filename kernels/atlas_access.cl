@@ -136,6 +136,20 @@ inline void prefetch_edge_ahead(__global const float4 *a, int2 g, __global const
     prefetch_tile(a, g, e.patch[1]);
 }
 
+/* The tiles across the sides of patch list[k + PREFETCH_AHEAD], from its
+ * entry in a patch_across table (4 * patch + side, -1 on a boundary). */
+inline void prefetch_across_ahead(__global const float4 *a, int2 g, __global const int4 *across,
+                                  __global const int *list, int k, int count)
+{
+  if (k + PREFETCH_AHEAD >= count)
+    return;
+  const int4 x = across[list ? list[k + PREFETCH_AHEAD] : k + PREFETCH_AHEAD];
+  prefetch_tile(a, g, max(x.x, 0) >> 2);
+  prefetch_tile(a, g, max(x.y, 0) >> 2);
+  prefetch_tile(a, g, max(x.z, 0) >> 2);
+  prefetch_tile(a, g, max(x.w, 0) >> 2);
+}
+
 /* The texels at the corners of ring list[k + PREFETCH_AHEAD]. */
 inline void prefetch_ring_ahead(__global const float4 *a, int2 g, __global const CornerRing *rings,
                                 __global const CornerSlot *slots, __global const int *list, int k, int count)
@@ -155,11 +169,13 @@ inline void prefetch_ring_ahead(__global const float4 *a, int2 g, __global const
 #define PREFETCH_EDGE_AHEAD(a, g, edges, list, k, count) prefetch_edge_ahead((a), (g), (edges), (list), (k), (count))
 #define PREFETCH_RING_AHEAD(a, g, rings, slots, list, k, count) \
   prefetch_ring_ahead((a), (g), (rings), (slots), (list), (k), (count))
+#define PREFETCH_ACROSS_AHEAD(a, g, across, list, k, count) prefetch_across_ahead((a), (g), (across), (list), (k), (count))
 #else
 #define PREFETCH_TILE(a, g, p) ((void)0)
 #define PREFETCH_TEXEL(a, g, p, ij) ((void)0)
 #define PREFETCH_EDGE_AHEAD(a, g, edges, list, k, count) ((void)0)
 #define PREFETCH_RING_AHEAD(a, g, rings, slots, list, k, count) ((void)0)
+#define PREFETCH_ACROSS_AHEAD(a, g, across, list, k, count) ((void)0)
 #endif
 
 /* Patch and texel of a work item of a kernel over whole tiles, whose range
@@ -301,13 +317,18 @@ inline int border_entry(int2 ij, int n, int4 sides, int4 rings, int *corner)
  * and end the kernel for the rounding tail and for a patch p where
  * SKIP(p) holds (NO_SKIP, or a set's flags: UNFLAGGED). */
 #define NO_SKIP(p) 0
+/* The start of any kernel with a work item per patch: declares item and p. */
+#define PATCH_ITEM(list, count, SKIP)          \
+  const int item = get_global_id(0);           \
+  if (item >= (count))                         \
+    return;                                    \
+  const int p = LISTED(list, item);            \
+  if (SKIP(p))                                 \
+    return
+
 #define PATCH_ITEM_PARTS(g, list, count, SKIP, patch_sides, patch_rings, BORDER, INSIDE) \
-  const int item = get_global_id(0);                                              \
-  if (item >= (count))                                                            \
-    return;                                                                       \
-  const int p = LISTED(list, item), n = (g).x - 1;                                \
-  if (SKIP(p))                                                                    \
-    return;                                                                       \
+  PATCH_ITEM(list, count, SKIP);                                                  \
+  const int n = (g).x - 1;                                                        \
   const int4 ps_ = (patch_sides)[p], pr_ = (patch_rings)[p];                      \
   FOR_EACH_TILE_PART(n, ps_, pr_, BORDER, INSIDE)
 

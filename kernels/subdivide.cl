@@ -17,20 +17,33 @@ inline float3 refine_weights(int i)
  * strictly inside and copies the rest, so each cache line of the level is
  * written once, by one kernel (as the limit's kernels do). */
 
+/* w.x * a + w.y * b + w.z * c: one axis of the tensor-product masks. */
+inline float4 refine_row(float3 w, float4 a, float4 b, float4 c)
+{
+  return w.x * a + w.y * b + w.z * c;
+}
+
+/* Declares v, the new texel ij strictly inside a patch of n_src old quads a
+ * side, from that patch's old texels LOAD(i, j): the tensor-product masks,
+ * taps clamped to the tile (where their weight is 0). Every computation of
+ * such a texel goes through here, so all give the same bits. */
+#define REFINE_INSIDE(v, n_src, ij, LOAD)                                                       \
+  float4 v;                                                                                     \
+  {                                                                                             \
+    const int ci_ = ((ij).x + 1) >> 1, cj_ = ((ij).y + 1) >> 1;                                 \
+    const int i0_ = ci_ - 1, i2_ = min(ci_ + 1, (n_src)), j0_ = cj_ - 1, j2_ = min(cj_ + 1, (n_src)); \
+    const float3 wi_ = refine_weights((ij).x), wj_ = refine_weights((ij).y);                    \
+    v = refine_row(wj_, refine_row(wi_, LOAD(i0_, j0_), LOAD(ci_, j0_), LOAD(i2_, j0_)),        \
+                   refine_row(wi_, LOAD(i0_, cj_), LOAD(ci_, cj_), LOAD(i2_, cj_)),             \
+                   refine_row(wi_, LOAD(i0_, j2_), LOAD(ci_, j2_), LOAD(i2_, j2_)));            \
+  }
+
 /* Destination texel ij strictly inside patch p. */
 TEXEL_INLINE void subdivide_inside(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, int p, int2 ij)
 {
-  const int n_src = sg.x - 1;
-  const int ci = (ij.x + 1) >> 1, cj = (ij.y + 1) >> 1;
-  const int i0 = ci - 1, i2 = min(ci + 1, n_src);
-  const int j0 = cj - 1, j2 = min(cj + 1, n_src);
-  const float3 wi = refine_weights(ij.x), wj = refine_weights(ij.y);
-#define ROW(jj)                                              \
-  (wi.x * ATLAS_LOAD(src, sg, p, (int2)(i0, jj)) +           \
-   wi.y * ATLAS_LOAD(src, sg, p, (int2)(ci, jj)) +           \
-   wi.z * ATLAS_LOAD(src, sg, p, (int2)(i2, jj)))
-  const float4 v = wj.x * ROW(j0) + wj.y * ROW(cj) + wj.z * ROW(j2);
-#undef ROW
+#define SOURCE_TEXEL(i, j) ATLAS_LOAD(src, sg, p, (int2)((i), (j)))
+  REFINE_INSIDE(v, sg.x - 1, ij, SOURCE_TEXEL);
+#undef SOURCE_TEXEL
   ATLAS_STORE(dst, dg, p, ij, v);
 }
 
@@ -60,6 +73,29 @@ __kernel void subdivide_patches(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, _
   PATCH_ITEM_PARTS(dg, list, patches, SUBDIVIDE_SKIP, patch_sides, patch_rings, SUBDIVIDE_COPY, SUBDIVIDE_INSIDE);
 }
 
+/* A side's new texels from the old ones along it (row) and on the rows
+ * either side of it (in, out; on a mesh boundary, where interior is 0,
+ * only the row counts): the edge point between old samples 0 and 1, and
+ * the vertex point at old sample 1 of 0, 1, 2. Each sum is symmetric, in
+ * the two ends and in the two sides, so the two patches of a side, each
+ * in its own frame, get the same bits. */
+inline float4 side_edge_point(float4 r0, float4 r1, float4 i0, float4 i1, float4 o0, float4 o1, int interior)
+{
+  const float4 across = 0.75f * (r0 + r1) + 0.125f * ((i0 + i1) + (o0 + o1));
+  return interior ? 0.5f * across : 0.5f * (r0 + r1);
+}
+
+inline float4 side_vertex_point(float4 r0, float4 r1, float4 r2, float4 i0, float4 i1, float4 i2, float4 o0,
+                                float4 o1, float4 o2, int interior)
+{
+  const float4 row = 0.125f * (r0 + r2) + 0.75f * r1;
+  if (!interior)
+    return row;
+  const float4 in = 0.125f * (i0 + i2) + 0.75f * i1;
+  const float4 out = 0.125f * (o0 + o2) + 0.75f * o1;
+  return 0.125f * (in + out) + 0.75f * row;
+}
+
 /* Range: #edges; texels on patch sides, corners excluded, into `sides`,
  * each work item walking one side so that its frames and rows are set up
  * once. */
@@ -86,23 +122,13 @@ __kernel void subdivide_edges(ATLAS_IN src, __global float4 *restrict sides, __g
   float4 cur_out = interior ? EDGE_LOAD(src, sg, 1, -1) : cur_row;
   for (int c = 1; c <= n_src; ++c) {
     /* Edge point between old samples c-1 and c, then vertex point at c. */
-    const float4 across_mid = 0.75f * (prev_row + cur_row) + 0.125f * ((prev_in + cur_in) + (prev_out + cur_out));
-    const float4 mid = interior ? 0.5f * across_mid : 0.5f * (prev_row + cur_row);
-    sides[first + 2 * c - 1] = mid;
+    sides[first + 2 * c - 1] = side_edge_point(prev_row, cur_row, prev_in, cur_in, prev_out, cur_out, interior);
     if (c == n_src)
       break;
     const float4 next_row = EDGE_LOAD(src, sg, c + 1, 0), next_in = EDGE_LOAD(src, sg, c + 1, 1);
     const float4 next_out = interior ? EDGE_LOAD(src, sg, c + 1, -1) : next_row;
-    float4 v;
-    if (interior) {
-      const float4 row = 0.125f * (prev_row + next_row) + 0.75f * cur_row;
-      const float4 in = 0.125f * (prev_in + next_in) + 0.75f * cur_in;
-      const float4 out = 0.125f * (prev_out + next_out) + 0.75f * cur_out;
-      v = 0.125f * (in + out) + 0.75f * row;
-    } else {
-      v = 0.125f * (prev_row + next_row) + 0.75f * cur_row;
-    }
-    sides[first + 2 * c] = v;
+    sides[first + 2 * c] = side_vertex_point(prev_row, cur_row, next_row, prev_in, cur_in, next_in, prev_out, cur_out,
+                                             next_out, interior);
     prev_row = cur_row; prev_in = cur_in; prev_out = cur_out;
     cur_row = next_row; cur_in = next_in; cur_out = next_out;
   }
@@ -272,4 +298,121 @@ __kernel void subdivide_corner_levels(ATLAS_IN src, __global float4 *restrict co
     r = ring_vertex_point(v, es, ds, count);
     out[l * stride] = r;
   }
+}
+
+/* The patch across side s of a patch whose across table (patch_across) is
+ * a, and its side there; patch -1 on a mesh boundary. */
+inline int2 across_side(int4 a, int s)
+{
+  const int code = int4_at(a, s);
+  return code < 0 ? (int2)(-1, 0) : (int2)(code >> 2, code & 3);
+}
+
+/* Corner c (0..3, counter-clockwise) of a level-1 tile, whose 2 x 2 texels
+ * are its corners. */
+inline int2 first_corner(int c)
+{
+  return (int2)(((c + 1) >> 1) & 1, (c >> 1) & 1);
+}
+
+/* The level-2 texel in the middle of side s of patch x: subdivide_edges'
+ * edge point of level 1, in x's frame. Its row is x's corners s and s + 1,
+ * the row inside x's corners s + 3 and s + 2, and the row across the
+ * corners sq + 2 and sq + 3 of the patch across (side sq there). */
+TEXEL_INLINE float4 first_side_point(ATLAS_IN src, int2 sg, __global const int4 *patch_across, int x, int s)
+{
+  const int2 other = across_side(patch_across[x], s);
+  const int interior = other.x >= 0, q = max(other.x, 0), sq = other.y;
+  const float4 r0 = ATLAS_LOAD(src, sg, x, first_corner(s)), r1 = ATLAS_LOAD(src, sg, x, first_corner(s + 1));
+  const float4 i0 = ATLAS_LOAD(src, sg, x, first_corner(s + 3)), i1 = ATLAS_LOAD(src, sg, x, first_corner(s + 2));
+  const float4 o0 = interior ? ATLAS_LOAD(src, sg, q, first_corner(sq + 2)) : r0;
+  const float4 o1 = interior ? ATLAS_LOAD(src, sg, q, first_corner(sq + 3)) : r1;
+  return side_edge_point(r0, r1, i0, i1, o0, o1, interior);
+}
+
+/* The steps 1 -> 2 and 2 -> 3, which every atlas takes, as a work item per
+ * patch (CPUs) that walks its own sides too: the tiles are small there
+ * (2 x 2, 3 x 3 old texels), so a fixed-size walk keeps every index a
+ * constant and the tile in registers, and no side kernel runs or writes
+ * the compact arrays. Both patches of a side compute it, to the same bits
+ * (side_edge_point() and side_vertex_point() are symmetric); corners come
+ * from corners[corner_base + ring] as in subdivide_patches. Each texel has
+ * the bits subdivide_edges and subdivide_patches give it.
+ *
+ * Range: patches; level 1 or 2 src into the next level dst. */
+
+#define LEVEL1_TEXEL(i, j) ATLAS_LOAD(src, sg, p, (int2)((i), (j)))
+
+__kernel void subdivide_first_step(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, __global const int *list,
+                                   int patches, __global const uchar *flags, int generation,
+                                   __global const int4 *restrict patch_rings,
+                                   __global const int4 *restrict patch_across,
+                                   __global const float4 *restrict corners, int corner_base)
+{
+  PATCH_ITEM(list, patches, SUBDIVIDE_SKIP);
+  const int4 pr = patch_rings[p];
+  PREFETCH_ACROSS_AHEAD(src, sg, patch_across, list, item, patches);
+#pragma unroll
+  for (int c = 0; c < 4; ++c) {
+    const int2 at = kCornerUnit[c] * 2;
+    ATLAS_STORE(dst, dg, p, at, corners[corner_base + int4_at(pr, c)]);
+    ATLAS_STORE(dst, dg, p, at + kSideDir[c], first_side_point(src, sg, patch_across, p, c));
+  }
+  REFINE_INSIDE(face, 1, (int2)(1, 1), LEVEL1_TEXEL);
+  ATLAS_STORE(dst, dg, p, (int2)(1, 1), face);
+}
+#undef LEVEL1_TEXEL
+
+__kernel void subdivide_second_step(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, __global const int *list,
+                                    int patches, __global const uchar *flags, int generation,
+                                    __global const int4 *restrict patch_rings,
+                                    __global const int4 *restrict patch_across,
+                                    __global const float4 *restrict corners, int corner_base)
+{
+  PATCH_ITEM(list, patches, SUBDIVIDE_SKIP);
+  const int4 pr = patch_rings[p], pa = patch_across[p];
+  PREFETCH_ACROSS_AHEAD(src, sg, patch_across, list, item, patches);
+  float4 t2[3][3]; /* the old tile, [j][i] */
+#pragma unroll
+  for (int j = 0; j < 3; ++j)
+#pragma unroll
+    for (int i = 0; i < 3; ++i)
+      t2[j][i] = ATLAS_LOAD(src, sg, p, (int2)(i, j));
+#pragma unroll
+  for (int c = 0; c < 4; ++c)
+    ATLAS_STORE(dst, dg, p, kCornerUnit[c] * 4, corners[corner_base + int4_at(pr, c)]);
+  /* Each side from the old row along it, the row inside and the row across,
+   * in the neighbour's tile. */
+#pragma unroll
+  for (int s = 0; s < 4; ++s) {
+    const Frame f = side_frame(p, s, 2);
+    float4 row[3], in[3], out[3];
+#pragma unroll
+    for (int t = 0; t < 3; ++t) {
+      const int2 r = f.o + t * f.dt, i = r + f.dd;
+      row[t] = t2[r.y][r.x];
+      in[t] = t2[i.y][i.x];
+    }
+    const int2 other = across_side(pa, s);
+    const int interior = other.x >= 0;
+    const Frame fq = across_frame(max(other.x, 0), other.y, 2);
+#pragma unroll
+    for (int t = 0; t < 3; ++t)
+      out[t] = interior ? FRAME_LOAD(src, sg, fq, t, -1) : row[t];
+    const Frame g = side_frame(p, s, 4);
+    const int2 a = g.o + g.dt, b = a + g.dt, c = b + g.dt;
+    ATLAS_STORE(dst, dg, p, a, side_edge_point(row[0], row[1], in[0], in[1], out[0], out[1], interior));
+    ATLAS_STORE(dst, dg, p, b,
+                side_vertex_point(row[0], row[1], row[2], in[0], in[1], in[2], out[0], out[1], out[2], interior));
+    ATLAS_STORE(dst, dg, p, c, side_edge_point(row[1], row[2], in[1], in[2], out[1], out[2], interior));
+  }
+#define LEVEL2_TEXEL(i, j) t2[j][i]
+#pragma unroll
+  for (int j = 1; j < 4; ++j)
+#pragma unroll
+    for (int i = 1; i < 4; ++i) {
+      REFINE_INSIDE(v, 2, (int2)(i, j), LEVEL2_TEXEL);
+      ATLAS_STORE(dst, dg, p, (int2)(i, j), v);
+    }
+#undef LEVEL2_TEXEL
 }

@@ -79,6 +79,40 @@ TEST_P(StoragePaths, CornersInOnePassAgreeWithACornerKernelPerStep)
   expect_corner_paths_agree(test::shape(GetParam()));
 }
 
+// CPUs take the steps from levels 1 and 2 with tile kernels that walk their
+// own sides (no side kernel), for every patch and for a listed set. The
+// side kernel's bits either way.
+TEST_P(StoragePaths, TilesWalkingTheirSidesAgreeWithASideKernel)
+{
+  const BaseMesh mesh = test::shape(GetParam());
+  const int level = 4;
+  Atlas walks(test::runtime(), mesh, level, AtlasStorage::Buffer);
+  Atlas sides(test::runtime(), mesh, level, AtlasStorage::Buffer);
+  walks.set_patch_items(true);
+  sides.set_patch_items(false);
+  ASSERT_TRUE(walks.evaluator().tiles_walk_sides(1) && walks.evaluator().tiles_walk_sides(2));
+  ASSERT_FALSE(walks.evaluator().tiles_walk_sides(3) || sides.evaluator().tiles_walk_sides(1));
+  for (Atlas* a : {&walks, &sides})
+    a->subdivide(1, level);
+  for (int l = 2; l <= level; ++l)
+    EXPECT_EQ(differing_texels(walks.read_positions(l), sides.read_positions(l)), 0u) << "level " << l;
+
+  // Move level 1 (every copy of a vertex alike), then subdivide it as a
+  // listed set of every patch, last first.
+  std::vector<Float4> first = walks.read_positions(1);
+  for (Float4& t : first)
+    t[0] = 1.5f * t[0] + 0.25f * t[1];
+  std::vector<int> every;
+  for (int p = walks.layout(1).patches - 1; p >= 0; --p)
+    every.push_back(p);
+  for (Atlas* a : {&walks, &sides}) {
+    a->write_positions(1, first);
+    a->subdivide(1, 3, a->patch_set(every, Reach::Any));
+  }
+  for (int l = 2; l <= 3; ++l)
+    EXPECT_EQ(differing_texels(walks.read_positions(l), sides.read_positions(l)), 0u) << "set, level " << l;
+}
+
 // CPUs run the reduction's sides as one work item walking each (and the
 // tile kernels per patch); GPUs a work item per texel. Both the same bits,
 // at every level a reduction from level 5 passes.

@@ -44,6 +44,8 @@ AtlasEvaluator::AtlasEvaluator(Runtime& runtime, const AtlasTables& tables, Atla
   subdivide_edges_ = cl::Kernel(program, "subdivide_edges");
   subdivide_corners_ = cl::Kernel(program, "subdivide_corners");
   subdivide_corner_levels_ = cl::Kernel(program, "subdivide_corner_levels");
+  subdivide_first_step_ = cl::Kernel(program, "subdivide_first_step");
+  subdivide_second_step_ = cl::Kernel(program, "subdivide_second_step");
   limit_tiles_ = cl::Kernel(program, "limit_tiles");
   limit_patches_ = cl::Kernel(program, "limit_patches");
   limit_edges_ = cl::Kernel(program, "limit_edges");
@@ -129,12 +131,16 @@ void AtlasEvaluator::subdivide(int from_level, const std::vector<cl::Memory>& la
   // the rings it marks are taken again from each level.
   const bool corner_levels = corners_in_one_pass() && steps > 1 && steps <= corner_layers_ && a.ring_count > 0;
   const cl_uchar mark = 1;
+
   for (int k = 0; k < steps; ++k) {
     const int l = from_level + k;
     const LevelLayout s = level_layout(patch_count, l), d = level_layout(patch_count, l + 1);
     const cl::Memory &in = layers[k], &out = layers[k + 1];
     const cl_int corner_base = corner_levels ? k * stride : 0;
-    if (a.edge_count > 0)
+    // Small tiles on CPUs: a kernel per step that walks each tile's own
+    // sides, no side kernel.
+    cl::Kernel* small_step = !tiles_walk_sides(l) ? nullptr : l == 1 ? &subdivide_first_step_ : &subdivide_second_step_;
+    if (a.edge_count > 0 && !small_step)
       launch(q, subdivide_edges_, range1d(a.edge_count), kLocal1D, in, side_work_, tables_.edges(), a.edges,
              a.edge_count, a.edge_flags, a.generation, grid(s), grid(d));
     // After the side kernel, which leaves the source level in the caches.
@@ -148,7 +154,10 @@ void AtlasEvaluator::subdivide(int from_level, const std::vector<cl::Memory>& la
     else if (corner_levels && wide_rings_)
       launch(q, subdivide_corners_, range1d(a.ring_count), kLocal1D, in, corner_work_, corner_base, tables_.rings(),
              tables_.slots(), a.rings, a.ring_count, ring_marks_, cl_int(mark), grid(s));
-    if (a.patch_count > 0) {
+    if (a.patch_count > 0 && small_step)
+      launch(q, *small_step, range1d(a.patch_count), kLocal1D, in, out, grid(s), grid(d), a.patches, a.patch_count,
+             a.patch_flags, a.generation, tables_.patch_rings(), tables_.patch_across(), corner_work_, corner_base);
+    else if (a.patch_count > 0) {
       const TileLaunch t = tile_launch(subdivide_tiles_, subdivide_patches_, d, a.patch_count);
       launch(q, t.kernel, t.global, t.local, in, out, grid(s), grid(d), a.patches, a.patch_count, a.patch_flags,
              a.generation, tables_.patch_sides(), tables_.patch_rings(), side_work_, corner_work_, corner_base);

@@ -40,6 +40,10 @@ public:
   //! runs a corner kernel per step (GPUs, whose registers the rings would
   //! not fit). The same bits either way.
   bool corners_in_one_pass() const { return patch_items_; }
+  //! Whether the step from `level` to the next runs no side kernel, its
+  //! tile kernel walking each tile's own sides (CPU devices, the first two
+  //! steps: subdivide_first_step, subdivide_second_step). The same bits.
+  bool tiles_walk_sides(int level) const { return patch_items_ && level <= 2; }
   //! A whole-tile kernel over `count` patches of a level: the per-patch
   //! kernel over count items, or the per-texel one over range_tiles(). The
   //! arguments are the same for both.
@@ -80,6 +84,7 @@ private:
   AtlasStorage storage_;
   bool patch_items_;
   cl::Kernel subdivide_tiles_, subdivide_patches_, subdivide_edges_, subdivide_corners_, subdivide_corner_levels_;
+  cl::Kernel subdivide_first_step_, subdivide_second_step_;
   cl::Kernel limit_tiles_, limit_patches_, limit_edges_, limit_corners_, patch_bounds_;
   cl::Kernel reduce_interior_, reduce_edges_, reduce_edge_walks_, reduce_corners_, reduce_patches_;
   cl::Kernel flag_corners_, flag_ring_patches_, flag_borders_;

@@ -76,6 +76,14 @@ AtlasTables::AtlasTables(Runtime& runtime, AtlasTopology topology) : topology_(s
   const auto [patch_sides, patch_rings] = border_tables(topology_, device_ring_);
   patch_sides_ = upload(patch_sides);
   patch_rings_ = upload(patch_rings);
+  std::vector<std::array<int, 4>> across(std::size_t(topology_.patch_count));
+  for (std::size_t p = 0; p < across.size(); ++p)
+    for (int c = 0; c < 4; ++c) {
+      const PatchEdge& e = topology_.edges[std::size_t(topology_.patch_sides[p][std::size_t(c)])];
+      const int k = e.patch[0] == int(p) && e.side[0] == c ? 1 : 0;
+      across[p][std::size_t(c)] = e.patch[k] < 0 ? -1 : 4 * e.patch[k] + e.side[k];
+    }
+  patch_across_ = upload(across);
 }
 
 } // namespace meshpaint

@@ -33,11 +33,14 @@ public:
   //! second), and each corner's ring in the device's ring table.
   const cl::Buffer& patch_sides() const { return patch_sides_; }
   const cl::Buffer& patch_rings() const { return patch_rings_; }
+  //! int4 per patch: across each side, 4 * patch + its side there; -1 on a
+  //! mesh boundary.
+  const cl::Buffer& patch_across() const { return patch_across_; }
 
 private:
   AtlasTopology topology_;
   std::vector<int> device_ring_; // level-1 vertex -> index in the device's ring table
-  cl::Buffer edges_, rings_, slots_, valences_, patch_sides_, patch_rings_;
+  cl::Buffer edges_, rings_, slots_, valences_, patch_sides_, patch_rings_, patch_across_;
 };
 
 } // namespace meshpaint
