@@ -116,7 +116,7 @@ inline Frame across_frame(int patch, int side, int n)
 #if defined(ATLAS_PREFETCH) && defined(__clang__) && !defined(ATLAS_IMAGE)
 /* A tile's cache lines (the first 8 of a big one, whose side kernels walk
  * far enough for the hardware's own prefetch). */
-inline void prefetch_tile(__global const float4 *a, int2 g, int p)
+TEXEL_INLINE void prefetch_tile(__global const float4 *a, int2 g, int p)
 {
   __global const char *t = (__global const char *)(a + PATCH_MAJOR_INDEX(g, p, (int2)(0, 0)));
   const int lines = min((g.x * g.x * 16 + 63) / 64, 8);
@@ -138,7 +138,7 @@ inline void prefetch_edge_ahead(__global const float4 *a, int2 g, __global const
 
 /* The tiles across the sides of patch list[k + PREFETCH_AHEAD], from its
  * entry in a patch_across table (4 * patch + side, -1 on a boundary). */
-inline void prefetch_across_ahead(__global const float4 *a, int2 g, __global const int4 *across,
+TEXEL_INLINE void prefetch_across_ahead(__global const float4 *a, int2 g, __global const int4 *across,
                                   __global const int *list, int k, int count)
 {
   if (k + PREFETCH_AHEAD >= count)
