@@ -56,7 +56,8 @@ std::vector<FamilyTraffic> subdivide_traffic(const AtlasTopology& t, int from, i
     if (evaluator.tiles_walk_sides(l)) {
       // The source tile, the row across each side (in the neighbour's
       // tile), four corners and the written tile.
-      tiles.bytes += kTexel * (tile_texels(t, l) + double(t.patch_count) * (4.0 * (ns + 1) + 4.0) + tile_texels(t, l + 1));
+      tiles.bytes +=
+          kTexel * (tile_texels(t, l) + double(t.patch_count) * (4.0 * (ns + 1) + 4.0) + tile_texels(t, l + 1));
     } else {
       edges.bytes += kTexel * (edge_reads(t, ns) + double(t.edges.size()) * (nd - 1));
       tiles.bytes += kTexel * (tile_texels(t, l) + border_entries(t, nd) + tile_texels(t, l + 1));

@@ -139,7 +139,7 @@ inline void prefetch_edge_ahead(__global const float4 *a, int2 g, __global const
 /* The tiles across the sides of patch list[k + PREFETCH_AHEAD], from its
  * entry in a patch_across table (4 * patch + side, -1 on a boundary). */
 TEXEL_INLINE void prefetch_across_ahead(__global const float4 *a, int2 g, __global const int4 *across,
-                                  __global const int *list, int k, int count)
+                                        __global const int *list, int k, int count)
 {
   if (k + PREFETCH_AHEAD >= count)
     return;
@@ -169,7 +169,8 @@ inline void prefetch_ring_ahead(__global const float4 *a, int2 g, __global const
 #define PREFETCH_EDGE_AHEAD(a, g, edges, list, k, count) prefetch_edge_ahead((a), (g), (edges), (list), (k), (count))
 #define PREFETCH_RING_AHEAD(a, g, rings, slots, list, k, count) \
   prefetch_ring_ahead((a), (g), (rings), (slots), (list), (k), (count))
-#define PREFETCH_ACROSS_AHEAD(a, g, across, list, k, count) prefetch_across_ahead((a), (g), (across), (list), (k), (count))
+#define PREFETCH_ACROSS_AHEAD(a, g, across, list, k, count) \
+  prefetch_across_ahead((a), (g), (across), (list), (k), (count))
 #else
 #define PREFETCH_TILE(a, g, p) ((void)0)
 #define PREFETCH_TEXEL(a, g, p, ij) ((void)0)

@@ -131,7 +131,6 @@ void AtlasEvaluator::subdivide(int from_level, const std::vector<cl::Memory>& la
   // the rings it marks are taken again from each level.
   const bool corner_levels = corners_in_one_pass() && steps > 1 && steps <= corner_layers_ && a.ring_count > 0;
   const cl_uchar mark = 1;
-
   for (int k = 0; k < steps; ++k) {
     const int l = from_level + k;
     const LevelLayout s = level_layout(patch_count, l), d = level_layout(patch_count, l + 1);
