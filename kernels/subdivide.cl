@@ -315,13 +315,14 @@ inline int2 first_corner(int c)
   return (int2)(((c + 1) >> 1) & 1, (c >> 1) & 1);
 }
 
-/* The level-2 texel in the middle of side s of patch x: subdivide_edges'
- * edge point of level 1, in x's frame. Its row is x's corners s and s + 1,
- * the row inside x's corners s + 3 and s + 2, and the row across the
- * corners sq + 2 and sq + 3 of the patch across (side sq there). */
-TEXEL_INLINE float4 first_side_point(ATLAS_IN src, int2 sg, __global const int4 *patch_across, int x, int s)
+/* The level-2 texel in the middle of side s of patch x, whose across table
+ * entry is a: subdivide_edges' edge point of level 1, in x's frame. Its
+ * row is x's corners s and s + 1, the row inside x's corners s + 3 and
+ * s + 2, and the row across the corners sq + 2 and sq + 3 of the patch
+ * across (side sq there). */
+TEXEL_INLINE float4 first_side_point(ATLAS_IN src, int2 sg, int4 a, int x, int s)
 {
-  const int2 other = across_side(patch_across[x], s);
+  const int2 other = across_side(a, s);
   const int interior = other.x >= 0, q = max(other.x, 0), sq = other.y;
   const float4 r0 = ATLAS_LOAD(src, sg, x, first_corner(s)), r1 = ATLAS_LOAD(src, sg, x, first_corner(s + 1));
   const float4 i0 = ATLAS_LOAD(src, sg, x, first_corner(s + 3)), i1 = ATLAS_LOAD(src, sg, x, first_corner(s + 2));
@@ -350,13 +351,13 @@ __kernel void subdivide_first_step(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg
                                    __global const float4 *restrict corners, int corner_base)
 {
   PATCH_ITEM(list, patches, SUBDIVIDE_SKIP);
-  const int4 pr = patch_rings[p];
+  const int4 pr = patch_rings[p], pa = patch_across[p];
   PREFETCH_ACROSS_AHEAD(src, sg, patch_across, list, item, patches);
 #pragma unroll
   for (int c = 0; c < 4; ++c) {
     const int2 at = kCornerUnit[c] * 2;
     ATLAS_STORE(dst, dg, p, at, corners[corner_base + int4_at(pr, c)]);
-    ATLAS_STORE(dst, dg, p, at + kSideDir[c], first_side_point(src, sg, patch_across, p, c));
+    ATLAS_STORE(dst, dg, p, at + kSideDir[c], first_side_point(src, sg, pa, p, c));
   }
   REFINE_INSIDE(face, 1, (int2)(1, 1), LEVEL1_TEXEL);
   ATLAS_STORE(dst, dg, p, (int2)(1, 1), face);
