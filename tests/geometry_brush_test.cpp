@@ -284,7 +284,8 @@ TEST(GeometryBrush, HostListsAndDeviceFlagsGiveTheSameBits)
 {
   // The two ways of making a neighbourhood set (Atlas::device_set_share()),
   // under each storage and each form of the whole-tile kernels: the
-  // sculpts, and their undo (which subdivides the edit level on a set).
+  // sculpts (the coarse one's edit-level limit too), and their undo (which
+  // subdivides the edit level on a set).
   for (const AtlasStorage storage : {AtlasStorage::Buffer, AtlasStorage::Image})
     for (const bool per_patch : {true, false}) {
       std::vector<std::vector<std::vector<Float4>>> results;

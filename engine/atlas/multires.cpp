@@ -245,7 +245,12 @@ float Multires::stretch(const std::vector<int>& patches)
 
 void Multires::compute_base_limit(const std::vector<int>& patches)
 {
-  const PatchSet set = atlas_.patch_set(patches, Reach::Any); // every texel of the tiles
+  // Every texel of the patches' tiles. A patch's limit depends on the
+  // control points only, so a superset gives the same bits: for many
+  // patches their neighbourhood, flagged on the device at no cost to the
+  // host (Atlas::neighbourhood()), instead of lists made on the host.
+  const bool many = patches.size() * atlas_.device_set_share() >= std::size_t(atlas_.topology().patch_count);
+  const PatchSet set = many ? atlas_.neighbourhood(patches) : atlas_.patch_set(patches, Reach::Any);
   atlas_.compute_limit_of(level_, device_->positions, device_->normals, set);
 }
 
