@@ -157,6 +157,11 @@ inline void prefetch_ring_ahead(__global const float4 *a, int2 g, __global const
   if (k + PREFETCH_AHEAD >= count)
     return;
   const CornerRing ring = rings[list ? list[k + PREFETCH_AHEAD] : k + PREFETCH_AHEAD];
+  if (g.x == 2) { /* level 1: a slot's texels are its whole tile, one cache line */
+    for (int i = 0; i < ring.count; ++i)
+      __builtin_prefetch(a + PATCH_MAJOR_INDEX(g, slots[ring.first + i].patch, (int2)(0, 0)));
+    return;
+  }
   for (int i = 0; i < ring.count; ++i) {
     const CornerSlot slot = slots[ring.first + i];
     const Frame f = side_frame(slot.patch, slot.corner, g.x - 1);
