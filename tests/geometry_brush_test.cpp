@@ -219,7 +219,7 @@ TEST(GeometryBrush, LocalLimitUpdateEqualsAFullOne)
         const int patches = surface.atlas().topology().patch_count;
         ASSERT_GT(r.patches_touched, 0u) << what;
         ASSERT_LT(r.patches_touched, std::size_t(patches)) << what; // a local update, not everything
-        large_seen.insert(r.patches_touched * surface.atlas().device_set_share() >= std::size_t(patches));
+        large_seen.insert(surface.atlas().sets_on_device(r.patches_touched));
         const auto local_pos = surface.atlas().read_limit_positions();
         const auto local_nrm = surface.atlas().read_limit_normals();
         const auto local_bounds = read_bounds(surface.atlas());

@@ -116,7 +116,7 @@ PatchSet Atlas::neighbourhood(const std::vector<int>& changed, const cl::Buffer*
   // Host lists cost per patch listed, on one core; the flags' passes cost
   // per item of the atlas, on every core: flags pay from about a sixteenth
   // of the patches on (kDeviceSetShare).
-  if (changed.size() * device_set_share_ >= std::size_t(topology().patch_count))
+  if (sets_on_device(changed.size()))
     return evaluator_->flag_neighbourhood(changed, list);
   PatchSet set = sets_->neighbourhood(changed);
   const cl::Context& context = runtime_->context();

@@ -98,6 +98,11 @@ public:
   //! them (0: host lists always; the patch count: flags always).
   std::size_t device_set_share() const { return device_set_share_; }
   void set_device_set_share(std::size_t share) { device_set_share_ = share; }
+  //! Whether a set made for `count` patches is made on the device as flags.
+  bool sets_on_device(std::size_t count) const
+  {
+    return count * device_set_share_ >= std::size_t(topology().patch_count);
+  }
   //! Per patch of `patches`, the sides (bits 0-3) and corners (bits 4-7) it
   //! shares with a patch not listed (as PatchSet::outside).
   std::vector<std::uint8_t> shared_outside(const std::vector<int>& patches) const;

@@ -249,8 +249,7 @@ void Multires::compute_base_limit(const std::vector<int>& patches)
   // control points only, so a superset gives the same bits: for many
   // patches their neighbourhood, flagged on the device at no cost to the
   // host (Atlas::neighbourhood()), instead of lists made on the host.
-  const bool many = patches.size() * atlas_.device_set_share() >= std::size_t(atlas_.topology().patch_count);
-  const PatchSet set = many ? atlas_.neighbourhood(patches) : atlas_.patch_set(patches, Reach::Any);
+  const PatchSet set = atlas_.sets_on_device(patches.size()) ? atlas_.neighbourhood(patches) : atlas_.patch_set(patches, Reach::Any);
   atlas_.compute_limit_of(level_, device_->positions, device_->normals, set);
 }
 

@@ -90,7 +90,7 @@ public:
     const Kernel::Ray_3 ray(from, to);
     bool found = false;
     double nearest = 0;
-    Point at;
+    Point at = CGAL::ORIGIN; // read only once found
     for (const Primitive::Id& triangle : met) {
       const auto crossing = CGAL::intersection(ray, *triangle);
       if (!crossing)
