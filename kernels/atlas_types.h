@@ -37,6 +37,10 @@ typedef struct {
  * rings take theirs from each level. */
 #define RING_LEVELS_MAX 16
 
+/* Patches per work item of encode_patches (CPUs), a patch per lane of
+ * float8 arithmetic. */
+#define PATCH_LANES 8
+
 /* A patch and which of its corners (0..3) the ring vertex is. */
 typedef struct {
   mp_int patch;

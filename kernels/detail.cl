@@ -109,29 +109,146 @@ __kernel void encode_details(ATLAS_IN fine, ATLAS_IN smooth, int2 g, int count, 
     encode_texel(fine, smooth, g, p, ij, details);
 }
 
-/* Range: count; the same with a work item per patch walking its tile
- * (FOR_EACH_TILE_PART, whose entries into compact arrays go unused), and
- * the tile's tile_extent() into `extent` (unless null) while it is in the
- * cache, instead of patch_extent's pass over the level. */
+/* encode_patches runs a work item per eight patches, a patch per lane:
+ * float3 arithmetic keeps a texel's three components in one register and
+ * spends most of its time shuffling them, and PoCL does not spread float3
+ * code over work items. Lanes hold x, y and z apart instead, and a tile's
+ * texels come in the same order in every lane, so each lane's texel has
+ * the same neighbours and the same owner bit. Each lane does what
+ * encode_texel() and tile_extent() do, operation for operation (FP_CONTRACT
+ * is off, rsqrt(), sqrt() and the sums of cross() and dot() are the same
+ * per lane, and the extent is a maximum of finite values, whose order does
+ * not matter), so the results are the same bits; a lane whose frame is
+ * degenerate is encoded by encode_texel() itself. The lanes are float8,
+ * so PATCH_LANES (atlas_types.h) is 8. */
+
+typedef struct {
+  float8 x, y, z;
+} Lanes;
+
+/* Texel ij of the patches `patch`, a lane each: eight 16-byte loads and a
+ * transpose in two rounds of shuffles (not 24 loads of a float each). */
+TEXEL_INLINE Lanes load_lanes(ATLAS_IN a, int2 g, int8 patch, int2 ij)
+{
+#define LOAD_LANE(l) const float4 v##l = ATLAS_LOAD(a, g, patch.s##l, ij);
+  LOAD_LANE(0) LOAD_LANE(1) LOAD_LANE(2) LOAD_LANE(3) LOAD_LANE(4) LOAD_LANE(5) LOAD_LANE(6) LOAD_LANE(7)
+#undef LOAD_LANE
+  const float8 a04 = (float8)(v0, v4), a15 = (float8)(v1, v5), a26 = (float8)(v2, v6), a37 = (float8)(v3, v7);
+  const uint8 lo = (uint8)(0, 8, 1, 9, 4, 12, 5, 13), hi = (uint8)(2, 10, 3, 11, 6, 14, 7, 15);
+  const float8 xy01 = shuffle2(a04, a15, lo), xy23 = shuffle2(a26, a37, lo);
+  const float8 zw01 = shuffle2(a04, a15, hi), zw23 = shuffle2(a26, a37, hi);
+  const uint8 even = (uint8)(0, 1, 8, 9, 4, 5, 12, 13), odd = (uint8)(2, 3, 10, 11, 6, 7, 14, 15);
+  Lanes r;
+  r.x = shuffle2(xy01, xy23, even);
+  r.y = shuffle2(xy01, xy23, odd);
+  r.z = shuffle2(zw01, zw23, even);
+  return r;
+}
+
+TEXEL_INLINE Lanes lanes_sub(Lanes a, Lanes b)
+{
+  Lanes r;
+  r.x = a.x - b.x;
+  r.y = a.y - b.y;
+  r.z = a.z - b.z;
+  return r;
+}
+
+TEXEL_INLINE Lanes lanes_scale(Lanes a, float8 s)
+{
+  Lanes r;
+  r.x = a.x * s;
+  r.y = a.y * s;
+  r.z = a.z * s;
+  return r;
+}
+
+TEXEL_INLINE Lanes lanes_cross(Lanes a, Lanes b)
+{
+  Lanes r;
+  r.x = a.y * b.z - a.z * b.y;
+  r.y = a.z * b.x - a.x * b.z;
+  r.z = a.x * b.y - a.y * b.x;
+  return r;
+}
+
+TEXEL_INLINE float8 lanes_dot(Lanes a, Lanes b) { return (a.x * b.x + a.y * b.y) + a.z * b.z; }
+
+/* Range: count / PATCH_LANES rounded up; encode_details' texels, a work
+ * item per eight patches walking their tiles together, and each tile's
+ * tile_extent() into `extent` (unless null) while it is in the cache,
+ * instead of patch_extent's pass over the level. */
 __kernel void encode_patches(ATLAS_IN fine, ATLAS_IN smooth, int2 g, int count, __global const uchar *restrict owned,
                              __global float4 *details, __global float *restrict extent)
 {
-  const int p = get_global_id(0);
-  if (p >= count)
+  const int first = get_global_id(0) * PATCH_LANES;
+  if (first >= count)
     return;
-  const int n = g.x - 1, own = owned[p];
-  const int4 unused = (int4)(0);
-#define ENCODE_BORDER(ij, k, corner, bit)             \
-  do {                                                \
-    if (own & (bit))                                  \
-      encode_texel(fine, smooth, g, p, ij, details);  \
-  } while (0)
-#define ENCODE_INSIDE(ij) encode_texel(fine, smooth, g, p, ij, details)
-  FOR_EACH_TILE_PART(n, unused, unused, ENCODE_BORDER, ENCODE_INSIDE);
-#undef ENCODE_INSIDE
-#undef ENCODE_BORDER
-  if (extent)
-    extent[p] = tile_extent(fine, g, p);
+  const int8 lane = (int8)(0, 1, 2, 3, 4, 5, 6, 7);
+  const int8 valid = first + lane < count;
+  const int8 patch = min(first + lane, (int8)(count - 1)); /* lanes past the end repeat the last */
+  const int8 own = (int8)(owned[patch.s0], owned[patch.s1], owned[patch.s2], owned[patch.s3], owned[patch.s4],
+                          owned[patch.s5], owned[patch.s6], owned[patch.s7]);
+  const int n = g.x - 1;
+  float8 longest = (float8)(0.0f);
+  for (int j = 0; j <= n; ++j) {
+    /* Along the row, the smooth texels left, here and right move on by one. */
+    Lanes here = load_lanes(smooth, g, patch, (int2)(0, j)), left = here;
+    Lanes fine_left = here; /* read from i = 1 on, after it is set */
+    for (int i = 0; i <= n; ++i) {
+      const int2 ij = (int2)(i, j);
+      const Lanes right = i < n ? load_lanes(smooth, g, patch, (int2)(i + 1, j)) : here;
+      const Lanes fine_here = load_lanes(fine, g, patch, ij);
+      /* tile_extent(): the grid edges to the left and below. */
+      if (i > 0) {
+        const Lanes along = lanes_sub(fine_here, fine_left);
+        longest = max(longest, lanes_dot(along, along));
+      }
+      if (j > 0) {
+        const Lanes across = lanes_sub(fine_here, load_lanes(fine, g, patch, (int2)(i, j - 1)));
+        longest = max(longest, lanes_dot(across, across));
+      }
+      const int bit = part_bit(ij, n);
+      const int8 stored = valid & (bit == 0 ? (int8)(-1) : (own & bit) != 0);
+      if (any(stored)) {
+        /* detail_frame()'s clamped differences, frame_of()'s usual case. */
+        const Lanes up = j < n ? load_lanes(smooth, g, patch, (int2)(i, j + 1)) : here;
+        const Lanes down = j > 0 ? load_lanes(smooth, g, patch, (int2)(i, j - 1)) : here;
+        const Lanes d0 = lanes_sub(right, left), d1 = lanes_sub(up, down);
+        const Lanes c = lanes_cross(d0, d1);
+        const float8 squares_c = lanes_dot(c, c), squares_d0 = lanes_dot(d0, d0);
+        const int8 usual = squares_c > 1e-30f && squares_d0 > 1e-30f;
+        const Lanes nrm = lanes_scale(c, rsqrt(squares_c));
+        const Lanes tan = lanes_scale(d0, rsqrt(squares_d0));
+        const Lanes bin = lanes_cross(nrm, tan);
+        const Lanes d = lanes_sub(fine_here, here);
+        float e0[PATCH_LANES], e1[PATCH_LANES], e2[PATCH_LANES];
+        int st[PATCH_LANES], us[PATCH_LANES], pa[PATCH_LANES];
+        vstore8(lanes_dot(d, tan), 0, e0);
+        vstore8(lanes_dot(d, bin), 0, e1);
+        vstore8(lanes_dot(d, nrm), 0, e2);
+        vstore8(stored, 0, st);
+        vstore8(usual, 0, us);
+        vstore8(patch, 0, pa);
+        for (int l = 0; l < PATCH_LANES; ++l)
+          if (st[l]) {
+            if (us[l])
+              details[PATCH_MAJOR_INDEX(g, pa[l], ij)] = (float4)(e0[l], e1[l], e2[l], 0.0f);
+            else
+              encode_texel(fine, smooth, g, pa[l], ij, details);
+          }
+      }
+      left = here;
+      here = right;
+      fine_left = fine_here;
+    }
+  }
+  if (extent) {
+    float reach[PATCH_LANES];
+    vstore8(sqrt(longest), 0, reach);
+    for (int l = 0; l < PATCH_LANES && first + l < count; ++l)
+      extent[first + l] = reach[l];
+  }
 }
 
 /* U + frame(U) details at texel ij of patch p. */

@@ -37,6 +37,8 @@ void add_bumps(std::vector<Float4>& texels, float height)
 {
   for (Float4& t : texels) {
     const double r = std::sqrt(double(t[0]) * t[0] + double(t[1]) * t[1] + double(t[2]) * t[2]);
+    if (r == 0) // no radius to bump along (a grid through the origin)
+      continue;
     const double h = height * std::sin(48.0 * t[0]) * std::sin(48.0 * t[1]) * std::sin(48.0 * t[2]);
     for (int k = 0; k < 3; ++k)
       t[k] = float(t[k] * (1.0 + h / r));
@@ -372,6 +374,60 @@ TEST(Multires, StretchRightAfterEncodingIsOne)
     multires.encode(edit);
     EXPECT_EQ(multires.stretch(every_patch(b.atlas)), 1.f) << "edit level " << edit;
   }
+}
+
+// CPUs encode eight patches per work item (encode_patches, a patch per
+// lane) and decode a patch per work item (decode_patches), GPUs a work item
+// per texel (encode_details with patch_extent, decode_tiles): the same details,
+// extents and rebuilt texels, bit for bit, on every test shape (patch
+// counts that leave lanes over) and tile size. Positions with x > 0 are
+// scaled down to where a frame's normal is too short to divide by, so that
+// lanes of both of frame_of()'s cases meet in one work item.
+TEST(Multires, PerPatchKernelsAgreeWithPerTexel)
+{
+  for (const std::string& name : test::shape_names())
+    for (int finest = 2; finest <= 4; ++finest) {
+      const BaseMesh mesh = test::shape(name);
+      Atlas lanes(test::runtime(), mesh, finest, AtlasStorage::Buffer);
+      Atlas texels(test::runtime(), mesh, finest, AtlasStorage::Buffer);
+      lanes.set_patch_items(true);
+      texels.set_patch_items(false);
+      lanes.subdivide(1, finest);
+      std::vector<Float4> fine = lanes.read_positions(finest);
+      add_bumps(fine, 0.02f);
+      for (Float4& t : fine) // a function of the position: every copy alike
+        if (t[0] > 0.f)
+          for (int k = 0; k < 3; ++k)
+            t[k] *= 1e-9f;
+      for (Atlas* a : {&lanes, &texels})
+        a->write_positions(finest, fine);
+      Multires by_lanes(lanes), by_texels(texels);
+      for (const int edit : {1, finest - 1}) {
+        by_lanes.encode(edit);
+        by_texels.encode(edit);
+        EXPECT_TRUE(same_bits(by_lanes.read_details(), by_texels.read_details()))
+          << name << ", level " << finest << " from " << edit;
+        // The extents measured while encoding, against patch_extent's.
+        EXPECT_EQ(by_lanes.stretch(every_patch(lanes)), 1.f) << name << ", level " << finest << " from " << edit;
+        // Every third patch's reach rebuilt after the edit level moved.
+        std::vector<int> moved;
+        for (int p = 0; p < lanes.layout(edit).patches; p += 3)
+          moved.push_back(p);
+        std::vector<Float4> base = lanes.read_positions(edit);
+        for (Float4& t : base)
+          t[2] += 0.01f * t[0];
+        for (Atlas* a : {&lanes, &texels})
+          a->write_positions(edit, base);
+        by_lanes.reconstruct(by_lanes.reach(moved));
+        by_texels.reconstruct(by_texels.reach(moved));
+        const std::vector<Float4> rebuilt = lanes.read_positions(finest);
+        EXPECT_TRUE(same_bits(rebuilt, texels.read_positions(finest)))
+          << name << ", level " << finest << " rebuilt from " << edit;
+        EXPECT_TRUE(std::all_of(rebuilt.begin(), rebuilt.end(), [](const Float4& t) {
+          return std::isfinite(t[0]) && std::isfinite(t[1]) && std::isfinite(t[2]);
+        })) << name << ": the comparison is of numbers";
+      }
+    }
 }
 
 TEST(Multires, EditLevelFinerThanTheSurfaceIsRefused)

@@ -2,6 +2,7 @@
 
 #include "cl/launch.h"
 #include "cl/kernel_programs.h"
+#include "atlas_types.h" // for PATCH_LANES
 #include "core/errors.h"
 
 #include <algorithm> // for std::max
@@ -155,7 +156,11 @@ void Multires::encode(int level)
     const bool measures = &t.kernel == &d.encode_patches;
     if (measures)
       d.encode_patches.setArg(6, d.extent); // its last, beyond encode_details' own
-    launch(q, t.kernel, t.global, t.local, fine, d.smooth, grid(f), f.patches, d.owned, d.details);
+    // The per-patch kernel takes PATCH_LANES patches per work item.
+    const cl::NDRange global =
+      measures ? cl::NDRange(round_up(std::size_t(f.patches + PATCH_LANES - 1) / PATCH_LANES, kGroup)) : t.global;
+    launch(q, t.kernel, global, measures ? cl::NDRange(kGroup) : t.local, fine, d.smooth, grid(f), f.patches, d.owned,
+           d.details);
     if (!measures)
       launch(q, d.patch_extent, cl::NDRange(round_up(f.patches, kGroup)), cl::NDRange(kGroup), fine, grid(f),
              cl::Buffer(), f.patches, d.extent);
