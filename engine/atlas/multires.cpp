@@ -154,13 +154,13 @@ void Multires::encode(int level)
     const Atlas::TileLaunch t = atlas_.tile_launch(d.encode_details, d.encode_patches, f, f.patches);
     // The per-patch kernel measures each tile's extent as it goes.
     const bool measures = &t.kernel == &d.encode_patches;
-    if (measures)
+    cl::NDRange global = t.global, local = t.local;
+    if (measures) { // PATCH_LANES patches per work item
       d.encode_patches.setArg(6, d.extent); // its last, beyond encode_details' own
-    // The per-patch kernel takes PATCH_LANES patches per work item.
-    const cl::NDRange global =
-      measures ? cl::NDRange(round_up(std::size_t(f.patches + PATCH_LANES - 1) / PATCH_LANES, kGroup)) : t.global;
-    launch(q, t.kernel, global, measures ? cl::NDRange(kGroup) : t.local, fine, d.smooth, grid(f), f.patches, d.owned,
-           d.details);
+      global = cl::NDRange(round_up(std::size_t(f.patches + PATCH_LANES - 1) / PATCH_LANES, kGroup));
+      local = cl::NDRange(kGroup);
+    }
+    launch(q, t.kernel, global, local, fine, d.smooth, grid(f), f.patches, d.owned, d.details);
     if (!measures)
       launch(q, d.patch_extent, cl::NDRange(round_up(f.patches, kGroup)), cl::NDRange(kGroup), fine, grid(f),
              cl::Buffer(), f.patches, d.extent);
@@ -254,7 +254,8 @@ void Multires::compute_base_limit(const std::vector<int>& patches)
   // control points only, so a superset gives the same bits: for many
   // patches their neighbourhood, flagged on the device at no cost to the
   // host (Atlas::neighbourhood()), instead of lists made on the host.
-  const PatchSet set = atlas_.sets_on_device(patches.size()) ? atlas_.neighbourhood(patches) : atlas_.patch_set(patches, Reach::Any);
+  const PatchSet set =
+    atlas_.sets_on_device(patches.size()) ? atlas_.neighbourhood(patches) : atlas_.patch_set(patches, Reach::Any);
   atlas_.compute_limit_of(level_, device_->positions, device_->normals, set);
 }
 
