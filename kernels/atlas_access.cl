@@ -81,8 +81,41 @@ inline Frame across_frame(int patch, int side, int n)
   return f;
 }
 
-#define FRAME_LOAD(a, g, f, t, d) ATLAS_LOAD(a, g, (f).patch, (f).o + (t) * (f).dt + (d) * (f).dd)
-#define FRAME_STORE(a, g, f, t, d, v) ATLAS_STORE(a, g, (f).patch, (f).o + (t) * (f).dt + (d) * (f).dd, v)
+
+/* A frame as a texel and two steps. FRAME_LOAD goes through it, and a
+ * kernel that reads many texels of one frame keeps it (reduce_second_step):
+ * the index arithmetic once, not per load. */
+#ifdef ATLAS_IMAGE
+typedef struct {
+  int2 at, dt, dd;
+} FrameSteps;
+inline FrameSteps frame_steps(int2 g, Frame f)
+{
+  FrameSteps s;
+  s.at = tile_origin(f.patch, g) + f.o;
+  s.dt = f.dt;
+  s.dd = f.dd;
+  return s;
+}
+#define STEPS_LOAD(a, s, t, d) read_imagef((a), (s).at + (t) * (s).dt + (d) * (s).dd)
+#define STEPS_STORE(a, s, t, d, v) write_imagef((a), (s).at + (t) * (s).dt + (d) * (s).dd, (v))
+#else
+typedef struct {
+  int at, dt, dd;
+} FrameSteps;
+inline FrameSteps frame_steps(int2 g, Frame f)
+{
+  FrameSteps s;
+  s.at = ATLAS_INDEX(g, f.patch, f.o);
+  s.dt = f.dt.y * g.x + f.dt.x;
+  s.dd = f.dd.y * g.x + f.dd.x;
+  return s;
+}
+#define STEPS_LOAD(a, s, t, d) ((a)[(s).at + (t) * (s).dt + (d) * (s).dd])
+#define STEPS_STORE(a, s, t, d, v) ((a)[(s).at + (t) * (s).dt + (d) * (s).dd] = (v))
+#endif
+#define FRAME_LOAD(a, g, f, t, d) STEPS_LOAD(a, frame_steps(g, f), t, d)
+#define FRAME_STORE(a, g, f, t, d, v) STEPS_STORE(a, frame_steps(g, f), t, d, v)
 
 /* Declares the frames of an edge's two patches (fp, fq) for reading grid g. */
 #define EDGE_FRAMES(e, g)                                                   \

@@ -97,6 +97,67 @@ __kernel void reduce_patches(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, int 
 #undef REDUCE_COPY
 }
 
+/* The step from level 3 to level 2 (4 x 4 to 2 x 2 quads per patch), which
+ * every atlas at level 3 takes when it encodes details, as a work item per
+ * patch that reduces its own sides too: a destination tile has one texel
+ * inside and one in the middle of each side. Each of those five texels is
+ * a chain of thirty dependent additions; a work item per edge or per patch
+ * waits on its chain's latency, while here the five chains advance
+ * together. Both patches of an edge compute its side texel in the edge's
+ * frames, with REDUCE_SIDE_TEXEL's operations in its order, so both copies
+ * have the bits reduce_edge_walks gives; corners come from corners[ring]
+ * (reduce_corners).
+ *
+ * Range: count; every patch. */
+__kernel void reduce_second_step(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, int count,
+                                 __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
+                                 __global const int4 *restrict patch_across, __global const PatchEdge *edges,
+                                 __global const float4 *restrict corners)
+{
+  PATCH_ITEM((__global const int *)0, count, NO_SKIP);
+  const int4 ps = patch_sides[p], pr = patch_rings[p];
+  PREFETCH_ACROSS_AHEAD(src, sg, patch_across, (__global const int *)0, item, count);
+  FrameSteps fp[4], fq[4];
+  int lo[4];
+#pragma unroll
+  for (int s = 0; s < 4; ++s) {
+    const PatchEdge e = edges[int4_at(ps, s) >> 1];
+    fp[s] = frame_steps(sg, side_frame(e.patch[0], e.side[0], 4));
+    fq[s] = frame_steps(sg, across_frame(max(e.patch[1], 0), e.side[1], 4)); /* read only with a patch across */
+    lo[s] = e.patch[1] >= 0 ? -2 : 0;
+  }
+  float4 acc[5]; /* the sides, then the inside */
+#pragma unroll
+  for (int k = 0; k < 5; ++k)
+    acc[k] = (float4)(0.0f);
+#pragma unroll
+  for (int b = -2; b <= 2; ++b) {
+    float4 row[5];
+#pragma unroll
+    for (int k = 0; k < 5; ++k)
+      row[k] = (float4)(0.0f);
+#pragma unroll
+    for (int a = -2; a <= 2; ++a) {
+#pragma unroll
+      for (int s = 0; s < 4; ++s)
+        row[s] += BINOMIAL5(a) * (b >= 0 ? STEPS_LOAD(src, fp[s], 2 + a, b) : STEPS_LOAD(src, fq[s], 2 + a, b));
+      row[4] += BINOMIAL5(a) * ATLAS_LOAD(src, sg, p, (int2)(2 + a, 2 + b));
+    }
+#pragma unroll
+    for (int s = 0; s < 4; ++s)
+      if (b >= lo[s] && b <= -lo[s])
+        acc[s] += (lo[s] < 0 ? BINOMIAL5(b) : 1.0f) * row[s];
+    acc[4] += BINOMIAL5(b) * row[4];
+  }
+#pragma unroll
+  for (int c = 0; c < 4; ++c) {
+    const Frame f = side_frame(p, c, 2);
+    ATLAS_STORE(dst, dg, p, f.o, corners[int4_at(pr, c)]);
+    ATLAS_STORE(dst, dg, p, f.o + f.dt, acc[c]);
+  }
+  ATLAS_STORE(dst, dg, p, (int2)(1, 1), acc[4]);
+}
+
 /* Range: #rings; each ring's corner into corners[ring], or with `corners`
  * null every copy of it into its tile. */
 __kernel void reduce_corners(ATLAS_IN src, ATLAS_OUT dst, __global const CornerRing *rings,

@@ -59,6 +59,7 @@ AtlasEvaluator::AtlasEvaluator(Runtime& runtime, const AtlasTables& tables, Atla
   reduce_edge_walks_ = cl::Kernel(program, "reduce_edge_walks");
   reduce_patches_ = cl::Kernel(program, "reduce_patches");
   reduce_corners_ = cl::Kernel(program, "reduce_corners");
+  reduce_second_step_ = cl::Kernel(program, "reduce_second_step");
 
   const AtlasTopology& topo = tables_.topology();
   const cl::Context& context = runtime_.context();
@@ -173,11 +174,17 @@ void AtlasEvaluator::reduce(int level, const cl::Memory& in, const cl::Memory& o
   const int edges = int(topo.edges.size()), rings = int(topo.rings.size()), patches = topo.patch_count;
   const LevelLayout s = level_layout(patches, level), d = level_layout(patches, level - 1);
   if (patch_items_) { // sides and corners into the compact arrays, then whole tiles
-    if (d.n > 1)
+    const bool second_step = d.n == 2; // its sides in the per-patch kernel
+    if (d.n > 1 && !second_step)
       launch(q, reduce_edge_walks_, range1d(edges), kLocal1D, in, side_work_, tables_.edges(), edges, grid(s),
              grid(d));
     launch(q, reduce_corners_, range1d(rings), kLocal1D, in, out, tables_.rings(), tables_.slots(), rings, grid(s),
            grid(d), corner_work_);
+    if (second_step) {
+      launch(q, reduce_second_step_, range1d(patches), kLocal1D, in, out, grid(s), grid(d), patches,
+             tables_.patch_sides(), tables_.patch_rings(), tables_.patch_across(), tables_.edges(), corner_work_);
+      return;
+    }
     launch(q, reduce_patches_, range1d(patches), kLocal1D, in, out, grid(s), grid(d), patches,
            tables_.patch_sides(), tables_.patch_rings(), side_work_, corner_work_);
     return;

@@ -86,7 +86,8 @@ private:
   cl::Kernel subdivide_tiles_, subdivide_patches_, subdivide_edges_, subdivide_corners_, subdivide_corner_levels_;
   cl::Kernel subdivide_first_step_, subdivide_second_step_;
   cl::Kernel limit_tiles_, limit_patches_, limit_edges_, limit_corners_, patch_bounds_;
-  cl::Kernel reduce_interior_, reduce_edges_, reduce_edge_walks_, reduce_corners_, reduce_patches_;
+  cl::Kernel reduce_interior_, reduce_edges_, reduce_edge_walks_, reduce_corners_, reduce_patches_,
+      reduce_second_step_;
   cl::Kernel flag_corners_, flag_ring_patches_, flag_borders_;
   cl::Buffer side_work_, corner_work_;
   int corner_layers_ = 2; // float4 per ring in corner_work_
