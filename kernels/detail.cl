@@ -145,6 +145,28 @@ TEXEL_INLINE Lanes load_lanes(ATLAS_IN a, int2 g, int8 patch, int2 ij)
   return r;
 }
 
+/* The inverse of load_lanes(): texel ij of the patches `patch` set to
+ * (x, y, z, 0), lane by lane, from two rounds of shuffles and eight
+ * 16-byte stores. */
+TEXEL_INLINE void store_lanes(__global float4 *out, int2 g, int8 patch, int2 ij, float8 x, float8 y, float8 z)
+{
+  const float8 zero = (float8)(0.0f);
+  const uint8 lo = (uint8)(0, 8, 1, 9, 2, 10, 3, 11), hi = (uint8)(4, 12, 5, 13, 6, 14, 7, 15);
+  const float8 xy0 = shuffle2(x, y, lo), xy1 = shuffle2(x, y, hi);
+  const float8 zw0 = shuffle2(z, zero, lo), zw1 = shuffle2(z, zero, hi);
+  const uint8 first = (uint8)(0, 1, 8, 9, 2, 3, 10, 11), second = (uint8)(4, 5, 12, 13, 6, 7, 14, 15);
+  const float8 l01 = shuffle2(xy0, zw0, first), l23 = shuffle2(xy0, zw0, second);
+  const float8 l45 = shuffle2(xy1, zw1, first), l67 = shuffle2(xy1, zw1, second);
+  out[PATCH_MAJOR_INDEX(g, patch.s0, ij)] = l01.lo;
+  out[PATCH_MAJOR_INDEX(g, patch.s1, ij)] = l01.hi;
+  out[PATCH_MAJOR_INDEX(g, patch.s2, ij)] = l23.lo;
+  out[PATCH_MAJOR_INDEX(g, patch.s3, ij)] = l23.hi;
+  out[PATCH_MAJOR_INDEX(g, patch.s4, ij)] = l45.lo;
+  out[PATCH_MAJOR_INDEX(g, patch.s5, ij)] = l45.hi;
+  out[PATCH_MAJOR_INDEX(g, patch.s6, ij)] = l67.lo;
+  out[PATCH_MAJOR_INDEX(g, patch.s7, ij)] = l67.hi;
+}
+
 TEXEL_INLINE Lanes lanes_sub(Lanes a, Lanes b)
 {
   Lanes r;
@@ -209,7 +231,7 @@ __kernel void encode_patches(ATLAS_IN fine, ATLAS_IN smooth, int2 g, int count, 
         longest = max(longest, lanes_dot(across, across));
       }
       const int bit = part_bit(ij, n);
-      const int8 stored = valid & (bit == 0 ? (int8)(-1) : (own & bit) != 0);
+      const int8 owner = bit == 0 ? (int8)(-1) : (own & bit) != 0, stored = valid & owner;
       if (any(stored)) {
         /* detail_frame()'s clamped differences, frame_of()'s usual case. */
         const Lanes up = j < n ? load_lanes(smooth, g, patch, (int2)(i, j + 1)) : here;
@@ -222,21 +244,22 @@ __kernel void encode_patches(ATLAS_IN fine, ATLAS_IN smooth, int2 g, int count, 
         const Lanes tan = lanes_scale(d0, rsqrt(squares_d0));
         const Lanes bin = lanes_cross(nrm, tan);
         const Lanes d = lanes_sub(fine_here, here);
-        float e0[PATCH_LANES], e1[PATCH_LANES], e2[PATCH_LANES];
-        int st[PATCH_LANES], us[PATCH_LANES], pa[PATCH_LANES];
-        vstore8(lanes_dot(d, tan), 0, e0);
-        vstore8(lanes_dot(d, bin), 0, e1);
-        vstore8(lanes_dot(d, nrm), 0, e2);
-        vstore8(stored, 0, st);
-        vstore8(usual, 0, us);
-        vstore8(patch, 0, pa);
-        for (int l = 0; l < PATCH_LANES; ++l)
-          if (st[l]) {
-            if (us[l])
-              details[PATCH_MAJOR_INDEX(g, pa[l], ij)] = (float4)(e0[l], e1[l], e2[l], 0.0f);
-            else
+        /* Every lane's texel stored in one go, a copy that another patch
+         * holds as the 0 it already has; lanes past the end repeat the
+         * last patch's values. Degenerate frames are then done again. */
+        const int8 zeroed = ~owner;
+        const float8 zero = (float8)(0.0f);
+        store_lanes(details, g, patch, ij, select(lanes_dot(d, tan), zero, zeroed),
+                    select(lanes_dot(d, bin), zero, zeroed), select(lanes_dot(d, nrm), zero, zeroed));
+        const int8 again = stored & ~usual;
+        if (any(again)) {
+          int redo[PATCH_LANES], pa[PATCH_LANES];
+          vstore8(again, 0, redo);
+          vstore8(patch, 0, pa);
+          for (int l = 0; l < PATCH_LANES; ++l)
+            if (redo[l])
               encode_texel(fine, smooth, g, pa[l], ij, details);
-          }
+        }
       }
       left = here;
       here = right;
