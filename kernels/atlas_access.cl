@@ -81,7 +81,6 @@ inline Frame across_frame(int patch, int side, int n)
   return f;
 }
 
-
 /* A frame as a texel and two steps. FRAME_LOAD goes through it, and a
  * kernel that reads many texels of one frame keeps it (reduce_second_step):
  * the index arithmetic once, not per load. */
