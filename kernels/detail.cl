@@ -247,10 +247,9 @@ __kernel void encode_patches(ATLAS_IN fine, ATLAS_IN smooth, int2 g, int count, 
         /* Every lane's texel stored in one go, a copy that another patch
          * holds as the 0 it already has; lanes past the end repeat the
          * last patch's values. Degenerate frames are then done again. */
-        const int8 zeroed = ~owner;
         const float8 zero = (float8)(0.0f);
-        store_lanes(details, g, patch, ij, select(lanes_dot(d, tan), zero, zeroed),
-                    select(lanes_dot(d, bin), zero, zeroed), select(lanes_dot(d, nrm), zero, zeroed));
+        store_lanes(details, g, patch, ij, select(zero, lanes_dot(d, tan), owner),
+                    select(zero, lanes_dot(d, bin), owner), select(zero, lanes_dot(d, nrm), owner));
         const int8 again = stored & ~usual;
         if (any(again)) {
           int redo[PATCH_LANES], pa[PATCH_LANES];
