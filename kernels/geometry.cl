@@ -58,6 +58,21 @@ __kernel void dab_weights(ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g, __glob
     dab_weight(limit_pos, limit_nrm, g, p, ij, a, dab, unfold, stamp, material, masked, gm, stride, outside);
 }
 
+/* Range: count; the same with a work item per patch (see
+ * FOR_EACH_PATCH_TEXEL): at a coarse edit level a tile has 4 or 9 texels,
+ * and a work item per texel spent more on its indices than on its weight. */
+__kernel void dab_weights_patches(ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g, __global const int *restrict list,
+                                  int count, __global const BrushDab *restrict dab,
+                                  __global const PatchUnfolding *restrict unfold, __global const float *restrict stamp,
+                                  __global const float4 *restrict material, int masked, int2 gm, int stride,
+                                  __global const uchar *restrict outside, __global float *restrict weights)
+{
+  FOR_EACH_PATCH_TEXEL(g, list, count,
+                       weights[WEIGHT_INDEX(g, p, ij)] = dab_weight(limit_pos, limit_nrm, g, p, ij, patch_item, dab,
+                                                                    unfold, stamp, material, masked, gm, stride,
+                                                                    outside));
+}
+
 /* Range: (tile, tile * count). Copies whole tiles of the listed patches. */
 __kernel void copy_tiles(ATLAS_IN src, ATLAS_OUT dst, int2 g, __global const int *list, int count)
 {
@@ -192,26 +207,40 @@ __kernel void move_points(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_nrm, int2 
                             amount, centre, centre_normal));
 }
 
-/* Range: (tile, tile * count). dab_weights and move_points in one pass, at
- * the painting level, for a move whose weights nothing else reads (sculpt,
- * inflate, flatten): the weights are not stored. The same bits as the two.
+/* Range: count; move_points with a work item per patch. */
+__kernel void move_points_patches(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_nrm, int2 g, __global const int *list,
+                                  int count, __global const float *weights, int mode, float amount, float4 centre,
+                                  float4 centre_normal)
+{
+  FOR_EACH_PATCH_TEXEL(g, list, count,
+                       ATLAS_STORE(dst, g, p, ij,
+                                   moved_point(ATLAS_LOAD(src, g, p, ij), weights[WEIGHT_INDEX(g, p, ij)], limit_nrm,
+                                               g, p, ij, mode, amount, centre, centre_normal)));
+}
+
+/* Range: (tile, tile * count). dab_weights and move_points in one pass,
+ * for a move whose weights nothing else reads (sculpt, inflate, flatten;
+ * at a coarse edit level too, with dab_weights' gm, stride and outside):
+ * the weights are not stored. The same bits as the two.
  * `plain` (a ball with no stamp and no mask, the usual sculpt) takes the
  * weight from the arguments after it, without dab_weight's reads of the
  * dab: a third of the kernel's time. */
 TEXEL_INLINE void move_texel(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g, int p,
                              int2 ij, int a, __global const BrushDab *restrict dab,
                              __global const PatchUnfolding *restrict unfold, __global const float *restrict stamp,
-                             __global const float4 *restrict material, int masked, int mode, float amount,
-                             float4 centre, float4 centre_normal, int plain, float radius, int falloff, float strength)
+                             __global const float4 *restrict material, int masked, int2 gm, int stride,
+                             __global const uchar *restrict outside, int mode, float amount, float4 centre,
+                             float4 centre_normal, int plain, float radius, int falloff, float strength)
 {
   float w;
   if (plain) {
     /* dab_weight's own sums for a ball with no stamp or mask: the same bits */
     const float3 d = ATLAS_LOAD(limit_pos, g, p, ij).xyz - centre.xyz;
     const float t = sqrt(dot(d, d)) / radius;
-    w = t <= 1.0f ? falloff_weight(falloff, t) * strength : 0.0f;
+    const int kept = outside && (outside[a] & texel_border(ij, g.x - 1));
+    w = t <= 1.0f && !kept ? falloff_weight(falloff, t) * strength : 0.0f;
   } else {
-    w = dab_weight(limit_pos, limit_nrm, g, p, ij, a, dab, unfold, stamp, material, masked, g, 1, 0);
+    w = dab_weight(limit_pos, limit_nrm, g, p, ij, a, dab, unfold, stamp, material, masked, gm, stride, outside);
   }
   ATLAS_STORE(dst, g, p, ij,
               moved_point(ATLAS_LOAD(src, g, p, ij), w, limit_nrm, g, p, ij, mode, amount, centre, centre_normal));
@@ -220,28 +249,29 @@ TEXEL_INLINE void move_texel(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_pos, AT
 __kernel void move_dab(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g,
                        __global const int *restrict list, int count, __global const BrushDab *restrict dab,
                        __global const PatchUnfolding *restrict unfold, __global const float *restrict stamp,
-                       __global const float4 *restrict material, int masked, int mode, float amount, float4 centre,
+                       __global const float4 *restrict material, int masked, int2 gm, int stride,
+                       __global const uchar *restrict outside, int mode, float amount, float4 centre,
                        float4 centre_normal, int plain, float radius, int falloff, float strength)
 {
   int p;
   int2 ij;
   if (tile_texel(g, list, count, &p, &ij))
     move_texel(src, dst, limit_pos, limit_nrm, g, p, ij, get_global_id(1) / g.x, dab, unfold, stamp, material,
-               masked, mode, amount, centre, centre_normal, plain, radius, falloff, strength);
+               masked, gm, stride, outside, mode, amount, centre, centre_normal, plain, radius, falloff, strength);
 }
 
 /* Range: count; the same with a work item per patch (see FOR_EACH_PATCH_TEXEL). */
 __kernel void move_dab_patches(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g,
                                __global const int *restrict list, int count, __global const BrushDab *restrict dab,
                                __global const PatchUnfolding *restrict unfold, __global const float *restrict stamp,
-                               __global const float4 *restrict material, int masked, int mode, float amount,
-                               float4 centre, float4 centre_normal, int plain, float radius, int falloff,
-                               float strength)
+                               __global const float4 *restrict material, int masked, int2 gm, int stride,
+                               __global const uchar *restrict outside, int mode, float amount, float4 centre,
+                               float4 centre_normal, int plain, float radius, int falloff, float strength)
 {
   FOR_EACH_PATCH_TEXEL(g, list, count,
                        move_texel(src, dst, limit_pos, limit_nrm, g, p, ij, patch_item, dab, unfold, stamp,
-                                  material, masked, mode, amount, centre, centre_normal, plain, radius, falloff,
-                                  strength));
+                                  material, masked, gm, stride, outside, mode, amount, centre, centre_normal, plain,
+                                  radius, falloff, strength));
 }
 
 /* Range: (tile, tile * count). Copies the listed patches' tiles of a layer

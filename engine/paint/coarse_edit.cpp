@@ -35,8 +35,8 @@ std::vector<int> CoarseEdits::prepare(const DabContext& context, const std::vect
     encode_ms_ += encoding.ms();
   }
   // The edit level's limit, which the weights stand on, is computed on
-  // the device while the host works out what the edit reaches (and, in
-  // weigh_dab(), which sides it shares): neither waits for the other.
+  // the device while the host works out what the edit reaches (and, for
+  // the weights, which sides it shares): neither waits for the other.
   context.hooks.phase_done(&StepPhases::record); // the encoding, if any
   if (reweigh) {
     s.multires->compute_base_limit(patches);

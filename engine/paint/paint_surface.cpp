@@ -44,7 +44,9 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     d.brush_reach = cl::Kernel(d.positions.program, "brush_reach");
     d.paint_dab = cl::Kernel(d.positions.program, "paint_dab");
     d.dab_weights = cl::Kernel(d.positions.program, "dab_weights");
+    d.dab_weights_patches = cl::Kernel(d.positions.program, "dab_weights_patches");
     d.move_points = cl::Kernel(d.positions.program, "move_points");
+    d.move_points_patches = cl::Kernel(d.positions.program, "move_points_patches");
     d.move_dab = cl::Kernel(d.positions.program, "move_dab");
     d.move_dab_patches = cl::Kernel(d.positions.program, "move_dab_patches");
     d.dab_pickup = cl::Kernel(d.positions.program, "dab_pickup");

@@ -27,10 +27,10 @@ void reshape_dab(const DabContext& context, CoarseEdits& coarse, const std::vect
   context.hooks.phase_done(&StepPhases::record);
   const cl::Buffer list = device_ints(s.atlas.runtime().context(), patches);
   const bool moves = tool_family(stroke) == ToolFamily::Move;
-  // A move at the painting level weighs as it moves (move_dab); the
-  // weights are kept only where something reads them again: a grab's later
-  // dabs, smoothing passes, a coarse edit.
-  const bool weigh_as_moved = moves && !at_coarse && stroke.tool != Tool::Grab;
+  // A move weighs as it moves (move_dab), at any level; the weights are
+  // kept only where something reads them again: a grab's later dabs and
+  // smoothing passes.
+  const bool weigh_as_moved = moves && stroke.tool != Tool::Grab;
   if (reweigh && !weigh_as_moved)
     weigh_dab(context, patches, list, dab, level);
   context.hooks.phase_done(&StepPhases::weights);

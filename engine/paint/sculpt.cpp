@@ -9,6 +9,41 @@
 
 namespace meshpaint {
 
+namespace {
+
+//! What the weights at `level` read besides the dab's own fields: the dab
+//! with its parameter space counted in that level's texels, and at a
+//! coarser edit level the patches' sides shared with others, which stay
+//! put (their copies there would not move with them).
+struct LevelDab
+{
+  int stride = 1;
+  cl::Buffer outside; // null at the painting level
+};
+
+LevelDab upload_dab(const DabContext& context, const std::vector<int>& patches, const BrushDab& dab, int level)
+{
+  const PaintState& s = context.state;
+  Runtime& rt = s.atlas.runtime();
+  LevelDab out;
+  out.stride = s.layout().n / s.atlas.layout(level).n;
+  // The outside bits first: the blocking write below waits for the kernels
+  // queued before it (a coarse edit's limit), which run meanwhile.
+  if (level < s.level) {
+    std::vector<std::uint8_t> bits = s.atlas.shared_outside(patches);
+    bits.resize(std::max<std::size_t>(1, bits.size())); // a valid argument when empty
+    out.outside = cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bits.size(), bits.data());
+  }
+  BrushDab at_level = dab; // parameter space counts texels of the level
+  for (float& c : at_level.centre_texel)
+    c /= float(out.stride);
+  at_level.texel_size *= float(out.stride);
+  rt.queue().enqueueWriteBuffer(s.device.dab, CL_TRUE, 0, sizeof at_level, &at_level);
+  return out;
+}
+
+} // namespace
+
 void weigh_dab(const DabContext& context, const std::vector<int>& patches, const cl::Buffer& list, const BrushDab& dab,
                int level)
 {
@@ -17,29 +52,15 @@ void weigh_dab(const DabContext& context, const std::vector<int>& patches, const
   // reach the sides they share with other patches: those stay put.
   const PaintState& s = context.state;
   PaintDevice& d = s.device;
-  Runtime& rt = s.atlas.runtime();
-  const LevelLayout f = s.layout(), l = s.atlas.layout(level);
+  const LevelLayout l = s.atlas.layout(level);
   const bool coarse = level < s.level;
-  const int stride = f.n / l.n;
-  // The outside bits first: the blocking write below waits for the kernels
-  // queued before it (a coarse edit's limit), which run meanwhile.
-  cl::Buffer outside;
-  if (coarse) {
-    std::vector<std::uint8_t> bits = s.atlas.shared_outside(patches);
-    bits.resize(std::max<std::size_t>(1, bits.size())); // a valid argument when empty
-    outside = cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bits.size(), bits.data());
-  }
-  BrushDab at_level = dab; // parameter space counts texels of the level
-  for (float& c : at_level.centre_texel)
-    c /= float(stride);
-  at_level.texel_size *= float(stride);
-  rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof at_level, &at_level);
+  const LevelDab at = upload_dab(context, patches, dab, level);
   const int count = int(patches.size());
-  const auto tiles = range_tiles(l, count);
-  launch(rt.queue(), d.dab_weights, tiles.first, tiles.second,
+  const Atlas::TileLaunch t = s.atlas.tile_launch(d.dab_weights, d.dab_weights_patches, l, count);
+  launch(s.atlas.runtime().queue(), t.kernel, t.global, t.local,
          coarse ? s.multires->base_positions() : s.atlas.limit_positions_layer(),
          coarse ? s.multires->base_normals() : s.atlas.limit_normals_layer(), grid(l), list, count, d.dab, d.unfold,
-         d.stamp, context.material(), cl_int(context.mask_painted), grid(f), stride, outside,
+         d.stamp, context.material(), cl_int(context.mask_painted), grid(s.layout()), at.stride, at.outside,
          coarse ? s.multires->base_weights() : d.weights);
 }
 
@@ -59,20 +80,22 @@ void move_dab(const DabContext& context, const std::vector<int>& patches, const 
   const cl::Memory& pos = s.atlas.level_layer(level);
   const bool in_place = s.atlas.storage() == AtlasStorage::Buffer; // see geometry.cl
   const cl::Memory& moved = in_place ? pos : d.position_work;
+  const cl::Memory& limit = coarse ? s.multires->base_positions() : s.atlas.limit_positions_layer();
   const cl::Memory& normals = coarse ? s.multires->base_normals() : s.atlas.limit_normals_layer();
   const cl_float4 centre{{dab.centre[0], dab.centre[1], dab.centre[2], 0.f}};
   const cl_float4 step{{towards[0], towards[1], towards[2], 0.f}};
   const auto tiles = range_tiles(l, count);
   if (weigh_as_moved) {
     const bool plain = dab.space == SPACE_OBJECT && dab.stamp_size[0] == 0 && !context.mask_painted;
-    q.enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
+    const LevelDab at = upload_dab(context, patches, dab, level);
     const Atlas::TileLaunch t = s.atlas.tile_launch(d.move_dab, d.move_dab_patches, l, count);
-    launch(q, t.kernel, t.global, t.local, pos, moved, s.atlas.limit_positions_layer(), normals, grid(l), list,
-           count, d.dab, d.unfold, d.stamp, context.material(), cl_int(context.mask_painted), mode, amount, centre,
-           step, cl_int(plain), dab.radius, cl_int(dab.falloff), dab.strength);
+    launch(q, t.kernel, t.global, t.local, pos, moved, limit, normals, grid(l), list, count, d.dab, d.unfold, d.stamp,
+           context.material(), cl_int(context.mask_painted), grid(s.layout()), at.stride, at.outside, mode, amount,
+           centre, step, cl_int(plain), dab.radius, cl_int(dab.falloff), dab.strength);
   } else {
-    launch(q, d.move_points, tiles.first, tiles.second, pos, moved, normals, grid(l), list, count, weights, mode,
-           amount, centre, step);
+    const Atlas::TileLaunch t = s.atlas.tile_launch(d.move_points, d.move_points_patches, l, count);
+    launch(q, t.kernel, t.global, t.local, pos, moved, normals, grid(l), list, count, weights, mode, amount, centre,
+           step);
   }
   if (!in_place)
     launch(q, d.positions.copy_tiles, tiles.first, tiles.second, d.position_work, pos, grid(l), list, count);
