@@ -251,6 +251,39 @@ std::vector<std::vector<Float4>> after_fine_and_coarse_sculpts(PaintSurface& sur
           surface.atlas().read_limit_normals()};
 }
 
+TEST(GeometryBrush, PatchItemsAndTexelItemsGiveTheSameBitsForKeptWeights)
+{
+  // A grab and a smoothing pass at an edit level keep their weights
+  // (dab_weights, then move_points or the smoothing): both forms of those.
+  std::vector<std::vector<Float4>> results;
+  for (const bool per_patch : {true, false}) {
+    PaintSurface surface(test::runtime(), test::genus_two(), 4, AtlasStorage::Buffer);
+    surface.atlas().set_patch_items(per_patch);
+    Stroke grab = brush(Tool::Grab, {1.5f, 0.5f, 1.f}, 0.7f);
+    grab.brush.falloff = FALLOFF_SMOOTHSTEP;
+    grab.points.push_back({1.5f, 0.5f, 1.3f});
+    grab.set_edit_level(2);
+    EXPECT_GT(surface.apply(grab).dabs_applied, 0u);
+    Stroke smooth = brush(Tool::Smooth, {0.5f, 0.5f, 1.f}, 0.7f);
+    smooth.set_edit_level(2);
+    EXPECT_GT(surface.apply(smooth).dabs_applied, 0u);
+    results.push_back(surface.atlas().read_positions(2));
+    results.push_back(surface.atlas().read_positions(4));
+  }
+  ASSERT_EQ(results.size(), 4u);
+  for (const std::size_t k : {0u, 1u})
+    EXPECT_EQ(std::memcmp(results[k].data(), results[k + 2].data(), results[k].size() * sizeof(Float4)), 0)
+      << "layer " << k;
+  EXPECT_NE(std::memcmp(results[1].data(),
+                        PaintSurface(test::runtime(), test::genus_two(), 4, AtlasStorage::Buffer)
+                          .atlas()
+                          .read_positions(4)
+                          .data(),
+                        results[1].size() * sizeof(Float4)),
+            0)
+    << "the strokes moved nothing";
+}
+
 void expect_same_bits(const std::vector<std::vector<Float4>>& a, const std::vector<std::vector<Float4>>& b,
                       const std::string& what)
 {
