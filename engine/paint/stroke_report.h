@@ -13,8 +13,8 @@ struct StepPhases
 {
   double place = 0;     //!< snapping, culling, reach and the flood (brush_patches)
   double record = 0;    //!< the undo snapshot, and a coarse edit's encoding of details
-  double weights = 0;   //!< dab_weights (a coarse edit's: with the edit level's limit); none for
-                        //!< sculpt, inflate, flatten at the painting level, which weigh as they move
+  double weights = 0;   //!< dab_weights, and a coarse edit's edit-level limit; no weights for
+                        //!< sculpt, inflate, flatten at any level, which weigh as they move
   double transform = 0; //!< the move (with its weights: move_dab), the smoothing passes or paint_dab
   double rebuild = 0;   //!< a coarse edit: subdivision to the finest level and decoding
   double lists = 0;     //!< the corner neighbourhood and its patch set (host)
