@@ -6,6 +6,7 @@
 
 #include <algorithm> // for std::max
 #include <cstdint>   // for std::uint8_t
+#include <utility>   // for std::pair
 
 namespace meshpaint {
 
@@ -20,6 +21,15 @@ struct LevelDab
   int stride = 1;
   cl::Buffer outside; // null at the painting level
 };
+
+//! The limit positions and normals the weights at `level` stand on: the
+//! painting level's, or a coarser edit level's in Multires.
+std::pair<const cl::Memory&, const cl::Memory&> level_limit(const PaintState& s, int level)
+{
+  if (level < s.level)
+    return {s.multires->base_positions(), s.multires->base_normals()};
+  return {s.atlas.limit_positions_layer(), s.atlas.limit_normals_layer()};
+}
 
 LevelDab upload_dab(const DabContext& context, const std::vector<int>& patches, const BrushDab& dab, int level)
 {
@@ -55,13 +65,12 @@ void weigh_dab(const DabContext& context, const std::vector<int>& patches, const
   const LevelLayout l = s.atlas.layout(level);
   const bool coarse = level < s.level;
   const LevelDab at = upload_dab(context, patches, dab, level);
+  const auto limit = level_limit(s, level);
   const int count = int(patches.size());
   const Atlas::TileLaunch t = s.atlas.tile_launch(d.dab_weights, d.dab_weights_patches, l, count);
-  launch(s.atlas.runtime().queue(), t.kernel, t.global, t.local,
-         coarse ? s.multires->base_positions() : s.atlas.limit_positions_layer(),
-         coarse ? s.multires->base_normals() : s.atlas.limit_normals_layer(), grid(l), list, count, d.dab, d.unfold,
-         d.stamp, context.material(), cl_int(context.mask_painted), grid(s.layout()), at.stride, at.outside,
-         coarse ? s.multires->base_weights() : d.weights);
+  launch(s.atlas.runtime().queue(), t.kernel, t.global, t.local, limit.first, limit.second, grid(l), list, count,
+         d.dab, d.unfold, d.stamp, context.material(), cl_int(context.mask_painted), grid(s.layout()), at.stride,
+         at.outside, coarse ? s.multires->base_weights() : d.weights);
 }
 
 void move_dab(const DabContext& context, const std::vector<int>& patches, const cl::Buffer& list, const BrushDab& dab,
@@ -71,7 +80,6 @@ void move_dab(const DabContext& context, const std::vector<int>& patches, const 
   PaintDevice& d = s.device;
   cl::CommandQueue& q = s.atlas.runtime().queue();
   const LevelLayout l = s.atlas.layout(level);
-  const bool coarse = level < s.level;
   const int count = int(patches.size());
   const int mode = stroke.tool == Tool::Inflate ? MOVE_INFLATE : stroke.tool == Tool::Flatten ? MOVE_FLATTEN
                                                                                                : MOVE_SCULPT;
@@ -80,8 +88,7 @@ void move_dab(const DabContext& context, const std::vector<int>& patches, const 
   const cl::Memory& pos = s.atlas.level_layer(level);
   const bool in_place = s.atlas.storage() == AtlasStorage::Buffer; // see geometry.cl
   const cl::Memory& moved = in_place ? pos : d.position_work;
-  const cl::Memory& limit = coarse ? s.multires->base_positions() : s.atlas.limit_positions_layer();
-  const cl::Memory& normals = coarse ? s.multires->base_normals() : s.atlas.limit_normals_layer();
+  const auto [limit, normals] = level_limit(s, level);
   const cl_float4 centre{{dab.centre[0], dab.centre[1], dab.centre[2], 0.f}};
   const cl_float4 step{{towards[0], towards[1], towards[2], 0.f}};
   const auto tiles = range_tiles(l, count);
