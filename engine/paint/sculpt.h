@@ -22,8 +22,8 @@ void weigh_dab(const DabContext& context, const std::vector<int>& patches, const
 //! Moves the control points of `level` on `patches` (`list`) for the
 //! stroke's tool: sculpt and inflate along the normal, flatten towards the
 //! plane at the centre, grab by `towards` (the path's step). With
-//! `weigh_as_moved` (not grab) the kernel weighs as it moves, with
-//! weigh_dab()'s weights and bits; else by `weights` (weigh_dab()'s).
+//! `weigh_as_moved` (not grab) the kernel weighs as it moves, to the bits
+//! weigh_dab() would give; else it moves by `weights` (weigh_dab()'s).
 void move_dab(const DabContext& context, const std::vector<int>& patches, const cl::Buffer& list, const BrushDab& dab,
               const Stroke& stroke, const Vec3& towards, int level, bool weigh_as_moved, const cl::Buffer& weights);
 
