@@ -26,7 +26,12 @@
  * unfold: as for paint_dab, one per listed patch; its maps hold at any level.
  * outside (or null): per listed patch, the sides and corners it shares with
  * unlisted patches (bits as texel_border); their texels weigh 0, since their
- * copies there would not move with them. */
+ * copies there would not move with them (held()). */
+TEXEL_INLINE int held(__global const uchar *restrict outside, int a, int2 ij, int n)
+{
+  return outside && (outside[a] & texel_border(ij, n));
+}
+
 TEXEL_INLINE float dab_weight(ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g, int p, int2 ij, int a,
                               __global const BrushDab *restrict dab, __global const PatchUnfolding *restrict unfold,
                               __global const float *restrict stamp, __global const float4 *restrict material,
@@ -35,8 +40,7 @@ TEXEL_INLINE float dab_weight(ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g, in
   const float3 x = ATLAS_LOAD(limit_pos, g, p, ij).xyz;
   float2 plane;
   const float t = brush_t(dab, unfold, a, x, BRUSH_NORMAL(dab, limit_nrm, g, p, ij), ij, g.x - 1, &plane);
-  const int kept = outside && (outside[a] & texel_border(ij, g.x - 1));
-  return t <= 1.0f && !kept ? falloff_weight(dab->falloff, t) * dab->strength *
+  return t <= 1.0f && !held(outside, a, ij, g.x - 1) ? falloff_weight(dab->falloff, t) * dab->strength *
                                 (masked ? 1.0f - material[WEIGHT_INDEX(gm, p, ij * stride)].w : 1.0f) *
                                 stamp_weight(dab, stamp, plane)
                             : 0.0f;
@@ -195,6 +199,16 @@ TEXEL_INLINE float4 moved_point(float4 x, float w, ATLAS_IN limit_nrm, int2 g, i
   return x;
 }
 
+/* Texel ij of p moved by its stored weight. */
+TEXEL_INLINE void move_by_weight(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_nrm, int2 g, int p, int2 ij,
+                                 __global const float *weights, int mode, float amount, float4 centre,
+                                 float4 centre_normal)
+{
+  ATLAS_STORE(dst, g, p, ij,
+              moved_point(ATLAS_LOAD(src, g, p, ij), weights[WEIGHT_INDEX(g, p, ij)], limit_nrm, g, p, ij, mode,
+                          amount, centre, centre_normal));
+}
+
 __kernel void move_points(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_nrm, int2 g, __global const int *list,
                           int count, __global const float *weights, int mode, float amount, float4 centre,
                           float4 centre_normal)
@@ -202,9 +216,7 @@ __kernel void move_points(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_nrm, int2 
   int p;
   int2 ij;
   if (tile_texel(g, list, count, &p, &ij))
-    ATLAS_STORE(dst, g, p, ij,
-                moved_point(ATLAS_LOAD(src, g, p, ij), weights[WEIGHT_INDEX(g, p, ij)], limit_nrm, g, p, ij, mode,
-                            amount, centre, centre_normal));
+    move_by_weight(src, dst, limit_nrm, g, p, ij, weights, mode, amount, centre, centre_normal);
 }
 
 /* Range: count; move_points with a work item per patch. */
@@ -213,9 +225,7 @@ __kernel void move_points_patches(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_nr
                                   float4 centre_normal)
 {
   FOR_EACH_PATCH_TEXEL(g, list, count,
-                       ATLAS_STORE(dst, g, p, ij,
-                                   moved_point(ATLAS_LOAD(src, g, p, ij), weights[WEIGHT_INDEX(g, p, ij)], limit_nrm,
-                                               g, p, ij, mode, amount, centre, centre_normal)));
+                       move_by_weight(src, dst, limit_nrm, g, p, ij, weights, mode, amount, centre, centre_normal));
 }
 
 /* Range: (tile, tile * count). dab_weights and move_points in one pass,
@@ -237,8 +247,7 @@ TEXEL_INLINE void move_texel(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_pos, AT
     /* dab_weight's own sums for a ball with no stamp or mask: the same bits */
     const float3 d = ATLAS_LOAD(limit_pos, g, p, ij).xyz - centre.xyz;
     const float t = sqrt(dot(d, d)) / radius;
-    const int kept = outside && (outside[a] & texel_border(ij, g.x - 1));
-    w = t <= 1.0f && !kept ? falloff_weight(falloff, t) * strength : 0.0f;
+    w = t <= 1.0f && !held(outside, a, ij, g.x - 1) ? falloff_weight(falloff, t) * strength : 0.0f;
   } else {
     w = dab_weight(limit_pos, limit_nrm, g, p, ij, a, dab, unfold, stamp, material, masked, gm, stride, outside);
   }
