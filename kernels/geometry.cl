@@ -133,7 +133,8 @@ __kernel void welded_scatter(__global const float4 *restrict welded, ATLAS_OUT l
 /* Range: count; one patch corner each (list[k], or k with a null list). Its
  * ring's neighbours are summed one after another; two neighbours: a border
  * corner, smoothed along the border; none: the corner of a single face,
- * which stays. */
+ * which stays. Rings of three and four (the face and edge points of a
+ * triangle base) are summed spelt out, in the loop's order: the same bits. */
 __kernel void welded_smooth_corners(__global const float4 *restrict src, __global float4 *restrict dst,
                                     __global const int *restrict list, int count, __global const int *restrict first,
                                     __global const int *restrict ring, __global const float *restrict weights,
@@ -151,6 +152,10 @@ __kernel void welded_smooth_corners(__global const float4 *restrict src, __globa
     float4 mean;
     if (m == 2) {
       mean = 0.5f * (src[ring[f]] + src[ring[f + 1]]);
+    } else if (m == 3) {
+      mean = ((((float4)(0.0f) + src[ring[f]]) + src[ring[f + 1]]) + src[ring[f + 2]]) / 3.0f;
+    } else if (m == 4) {
+      mean = (((((float4)(0.0f) + src[ring[f]]) + src[ring[f + 1]]) + src[ring[f + 2]]) + src[ring[f + 3]]) / 4.0f;
     } else {
       float4 sum = (float4)(0.0f);
       for (int i = 0; i < m; ++i)

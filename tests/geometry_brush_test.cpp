@@ -117,6 +117,58 @@ TEST(GeometryBrush, WeldedNeighboursAreTheQuadMeshsEdges)
   }
 }
 
+// One pass of Laplacian smoothing over a whole surface moves every welded
+// vertex to x + lambda (mean - x), the mean of its neighbours as the
+// tables give them (in pairs inside and along sides, in ring order at
+// corners of every valence), at each level.
+TEST(GeometryBrush, ALaplacianPassIsTheUmbrellaOfEachVertex)
+{
+  for (const std::string& name : test::shape_names()) {
+    if (name == "two_components") // the brush floods one component only
+      continue;
+    for (int level = 1; level <= 3; ++level) {
+      PaintSurface surface(test::runtime(), test::shape(name), level, AtlasStorage::Buffer);
+      Atlas& atlas = surface.atlas();
+      const LevelLayout l = atlas.layout(level);
+      const WeldedNeighbours w = welded_neighbours(atlas.topology(), l);
+      const WeldedSurface before = weld(atlas.topology(), l, atlas.read_positions(level), nullptr);
+      Stroke s = brush(Tool::Smooth, before.points.front(), 1e4f); // the whole surface, weight 1
+      s.smooth().taubin = false;
+      s.smooth().iterations = 1;
+      const float lambda = s.smooth().lambda;
+      surface.apply(s);
+      const WeldedSurface after = weld(atlas.topology(), l, atlas.read_positions(level), nullptr);
+      ASSERT_EQ(after.points.size(), w.vertices()) << name;
+      float scale = 0.f;
+      for (const Vec3& p : before.points)
+        for (const float c : p)
+          scale = std::max(scale, std::fabs(c));
+      std::map<int, int> valences; // corners checked, by ring size
+      for (std::size_t v = 0; v < w.vertices(); ++v) {
+        std::vector<int> nbrs;
+        if (int(v) < w.edge_base) {
+          nbrs.assign(w.ring.begin() + w.first[v], w.ring.begin() + w.first[v + 1]);
+          ++valences[int(nbrs.size())];
+        } else {
+          const auto& a = w.around[v - std::size_t(w.edge_base)];
+          nbrs.assign(a.begin(), a.end());
+        }
+        for (int c = 0; c < 3; ++c) {
+          const float x = before.points[v][std::size_t(c)];
+          float mean = 0.f;
+          for (const int n : nbrs)
+            mean += before.points[std::size_t(n)][std::size_t(c)];
+          const float want = nbrs.empty() ? x : x + lambda * (mean / float(nbrs.size()) - x);
+          ASSERT_NEAR(after.points[v][std::size_t(c)], want, 1e-5f * scale)
+            << name << " level " << level << " vertex " << v << " of " << nbrs.size() << " neighbours";
+        }
+      }
+      if (level == 2 && name == "high_valence")
+        EXPECT_GE(valences.size(), 3u) << "corners of several valences";
+    }
+  }
+}
+
 TEST(GeometryBrush, SculptMovesTheCentreByAmountAlongTheNormal)
 {
   PaintSurface surface(test::runtime(), test::flat_grid(6), 4, AtlasStorage::Buffer);
