@@ -239,6 +239,25 @@ int remove_stale_temporaries(const std::string& path)
   return removed;
 }
 
+namespace {
+
+//! Puts a written and synced temporary in place of `path`, or stages it
+//! in the batch open on this thread; the temporary goes if that fails.
+void publish(const std::string& tmp, const std::string& path, const std::shared_ptr<InFlight>& in_flight)
+{
+  try {
+    if (AtomicWriteBatch* batch = AtomicWriteBatch::current())
+      batch->stage(tmp, path, in_flight);
+    else
+      rename_over(tmp, path);
+  } catch (...) {
+    ::unlink(tmp.c_str());
+    throw;
+  }
+}
+
+} // namespace
+
 void write_bytes_atomically(const std::string& path, const std::vector<std::string_view>& parts)
 {
   check_folder(path);
@@ -269,15 +288,7 @@ void write_bytes_atomically(const std::string& path, const std::vector<std::stri
     ::unlink(tmp.c_str());
     fail(path, error);
   }
-  try {
-    if (AtomicWriteBatch* batch = AtomicWriteBatch::current())
-      batch->stage(tmp, path, in_flight);
-    else
-      rename_over(tmp, path);
-  } catch (...) {
-    ::unlink(tmp.c_str());
-    throw;
-  }
+  publish(tmp, path, in_flight);
 }
 
 void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write)
@@ -301,10 +312,7 @@ void write_atomically(const std::string& path, const std::function<void(const st
       throw IOError("cannot write '" + path + "'");
     if (const int error = sync_file(tmp))
       fail(path, error);
-    if (AtomicWriteBatch* batch = AtomicWriteBatch::current())
-      batch->stage(tmp, path, in_flight);
-    else
-      rename_over(tmp, path);
+    publish(tmp, path, in_flight);
   } catch (...) {
     ::unlink(tmp.c_str());
     throw;
