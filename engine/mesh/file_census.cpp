@@ -163,6 +163,15 @@ bool unit_number(const std::string& w)
   return end != w.c_str() && end == w.c_str() + w.size() && v >= 0 && v <= 1;
 }
 
+//! An OBJ line's colour words from `first` on, each 0-1 (OpenMesh scales
+//! them by 255 into a byte), else the census's problem.
+void check_colour_words(const std::vector<std::string>& w, std::size_t first, long number, FileCensus& c)
+{
+  for (std::size_t k = first; c.problem.empty() && k < w.size(); ++k)
+    if (!unit_number(w[k]))
+      c.problem = "line " + std::to_string(number) + ": colour " + shown(w[k]) + " is outside 0-1";
+}
+
 //! Whether a PLY type is a float or a double.
 bool is_real_type(const std::string& t) { return t == "float" || t == "float32" || t == "double" || t == "float64"; }
 
@@ -545,10 +554,8 @@ FileCensus take_census(const std::string& path, const std::string& ext)
         if (c.problem.empty() && w.size() != 3 && w.size() != 4 && w.size() != 6 && w.size() != 7)
           c.problem = "line " + std::to_string(number) + ": a vertex of " + std::to_string(w.size()) +
                       " numbers (x y z, x y z w, or x y z r g b)";
-        // Colours are 0-1: OpenMesh scales them by 255 into a byte.
-        for (std::size_t k = 3; c.problem.empty() && w.size() >= 6 && k < w.size(); ++k)
-          if (!unit_number(w[k]))
-            c.problem = "line " + std::to_string(number) + ": colour " + shown(w[k]) + " is outside 0-1";
+        if (w.size() >= 6)
+          check_colour_words(w, 3, number, c);
       } else if (keyword == "vc") {
         // OpenMesh takes vertex colours from these lines too, scaled by 255 into a byte.
         check_numbers(line.substr(line.find("vc") + 2), number, c);
@@ -556,9 +563,7 @@ FileCensus take_census(const std::string& path, const std::string& ext)
           break;
         const std::vector<std::string> w = numeric_words(line.substr(line.find("vc") + 2), number, kFloatWord, c);
         ++colour_lines;
-        for (std::size_t k = 0; c.problem.empty() && k < w.size(); ++k)
-          if (!unit_number(w[k]))
-            c.problem = "line " + std::to_string(number) + ": colour " + shown(w[k]) + " is outside 0-1";
+        check_colour_words(w, 0, number, c);
       }
     }
     // OpenMesh gives vertex i the i-th colour it read, from either kind of
