@@ -39,6 +39,15 @@ cl::Buffer device_copy(const cl::Context& context, const std::vector<T>& v)
                     const_cast<T*>(v.empty() ? &none : v.data()));
 }
 
+//! A read-only device copy of one value (a kernel's struct argument),
+//! made from host memory at once: no command on the queue waits for it,
+//! and commands queued with the buffer it replaces keep that one.
+template <typename T>
+cl::Buffer device_value(const cl::Context& context, const T& v)
+{
+  return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(T), const_cast<T*>(&v));
+}
+
 //! device_copy() of a list of ints.
 inline cl::Buffer device_ints(const cl::Context& context, const std::vector<int>& list)
 {

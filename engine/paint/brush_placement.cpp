@@ -142,12 +142,7 @@ std::vector<int> unfold_dab(const PaintState& state, int centre_patch, BrushDab&
   Runtime& rt = state.atlas.runtime();
   const Unfolding u =
     unfold(state.atlas.topology(), centre_patch, state.layout().n, dab.centre_texel, dab.radius / dab.texel_size);
-  if (d.unfold_capacity < u.maps.size()) {
-    d.unfold_capacity = u.maps.size();
-    d.unfold = cl::Buffer(rt.context(), CL_MEM_READ_ONLY, sizeof(PatchUnfolding) * d.unfold_capacity);
-  }
-  // Blocking: the host copy goes when this returns.
-  rt.queue().enqueueWriteBuffer(d.unfold, CL_TRUE, 0, sizeof(PatchUnfolding) * u.maps.size(), u.maps.data());
+  d.unfold = device_copy(rt.context(), u.maps);
   dab.unfolded = int(u.maps.size());
   return u.patches;
 }

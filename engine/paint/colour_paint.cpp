@@ -33,16 +33,11 @@ void paint_dab(const DabContext& context, const std::vector<int>& patches, const
   PaintDevice& d = s.device;
   Runtime& rt = s.atlas.runtime();
   const LevelLayout l = s.layout();
-  if (d.active_capacity < patches.size()) {
-    d.active_capacity = std::max(patches.size(), std::size_t(l.patches < 1024 ? l.patches : 1024));
-    d.active = cl::Buffer(rt.context(), CL_MEM_READ_ONLY, sizeof(cl_int) * d.active_capacity);
-  }
-  // Blocking: the host memory behind both may be gone if a launch throws.
-  rt.queue().enqueueWriteBuffer(d.active, CL_TRUE, 0, sizeof(cl_int) * patches.size(), patches.data());
-  rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
+  const cl::Buffer list = device_ints(rt.context(), patches);
+  d.dab = device_value(rt.context(), dab);
   const auto tiles = range_tiles(l, int(patches.size()));
   launch(rt.queue(), d.paint_dab, tiles.first, tiles.second, s.atlas.limit_positions_layer(),
-         s.atlas.limit_normals_layer(), grid(l), d.active, cl_int(patches.size()), d.dab, d.unfold, d.raster, d.stamp,
+         s.atlas.limit_normals_layer(), grid(l), list, cl_int(patches.size()), d.dab, d.unfold, d.raster, d.stamp,
          context.diffuse(), context.specular(), context.material(), d.locked);
   rt.queue().finish();
   context.hooks.phase_done(&StepPhases::transform);
@@ -69,7 +64,7 @@ void spray_dab(const DabContext& context, const std::vector<int>& patches, const
   cl::CommandQueue& q = rt.queue();
   q.enqueueFillBuffer(keys, cl_uint(0xffffffffu), 0, sizeof(cl_uint) * drops.size());
   q.enqueueFillBuffer(texels, cl_int(std::numeric_limits<cl_int>::max()), 0, sizeof(cl_int) * drops.size());
-  q.enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
+  d.dab = device_value(rt.context(), dab);
   const cl::Buffer list = device_ints(rt.context(), patches);
   const auto tiles = range_tiles(l, int(patches.size()));
   const cl::Memory &pos = s.atlas.limit_positions_layer(), &nrm = s.atlas.limit_normals_layer();

@@ -51,11 +51,10 @@ struct PaintDevice
     move_points_patches, move_dab, move_dab_patches;
   cl::Kernel dab_pickup;
   cl::Kernel spray_pick, spray_points;
-  cl::Buffer counters, active, dab, weights;
+  cl::Buffer counters, dab, weights; // dab: the BrushDab of the dab under way
   cl::Buffer open_sides; // brush_reach: a byte per patch
   AppendBuffer culled;   // CullRecord
   cl::Buffer unfold; // a parameter dab's PatchUnfolding per listed patch (one entry otherwise)
-  std::size_t active_capacity = 0, unfold_capacity = 1;
   cl::Buffer diffuse, specular, material, channel_work;
   cl::Buffer inside_diffuse, inside_specular, inside_material; // two-sided surfaces
   cl::Buffer raster, stamp; // the stroke's pattern samples and brush image (one float when none)

@@ -67,8 +67,8 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     rt.queue().enqueueFillBuffer(d.material, cl_float4{{material.roughness, 0.f, 0.f, 0.f}}, 0, bytes);
     d.counters = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_int2));
     d.open_sides = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, std::size_t(l.patches));
-    d.dab = cl::Buffer(rt.context(), CL_MEM_READ_ONLY, sizeof(BrushDab));
-    d.unfold = cl::Buffer(rt.context(), CL_MEM_READ_ONLY, sizeof(PatchUnfolding) * d.unfold_capacity);
+    d.dab = device_value(rt.context(), BrushDab{});
+    d.unfold = device_copy(rt.context(), std::vector<PatchUnfolding>());
     rt.queue().finish();
   } catch (const cl::Error& e) {
     throw DeviceError("cannot set up painting on " + rt.info().name + ": " + describe(e));

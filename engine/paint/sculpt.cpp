@@ -37,8 +37,6 @@ LevelDab upload_dab(const DabContext& context, const std::vector<int>& patches, 
   Runtime& rt = s.atlas.runtime();
   LevelDab out;
   out.stride = s.layout().n / s.atlas.layout(level).n;
-  // The outside bits first: the blocking write below waits for the kernels
-  // queued before it (a coarse edit's limit), which run meanwhile.
   if (level < s.level) {
     std::vector<std::uint8_t> bits = s.atlas.shared_outside(patches);
     bits.resize(std::max<std::size_t>(1, bits.size())); // a valid argument when empty
@@ -48,7 +46,7 @@ LevelDab upload_dab(const DabContext& context, const std::vector<int>& patches, 
   for (float& c : at_level.centre_texel)
     c /= float(out.stride);
   at_level.texel_size *= float(out.stride);
-  rt.queue().enqueueWriteBuffer(s.device.dab, CL_TRUE, 0, sizeof at_level, &at_level);
+  s.device.dab = device_value(rt.context(), at_level);
   return out;
 }
 

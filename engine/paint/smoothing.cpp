@@ -58,7 +58,7 @@ void smear_dab(const DabContext& context, const std::vector<int>& patches, Brush
   const std::size_t items = kGroup, texels = std::size_t(count) * l.tile * l.tile;
   const std::size_t groups = (texels + items - 1) / items;
   cl::Buffer partial(rt.context(), CL_MEM_WRITE_ONLY, 3 * groups * sizeof(Float4));
-  rt.queue().enqueueWriteBuffer(d.dab, CL_TRUE, 0, sizeof dab, &dab);
+  d.dab = device_value(rt.context(), dab);
   launch(rt.queue(), d.dab_pickup, cl::NDRange(groups * items), cl::NDRange(items), s.atlas.limit_positions_layer(),
          s.atlas.limit_normals_layer(), grid(l), list, count, d.dab, d.unfold, d.stamp, context.diffuse(),
          context.specular(), partial, cl::Local(3 * items * sizeof(Float4)));
