@@ -1,5 +1,6 @@
 #include "atlas/atlas_tables.h"
 
+#include "cl/launch.h"
 #include "core/vec.h"
 
 #include <algorithm> // for std::max, std::stable_sort
@@ -49,11 +50,6 @@ border_tables(const AtlasTopology& topo, const std::vector<int>& device_ring)
 
 AtlasTables::AtlasTables(Runtime& runtime, AtlasTopology topology) : topology_(std::move(topology))
 {
-  const auto upload = [&](const auto& v) {
-    return cl::Buffer(runtime.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
-                      std::max<std::size_t>(1, v.size() * sizeof(v[0])),
-                      const_cast<void*>(static_cast<const void*>(v.data())));
-  };
   // The corner kernels visit rings in the order of their first patch, so
   // they sweep the atlas instead of jumping. Edges stay in OpenSubdiv's
   // order, which measured better than sorting them by patch.
@@ -69,13 +65,13 @@ AtlasTables::AtlasTables(Runtime& runtime, AtlasTopology topology) : topology_(s
     rings.push_back(topology_.rings[order[k]]);
     device_ring_[order[k]] = int(k);
   }
-  edges_ = upload(topology_.edges);
-  rings_ = upload(rings);
-  valences_ = upload(limit_constants(topology_));
-  slots_ = upload(topology_.slots);
+  edges_ = device_copy(runtime.context(), topology_.edges);
+  rings_ = device_copy(runtime.context(), rings);
+  valences_ = device_copy(runtime.context(), limit_constants(topology_));
+  slots_ = device_copy(runtime.context(), topology_.slots);
   const auto [patch_sides, patch_rings] = border_tables(topology_, device_ring_);
-  patch_sides_ = upload(patch_sides);
-  patch_rings_ = upload(patch_rings);
+  patch_sides_ = device_copy(runtime.context(), patch_sides);
+  patch_rings_ = device_copy(runtime.context(), patch_rings);
   std::vector<std::array<int, 4>> across(std::size_t(topology_.patch_count));
   for (std::size_t p = 0; p < across.size(); ++p)
     for (int c = 0; c < 4; ++c) {
@@ -83,7 +79,7 @@ AtlasTables::AtlasTables(Runtime& runtime, AtlasTopology topology) : topology_(s
       const int k = e.patch[0] == int(p) && e.side[0] == c ? 1 : 0;
       across[p][std::size_t(c)] = e.patch[k] < 0 ? -1 : 4 * e.patch[k] + e.side[k];
     }
-  patch_across_ = upload(across);
+  patch_across_ = device_copy(runtime.context(), across);
 }
 
 } // namespace meshpaint

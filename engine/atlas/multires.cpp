@@ -220,8 +220,7 @@ void Multires::reconstruct(const std::vector<int>& affected, const PatchSet& aro
            grid(f), tables.rings(), tables.slots(), rings, int(set.rings.size()), d.details, work.corner_work());
   if (!set.patches.empty()) {
     // The sides and corners shared with patches outside keep S.
-    const cl::Buffer kept(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, set.outside.size(),
-                          const_cast<std::uint8_t*>(set.outside.data()));
+    const cl::Buffer kept = device_copy(rt.context(), set.outside);
     const int count = int(set.patches.size());
     const Atlas::TileLaunch t = atlas_.tile_launch(d.decode_tiles, d.decode_patches, f, count);
     launch(q, t.kernel, t.global, t.local, d.smooth, grid(f), patches, count, d.details, fine, tables.patch_sides(),

@@ -7,8 +7,7 @@
 #include "paint/paint_device.h"
 #include "paint/spray.h"
 
-#include <algorithm> // for std::max
-#include <limits>    // for std::numeric_limits
+#include <limits> // for std::numeric_limits
 
 namespace meshpaint {
 
@@ -56,8 +55,7 @@ void spray_dab(const DabContext& context, const std::vector<int>& patches, const
   std::vector<cl_float2> drops;
   for (const auto& o : spray_offsets(stroke.paint().spray_seed, index, k, dab.radius))
     drops.push_back({{dab.screen_centre[0] + o[0] / dab.centre_depth, dab.screen_centre[1] + o[1] / dab.centre_depth}});
-  const cl::Buffer drop_buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(cl_float2) * drops.size(),
-                               drops.data());
+  const cl::Buffer drop_buffer = device_copy(rt.context(), drops);
   cl::Buffer keys(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_uint) * drops.size()),
     texels(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_int) * drops.size()),
     points(rt.context(), CL_MEM_WRITE_ONLY, sizeof(cl_float4) * drops.size());
@@ -101,13 +99,8 @@ void upload_rasters(const PaintState& state, const Stroke& stroke, BrushDab& dab
                        " channels does not match its " + std::to_string(r->samples.size()) + " values");
   PaintDevice& d = state.device;
   Runtime& rt = state.atlas.runtime();
-  const auto upload = [&](const std::vector<float>& v) {
-    static const float none = 0.f;
-    return cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
-                      sizeof(float) * std::max<std::size_t>(1, v.size()), const_cast<float*>(v.empty() ? &none : v.data()));
-  };
   const Raster* r = pattern;
-  d.raster = upload(r ? r->samples : std::vector<float>());
+  d.raster = device_copy(rt.context(), r ? r->samples : std::vector<float>());
   dab.raster_size[0] = r ? r->width : 0;
   dab.raster_size[1] = r ? r->height : 0;
   dab.raster_size[2] = r ? r->depth : 0;
@@ -123,12 +116,10 @@ void upload_rasters(const PaintState& state, const Stroke& stroke, BrushDab& dab
   } else {
     dab.stamp_size[0] = dab.stamp_size[1] = 0;
   }
-  d.stamp = upload(grey);
+  d.stamp = device_copy(rt.context(), grey);
   // The label guards: locked classes to the device, the chosen class in the dab.
   const auto* p = std::get_if<PaintSettings>(&stroke.settings);
-  const std::vector<int> none{0}, &locked = p && !p->locked_labels.empty() ? p->locked_labels : none;
-  d.locked = cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(cl_int) * locked.size(),
-                        const_cast<int*>(locked.data()));
+  d.locked = device_ints(rt.context(), p ? p->locked_labels : std::vector<int>{});
   dab.locked_labels = p ? int(p->locked_labels.size()) : 0;
   dab.only_over_label = p ? p->only_over_label : -1;
 }

@@ -4,9 +4,7 @@
 
 #include "paint/paint_device.h"
 
-#include <algorithm> // for std::max
-#include <cstdint>   // for std::uint8_t
-#include <utility>   // for std::pair
+#include <utility> // for std::pair
 
 namespace meshpaint {
 
@@ -38,9 +36,7 @@ LevelDab upload_dab(const DabContext& context, const std::vector<int>& patches, 
   LevelDab out;
   out.stride = s.layout().n / s.atlas.layout(level).n;
   if (level < s.level) {
-    std::vector<std::uint8_t> bits = s.atlas.shared_outside(patches);
-    bits.resize(std::max<std::size_t>(1, bits.size())); // a valid argument when empty
-    out.outside = cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bits.size(), bits.data());
+    out.outside = device_copy(rt.context(), s.atlas.shared_outside(patches));
   }
   BrushDab at_level = dab; // parameter space counts texels of the level
   for (float& c : at_level.centre_texel)

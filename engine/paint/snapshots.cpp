@@ -60,9 +60,8 @@ void put_back_layer(const PaintState& state, const Snapshot& s, std::size_t k, c
   const LevelLayout l = state.atlas.layout(id == kEditPositions ? s.edit_level : state.level);
   const auto tiles = range_tiles(l, int(s.patches.size()));
   const auto [kernels, memory] = snapshot_layer(state, id, s.edit_level);
-  // Copied at creation (COPY_HOST_PTR): no wait needed for the host data.
-  const cl::Buffer in(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(Float4) * s.layers[k].size(),
-                      const_cast<Float4*>(s.layers[k].data()));
+  // Copied at creation: no wait needed for the host data.
+  const cl::Buffer in = device_copy(rt.context(), s.layers[k]);
   launch(rt.queue(), kernels->scatter_tiles, tiles.first, tiles.second, *memory, grid(l), list,
          int(s.patches.size()), in);
 }

@@ -38,10 +38,7 @@ WeldedSmoothing::Level& WeldedSmoothing::level(const LevelLayout& l)
   w.texel = device_ints(c, host.texel);
   w.first = device_ints(c, host.first);
   w.ring = device_ints(c, host.ring);
-  if (host.around.empty()) // level 1: corners only
-    host.around.push_back({0, 0, 0, 0});
-  w.around = cl::Buffer(c, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(cl_int4) * host.around.size(),
-                        host.around.data());
+  w.around = device_copy(c, host.around); // empty at level 1: corners only
   w.vertices = host.vertices();
   w.numbering = static_cast<const WeldedNumbering&>(host); // the tables live on the device only
   const std::size_t need = w.vertices * sizeof(Float4);
