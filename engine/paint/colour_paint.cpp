@@ -38,7 +38,8 @@ void paint_dab(const DabContext& context, const std::vector<int>& patches, const
   launch(rt.queue(), d.paint_dab, tiles.first, tiles.second, s.atlas.limit_positions_layer(),
          s.atlas.limit_normals_layer(), grid(l), list, cl_int(patches.size()), d.dab, d.unfold, d.raster, d.stamp,
          context.diffuse(), context.specular(), context.material(), d.locked);
-  rt.queue().finish();
+  // No wait here: the next dab's placement reads after it on the same
+  // queue, and the stroke's end waits for all of its work.
   context.hooks.phase_done(&StepPhases::transform);
 }
 
