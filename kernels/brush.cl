@@ -84,19 +84,38 @@ __kernel void brush_cull_seed(ATLAS_IN pos, int2 g, int p, int texel, float4 cen
   atomic_min(&counters[1], as_int(d) + 4);
 }
 
+/* Range: 1. The record the host will snap the brush to (the nearest,
+ * ties to the lowest patch: the host's test, in the host's order), so
+ * that brush_reach can run before the host has read the records. `snap`:
+ * its closest position; `chosen`: its index, -1 without records. */
+__kernel void brush_snap(__global const CullRecord *records, __global const int *counters, int capacity,
+                         __global float4 *snap, __global int *chosen)
+{
+  const int n = min(counters[0], capacity);
+  int best = -1;
+  for (int k = 0; k < n; ++k)
+    if (best < 0 || records[k].distance < records[best].distance ||
+        (records[k].distance == records[best].distance && records[k].patch < records[best].patch))
+      best = k;
+  *chosen = best;
+  if (best >= 0)
+    *snap = vload4(0, records[best].closest_position);
+}
+
 /* Range: #patches. Per patch, in `open`: the sides that come within
- * `reach` of `centre` (bits 0-3) when a texel of it does, else
+ * `reach` of `*at` (bits 0-3) when a texel of it does, else
  * REACH_NONE; from these the host finds the patches connected to the
  * centre along the surface. A patch whose bounding sphere lies inside the
  * ball has all four sides open without a look at its texels. A byte per
  * patch rather than appended records: a big brush reaches most of the
  * atlas, and appending made both cores take turns on one counter. */
-__kernel void brush_reach(ATLAS_IN pos, int2 g, int patches, __global const float4 *bounds, float4 centre,
-                          float reach, __global uchar *open)
+__kernel void brush_reach(ATLAS_IN pos, int2 g, int patches, __global const float4 *bounds,
+                          __global const float4 *at, float reach, __global uchar *open)
 {
   const int p = get_global_id(0);
   if (p >= patches)
     return;
+  const float4 centre = *at;
   const float4 b = bounds[p];
   const float to_sphere = distance(b.xyz, centre.xyz);
   uchar sides = REACH_NONE;

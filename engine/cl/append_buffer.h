@@ -18,19 +18,27 @@ struct AppendBuffer
   std::size_t capacity = 0;
 };
 
+//! Records read back with the count, in the same wait: on PoCL each
+//! blocking read costs a wake of the device's threads and of the host, more
+//! than reading this many records that may not be there.
+constexpr std::size_t kRecordsWithCount = 64;
+
 //! Runs a kernel over `items` work items (in groups of `group`) that
 //! appends records of type Record (its last three arguments: the records,
 //! two counters and the capacity) and reads back what it appended, in no
 //! particular order. The counters start each run at `start`; the first
 //! counts the records, the second is the kernel's own, which `prepare()`
 //! may change by enqueueing work after they are set and before the kernel
-//! runs. A buffer found too small grows and the kernel runs once more.
-template <typename Record, typename Prepare, typename... Args>
+//! runs. `follow()` may enqueue work after the kernel that uses the records
+//! on the device, done when this returns. A buffer found too small grows
+//! and the kernel, with prepare() and follow(), runs once more.
+template <typename Record, typename Prepare, typename Follow, typename... Args>
 std::vector<Record> run_appending(Runtime& rt, cl::Kernel& kernel, int items, std::size_t group, AppendBuffer& out,
                                   const cl::Buffer& counters, cl_int2 start, const Prepare& prepare,
-                                  const Args&... args)
+                                  const Follow& follow, const Args&... args)
 {
   cl_int count = 0;
+  std::vector<Record> records;
   for (int attempt = 0; attempt < 2; ++attempt) {
     if (out.capacity == 0) {
       out.capacity = std::min<std::size_t>(std::max(items, 1), 4096);
@@ -40,15 +48,23 @@ std::vector<Record> run_appending(Runtime& rt, cl::Kernel& kernel, int items, st
     prepare();
     launch(rt.queue(), kernel, cl::NDRange(round_up(std::size_t(items), group)), cl::NDRange(group), args...,
            out.records, counters, cl_int(out.capacity));
-    rt.queue().enqueueReadBuffer(counters, CL_TRUE, 0, sizeof count, &count);
+    follow();
+    // The count and the first records in one wait: the queue is in order,
+    // so the count and what follow() enqueued are done once the records
+    // have arrived.
+    records.resize(std::min(out.capacity, kRecordsWithCount));
+    rt.queue().enqueueReadBuffer(counters, CL_FALSE, 0, sizeof count, &count);
+    rt.queue().enqueueReadBuffer(out.records, CL_TRUE, 0, sizeof(Record) * records.size(), records.data());
     if (std::size_t(count) <= out.capacity)
       break;
     out.capacity = std::size_t(count);
     out.records = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(Record) * out.capacity);
   }
-  std::vector<Record> records(static_cast<std::size_t>(count));
-  if (count > 0)
-    rt.queue().enqueueReadBuffer(out.records, CL_TRUE, 0, sizeof(Record) * std::size_t(count), records.data());
+  const std::size_t read = records.size();
+  records.resize(static_cast<std::size_t>(count));
+  if (records.size() > read)
+    rt.queue().enqueueReadBuffer(out.records, CL_TRUE, sizeof(Record) * read, sizeof(Record) * (records.size() - read),
+                                 records.data() + read);
   return records;
 }
 

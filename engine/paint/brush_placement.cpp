@@ -17,8 +17,10 @@ namespace {
 //! Records, in no particular order and each with its closest texel, of
 //! patches with a texel within `radius` of `centre`: among them every
 //! patch whose closest texel is the nearest (brush_cull), wherever `hint`
-//! points.
-std::vector<CullRecord> cull(const PaintState& state, const Vec3& centre, float radius, const SnapHint& hint)
+//! points. `follow` as run_appending()'s.
+template <typename Follow>
+std::vector<CullRecord> cull(const PaintState& state, const Vec3& centre, float radius, const SnapHint& hint,
+                             const Follow& follow)
 {
   PaintDevice& d = state.device;
   Atlas& atlas = state.atlas;
@@ -35,22 +37,23 @@ std::vector<CullRecord> cull(const PaintState& state, const Vec3& centre, float 
              grid(l), cl_int(hint.patch), cl_int(hint.texel), at, d.counters);
   };
   return run_appending<CullRecord>(atlas.runtime(), d.brush_cull, l.patches, kGroup, d.culled, d.counters,
-                                   cl_int2{{0, radius_bits}}, seed, atlas.limit_positions_layer(),
+                                   cl_int2{{0, radius_bits}}, seed, follow, atlas.limit_positions_layer(),
                                    atlas.limit_normals_layer(), grid(l), l.patches, atlas.limit_bounds(), at);
 }
 
-//! Per patch, the sides that come within `radius` of `centre` (brush_reach),
-//! into `open_sides`.
-void reach_sides(const PaintState& state, const Vec3& centre, float radius, std::vector<std::uint8_t>& open_sides)
+//! Per patch, the sides that come within `radius` of the centre in `at`, a
+//! float4 on the device (brush_reach), into `open_sides`: at once, or with
+//! the queue's next wait.
+void reach_sides(const PaintState& state, const cl::Buffer& at, float radius, std::vector<std::uint8_t>& open_sides,
+                 bool wait)
 {
   PaintDevice& d = state.device;
   Atlas& atlas = state.atlas;
   Runtime& rt = atlas.runtime();
   const LevelLayout l = state.layout();
   launch(rt.queue(), d.brush_reach, cl::NDRange(round_up(std::size_t(l.patches), kGroup)), cl::NDRange(kGroup),
-         atlas.limit_positions_layer(), grid(l), l.patches, atlas.limit_bounds(),
-         cl_float4{{centre[0], centre[1], centre[2], 0.f}}, radius, d.open_sides);
-  rt.queue().enqueueReadBuffer(d.open_sides, CL_TRUE, 0, open_sides.size(), open_sides.data());
+         atlas.limit_positions_layer(), grid(l), l.patches, atlas.limit_bounds(), at, radius, d.open_sides);
+  rt.queue().enqueueReadBuffer(d.open_sides, wait ? CL_TRUE : CL_FALSE, 0, open_sides.size(), open_sides.data());
 }
 
 } // namespace
@@ -68,8 +71,19 @@ std::vector<int> BrushPlacement::brush_patches(const PaintState& state, const Ve
 {
   if (!(reach > 0.f))
     reach = radius;
-  // Snap: the closest texel within the radius is the brush centre.
-  const std::vector<CullRecord> near = cull(state, point, radius, hint_);
+  // Snap: the closest texel within the radius is the brush centre. The
+  // device makes the same choice (brush_snap) and finds the sides within
+  // reach of it, so that one wait brings the records and the sides.
+  PaintDevice& d = state.device;
+  cl_int chosen = -1;
+  const auto snap_and_reach = [&] {
+    cl::CommandQueue& q = state.atlas.runtime().queue();
+    launch(q, d.brush_snap, cl::NDRange(1), cl::NullRange, d.culled.records, d.counters, cl_int(d.culled.capacity),
+           d.snap_centre, d.snap_record);
+    reach_sides(state, d.snap_centre, reach, open_sides_, false);
+    q.enqueueReadBuffer(d.snap_record, CL_FALSE, 0, sizeof chosen, &chosen);
+  };
+  const std::vector<CullRecord> near = cull(state, point, radius, hint_, snap_and_reach);
   if (near.empty())
     return {};
   const CullRecord* best = &near.front();
@@ -90,7 +104,9 @@ std::vector<int> BrushPlacement::brush_patches(const PaintState& state, const Ve
   // The brush reaches the patches connected to the centre's patch through
   // sides that themselves come within the radius: never through the air.
   const int start_patch = best->patch;
-  reach_sides(state, centre, reach, open_sides_);
+  if (chosen != int(best - near.data())) // compared otherwise on the device (denormals): reach from the host's
+    reach_sides(state, device_value(state.atlas.runtime().context(), cl_float4{{centre[0], centre[1], centre[2], 0.f}}),
+                reach, open_sides_, true);
 
   // Flood from the centre's patch over the patches within reach.
   reached_.begin(open_sides_.size());

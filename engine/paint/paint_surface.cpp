@@ -41,6 +41,7 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
       d.channels.build(rt, AtlasStorage::Buffer);
     d.brush_cull = cl::Kernel(d.positions.program, "brush_cull");
     d.brush_cull_seed = cl::Kernel(d.positions.program, "brush_cull_seed");
+    d.brush_snap = cl::Kernel(d.positions.program, "brush_snap");
     d.brush_reach = cl::Kernel(d.positions.program, "brush_reach");
     d.paint_dab = cl::Kernel(d.positions.program, "paint_dab");
     d.dab_weights = cl::Kernel(d.positions.program, "dab_weights");
@@ -67,6 +68,8 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     rt.queue().enqueueFillBuffer(d.material, cl_float4{{material.roughness, 0.f, 0.f, 0.f}}, 0, bytes);
     d.counters = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_int2));
     d.open_sides = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, std::size_t(l.patches));
+    d.snap_centre = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_float4));
+    d.snap_record = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, sizeof(cl_int));
     d.dab = device_value(rt.context(), BrushDab{});
     d.unfold = device_copy(rt.context(), std::vector<PatchUnfolding>());
     rt.queue().finish();
