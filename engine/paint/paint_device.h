@@ -47,14 +47,14 @@ struct LayerKernels
 struct PaintDevice
 {
   LayerKernels positions, channels;
-  cl::Kernel brush_cull, brush_cull_seed, brush_snap, brush_reach, paint_dab, dab_weights, dab_weights_patches, move_points,
-    move_points_patches, move_dab, move_dab_patches;
+  cl::Kernel brush_cull, brush_cull_seed, brush_snap, brush_reach, paint_dab, dab_weights, dab_weights_patches,
+    move_points, move_points_patches, move_dab, move_dab_patches;
   cl::Kernel dab_pickup;
   cl::Kernel spray_pick, spray_points;
   cl::Buffer counters, dab, weights; // dab: the BrushDab of the dab under way
-  cl::Buffer open_sides; // brush_reach: a byte per patch
+  cl::Buffer open_sides;               // brush_reach: a byte per patch
   cl::Buffer snap_centre, snap_record; // brush_snap: the centre (float4) and its record's index (int)
-  AppendBuffer culled;   // CullRecord
+  AppendBuffer culled;                 // CullRecord
   cl::Buffer unfold; // a parameter dab's PatchUnfolding per listed patch (one entry otherwise)
   cl::Buffer diffuse, specular, material, channel_work;
   cl::Buffer inside_diffuse, inside_specular, inside_material; // two-sided surfaces
