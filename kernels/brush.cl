@@ -211,17 +211,23 @@ inline float3 pattern_point(__global const BrushDab *dab, float3 x, int2 ij, int
                   m[8] * c.x + m[9] * c.y + m[10] * c.z + m[11]);
 }
 
-/* paint OP surface, per component. */
-inline float4 paint_op(int op, float4 paint, float coverage, float4 surface)
-{
-  switch (op) {
-  case PAINT_OP_OVER: return paint * coverage + surface * (1.0f - coverage);
-  case PAINT_OP_MAX: return fmax(paint, surface);
-  case PAINT_OP_ADD: return surface + paint;
-  case PAINT_OP_SUBTRACT: return surface - paint;
-  default: return paint;
+/* paint OP surface, per component: paint_op() for a texel's float4,
+ * paint_op_lanes() for a component of eight texels (paint_patches), from
+ * one text so that both perform the same operations. */
+#define DEFINE_PAINT_OP(name, T, Coverage)                                                                   \
+  inline T name(int op, T paint, Coverage coverage, T surface)                                               \
+  {                                                                                                          \
+    switch (op) {                                                                                            \
+    case PAINT_OP_OVER: return paint * coverage + surface * (1.0f - coverage);                               \
+    case PAINT_OP_MAX: return fmax(paint, surface);                                                          \
+    case PAINT_OP_ADD: return surface + paint;                                                               \
+    case PAINT_OP_SUBTRACT: return surface - paint;                                                          \
+    default: return paint;                                                                                   \
+    }                                                                                                        \
   }
-}
+DEFINE_PAINT_OP(paint_op, float4, float)
+DEFINE_PAINT_OP(paint_op_lanes, float8, float8)
+#undef DEFINE_PAINT_OP
 
 /* surface = lerp(surface, paint OP surface, a): the paint equation, with
  * paint = pigment in pattern: an opaque matte shades the pigment by the
@@ -304,6 +310,120 @@ __kernel void paint_dab(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *
     m.w = clamp(paint_blend(dab, CHANNEL_MASK, (float4)(m.w), wm, (float3)(1.0f)).x, 0.0f, 1.0f);
   }
   material[k] = m;
+}
+
+/* label_open() lane by lane (lanes.cl). */
+inline int8 labels_open(__global const BrushDab *dab, __global const int *locked, float8 label)
+{
+  int8 open = (int8)(-1);
+  if (dab->only_over_label >= 0)
+    open = label == (float8)((float)dab->only_over_label);
+  for (int k = 0; k < dab->locked_labels; ++k)
+    open &= label != (float8)((float)locked[k]);
+  return open;
+}
+
+/* paint_blend() of component c of channel `channel`, a lane per texel,
+ * without a pattern (its shade of 1 changes no bits). */
+inline float8 paint_blend_lanes(__global const BrushDab *dab, int channel, int c, float8 surface, float8 a)
+{
+  const float8 paint = (float8)(dab->value[channel][c]), coverage = (float8)(dab->value[channel][3]);
+  return mix(surface, paint_op_lanes(dab->op, paint, coverage, surface), a);
+}
+
+/* paint_dab for eight listed patches per work item, a patch per lane
+ * (CPU devices: Atlas::tile_launch()), for the dabs that need neither a
+ * brush normal nor a raster: object space, no pattern, no stamp
+ * (paint_patches_fits() on the host). Each lane performs paint_dab's
+ * operations in their order, so the channels get the same bits; a texel
+ * outside the brush keeps its value, and lanes past the end repeat the last
+ * patch, whose texels then get the same values twice. Range: active_count
+ * / PATCH_LANES rounded up; the arguments are paint_dab's. */
+__kernel void paint_patches(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *restrict active,
+                            int active_count, __global const BrushDab *restrict dab,
+                            __global const PatchUnfolding *restrict unfold, __global const float *restrict raster,
+                            __global const float *restrict stamp, __global float4 *restrict diffuse,
+                            __global float4 *restrict specular, __global float4 *restrict material,
+                            __global const int *restrict locked)
+{
+  const int first = get_global_id(0) * PATCH_LANES;
+  if (first >= active_count)
+    return;
+  const int8 at = min(first + (int8)(0, 1, 2, 3, 4, 5, 6, 7), (int8)(active_count - 1));
+  const int8 patch = (int8)(active[at.s0], active[at.s1], active[at.s2], active[at.s3], active[at.s4],
+                            active[at.s5], active[at.s6], active[at.s7]);
+  const float3 centre = vload3(0, dab->centre);
+  const float radius = dab->radius, strength = dab->strength;
+  const float4 alpha = (float4)(dab->alpha[CHANNEL_DIFFUSE], dab->alpha[CHANNEL_SPECULAR],
+                                dab->alpha[CHANNEL_ROUGHNESS], dab->alpha[CHANNEL_DISPLACEMENT]);
+  const float alpha_label = dab->alpha[CHANNEL_LABEL], alpha_mask = dab->alpha[CHANNEL_MASK];
+  for (int j = 0; j < g.x; ++j)
+    for (int i = 0; i < g.x; ++i) {
+      const int2 ij = (int2)(i, j);
+      Lanes d = load_lanes(pos, g, patch, ij);
+      d.x -= centre.x;
+      d.y -= centre.y;
+      d.z -= centre.z;
+      const float8 t = sqrt(lanes_dot(d, d)) / radius; /* brush_t(), object space */
+      const int8 inside = t <= 1.0f;
+      if (!any(inside))
+        continue;
+      float8 falloff = (float8)(1.0f); /* falloff_weight() */
+      switch (dab->falloff) {
+      case FALLOFF_LINEAR: falloff = 1.0f - t; break;
+      case FALLOFF_SMOOTHSTEP: falloff = 1.0f - t * t * (3.0f - 2.0f * t); break;
+      case FALLOFF_GAUSSIAN: {
+        /* exp() per lane: a vector exp need not round as the scalar one */
+        const float8 e = -4.5f * t * t;
+        falloff = (float8)(exp(e.s0), exp(e.s1), exp(e.s2), exp(e.s3), exp(e.s4), exp(e.s5), exp(e.s6), exp(e.s7));
+        break;
+      }
+      }
+      const Lanes4 m = load_lanes4(material, g, patch, ij);
+      const float8 w = falloff * strength * (1.0f - m.w);
+      if (alpha.x > 0.0f) {
+        const Lanes4 c = load_lanes4(diffuse, g, patch, ij);
+        const float8 a = w * alpha.x;
+        store_lanes4(diffuse, g, patch, ij,
+                     select(c.x, clamp(paint_blend_lanes(dab, CHANNEL_DIFFUSE, 0, c.x, a), 0.0f, 1.0f), inside),
+                     select(c.y, clamp(paint_blend_lanes(dab, CHANNEL_DIFFUSE, 1, c.y, a), 0.0f, 1.0f), inside),
+                     select(c.z, clamp(paint_blend_lanes(dab, CHANNEL_DIFFUSE, 2, c.z, a), 0.0f, 1.0f), inside),
+                     select(c.w, clamp(paint_blend_lanes(dab, CHANNEL_DIFFUSE, 3, c.w, a), 0.0f, 1.0f), inside));
+      }
+      if (alpha.y > 0.0f) {
+        const Lanes4 s = load_lanes4(specular, g, patch, ij);
+        __global const float *v = dab->value[CHANNEL_SPECULAR];
+        float8 tx = (float8)(v[0]), ty = (float8)(v[1]), tz = (float8)(v[2]);
+        const float8 tw = (float8)(v[3]);
+        const float k = dab->specular_coefficient;
+        if (k >= 0.0f) {
+          const float8 top = fmax(s.x, fmax(s.y, s.z));
+          const int8 hue = top > 1e-6f;
+          const float8 scale = k / top;
+          tx = select((float8)(k), s.x * scale, hue);
+          ty = select((float8)(k), s.y * scale, hue);
+          tz = select((float8)(k), s.z * scale, hue);
+        }
+        const float8 a = w * alpha.y;
+        store_lanes4(specular, g, patch, ij,
+                     select(s.x, clamp(mix(s.x, paint_op_lanes(dab->op, tx, tw, s.x), a), 0.0f, 1.0f), inside),
+                     select(s.y, clamp(mix(s.y, paint_op_lanes(dab->op, ty, tw, s.y), a), 0.0f, 1.0f), inside),
+                     select(s.z, clamp(mix(s.z, paint_op_lanes(dab->op, tz, tw, s.z), a), 0.0f, 1.0f), inside),
+                     select(s.w, clamp(mix(s.w, paint_op_lanes(dab->op, tw, tw, s.w), a), 0.0f, 1.0f), inside));
+      }
+      float8 rough = m.x, shift = m.y, label = m.z, mask = m.w;
+      if (alpha.z > 0.0f)
+        rough = clamp(paint_blend_lanes(dab, CHANNEL_ROUGHNESS, 0, rough, w * alpha.z), 0.0f, 1.0f);
+      if (alpha.w > 0.0f)
+        shift = paint_blend_lanes(dab, CHANNEL_DISPLACEMENT, 0, shift, w * alpha.w);
+      if (alpha_label > 0.0f)
+        label = select(label, (float8)(dab->value[CHANNEL_LABEL][0]),
+                       (w * alpha_label >= 0.5f) & labels_open(dab, locked, label));
+      if (alpha_mask > 0.0f)
+        mask = clamp(paint_blend_lanes(dab, CHANNEL_MASK, 0, mask, falloff * strength * alpha_mask), 0.0f, 1.0f);
+      store_lanes4(material, g, patch, ij, select(m.x, rough, inside), select(m.y, shift, inside),
+                   select(m.z, label, inside), select(m.w, mask, inside));
+    }
 }
 
 /* Range: count * tile^2 work items in groups of `get_local_size(0)`, one per

@@ -109,92 +109,16 @@ __kernel void encode_details(ATLAS_IN fine, ATLAS_IN smooth, int2 g, int count, 
     encode_texel(fine, smooth, g, p, ij, details);
 }
 
-/* encode_patches runs a work item per eight patches, a patch per lane:
- * float3 arithmetic keeps a texel's three components in one register and
- * spends most of its time shuffling them, and PoCL does not spread float3
- * code over work items. Lanes hold x, y and z apart instead, and a tile's
- * texels come in the same order in every lane, so each lane's texel has
- * the same neighbours and the same owner bit. Each lane does what
- * encode_texel() and tile_extent() do, operation for operation (FP_CONTRACT
- * is off, rsqrt(), sqrt() and the sums of cross() and dot() are the same
- * per lane, and the extent is a maximum of finite values, whose order does
- * not matter), so the results are the same bits; a lane whose frame is
- * degenerate is encoded by encode_texel() itself. The lanes are float8,
- * so PATCH_LANES (atlas_types.h) is 8. */
-
-typedef struct {
-  float8 x, y, z;
-} Lanes;
-
-/* Texel ij of the patches `patch`, a lane each: eight 16-byte loads and a
- * transpose in two rounds of shuffles (not 24 loads of a float each). */
-TEXEL_INLINE Lanes load_lanes(ATLAS_IN a, int2 g, int8 patch, int2 ij)
-{
-#define LOAD_LANE(l) const float4 v##l = ATLAS_LOAD(a, g, patch.s##l, ij);
-  LOAD_LANE(0) LOAD_LANE(1) LOAD_LANE(2) LOAD_LANE(3) LOAD_LANE(4) LOAD_LANE(5) LOAD_LANE(6) LOAD_LANE(7)
-#undef LOAD_LANE
-  const float8 a04 = (float8)(v0, v4), a15 = (float8)(v1, v5), a26 = (float8)(v2, v6), a37 = (float8)(v3, v7);
-  const uint8 lo = (uint8)(0, 8, 1, 9, 4, 12, 5, 13), hi = (uint8)(2, 10, 3, 11, 6, 14, 7, 15);
-  const float8 xy01 = shuffle2(a04, a15, lo), xy23 = shuffle2(a26, a37, lo);
-  const float8 zw01 = shuffle2(a04, a15, hi), zw23 = shuffle2(a26, a37, hi);
-  const uint8 even = (uint8)(0, 1, 8, 9, 4, 5, 12, 13), odd = (uint8)(2, 3, 10, 11, 6, 7, 14, 15);
-  Lanes r;
-  r.x = shuffle2(xy01, xy23, even);
-  r.y = shuffle2(xy01, xy23, odd);
-  r.z = shuffle2(zw01, zw23, even);
-  return r;
-}
-
-/* The inverse of load_lanes(): texel ij of the patches `patch` set to
- * (x, y, z, 0), lane by lane, from two rounds of shuffles and eight
- * 16-byte stores. */
-TEXEL_INLINE void store_lanes(__global float4 *out, int2 g, int8 patch, int2 ij, float8 x, float8 y, float8 z)
-{
-  const float8 zero = (float8)(0.0f);
-  const uint8 lo = (uint8)(0, 8, 1, 9, 2, 10, 3, 11), hi = (uint8)(4, 12, 5, 13, 6, 14, 7, 15);
-  const float8 xy0 = shuffle2(x, y, lo), xy1 = shuffle2(x, y, hi);
-  const float8 zw0 = shuffle2(z, zero, lo), zw1 = shuffle2(z, zero, hi);
-  const uint8 first = (uint8)(0, 1, 8, 9, 2, 3, 10, 11), second = (uint8)(4, 5, 12, 13, 6, 7, 14, 15);
-  const float8 l01 = shuffle2(xy0, zw0, first), l23 = shuffle2(xy0, zw0, second);
-  const float8 l45 = shuffle2(xy1, zw1, first), l67 = shuffle2(xy1, zw1, second);
-  out[PATCH_MAJOR_INDEX(g, patch.s0, ij)] = l01.lo;
-  out[PATCH_MAJOR_INDEX(g, patch.s1, ij)] = l01.hi;
-  out[PATCH_MAJOR_INDEX(g, patch.s2, ij)] = l23.lo;
-  out[PATCH_MAJOR_INDEX(g, patch.s3, ij)] = l23.hi;
-  out[PATCH_MAJOR_INDEX(g, patch.s4, ij)] = l45.lo;
-  out[PATCH_MAJOR_INDEX(g, patch.s5, ij)] = l45.hi;
-  out[PATCH_MAJOR_INDEX(g, patch.s6, ij)] = l67.lo;
-  out[PATCH_MAJOR_INDEX(g, patch.s7, ij)] = l67.hi;
-}
-
-TEXEL_INLINE Lanes lanes_sub(Lanes a, Lanes b)
-{
-  Lanes r;
-  r.x = a.x - b.x;
-  r.y = a.y - b.y;
-  r.z = a.z - b.z;
-  return r;
-}
-
-TEXEL_INLINE Lanes lanes_scale(Lanes a, float8 s)
-{
-  Lanes r;
-  r.x = a.x * s;
-  r.y = a.y * s;
-  r.z = a.z * s;
-  return r;
-}
-
-TEXEL_INLINE Lanes lanes_cross(Lanes a, Lanes b)
-{
-  Lanes r;
-  r.x = a.y * b.z - a.z * b.y;
-  r.y = a.z * b.x - a.x * b.z;
-  r.z = a.x * b.y - a.y * b.x;
-  return r;
-}
-
-TEXEL_INLINE float8 lanes_dot(Lanes a, Lanes b) { return (a.x * b.x + a.y * b.y) + a.z * b.z; }
+/* encode_patches runs a work item per eight patches, a patch per lane
+ * (lanes.cl): float3 arithmetic keeps a texel's three components in one
+ * register and spends most of its time shuffling them. A tile's texels
+ * come in the same order in every lane, so each lane's texel has the same
+ * neighbours and the same owner bit. Each lane does what encode_texel()
+ * and tile_extent() do, operation for operation (rsqrt(), sqrt() and the
+ * sums of cross() and dot() are the same per lane, and the extent is a
+ * maximum of finite values, whose order does not matter), so the results
+ * are the same bits; a lane whose frame is degenerate is encoded by
+ * encode_texel() itself. */
 
 /* Range: count / PATCH_LANES rounded up; encode_details' texels, a work
  * item per eight patches walking their tiles together, and each tile's

@@ -13,6 +13,7 @@
 #include <array>     // for std::array
 #include <cmath>   // for std::sqrt
 #include <cstring> // for std::memcmp
+#include <set>     // for std::set
 
 namespace meshpaint {
 namespace {
@@ -335,6 +336,92 @@ TEST(Paint, MirrorPaintsBothSides)
       right = right || out.surface.points[v][0] > 3.f;
     }
   EXPECT_TRUE(left && right);
+}
+
+TEST(Paint, PatchLanesAndTexelItemsGiveTheSameBits)
+{
+  // CPU devices paint eight patches per work item (paint_patches), a patch
+  // per lane, where the dab needs no brush normal and no raster: every op,
+  // falloff and channel there, the mask's hold on the weight and the
+  // label's locks, must leave the channels as paint_dab does.
+  const auto strokes = [] {
+    std::vector<Stroke> out;
+    Stroke diffuse = paint_diffuse(dab_at({1.5f, 0.5f, 1.f}, 0.9f, FALLOFF_SMOOTHSTEP), {0.9f, 0.2f, 0.4f, 0.6f});
+    diffuse.paint().op = PAINT_OP_OVER;
+    diffuse.points.push_back({0.5f, 0.5f, 1.f});
+    out.push_back(diffuse);
+    Stroke mask = dab_at({0.5f, 0.5f, 1.f}, 0.5f, FALLOFF_LINEAR);
+    mask.paint().value[CHANNEL_MASK] = {0.7f, 0.7f, 0.7f, 0.8f};
+    mask.paint().alpha[CHANNEL_MASK] = 0.9f;
+    out.push_back(mask);
+    Stroke polish = dab_at({1.f, 0.5f, 1.f}, 0.8f, FALLOFF_GAUSSIAN);
+    polish.paint().specular_coefficient = 0.3f;
+    polish.paint().value[CHANNEL_SPECULAR] = {0.2f, 0.5f, 0.9f, 0.7f};
+    polish.paint().alpha[CHANNEL_SPECULAR] = 0.8f;
+    out.push_back(polish);
+    Stroke hue = dab_at({1.5f, 0.2f, 1.f}, 0.7f, FALLOFF_LINEAR);
+    hue.paint().op = PAINT_OP_MAX;
+    hue.paint().value[CHANNEL_SPECULAR] = {0.6f, 0.1f, 0.3f, 1.f};
+    hue.paint().alpha[CHANNEL_SPECULAR] = 1.f;
+    hue.paint().value[CHANNEL_ROUGHNESS] = {0.8f, 0.f, 0.f, 0.5f};
+    hue.paint().alpha[CHANNEL_ROUGHNESS] = 0.6f;
+    out.push_back(hue);
+    Stroke add = dab_at({0.8f, 0.8f, 1.f}, 1.1f, FALLOFF_CONSTANT);
+    add.paint().op = PAINT_OP_ADD;
+    add.brush.strength = 0.7f;
+    add.paint().value[CHANNEL_DISPLACEMENT] = {0.05f, 0.f, 0.f, 1.f};
+    add.paint().alpha[CHANNEL_DISPLACEMENT] = 1.f;
+    add.paint().value[CHANNEL_DIFFUSE] = {0.3f, 0.3f, 0.3f, 1.f};
+    add.paint().alpha[CHANNEL_DIFFUSE] = 0.5f;
+    out.push_back(add);
+    Stroke subtract = paint_diffuse(dab_at({1.2f, 0.6f, 1.f}, 0.6f, FALLOFF_SMOOTHSTEP), {0.1f, 0.4f, 0.2f, 1.f});
+    subtract.paint().op = PAINT_OP_SUBTRACT;
+    out.push_back(subtract);
+    Stroke seven = dab_at({1.5f, 0.5f, 1.f}, 0.6f, FALLOFF_LINEAR);
+    seven.tool = Tool::Label;
+    seven.paint().value[CHANNEL_LABEL] = {7.f, 7.f, 7.f, 1.f};
+    seven.paint().alpha[CHANNEL_LABEL] = 1.f;
+    out.push_back(seven);
+    Stroke locked = seven;
+    locked.points = {{1.0f, 0.5f, 1.f}};
+    locked.brush.radius = 1.2f;
+    locked.paint().value[CHANNEL_LABEL] = {3.f, 3.f, 3.f, 1.f};
+    locked.paint().locked_labels = {7};
+    out.push_back(locked);
+    Stroke merge = seven;
+    merge.brush.radius = 1.5f;
+    merge.paint().value[CHANNEL_LABEL] = {5.f, 5.f, 5.f, 1.f};
+    merge.paint().only_over_label = 3;
+    out.push_back(merge);
+    Stroke copy = paint_diffuse(dab_at({0.5f, 0.8f, 1.f}, 0.7f, FALLOFF_SMOOTHSTEP), {0.f, 0.8f, 0.1f, 1.f});
+    copy.paint().op = PAINT_OP_COPY;
+    copy.brush.strength = 0.6f;
+    out.push_back(copy);
+    return out;
+  }();
+  std::vector<PaintChannels> results;
+  for (const bool per_patch : {true, false}) {
+    PaintSurface surface(test::runtime(), test::genus_two(), 4, AtlasStorage::Buffer);
+    surface.atlas().set_patch_items(per_patch);
+    for (const Stroke& s : strokes)
+      ASSERT_GT(surface.apply(s).dabs_applied, 0u);
+    results.push_back(surface.read_channels());
+  }
+  const auto same = [](const std::vector<Float4>& a, const std::vector<Float4>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Float4)) == 0;
+  };
+  EXPECT_TRUE(same(results[0].diffuse, results[1].diffuse));
+  EXPECT_TRUE(same(results[0].specular, results[1].specular));
+  EXPECT_TRUE(same(results[0].material, results[1].material));
+  const PaintChannels untouched =
+    PaintSurface(test::runtime(), test::genus_two(), 4, AtlasStorage::Buffer).read_channels();
+  EXPECT_FALSE(same(results[0].diffuse, untouched.diffuse));
+  EXPECT_FALSE(same(results[0].specular, untouched.specular));
+  EXPECT_FALSE(same(results[0].material, untouched.material));
+  std::set<float> labels;
+  for (const Float4& m : results[0].material)
+    labels.insert(m[2]);
+  EXPECT_EQ(labels, (std::set<float>{0.f, 3.f, 5.f, 7.f})) << "the locked 7 kept, the 3s merged in part";
 }
 
 TEST(StrokeScript, SamplesFollowSpacingAndPressure)

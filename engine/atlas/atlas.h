@@ -44,9 +44,10 @@ public:
   void set_patch_items(bool on) { evaluator_->set_patch_items(on); }
   using TileLaunch = meshpaint::TileLaunch;
   //! AtlasEvaluator::tile_launch(), for whole-tile kernels of other families.
-  TileLaunch tile_launch(cl::Kernel& per_texel, cl::Kernel& per_patch, const LevelLayout& layout, int count) const
+  TileLaunch tile_launch(cl::Kernel& per_texel, cl::Kernel& per_patch, const LevelLayout& layout, int count,
+                         int patches_per_item = 1) const
   {
-    return evaluator_->tile_launch(per_texel, per_patch, layout, count);
+    return evaluator_->tile_launch(per_texel, per_patch, layout, count, patches_per_item);
   }
   const AtlasTopology& topology() const { return tables_->topology(); }
   //! The tables on the device, for kernels of other families.

@@ -85,10 +85,10 @@ AtlasEvaluator::AtlasEvaluator(Runtime& runtime, const AtlasTables& tables, Atla
 }
 
 TileLaunch AtlasEvaluator::tile_launch(cl::Kernel& per_texel, cl::Kernel& per_patch, const LevelLayout& l,
-                                       int count) const
+                                       int count, int patches_per_item) const
 {
   if (patch_items_)
-    return {per_patch, range1d(count), kLocal1D};
+    return {per_patch, range1d((count + patches_per_item - 1) / patches_per_item), kLocal1D};
   const auto tiles = range_tiles(l, count);
   return {per_texel, tiles.first, tiles.second};
 }

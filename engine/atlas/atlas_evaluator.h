@@ -45,9 +45,11 @@ public:
   //! steps: subdivide_first_step, subdivide_second_step). The same bits.
   bool tiles_walk_sides(int level) const { return patch_items_ && level <= 2; }
   //! A whole-tile kernel over `count` patches of a level: the per-patch
-  //! kernel over count items, or the per-texel one over range_tiles(). The
-  //! arguments are the same for both.
-  TileLaunch tile_launch(cl::Kernel& per_texel, cl::Kernel& per_patch, const LevelLayout& layout, int count) const;
+  //! kernel over count items (count / patches_per_item, rounded up, for
+  //! one that takes a patch per lane: lanes.cl), or the per-texel one over
+  //! range_tiles(). The arguments are the same for both.
+  TileLaunch tile_launch(cl::Kernel& per_texel, cl::Kernel& per_patch, const LevelLayout& layout, int count,
+                         int patches_per_item = 1) const;
 
   //! Catmull-Clark steps on `set`: layers[k + 1] (level from + k + 1) from
   //! layers[k], the whole tiles of the set's patches, which needs every

@@ -151,16 +151,12 @@ void Multires::encode(int level)
     // does its limit.
     atlas_.reduce(finest, level);
     atlas_.subdivide(level, finest, PatchSet(), &d.smooth);
-    const Atlas::TileLaunch t = atlas_.tile_launch(d.encode_details, d.encode_patches, f, f.patches);
+    const Atlas::TileLaunch t = atlas_.tile_launch(d.encode_details, d.encode_patches, f, f.patches, PATCH_LANES);
     // The per-patch kernel measures each tile's extent as it goes.
     const bool measures = &t.kernel == &d.encode_patches;
-    cl::NDRange global = t.global, local = t.local;
-    if (measures) { // PATCH_LANES patches per work item
+    if (measures)
       d.encode_patches.setArg(6, d.extent); // its last, beyond encode_details' own
-      global = cl::NDRange(round_up(std::size_t(f.patches + PATCH_LANES - 1) / PATCH_LANES, kGroup));
-      local = cl::NDRange(kGroup);
-    }
-    launch(q, t.kernel, global, local, fine, d.smooth, grid(f), f.patches, d.owned, d.details);
+    launch(q, t.kernel, t.global, t.local, fine, d.smooth, grid(f), f.patches, d.owned, d.details);
     if (!measures)
       launch(q, d.patch_extent, cl::NDRange(round_up(f.patches, kGroup)), cl::NDRange(kGroup), fine, grid(f),
              cl::Buffer(), f.patches, d.extent);

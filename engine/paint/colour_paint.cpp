@@ -34,9 +34,15 @@ void paint_dab(const DabContext& context, const std::vector<int>& patches, const
   const LevelLayout l = s.layout();
   const cl::Buffer list = device_ints(rt.context(), patches);
   d.dab = device_value(rt.context(), dab);
-  const auto tiles = range_tiles(l, int(patches.size()));
-  launch(rt.queue(), d.paint_dab, tiles.first, tiles.second, s.atlas.limit_positions_layer(),
-         s.atlas.limit_normals_layer(), grid(l), list, cl_int(patches.size()), d.dab, d.unfold, d.raster, d.stamp,
+  // Eight patches per work item on CPU devices (paint_patches), for the
+  // dabs it takes: those that need no brush normal and no raster.
+  const bool lanes = dab.space == SPACE_OBJECT && dab.pattern == PATTERN_NONE && dab.stamp_size[0] == 0;
+  const int count = int(patches.size());
+  const auto tiles = range_tiles(l, count);
+  const Atlas::TileLaunch t = lanes ? s.atlas.tile_launch(d.paint_dab, d.paint_patches, l, count, PATCH_LANES)
+                                    : Atlas::TileLaunch{d.paint_dab, tiles.first, tiles.second};
+  launch(rt.queue(), t.kernel, t.global, t.local, s.atlas.limit_positions_layer(),
+         s.atlas.limit_normals_layer(), grid(l), list, cl_int(count), d.dab, d.unfold, d.raster, d.stamp,
          context.diffuse(), context.specular(), context.material(), d.locked);
   // No wait here: the next dab's placement reads after it on the same
   // queue, and the stroke's end waits for all of its work.

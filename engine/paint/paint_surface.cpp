@@ -44,6 +44,7 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     d.brush_snap = cl::Kernel(d.positions.program, "brush_snap");
     d.brush_reach = cl::Kernel(d.positions.program, "brush_reach");
     d.paint_dab = cl::Kernel(d.positions.program, "paint_dab");
+    d.paint_patches = cl::Kernel(d.positions.program, "paint_patches");
     d.dab_weights = cl::Kernel(d.positions.program, "dab_weights");
     d.dab_weights_patches = cl::Kernel(d.positions.program, "dab_weights_patches");
     d.move_points = cl::Kernel(d.positions.program, "move_points");
