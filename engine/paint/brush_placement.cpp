@@ -6,6 +6,7 @@
 
 #include "atlas/unfolding.h"
 
+#include <algorithm> // for std::sort
 #include <cmath>   // for std::lround
 #include <cstring> // for std::memcpy
 #include <limits>  // for std::numeric_limits
@@ -42,8 +43,8 @@ std::vector<CullRecord> cull(const PaintState& state, const Vec3& centre, float 
 }
 
 //! Per patch, the sides that come within `radius` of the centre in `at`, a
-//! float4 on the device (brush_reach), into `open_sides`: at once, or with
-//! the queue's next wait.
+//! float4 on the device (brush_reach), into the first patches of
+//! `open_sides`: at once, or with the queue's next wait.
 void reach_sides(const PaintState& state, const cl::Buffer& at, float radius, std::vector<std::uint8_t>& open_sides,
                  bool wait)
 {
@@ -53,13 +54,14 @@ void reach_sides(const PaintState& state, const cl::Buffer& at, float radius, st
   const LevelLayout l = state.layout();
   launch(rt.queue(), d.brush_reach, cl::NDRange(round_up(std::size_t(l.patches), kGroup)), cl::NDRange(kGroup),
          atlas.limit_positions_layer(), grid(l), l.patches, atlas.limit_bounds(), at, radius, d.open_sides);
-  rt.queue().enqueueReadBuffer(d.open_sides, wait ? CL_TRUE : CL_FALSE, 0, open_sides.size(), open_sides.data());
+  rt.queue().enqueueReadBuffer(d.open_sides, wait ? CL_TRUE : CL_FALSE, 0, std::size_t(l.patches), open_sides.data());
 }
 
 } // namespace
 
 BrushPlacement::BrushPlacement(const AtlasTopology& topology)
-  : neighbours_(std::size_t(topology.patch_count)), open_sides_(std::size_t(topology.patch_count), 0)
+  : neighbours_(std::size_t(topology.patch_count)), open_sides_(std::size_t(topology.patch_count) + 1, REACH_NONE),
+    queue_(std::size_t(topology.patch_count) + 1)
 {
   for (int p = 0; p < topology.patch_count; ++p)
     for (int s = 0; s < 4; ++s)
@@ -108,29 +110,46 @@ std::vector<int> BrushPlacement::brush_patches(const PaintState& state, const Ve
     reach_sides(state, device_value(state.atlas.runtime().context(), cl_float4{{centre[0], centre[1], centre[2], 0.f}}),
                 reach, open_sides_, true);
 
-  // Flood from the centre's patch over the patches within reach.
-  reached_.begin(open_sides_.size());
-  // Breadth first: a patch waits in the queue long enough for the prefetch
-  // of its neighbours to arrive (depth first pops it at once).
-  // Each patch enters the queue once: room for all, and no push_back.
-  std::vector<int> queue(open_sides_.size());
-  std::size_t tail = 0;
-  const auto visit = [&](int p) {
-    if (open_sides_[std::size_t(p)] != REACH_NONE && reached_.mark(std::size_t(p))) {
-      queue[tail++] = p;
-      __builtin_prefetch(&neighbours_[std::size_t(p)]);
-    }
-  };
-  visit(start_patch);
+  // Flood from the centre's patch over the patches within reach,
+  // breadth first. A patch's byte in open_sides_ gains kQueued when it is
+  // queued: no marks to clear, and no branch on whether a neighbour was
+  // seen before (about half were, in no order a predictor learns). A side
+  // that is closed or on a border leads to the sentinel after the last
+  // patch, whose REACH_NONE already has the bit.
+  constexpr std::uint8_t kQueued = 0x40;
+  static_assert((REACH_NONE & kQueued) && REACH_NONE > 15, "the sentinel stays out of reach");
+  const int sentinel = int(open_sides_.size()) - 1;
+  std::uint8_t* open = open_sides_.data();
+  int* queue = queue_.data();
+  std::size_t tail = open[start_patch] <= 15;
+  queue[0] = start_patch;
+  open[start_patch] |= kQueued;
   for (std::size_t head = 0; head < tail; ++head) {
     const int p = queue[head];
-    const std::uint8_t open = open_sides_[std::size_t(p)];
-    for (int s = 0; s < 4; ++s)
-      if ((open >> s & 1) && neighbours_[std::size_t(p)][s] >= 0)
-        visit(neighbours_[std::size_t(p)][s]);
+    const unsigned sides = open[p];
+    const std::array<int, 4>& across = neighbours_[std::size_t(p)];
+    for (int s = 0; s < 4; ++s) {
+      const int q = (sides >> s & 1) && across[std::size_t(s)] >= 0 ? across[std::size_t(s)] : sentinel;
+      const unsigned before = open[q];
+      queue[tail] = q;
+      open[q] = std::uint8_t(before | kQueued);
+      tail += before <= 15;
+    }
   }
-  queue.resize(tail);
-  return marked_in_order(std::move(queue), reached_, open_sides_.size());
+  // In patch order: a sort of a few, a scan of the bytes for many.
+  if (tail * 16 <= std::size_t(sentinel)) {
+    std::vector<int> patches(queue, queue + tail);
+    std::sort(patches.begin(), patches.end());
+    return patches;
+  }
+  std::vector<int> patches(tail + 1);
+  std::size_t k = 0;
+  for (int p = 0; p < sentinel; ++p) {
+    patches[k] = p;
+    k += (open[p] & 0xc0) == kQueued;
+  }
+  patches.resize(k);
+  return patches;
 }
 
 void BrushPlacement::hint_snap(const PaintState& state, int patch, double u, double v)

@@ -5,7 +5,6 @@
 #pragma once
 
 #include "atlas_types.h" // for BrushDab, CullRecord
-#include "core/marks.h"
 #include "core/vec.h"
 #include "paint/paint_state.h"
 
@@ -53,8 +52,12 @@ public:
 private:
   SnapHint hint_;
   std::vector<std::array<int, 4>> neighbours_; // per patch side: the patch across, -1 on a border
-  Marks reached_;                              // per patch: reached by this dab's flood
-  std::vector<std::uint8_t> open_sides_; // per patch: bit s set if side s comes within the dab's reach, or REACH_NONE
+  //! Per patch: bit s set if side s comes within the dab's reach, or
+  //! REACH_NONE; then the flood's mark. One more entry, REACH_NONE, where
+  //! closed sides lead.
+  std::vector<std::uint8_t> open_sides_;
+  std::vector<int> queue_; // the flood's queue: room for every patch, and the sentinel
+
 };
 
 //! A parameter dab's patches around `centre_patch`, laid flat in its texels
