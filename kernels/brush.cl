@@ -215,15 +215,15 @@ inline float3 pattern_point(__global const BrushDab *dab, float3 x, int2 ij, int
  * paint_op_lanes() for a component of eight texels (paint_patches), from
  * one text so that both perform the same operations. */
 #define DEFINE_PAINT_OP(name, T, Coverage)                                                                   \
-  inline T name(int op, T paint, Coverage coverage, T surface)                                               \
-  {                                                                                                          \
-    switch (op) {                                                                                            \
-    case PAINT_OP_OVER: return paint * coverage + surface * (1.0f - coverage);                               \
-    case PAINT_OP_MAX: return fmax(paint, surface);                                                          \
-    case PAINT_OP_ADD: return surface + paint;                                                               \
-    case PAINT_OP_SUBTRACT: return surface - paint;                                                          \
-    default: return paint;                                                                                   \
-    }                                                                                                        \
+  inline T name(int op, T paint, Coverage coverage, T surface)                                                         \
+  {                                                                                                                    \
+    switch (op) {                                                                                                      \
+    case PAINT_OP_OVER: return paint * coverage + surface * (1.0f - coverage);                                         \
+    case PAINT_OP_MAX: return fmax(paint, surface);                                                                    \
+    case PAINT_OP_ADD: return surface + paint;                                                                         \
+    case PAINT_OP_SUBTRACT: return surface - paint;                                                                    \
+    default: return paint;                                                                                             \
+    }                                                                                                                  \
   }
 DEFINE_PAINT_OP(paint_op, float4, float)
 DEFINE_PAINT_OP(paint_op_lanes, float8, float8)
@@ -251,15 +251,18 @@ inline int label_open(__global const BrushDab *dab, __global const int *locked, 
   return 1;
 }
 
+/* The arguments of paint_dab and paint_patches. */
+#define PAINT_DAB_ARGUMENTS                                                                                            \
+  ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *restrict active, int active_count,                           \
+    __global const BrushDab *restrict dab, __global const PatchUnfolding *restrict unfold,                             \
+    __global const float *restrict raster, __global const float *restrict stamp, __global float4 *restrict diffuse,    \
+    __global float4 *restrict specular, __global float4 *restrict material, __global const int *restrict locked
+
 /* Range: (tile, tile * #active). Every texel of the active patches, all
  * stored copies included, so copies stay identical. unfold: a parameter
  * dab's maps, one per active patch (dab->unfolded; one unused entry for the
  * other spaces). */
-__kernel void paint_dab(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *restrict active, int active_count,
-                        __global const BrushDab *restrict dab, __global const PatchUnfolding *restrict unfold,
-                        __global const float *restrict raster, __global const float *restrict stamp,
-                        __global float4 *restrict diffuse, __global float4 *restrict specular,
-                        __global float4 *restrict material, __global const int *restrict locked)
+__kernel void paint_dab(PAINT_DAB_ARGUMENTS)
 {
   const int i = get_global_id(0), y = get_global_id(1);
   const int a = y / g.x, j = y - a * g.x;
@@ -338,13 +341,8 @@ inline float8 paint_blend_lanes(__global const BrushDab *dab, int channel, int c
  * operations in their order, so the channels get the same bits; a texel
  * outside the brush keeps its value, and lanes past the end repeat the last
  * patch, whose texels then get the same values twice. Range: active_count
- * / PATCH_LANES rounded up; the arguments are paint_dab's. */
-__kernel void paint_patches(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const int *restrict active,
-                            int active_count, __global const BrushDab *restrict dab,
-                            __global const PatchUnfolding *restrict unfold, __global const float *restrict raster,
-                            __global const float *restrict stamp, __global float4 *restrict diffuse,
-                            __global float4 *restrict specular, __global float4 *restrict material,
-                            __global const int *restrict locked)
+ * / PATCH_LANES rounded up. */
+__kernel void paint_patches(PAINT_DAB_ARGUMENTS)
 {
   const int first = get_global_id(0) * PATCH_LANES;
   if (first >= active_count)
@@ -368,17 +366,7 @@ __kernel void paint_patches(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const i
       const int8 inside = t <= 1.0f;
       if (!any(inside))
         continue;
-      float8 falloff = (float8)(1.0f); /* falloff_weight() */
-      switch (dab->falloff) {
-      case FALLOFF_LINEAR: falloff = 1.0f - t; break;
-      case FALLOFF_SMOOTHSTEP: falloff = 1.0f - t * t * (3.0f - 2.0f * t); break;
-      case FALLOFF_GAUSSIAN: {
-        /* exp() per lane: a vector exp need not round as the scalar one */
-        const float8 e = -4.5f * t * t;
-        falloff = (float8)(exp(e.s0), exp(e.s1), exp(e.s2), exp(e.s3), exp(e.s4), exp(e.s5), exp(e.s6), exp(e.s7));
-        break;
-      }
-      }
+      const float8 falloff = falloff_weight_lanes(dab->falloff, t);
       const Lanes4 m = load_lanes4(material, g, patch, ij);
       const float8 w = falloff * strength * (1.0f - m.w);
       if (alpha.x > 0.0f) {
@@ -425,6 +413,8 @@ __kernel void paint_patches(ATLAS_IN pos, ATLAS_IN nrm, int2 g, __global const i
                    select(m.z, label, inside), select(m.w, mask, inside));
     }
 }
+
+#undef PAINT_DAB_ARGUMENTS
 
 /* Range: count * tile^2 work items in groups of `get_local_size(0)`, one per
  * texel of the listed patches. Per work group: the weighted sums of diffuse

@@ -127,3 +127,19 @@ inline float falloff_weight(int falloff, float t)
   default: return 1.0f;
   }
 }
+
+/* falloff_weight() of eight texels, a lane each (lanes.cl): the same
+ * operations, and exp() lane by lane, since a vector exp need not round as
+ * the scalar one does. */
+inline float8 falloff_weight_lanes(int falloff, float8 t)
+{
+  switch (falloff) {
+  case FALLOFF_LINEAR: return 1.0f - t;
+  case FALLOFF_SMOOTHSTEP: return 1.0f - t * t * (3.0f - 2.0f * t);
+  case FALLOFF_GAUSSIAN: {
+    const float8 e = -4.5f * t * t;
+    return (float8)(exp(e.s0), exp(e.s1), exp(e.s2), exp(e.s3), exp(e.s4), exp(e.s5), exp(e.s6), exp(e.s7));
+  }
+  default: return (float8)(1.0f);
+  }
+}

@@ -260,12 +260,15 @@ TEXEL_INLINE void move_texel(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_pos, AT
               moved_point(ATLAS_LOAD(src, g, p, ij), w, limit_nrm, g, p, ij, mode, amount, centre, centre_normal));
 }
 
-__kernel void move_dab(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g,
-                       __global const int *restrict list, int count, __global const BrushDab *restrict dab,
-                       __global const PatchUnfolding *restrict unfold, __global const float *restrict stamp,
-                       __global const float4 *restrict material, int masked, int2 gm, int stride,
-                       __global const uchar *restrict outside, int mode, float amount, float4 centre,
-                       float4 centre_normal, int plain, float radius, int falloff, float strength)
+/* The arguments of move_dab and its forms per patch. */
+#define MOVE_DAB_ARGUMENTS                                                                                             \
+  MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g, __global const int *restrict list,      \
+    int count, __global const BrushDab *restrict dab, __global const PatchUnfolding *restrict unfold,                  \
+    __global const float *restrict stamp, __global const float4 *restrict material, int masked, int2 gm,               \
+    int stride, __global const uchar *restrict outside, int mode, float amount, float4 centre,                         \
+    float4 centre_normal, int plain, float radius, int falloff, float strength
+
+__kernel void move_dab(MOVE_DAB_ARGUMENTS)
 {
   int p;
   int2 ij;
@@ -275,18 +278,80 @@ __kernel void move_dab(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_pos, ATLAS_IN
 }
 
 /* Range: count; the same with a work item per patch (see FOR_EACH_PATCH_TEXEL). */
-__kernel void move_dab_patches(MOVED_IN src, MOVED_OUT dst, ATLAS_IN limit_pos, ATLAS_IN limit_nrm, int2 g,
-                               __global const int *restrict list, int count, __global const BrushDab *restrict dab,
-                               __global const PatchUnfolding *restrict unfold, __global const float *restrict stamp,
-                               __global const float4 *restrict material, int masked, int2 gm, int stride,
-                               __global const uchar *restrict outside, int mode, float amount, float4 centre,
-                               float4 centre_normal, int plain, float radius, int falloff, float strength)
+__kernel void move_dab_patches(MOVE_DAB_ARGUMENTS)
 {
   FOR_EACH_PATCH_TEXEL(g, list, count,
                        move_texel(src, dst, limit_pos, limit_nrm, g, p, ij, patch_item, dab, unfold, stamp,
                                   material, masked, gm, stride, outside, mode, amount, centre, centre_normal, plain,
                                   radius, falloff, strength));
 }
+
+/* move_dab_patches for a plain dab, eight listed patches per work item, a
+ * patch per lane (lanes.cl; CPU devices): each lane performs move_texel()'s
+ * operations in their order, so the points get the same bits. Lanes past
+ * the end repeat the last patch, whose points then get the same values
+ * twice. Range: count / PATCH_LANES rounded up. */
+__kernel void move_dab_lanes(MOVE_DAB_ARGUMENTS)
+{
+  const int first = get_global_id(0) * PATCH_LANES;
+  if (first >= count)
+    return;
+  const int8 at = min(first + (int8)(0, 1, 2, 3, 4, 5, 6, 7), (int8)(count - 1));
+  const int8 patch =
+    list ? (int8)(list[at.s0], list[at.s1], list[at.s2], list[at.s3], list[at.s4], list[at.s5], list[at.s6], list[at.s7])
+         : at;
+  const int8 sides = outside ? (int8)(outside[at.s0], outside[at.s1], outside[at.s2], outside[at.s3], outside[at.s4],
+                                      outside[at.s5], outside[at.s6], outside[at.s7])
+                             : (int8)(0);
+  const int n = g.x - 1;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const int2 ij = (int2)(i, j);
+      Lanes d = load_lanes(limit_pos, g, patch, ij);
+      d.x -= centre.x;
+      d.y -= centre.y;
+      d.z -= centre.z;
+      const float8 t = sqrt(lanes_dot(d, d)) / radius;
+      const int8 held = (sides & texel_border(ij, n)) != 0;
+      const float8 w = select((float8)(0.0f), falloff_weight_lanes(falloff, t) * strength, (t <= 1.0f) & ~held);
+      const Lanes4 x = transpose_lanes(ATLAS_LOAD(src, g, patch.s0, ij), ATLAS_LOAD(src, g, patch.s1, ij),
+                                       ATLAS_LOAD(src, g, patch.s2, ij), ATLAS_LOAD(src, g, patch.s3, ij),
+                                       ATLAS_LOAD(src, g, patch.s4, ij), ATLAS_LOAD(src, g, patch.s5, ij),
+                                       ATLAS_LOAD(src, g, patch.s6, ij), ATLAS_LOAD(src, g, patch.s7, ij));
+      /* moved_point() */
+      const float8 s = amount * w;
+      float8 mx, my, mz;
+      if (mode == MOVE_INFLATE) {
+        const Lanes nrm = load_lanes(limit_nrm, g, patch, ij);
+        mx = x.x + s * nrm.x;
+        my = x.y + s * nrm.y;
+        mz = x.z + s * nrm.z;
+      } else if (mode == MOVE_FLATTEN) {
+        const float8 dx = x.x - centre.x, dy = x.y - centre.y, dz = x.z - centre.z;
+        const float8 k = s * ((dx * centre_normal.x + dy * centre_normal.y) + dz * centre_normal.z);
+        mx = x.x - k * centre_normal.x;
+        my = x.y - k * centre_normal.y;
+        mz = x.z - k * centre_normal.z;
+      } else {
+        mx = x.x + s * centre_normal.x;
+        my = x.y + s * centre_normal.y;
+        mz = x.z + s * centre_normal.z;
+      }
+      const int8 moves = w != 0.0f;
+      mx = select(x.x, mx, moves);
+      my = select(x.y, my, moves);
+      mz = select(x.z, mz, moves);
+#ifdef ATLAS_IMAGE
+#define STORE_LANE(l) ATLAS_STORE(dst, g, patch.s##l, ij, (float4)(mx.s##l, my.s##l, mz.s##l, x.w.s##l));
+      STORE_LANE(0) STORE_LANE(1) STORE_LANE(2) STORE_LANE(3) STORE_LANE(4) STORE_LANE(5) STORE_LANE(6) STORE_LANE(7)
+#undef STORE_LANE
+#else
+      store_lanes4(dst, g, patch, ij, mx, my, mz, x.w);
+#endif
+    }
+}
+
+#undef MOVE_DAB_ARGUMENTS
 
 /* Range: (tile, tile * count). Copies the listed patches' tiles of a layer
  * into a compact buffer (tile after tile), for undo; and back. */

@@ -365,6 +365,44 @@ TEST(GeometryBrush, PatchItemsAndTexelItemsGiveTheSameBits)
     << "the strokes moved nothing";
 }
 
+TEST(GeometryBrush, PatchLanesMoveAsTexelItems)
+{
+  // A plain dab (a ball, no stamp, no mask) moves eight patches per work
+  // item where patches are items (move_dab_lanes): each move mode and
+  // falloff, at the finest level and at an edit level (whose shared sides
+  // and corners are held), under both storages, against the per-texel form.
+  struct Case
+  {
+    Tool tool;
+    int falloff;
+  };
+  for (const AtlasStorage storage : {AtlasStorage::Buffer, AtlasStorage::Image})
+    for (const Case c : {Case{Tool::Sculpt, FALLOFF_GAUSSIAN}, Case{Tool::Inflate, FALLOFF_LINEAR},
+                         Case{Tool::Flatten, FALLOFF_SMOOTHSTEP}, Case{Tool::Sculpt, FALLOFF_CONSTANT}}) {
+      std::vector<std::vector<std::vector<Float4>>> results;
+      for (const bool per_patch : {true, false}) {
+        PaintSurface surface(test::runtime(), test::genus_two(), 4, storage);
+        surface.atlas().set_patch_items(per_patch);
+        Stroke s = brush(c.tool, {1.5f, 0.5f, 1.f}, 0.8f);
+        s.brush.falloff = c.falloff;
+        s.move().amount = 0.1f;
+        EXPECT_GT(surface.apply(s).dabs_applied, 0u);
+        s.set_edit_level(2);
+        s.points = {{0.5f, 0.5f, 1.f}};
+        EXPECT_GT(surface.apply(s).dabs_applied, 0u);
+        results.push_back({surface.atlas().read_positions(2), surface.atlas().read_positions(4)});
+      }
+      const std::string what = std::string(storage == AtlasStorage::Image ? "image" : "buffer") + ", tool " +
+                               std::to_string(int(c.tool)) + ", falloff " + std::to_string(c.falloff);
+      expect_same_bits(results[0], results[1], what);
+      PaintSurface untouched(test::runtime(), test::genus_two(), 4, storage);
+      EXPECT_NE(std::memcmp(results[0][1].data(), untouched.atlas().read_positions(4).data(),
+                            results[0][1].size() * sizeof(Float4)),
+                0)
+        << what << ": the strokes moved nothing";
+    }
+}
+
 TEST(GeometryBrush, HostListsAndDeviceFlagsGiveTheSameBits)
 {
   // The two ways of making a neighbourhood set (Atlas::device_set_share()),

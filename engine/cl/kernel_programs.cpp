@@ -29,7 +29,7 @@ const std::vector<KernelFile>& registry()
     {"detail.cl", {"lanes.cl"}},
     {"brush_space.cl", {"atlas_access.cl"}},
     {"brush.cl", {"brush_space.cl", "lanes.cl"}},
-    {"geometry.cl", {"brush_space.cl"}},
+    {"geometry.cl", {"brush_space.cl", "lanes.cl"}},
     {"lighting.cl", {"atlas_access.cl"}},
     {"display.cl", {"atlas_access.cl"}},
     {"copy.cl", {}},

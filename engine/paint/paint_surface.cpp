@@ -51,6 +51,7 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     d.move_points_patches = cl::Kernel(d.positions.program, "move_points_patches");
     d.move_dab = cl::Kernel(d.positions.program, "move_dab");
     d.move_dab_patches = cl::Kernel(d.positions.program, "move_dab_patches");
+    d.move_dab_lanes = cl::Kernel(d.positions.program, "move_dab_lanes");
     d.dab_pickup = cl::Kernel(d.positions.program, "dab_pickup");
     d.spray_pick = cl::Kernel(d.positions.program, "spray_pick");
     d.spray_points = cl::Kernel(d.positions.program, "spray_points");

@@ -89,7 +89,9 @@ void move_dab(const DabContext& context, const std::vector<int>& patches, const 
   if (weigh_as_moved) {
     const bool plain = dab.space == SPACE_OBJECT && dab.stamp_size[0] == 0 && !context.mask_painted;
     const LevelDab at = upload_dab(context, patches, dab, level);
-    const Atlas::TileLaunch t = s.atlas.tile_launch(d.move_dab, d.move_dab_patches, l, count);
+    // A plain dab takes eight patches per work item where patches are items.
+    const Atlas::TileLaunch t = plain ? s.atlas.tile_launch(d.move_dab, d.move_dab_lanes, l, count, PATCH_LANES)
+                                      : s.atlas.tile_launch(d.move_dab, d.move_dab_patches, l, count);
     launch(q, t.kernel, t.global, t.local, pos, moved, limit, normals, grid(l), list, count, d.dab, d.unfold, d.stamp,
            context.material(), cl_int(context.mask_painted), grid(s.layout()), at.stride, at.outside, mode, amount,
            centre, step, cl_int(plain), dab.radius, cl_int(dab.falloff), dab.strength);
