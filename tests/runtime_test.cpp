@@ -58,8 +58,8 @@ TEST(Runtime, EveryKernelFileBuildsFromItsNeeds)
   for (const std::string& options : variants)
     for (const std::string& file : kernel_files())
       EXPECT_NO_THROW(build_program(*test::runtime(), kernel_file_with_needs(file), options)) << file << ", " << options;
-  EXPECT_EQ(kernel_file_with_needs("geometry.cl"),
-            (std::vector<std::string>{"atlas_types.h", "atlas_access.cl", "brush_space.cl", "geometry.cl"}));
+  EXPECT_EQ(kernel_file_with_needs("geometry.cl"), (std::vector<std::string>{"atlas_types.h", "atlas_access.cl",
+                                                                             "brush_space.cl", "lanes.cl", "geometry.cl"}));
   EXPECT_THROW(kernel_file_with_needs("missing.cl"), DeviceError);
 }
 
