@@ -117,29 +117,26 @@ inline float stamp_weight(__global const BrushDab *dab, __global const float *st
   return raster_sample(stamp, size, (float3)(u, v, 0.0f), 0).x;
 }
 
-/* Brush profile at t = distance / radius in [0, 1]. */
-inline float falloff_weight(int falloff, float t)
+/* exp() of eight values lane by lane: a vector exp need not round as the
+ * scalar one does. */
+inline float8 exp_lanes(float8 e)
 {
-  switch (falloff) {
-  case FALLOFF_LINEAR: return 1.0f - t;
-  case FALLOFF_SMOOTHSTEP: return 1.0f - t * t * (3.0f - 2.0f * t);
-  case FALLOFF_GAUSSIAN: return exp(-4.5f * t * t); /* 3 sigma at the rim */
-  default: return 1.0f;
-  }
+  return (float8)(exp(e.s0), exp(e.s1), exp(e.s2), exp(e.s3), exp(e.s4), exp(e.s5), exp(e.s6), exp(e.s7));
 }
 
-/* falloff_weight() of eight texels, a lane each (lanes.cl): the same
- * operations, and exp() lane by lane, since a vector exp need not round as
- * the scalar one does. */
-inline float8 falloff_weight_lanes(int falloff, float8 t)
-{
-  switch (falloff) {
-  case FALLOFF_LINEAR: return 1.0f - t;
-  case FALLOFF_SMOOTHSTEP: return 1.0f - t * t * (3.0f - 2.0f * t);
-  case FALLOFF_GAUSSIAN: {
-    const float8 e = -4.5f * t * t;
-    return (float8)(exp(e.s0), exp(e.s1), exp(e.s2), exp(e.s3), exp(e.s4), exp(e.s5), exp(e.s6), exp(e.s7));
+/* Brush profile at t = distance / radius in [0, 1]: falloff_weight() for a
+ * texel, falloff_weight_lanes() for eight, a lane each (lanes.cl), from one
+ * text so that both perform the same operations. */
+#define DEFINE_FALLOFF_WEIGHT(name, T, EXP)                                     \
+  inline T name(int falloff, T t)                                               \
+  {                                                                             \
+    switch (falloff) {                                                          \
+    case FALLOFF_LINEAR: return 1.0f - t;                                       \
+    case FALLOFF_SMOOTHSTEP: return 1.0f - t * t * (3.0f - 2.0f * t);           \
+    case FALLOFF_GAUSSIAN: return EXP(-4.5f * t * t); /* 3 sigma at the rim */  \
+    default: return (T)(1.0f);                                                  \
+    }                                                                           \
   }
-  default: return (float8)(1.0f);
-  }
-}
+DEFINE_FALLOFF_WEIGHT(falloff_weight, float, exp)
+DEFINE_FALLOFF_WEIGHT(falloff_weight_lanes, float8, exp_lanes)
+#undef DEFINE_FALLOFF_WEIGHT

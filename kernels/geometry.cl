@@ -314,10 +314,7 @@ __kernel void move_dab_lanes(MOVE_DAB_ARGUMENTS)
       const float8 t = sqrt(lanes_dot(d, d)) / radius;
       const int8 held = (sides & texel_border(ij, n)) != 0;
       const float8 w = select((float8)(0.0f), falloff_weight_lanes(falloff, t) * strength, (t <= 1.0f) & ~held);
-      const Lanes4 x = transpose_lanes(ATLAS_LOAD(src, g, patch.s0, ij), ATLAS_LOAD(src, g, patch.s1, ij),
-                                       ATLAS_LOAD(src, g, patch.s2, ij), ATLAS_LOAD(src, g, patch.s3, ij),
-                                       ATLAS_LOAD(src, g, patch.s4, ij), ATLAS_LOAD(src, g, patch.s5, ij),
-                                       ATLAS_LOAD(src, g, patch.s6, ij), ATLAS_LOAD(src, g, patch.s7, ij));
+      const Lanes4 x = LANES4_LOADED(ATLAS_LOAD, src, g, patch, ij);
       /* moved_point() */
       const float8 s = amount * w;
       float8 mx, my, mz;

@@ -35,14 +35,18 @@ TEXEL_INLINE Lanes4 transpose_lanes(float4 v0, float4 v1, float4 v2, float4 v3, 
   return r;
 }
 
-/* Texel ij of the patches `patch`, a lane each, as (x, y, z): eight
- * 16-byte loads and a transpose. */
+/* Texel ij of the patches `patch`, a lane each, all four components: eight
+ * 16-byte loads by LOAD(a, g, p, ij) and a transpose. */
+#define LANES4_LOADED(LOAD, a, g, patch, ij)                                                               \
+  transpose_lanes(LOAD(a, g, (patch).s0, ij), LOAD(a, g, (patch).s1, ij), LOAD(a, g, (patch).s2, ij),    \
+                  LOAD(a, g, (patch).s3, ij), LOAD(a, g, (patch).s4, ij), LOAD(a, g, (patch).s5, ij),    \
+                  LOAD(a, g, (patch).s6, ij), LOAD(a, g, (patch).s7, ij))
+#define PATCH_MAJOR_LOAD(a, g, p, ij) ((a)[PATCH_MAJOR_INDEX(g, p, ij)])
+
+/* From an atlas layer, as (x, y, z). */
 TEXEL_INLINE Lanes load_lanes(ATLAS_IN a, int2 g, int8 patch, int2 ij)
 {
-  const Lanes4 v = transpose_lanes(ATLAS_LOAD(a, g, patch.s0, ij), ATLAS_LOAD(a, g, patch.s1, ij),
-                                   ATLAS_LOAD(a, g, patch.s2, ij), ATLAS_LOAD(a, g, patch.s3, ij),
-                                   ATLAS_LOAD(a, g, patch.s4, ij), ATLAS_LOAD(a, g, patch.s5, ij),
-                                   ATLAS_LOAD(a, g, patch.s6, ij), ATLAS_LOAD(a, g, patch.s7, ij));
+  const Lanes4 v = LANES4_LOADED(ATLAS_LOAD, a, g, patch, ij);
   Lanes r;
   r.x = v.x;
   r.y = v.y;
@@ -50,14 +54,10 @@ TEXEL_INLINE Lanes load_lanes(ATLAS_IN a, int2 g, int8 patch, int2 ij)
   return r;
 }
 
-/* The same from a patch-major float4 buffer (the paint channels), all four
- * components. */
+/* From a patch-major float4 buffer (the paint channels). */
 TEXEL_INLINE Lanes4 load_lanes4(__global const float4 *a, int2 g, int8 patch, int2 ij)
 {
-  return transpose_lanes(a[PATCH_MAJOR_INDEX(g, patch.s0, ij)], a[PATCH_MAJOR_INDEX(g, patch.s1, ij)],
-                         a[PATCH_MAJOR_INDEX(g, patch.s2, ij)], a[PATCH_MAJOR_INDEX(g, patch.s3, ij)],
-                         a[PATCH_MAJOR_INDEX(g, patch.s4, ij)], a[PATCH_MAJOR_INDEX(g, patch.s5, ij)],
-                         a[PATCH_MAJOR_INDEX(g, patch.s6, ij)], a[PATCH_MAJOR_INDEX(g, patch.s7, ij)]);
+  return LANES4_LOADED(PATCH_MAJOR_LOAD, a, g, patch, ij);
 }
 
 /* The inverse of load_lanes4(): texel ij of the patches `patch` set to

@@ -2,6 +2,7 @@
 
 #include "atlas/weld.h"
 #include "core/errors.h"
+#include "core/marks.h"
 #include "paint/paint_surface.h"
 #include "support/copies.h"
 #include "support/runtime.h"
@@ -13,6 +14,7 @@
 #include <array>     // for std::array
 #include <cmath>   // for std::sqrt
 #include <cstring> // for std::memcmp
+#include <numeric> // for std::iota
 #include <set>     // for std::set
 
 namespace meshpaint {
@@ -179,6 +181,31 @@ TEST(Paint, DoesNotBleedThroughTheAir)
   }
   EXPECT_GT(top, 50u);
   EXPECT_EQ(bottom, 0u) << "paint reached the far side of the plate";
+}
+
+// The reached patches come in increasing order, by a sort of the few or a
+// scan of the many (the flood's and the patch sets' lists).
+TEST(Paint, MarkedItemsComeInOrderBySortOrByScan)
+{
+  const std::size_t n = 1000;
+  for (const std::size_t every : {1, 3, 97}) { // scan, scan, sort
+    std::vector<int> listed;
+    Marks marks;
+    marks.begin(n);
+    for (std::size_t i = n; i-- > 0;)
+      if ((i * 7919) % every == 0) { // a marked item every `every`, listed from the top
+        listed.push_back(int(i));
+        marks.mark(i);
+      }
+    std::vector<int> expected = listed;
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(marked_in_order(listed, marks, n), expected) << every;
+    EXPECT_EQ(in_order(listed, n, [&marks](std::size_t i) { return marks.marked(i); }), expected) << every;
+  }
+  std::vector<int> all(n);
+  std::iota(all.begin(), all.end(), 0);
+  EXPECT_EQ(in_order(all, n, [](std::size_t) { return true; }), all);
+  EXPECT_TRUE(in_order({}, n, [](std::size_t) { return false; }).empty());
 }
 
 TEST(Paint, FalloffsShapeTheWeight)

@@ -84,13 +84,18 @@ AtlasEvaluator::AtlasEvaluator(Runtime& runtime, const AtlasTables& tables, Atla
   ring_flags_ = flags(topo.rings.size());
 }
 
+TileLaunch texel_launch(cl::Kernel& per_texel, const LevelLayout& l, int count)
+{
+  const auto tiles = range_tiles(l, count);
+  return {per_texel, tiles.first, tiles.second};
+}
+
 TileLaunch AtlasEvaluator::tile_launch(cl::Kernel& per_texel, cl::Kernel& per_patch, const LevelLayout& l,
                                        int count, int patches_per_item) const
 {
   if (patch_items_)
     return {per_patch, range1d((count + patches_per_item - 1) / patches_per_item), kLocal1D};
-  const auto tiles = range_tiles(l, count);
-  return {per_texel, tiles.first, tiles.second};
+  return texel_launch(per_texel, l, count);
 }
 
 AtlasEvaluator::Arguments AtlasEvaluator::arguments(const PatchSet& set) const

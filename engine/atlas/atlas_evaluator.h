@@ -22,6 +22,9 @@ struct TileLaunch
   cl::NDRange global, local;
 };
 
+//! The per-texel form: `per_texel` over range_tiles() of `count` patches.
+TileLaunch texel_launch(cl::Kernel& per_texel, const LevelLayout& layout, int count);
+
 class AtlasEvaluator
 {
 public:

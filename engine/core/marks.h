@@ -1,9 +1,10 @@
 // Marks on items 0..n-1 that all clear at once.
 #pragma once
 
-#include <algorithm> // for std::sort
+#include <algorithm> // for std::sort, std::min
 #include <cstddef>   // for std::size_t
 #include <cstdint>   // for std::uint8_t
+#include <utility>   // for std::move
 #include <vector>    // for std::vector
 
 namespace meshpaint {
@@ -37,28 +38,32 @@ private:
   std::uint8_t generation_ = 0;
 };
 
-//! The items marked in `marks` (of n), in increasing order, given that
-//! `listed` holds them in any order, each once: for many a scan of the
-//! marks beats a sort.
-inline std::vector<int> marked_in_order(std::vector<int> listed, const Marks& marks, std::size_t n)
+//! The items i < n for which marked(i) holds, in increasing order, given
+//! that `listed` holds them in any order, each once (the result has at most
+//! as many): for a few a sort of `listed`, for many a scan, which writes
+//! every item and keeps it by a count, no branch on the mark.
+template <class Marked>
+std::vector<int> in_order(std::vector<int> listed, std::size_t n, Marked marked)
 {
   if (listed.size() * 16 <= n) {
     std::sort(listed.begin(), listed.end());
     return listed;
   }
-  // Written in place: no push_back per item where `listed` holds each
-  // marked item once, and right whatever it holds.
+  const std::size_t held = listed.size();
+  listed.resize(held + 1);
   std::size_t k = 0;
-  for (std::size_t i = 0; i < n; ++i)
-    if (marks.marked(i)) {
-      if (k < listed.size())
-        listed[k] = int(i);
-      else
-        listed.push_back(int(i));
-      ++k;
-    }
-  listed.resize(k);
+  for (std::size_t i = 0; i < n && k <= held; ++i) {
+    listed[k] = int(i);
+    k += marked(i);
+  }
+  listed.resize(std::min(k, held));
   return listed;
+}
+
+//! in_order() of the items marked in `marks`.
+inline std::vector<int> marked_in_order(std::vector<int> listed, const Marks& marks, std::size_t n)
+{
+  return in_order(std::move(listed), n, [&marks](std::size_t i) { return marks.marked(i); });
 }
 
 } // namespace meshpaint

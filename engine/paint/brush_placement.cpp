@@ -5,8 +5,8 @@
 #include "paint/paint_device.h"
 
 #include "atlas/unfolding.h"
+#include "core/marks.h"
 
-#include <algorithm> // for std::sort
 #include <cmath>   // for std::lround
 #include <cstring> // for std::memcpy
 #include <limits>  // for std::numeric_limits
@@ -136,20 +136,8 @@ std::vector<int> BrushPlacement::brush_patches(const PaintState& state, const Ve
       tail += before <= 15;
     }
   }
-  // In patch order: a sort of a few, a scan of the bytes for many.
-  if (tail * 16 <= std::size_t(sentinel)) {
-    std::vector<int> patches(queue, queue + tail);
-    std::sort(patches.begin(), patches.end());
-    return patches;
-  }
-  std::vector<int> patches(tail + 1);
-  std::size_t k = 0;
-  for (int p = 0; p < sentinel; ++p) {
-    patches[k] = p;
-    k += (open[p] & 0xc0) == kQueued;
-  }
-  patches.resize(k);
-  return patches;
+  return in_order(std::vector<int>(queue, queue + tail), std::size_t(sentinel),
+                  [open](std::size_t p) { return (open[p] & 0xc0) == kQueued; });
 }
 
 void BrushPlacement::hint_snap(const PaintState& state, int patch, double u, double v)

@@ -38,9 +38,8 @@ void paint_dab(const DabContext& context, const std::vector<int>& patches, const
   // dabs it takes: those that need no brush normal and no raster.
   const bool lanes = dab.space == SPACE_OBJECT && dab.pattern == PATTERN_NONE && dab.stamp_size[0] == 0;
   const int count = int(patches.size());
-  const auto tiles = range_tiles(l, count);
-  const Atlas::TileLaunch t = lanes ? s.atlas.tile_launch(d.paint_dab, d.paint_patches, l, count, PATCH_LANES)
-                                    : Atlas::TileLaunch{d.paint_dab, tiles.first, tiles.second};
+  const Atlas::TileLaunch t =
+    lanes ? s.atlas.tile_launch(d.paint_dab, d.paint_patches, l, count, PATCH_LANES) : texel_launch(d.paint_dab, l, count);
   launch(rt.queue(), t.kernel, t.global, t.local, s.atlas.limit_positions_layer(),
          s.atlas.limit_normals_layer(), grid(l), list, cl_int(count), d.dab, d.unfold, d.raster, d.stamp,
          context.diffuse(), context.specular(), context.material(), d.locked);
