@@ -338,13 +338,7 @@ __kernel void move_dab_lanes(MOVE_DAB_ARGUMENTS)
       mx = select(x.x, mx, moves);
       my = select(x.y, my, moves);
       mz = select(x.z, mz, moves);
-#ifdef ATLAS_IMAGE
-#define STORE_LANE(l) ATLAS_STORE(dst, g, patch.s##l, ij, (float4)(mx.s##l, my.s##l, mz.s##l, x.w.s##l));
-      STORE_LANE(0) STORE_LANE(1) STORE_LANE(2) STORE_LANE(3) STORE_LANE(4) STORE_LANE(5) STORE_LANE(6) STORE_LANE(7)
-#undef STORE_LANE
-#else
-      store_lanes4(dst, g, patch, ij, mx, my, mz, x.w);
-#endif
+      atlas_store_lanes4(dst, g, patch, ij, mx, my, mz, x.w);
     }
 }
 

@@ -82,6 +82,20 @@ TEXEL_INLINE void store_lanes4(__global float4 *out, int2 g, int8 patch, int2 ij
   out[PATCH_MAJOR_INDEX(g, patch.s7, ij)] = l67.hi;
 }
 
+/* The same into an atlas layer: store_lanes4() on buffers, a write per
+ * lane on images. */
+TEXEL_INLINE void atlas_store_lanes4(ATLAS_OUT out, int2 g, int8 patch, int2 ij, float8 x, float8 y, float8 z,
+                                     float8 w)
+{
+#ifdef ATLAS_IMAGE
+#define STORE_LANE(l) ATLAS_STORE(out, g, patch.s##l, ij, (float4)(x.s##l, y.s##l, z.s##l, w.s##l));
+  STORE_LANE(0) STORE_LANE(1) STORE_LANE(2) STORE_LANE(3) STORE_LANE(4) STORE_LANE(5) STORE_LANE(6) STORE_LANE(7)
+#undef STORE_LANE
+#else
+  store_lanes4(out, g, patch, ij, x, y, z, w);
+#endif
+}
+
 /* Texel ij of the patches `patch` set to (x, y, z, 0). */
 TEXEL_INLINE void store_lanes(__global float4 *out, int2 g, int8 patch, int2 ij, float8 x, float8 y, float8 z)
 {

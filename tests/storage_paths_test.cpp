@@ -171,6 +171,64 @@ TEST(StoragePaths, HostRoundTripKeepsPatchMajorOrder)
   EXPECT_EQ(differing_texels(image.read_positions(3), texels), 0u);
 }
 
+std::vector<Float4> read_bounds(Atlas& atlas)
+{
+  std::vector<Float4> out(std::size_t(atlas.topology().patch_count));
+  atlas.runtime().queue().enqueueReadBuffer(atlas.limit_bounds(), CL_TRUE, 0, out.size() * sizeof(Float4), out.data());
+  return out;
+}
+
+// CPUs take the limit's tiles a work item per patch (limit_patches), GPUs a
+// work item per texel (limit_tiles). The same bits for the whole surface
+// and for sets as host lists and as device flags, with some patches
+// collapsed to a point, whose normals take normalize()'s own way.
+TEST_P(StoragePaths, LimitPerPatchAgreesWithPerTexel)
+{
+  const BaseMesh mesh = test::shape(GetParam());
+  std::vector<AtlasStorage> storages = {AtlasStorage::Buffer};
+  if (test::runtime()->info().images)
+    storages.push_back(AtlasStorage::Image);
+  for (const AtlasStorage storage : storages)
+    for (const int level : {2, 3, 4}) {
+      const std::string what = std::string(storage == AtlasStorage::Image ? "image" : "buffer") + ", level " +
+                               std::to_string(level);
+      Atlas walks(test::runtime(), mesh, level, storage);
+      Atlas texels(test::runtime(), mesh, level, storage);
+      walks.set_patch_items(true);
+      texels.set_patch_items(false);
+      const int patches = walks.topology().patch_count;
+      for (const bool flags : {false, true}) {
+        for (Atlas* a : {&walks, &texels}) {
+          a->subdivide(1, level);
+          a->compute_limit();
+          // Inside every fifth tile the points move, inside every tenth
+          // they all go to one point.
+          std::vector<Float4> x = a->read_positions(level);
+          const LevelLayout l = a->layout(level);
+          std::vector<int> changed;
+          for (int p = 0; p < patches; p += 5) {
+            changed.push_back(p);
+            const auto at = [&](int i, int j) -> Float4& { return x[std::size_t((p * l.tile + j) * l.tile + i)]; };
+            for (int j = 1; j < l.n; ++j)
+              for (int i = 1; i < l.n; ++i)
+                if (p % 10 == 0)
+                  at(i, j) = at(1, 1);
+                else
+                  at(i, j)[1] += 0.01f * float((i + 2 * j) % 3);
+          }
+          a->write_positions(level, x);
+          a->assume_limit_current();
+          a->set_device_set_share(flags ? std::size_t(patches) : 0);
+          a->update_limit(a->neighbourhood(changed));
+        }
+        const std::string form = what + (flags ? ", flags" : ", lists");
+        EXPECT_EQ(differing_texels(walks.read_limit_positions(), texels.read_limit_positions()), 0u) << form;
+        EXPECT_EQ(differing_texels(walks.read_limit_normals(), texels.read_limit_normals()), 0u) << form;
+        EXPECT_EQ(differing_texels(read_bounds(walks), read_bounds(texels)), 0u) << form;
+      }
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Shapes, StoragePaths, testing::ValuesIn(test::shape_names()));
 
 } // namespace
