@@ -41,6 +41,12 @@ typedef struct {
  * float8 arithmetic. */
 #define PATCH_LANES 8
 
+/* Consecutive patches per cluster, whose bounding sphere lets the brush's
+ * passes over every patch (brush_cull, brush_reach) leave far clusters at
+ * one test (CPUs: cluster_bounds, brush_cull_clusters,
+ * brush_reach_clusters). */
+#define PATCH_CLUSTER 64
+
 /* A patch and which of its corners (0..3) the ring vertex is. */
 typedef struct {
   mp_int patch;

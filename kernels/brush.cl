@@ -42,12 +42,9 @@ inline float patch_distances(ATLAS_IN pos, int2 g, int p, float3 c, float4 *side
  * lies beyond the nearest distance costs one test: a stale read of it is
  * only larger. counters[0] counts records and may pass `capacity`; the host
  * then grows the record buffer and runs again. */
-__kernel void brush_cull(ATLAS_IN pos, ATLAS_IN nrm, int2 g, int patches, __global const float4 *bounds,
-                         float4 centre, __global CullRecord *records, volatile __global int *counters, int capacity)
+TEXEL_INLINE void cull_patch(ATLAS_IN pos, ATLAS_IN nrm, int2 g, int p, __global const float4 *bounds, float4 centre,
+                             __global CullRecord *records, volatile __global int *counters, int capacity)
 {
-  const int p = get_global_id(0);
-  if (p >= patches)
-    return;
   const float4 b = bounds[p];
   const float3 d = b.xyz - centre.xyz;
   const float nearest = as_float(counters[1]);
@@ -68,6 +65,47 @@ __kernel void brush_cull(ATLAS_IN pos, ATLAS_IN nrm, int2 g, int patches, __glob
   vstore4(ATLAS_LOAD(pos, g, p, ij), 0, r.closest_position);
   vstore4(ATLAS_LOAD(nrm, g, p, ij), 0, r.closest_normal);
   records[k] = r;
+}
+
+__kernel void brush_cull(ATLAS_IN pos, ATLAS_IN nrm, int2 g, int patches, __global const float4 *bounds,
+                         float4 centre, __global CullRecord *records, volatile __global int *counters, int capacity)
+{
+  const int p = get_global_id(0);
+  if (p < patches)
+    cull_patch(pos, nrm, g, p, bounds, centre, records, counters, capacity);
+}
+
+/* Whether sphere b (a cluster's: cluster_bounds()) lies farther than
+ * `limit` from c, by a margin beyond the rounding of the tests of the
+ * spheres inside it (cull_patch(), reach_patch()) and of c's coordinates. */
+inline int cluster_beyond(float4 b, float3 c, float limit)
+{
+  const float3 a = fabs(c);
+  return distance(b.xyz, c) - b.w > limit + 1e-5f * (b.w + limit + max(max(a.x, a.y), a.z));
+}
+
+/* The first and the end of cluster c's patches, false past the last. */
+inline bool cluster_range(int c, int patches, int *first, int *end)
+{
+  *first = c * PATCH_CLUSTER;
+  *end = min(*first + PATCH_CLUSTER, patches);
+  return *first < patches;
+}
+
+/* Range: clusters (CPUs). brush_cull a cluster of patches per work item: a
+ * cluster whose bound lies beyond the nearest distance so far costs one
+ * test. The records are those brush_cull can give (the nearest patches and
+ * their ties among them), in another order. */
+__kernel void brush_cull_clusters(ATLAS_IN pos, ATLAS_IN nrm, int2 g, int patches, __global const float4 *bounds,
+                                  __global const float4 *clusters, float4 centre, __global CullRecord *records,
+                                  volatile __global int *counters, int capacity)
+{
+  int first, end;
+  const int c = get_global_id(0);
+  if (!cluster_range(c, patches, &first, &end) || cluster_beyond(clusters[c], centre.xyz, as_float(counters[1])))
+    return;
+  for (int p = first; p < end; ++p)
+    cull_patch(pos, nrm, g, p, bounds, centre, records, counters, capacity);
 }
 
 /* Range: 1. Lowers brush_cull's starting distance (counters[1]) to that of
@@ -109,13 +147,8 @@ __kernel void brush_snap(__global const CullRecord *records, __global const int 
  * ball has all four sides open without a look at its texels. A byte per
  * patch rather than appended records: a big brush reaches most of the
  * atlas, and appending made both cores take turns on one counter. */
-__kernel void brush_reach(ATLAS_IN pos, int2 g, int patches, __global const float4 *bounds,
-                          __global const float4 *at, float reach, __global uchar *open)
+TEXEL_INLINE uchar reach_patch(ATLAS_IN pos, int2 g, int p, __global const float4 *bounds, float4 centre, float reach)
 {
-  const int p = get_global_id(0);
-  if (p >= patches)
-    return;
-  const float4 centre = *at;
   const float4 b = bounds[p];
   const float to_sphere = distance(b.xyz, centre.xyz);
   uchar sides = REACH_NONE;
@@ -129,7 +162,35 @@ __kernel void brush_reach(ATLAS_IN pos, int2 g, int patches, __global const floa
       sides = (uchar)(in.x | in.y << 1 | in.z << 2 | in.w << 3);
     }
   }
-  open[p] = sides;
+  return sides;
+}
+
+__kernel void brush_reach(ATLAS_IN pos, int2 g, int patches, __global const float4 *bounds,
+                          __global const float4 *at, float reach, __global uchar *open)
+{
+  const int p = get_global_id(0);
+  if (p < patches)
+    open[p] = reach_patch(pos, g, p, bounds, *at, reach);
+}
+
+/* Range: clusters (CPUs). brush_reach a cluster of patches per work item:
+ * every patch of a cluster whose bound lies beyond the reach gets
+ * REACH_NONE at once, as each would from its own sphere. */
+__kernel void brush_reach_clusters(ATLAS_IN pos, int2 g, int patches, __global const float4 *bounds,
+                                   __global const float4 *clusters, __global const float4 *at, float reach,
+                                   __global uchar *open)
+{
+  int first, end;
+  if (!cluster_range(get_global_id(0), patches, &first, &end))
+    return;
+  const float4 centre = *at;
+  if (cluster_beyond(clusters[get_global_id(0)], centre.xyz, reach)) {
+    for (int p = first; p < end; ++p)
+      open[p] = REACH_NONE;
+    return;
+  }
+  for (int p = first; p < end; ++p)
+    open[p] = reach_patch(pos, g, p, bounds, centre, reach);
 }
 
 /* Gradient noise in [-1, 1] from an integer hash: no tables to upload. */

@@ -221,6 +221,42 @@ __kernel void patch_bounds(ATLAS_IN pos, int2 g, __global const int *list, int c
   }
 }
 
+/* Range: count; the bounding sphere of each listed cluster's patch
+ * spheres (list null: every cluster, patches / PATCH_CLUSTER rounded up):
+ * the centre of their centres' box, as radius half its diagonal and the
+ * largest of theirs, in one pass without a square root per patch. Grown by
+ * a margin far beyond the rounding of these sums and of the brush's tests
+ * against a patch, so that a cluster a brush test finds beyond its bound
+ * holds no patch that test would have found within its own. With flags
+ * (a set's, UNFLAGGED), only the clusters holding a flagged patch. */
+__kernel void cluster_bounds(__global const float4 *restrict bounds, int patches, __global const int *list, int count,
+                             __global const uchar *flags, int generation, __global float4 *restrict clusters)
+{
+  const int k = get_global_id(0);
+  if (k >= count)
+    return;
+  const int c = LISTED(list, k);
+  const int first = c * PATCH_CLUSTER, end = min(first + PATCH_CLUSTER, patches);
+  if (flags) { /* a set's flags: only clusters with a flagged patch changed */
+    bool any_flagged = false;
+    for (int p = first; p < end; ++p)
+      any_flagged |= !UNFLAGGED(flags, generation, p);
+    if (!any_flagged)
+      return;
+  }
+  float3 lo = (float3)(INFINITY), hi = (float3)(-INFINITY);
+  float r = 0.0f;
+  for (int p = first; p < end; ++p) {
+    const float4 b = bounds[p];
+    lo = min(lo, b.xyz);
+    hi = max(hi, b.xyz);
+    r = max(r, b.w);
+  }
+  const float3 centre = 0.5f * (lo + hi), reach = 0.5f * (hi - lo), a = fabs(centre);
+  r += sqrt(dot(reach, reach));
+  clusters[c] = (float4)(centre, r * (1.0f + 1e-5f) + 1e-5f * max(max(a.x, a.y), a.z));
+}
+
 /* Range: whole tiles, (tile, tile * count): a work item per texel. */
 __kernel void limit_tiles(ATLAS_IN src, ATLAS_OUT pos, ATLAS_OUT nrm, int2 g, __global const int *list, int count,
                           __global const uchar *flags, int generation, __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,

@@ -163,6 +163,37 @@ TEST(Paint, AHintAnywhereSnapsAsWithoutOne)
     }
 }
 
+// CPUs cull and reach by clusters of patches (brush_cull_clusters,
+// brush_reach_clusters), GPUs patch by patch: the same centre, record and
+// patches for brushes near and far, small and large, also where the
+// coordinates are large beside the brush (a surface moved 10^4 away).
+TEST(Paint, ClustersPlaceAsPatchesDo)
+{
+  for (const AtlasStorage storage : test::storages())
+    for (const float offset : {0.f, 1e4f}) {
+      BaseMesh mesh = test::noisy_sphere(8, 0.05f);
+      for (Vec3& x : mesh.points)
+        x = {x[0] + offset, x[1] - offset, x[2] + 0.5f * offset};
+      PaintSurface clusters(test::runtime(), mesh, 3, storage), patches(test::runtime(), mesh, 3, storage);
+      clusters.atlas().set_patch_items(true);
+      patches.atlas().set_patch_items(false);
+      for (const Vec3& at : std::vector<Vec3>{{0.3f, 0.5f, 0.81f}, {0.f, 0.f, 1.2f}, {-0.7f, 0.1f, -0.6f}, {3.f, 0.f, 0.f}})
+        for (const float radius : {0.05f, 0.3f, 1.5f, 4.f}) {
+          const Vec3 point{at[0] + offset, at[1] - offset, at[2] + 0.5f * offset};
+          Vec3 c0, n0, c1, n1;
+          CullRecord r0{}, r1{};
+          const std::vector<int> p0 = patches.brush_patches(point, radius, &c0, &n0, 0.f, &r0);
+          const std::vector<int> p1 = clusters.brush_patches(point, radius, &c1, &n1, 0.f, &r1);
+          const std::string what = "offset " + std::to_string(offset) + ", radius " + std::to_string(radius);
+          EXPECT_EQ(p1, p0) << what;
+          EXPECT_EQ(std::memcmp(&c1, &c0, sizeof c0), 0) << what;
+          EXPECT_EQ(std::memcmp(&n1, &n0, sizeof n0), 0) << what;
+          EXPECT_EQ(r1.patch, r0.patch) << what;
+          EXPECT_EQ(r1.closest_texel, r0.closest_texel) << what;
+        }
+    }
+}
+
 TEST(Paint, DoesNotBleedThroughTheAir)
 {
   // The brush on the top of a plate 0.1 thick with radius 0.5 reaches the

@@ -88,8 +88,11 @@ void Atlas::compute_limit()
     limit_positions_ = allocate_layer(*runtime_, layout(max_level_), storage_);
     limit_normals_ = allocate_layer(*runtime_, layout(max_level_), storage_);
     limit_bounds_ = cl::Buffer(runtime_->context(), CL_MEM_READ_WRITE, sizeof(cl_float4) * topology().patch_count);
+    limit_clusters_ = cl::Buffer(runtime_->context(), CL_MEM_READ_WRITE,
+                                 sizeof(cl_float4) * std::size_t(cluster_count(topology().patch_count)));
   }
   compute_limit_of(max_level_, limit_positions_, limit_normals_, PatchSet(), &limit_bounds_);
+  evaluator_->cluster_bounds(limit_bounds_, limit_clusters_, PatchSet());
   limit_current_ = true;
 }
 
@@ -134,8 +137,10 @@ void Atlas::update_limit(const PatchSet& set)
                           (set.form == PatchSet::Form::Lists && int(set.patches.size()) == topology().patch_count);
   if (!limit_current_ || everything)
     compute_limit();
-  else
+  else {
     evaluator_->limit(max_level_, levels_.back(), limit_positions_, limit_normals_, set, &limit_bounds_);
+    evaluator_->cluster_bounds(limit_bounds_, limit_clusters_, set);
+  }
 }
 
 const cl::Memory& Atlas::level_layer(int level)
@@ -186,6 +191,13 @@ const cl::Buffer& Atlas::limit_bounds()
   if (!limit_current_)
     compute_limit();
   return limit_bounds_;
+}
+
+const cl::Buffer& Atlas::limit_cluster_bounds()
+{
+  if (!limit_current_)
+    compute_limit();
+  return limit_clusters_;
 }
 
 std::vector<Float4> Atlas::read_limit_positions()

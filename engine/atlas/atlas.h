@@ -131,6 +131,9 @@ public:
   //! Per patch, the bounding sphere of its limit positions (centre xyz,
   //! radius w), kept with the limit layers.
   const cl::Buffer& limit_bounds();
+  //! Per cluster of PATCH_CLUSTER consecutive patches, a bounding sphere of
+  //! their limit_bounds() (cluster_count() of them), kept with those.
+  const cl::Buffer& limit_cluster_bounds();
   std::vector<Float4> read_limit_positions();
   std::vector<Float4> read_limit_normals();
 
@@ -147,6 +150,7 @@ private:
   std::vector<cl::Memory> levels_;      // index l - 1
   cl::Memory limit_positions_, limit_normals_; // null until first computed
   cl::Buffer limit_bounds_;
+  cl::Buffer limit_clusters_; // cluster_bounds() of limit_bounds_, kept with it
   bool limit_current_ = false; // limit layers match the finest level
 };
 

@@ -51,6 +51,7 @@ AtlasEvaluator::AtlasEvaluator(Runtime& runtime, const AtlasTables& tables, Atla
   limit_edges_ = cl::Kernel(program, "limit_edges");
   limit_corners_ = cl::Kernel(program, "limit_corners");
   patch_bounds_ = cl::Kernel(program, "patch_bounds");
+  cluster_bounds_ = cl::Kernel(program, "cluster_bounds");
   flag_corners_ = cl::Kernel(program, "flag_corners");
   flag_ring_patches_ = cl::Kernel(program, "flag_ring_patches");
   flag_borders_ = cl::Kernel(program, "flag_borders");
@@ -229,6 +230,24 @@ void AtlasEvaluator::limit(int level, const cl::Memory& in, const cl::Memory& po
       launch(q, patch_bounds_, range1d(a.patch_count), kLocal1D, pos, grid(l), a.patches, a.patch_count,
              a.patch_flags, a.generation, *bounds);
   }
+}
+
+void AtlasEvaluator::cluster_bounds(const cl::Buffer& bounds, const cl::Buffer& clusters, const PatchSet& set)
+{
+  const int patches = tables_.topology().patch_count;
+  const Arguments a = arguments(set); // flags, if the set has them
+  std::vector<int> touched;           // a list's clusters, in order: its patches are sorted
+  const bool listed = set.form == PatchSet::Form::Lists;
+  if (listed)
+    for (const int p : set.patches)
+      if (touched.empty() || touched.back() != p / PATCH_CLUSTER)
+        touched.push_back(p / PATCH_CLUSTER);
+  const int count = listed ? int(touched.size()) : cluster_count(patches);
+  if (count == 0)
+    return;
+  launch(runtime_.queue(), cluster_bounds_, range1d(count), kLocal1D, bounds, patches,
+         listed ? device_ints(runtime_.context(), touched) : cl::Buffer(), count, a.patch_flags, a.generation,
+         clusters);
 }
 
 PatchSet AtlasEvaluator::flag_neighbourhood(const std::vector<int>& changed, const cl::Buffer* list)

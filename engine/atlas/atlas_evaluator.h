@@ -66,6 +66,10 @@ public:
   //! per patch).
   void limit(int level, const cl::Memory& in, const cl::Memory& positions, const cl::Memory& normals,
              const PatchSet& set, const cl::Buffer* bounds);
+  //! Per cluster of PATCH_CLUSTER consecutive patches, a sphere around the
+  //! spheres of `bounds` (cluster_bounds in limit.cl), into `clusters`:
+  //! the clusters of the set's patches (host lists), or every cluster.
+  void cluster_bounds(const cl::Buffer& bounds, const cl::Buffer& clusters, const PatchSet& set);
   //! The corner neighbourhood of `changed` (PatchSetMaker::neighbourhood())
   //! made on the device as flags; `list`, if given, holds `changed` there
   //! already. Leaves the flags of an earlier set stale.
@@ -90,7 +94,7 @@ private:
   bool patch_items_;
   cl::Kernel subdivide_tiles_, subdivide_patches_, subdivide_edges_, subdivide_corners_, subdivide_corner_levels_;
   cl::Kernel subdivide_first_step_, subdivide_second_step_;
-  cl::Kernel limit_tiles_, limit_patches_, limit_edges_, limit_corners_, patch_bounds_;
+  cl::Kernel limit_tiles_, limit_patches_, limit_edges_, limit_corners_, patch_bounds_, cluster_bounds_;
   cl::Kernel reduce_interior_, reduce_edges_, reduce_edge_walks_, reduce_corners_, reduce_patches_,
       reduce_second_step_;
   cl::Kernel flag_corners_, flag_ring_patches_, flag_borders_;

@@ -35,6 +35,8 @@ MemoryPlan plan_memory(const AtlasTopology& topology, int level, AtlasStorage st
   plan.finest = level_layout(topology.patch_count, level);
   plan.largest_allocation = layer_bytes(plan.finest, storage);
   plan.total += 2 * plan.largest_allocation; // limit positions and normals
+  plan.total += // their bounds, per patch and per cluster
+    std::size_t(topology.patch_count + cluster_count(topology.patch_count)) * sizeof(cl_float4);
   plan.total += border_work_bytes(topology, plan.finest);
   plan.total += topology.edges.size() * sizeof(PatchEdge) +
                 topology.rings.size() * sizeof(CornerRing) +

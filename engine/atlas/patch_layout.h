@@ -1,6 +1,8 @@
 // The size of each level of the atlas, and where tiles lie in it.
 #pragma once
 
+#include "atlas_types.h" // for PATCH_CLUSTER
+
 #include <array>   // for std::array
 #include <cstddef> // for std::size_t
 
@@ -51,5 +53,8 @@ constexpr std::array<int, 2> side_direction(int k)
 
 //! Layout of `level` (>= 1) for `patches` patches, tiles as square as possible.
 LevelLayout level_layout(int patches, int level);
+
+//! Clusters of PATCH_CLUSTER consecutive patches (AtlasEvaluator::cluster_bounds()).
+inline int cluster_count(int patches) { return (patches + PATCH_CLUSTER - 1) / PATCH_CLUSTER; }
 
 } // namespace meshpaint

@@ -15,6 +15,10 @@ namespace meshpaint {
 
 namespace {
 
+//! Work-groups of the cluster kernels: few clusters hold most of a small
+//! brush's work, and small groups let both cores share them.
+constexpr std::size_t kClusterGroup = 16;
+
 //! Records, in no particular order and each with its closest texel, of
 //! patches with a texel within `radius` of `centre`: among them every
 //! patch whose closest texel is the nearest (brush_cull), wherever `hint`
@@ -37,9 +41,16 @@ std::vector<CullRecord> cull(const PaintState& state, const Vec3& centre, float 
       launch(atlas.runtime().queue(), d.brush_cull_seed, cl::NDRange(1), cl::NullRange, atlas.limit_positions_layer(),
              grid(l), cl_int(hint.patch), cl_int(hint.texel), at, d.counters);
   };
-  return run_appending<CullRecord>(atlas.runtime(), d.brush_cull, l.patches, kGroup, d.culled, d.counters,
-                                   cl_int2{{0, radius_bits}}, seed, follow, atlas.limit_positions_layer(),
-                                   atlas.limit_normals_layer(), grid(l), l.patches, atlas.limit_bounds(), at);
+  const cl_int2 start{{0, radius_bits}};
+  const std::size_t most = std::size_t(l.patches); // a record per patch at most
+  if (atlas.patch_items()) // CPUs: far clusters stop at their bound
+    return run_appending<CullRecord>(atlas.runtime(), d.brush_cull_clusters, cluster_count(l.patches), most,
+                                     kClusterGroup, d.culled, d.counters, start, seed, follow,
+                                     atlas.limit_positions_layer(), atlas.limit_normals_layer(), grid(l), l.patches,
+                                     atlas.limit_bounds(), atlas.limit_cluster_bounds(), at);
+  return run_appending<CullRecord>(atlas.runtime(), d.brush_cull, l.patches, most, kGroup, d.culled, d.counters, start,
+                                   seed, follow, atlas.limit_positions_layer(), atlas.limit_normals_layer(), grid(l),
+                                   l.patches, atlas.limit_bounds(), at);
 }
 
 //! Per patch, the sides that come within `radius` of the centre in `at`, a
@@ -52,8 +63,15 @@ void reach_sides(const PaintState& state, const cl::Buffer& at, float radius, st
   Atlas& atlas = state.atlas;
   Runtime& rt = atlas.runtime();
   const LevelLayout l = state.layout();
-  launch(rt.queue(), d.brush_reach, cl::NDRange(round_up(std::size_t(l.patches), kGroup)), cl::NDRange(kGroup),
-         atlas.limit_positions_layer(), grid(l), l.patches, atlas.limit_bounds(), at, radius, d.open_sides);
+  if (atlas.patch_items()) {
+    const std::size_t clusters = std::size_t(cluster_count(l.patches));
+    launch(rt.queue(), d.brush_reach_clusters, cl::NDRange(round_up(clusters, kClusterGroup)),
+           cl::NDRange(kClusterGroup), atlas.limit_positions_layer(), grid(l), l.patches, atlas.limit_bounds(),
+           atlas.limit_cluster_bounds(), at, radius, d.open_sides);
+  } else {
+    launch(rt.queue(), d.brush_reach, cl::NDRange(round_up(std::size_t(l.patches), kGroup)), cl::NDRange(kGroup),
+           atlas.limit_positions_layer(), grid(l), l.patches, atlas.limit_bounds(), at, radius, d.open_sides);
+  }
   rt.queue().enqueueReadBuffer(d.open_sides, wait ? CL_TRUE : CL_FALSE, 0, std::size_t(l.patches), open_sides.data());
 }
 

@@ -47,8 +47,9 @@ struct LayerKernels
 struct PaintDevice
 {
   LayerKernels positions, channels;
-  cl::Kernel brush_cull, brush_cull_seed, brush_snap, brush_reach, paint_dab, paint_patches, dab_weights,
-    dab_weights_patches, move_points, move_points_patches, move_dab, move_dab_patches, move_dab_lanes;
+  cl::Kernel brush_cull, brush_cull_clusters, brush_cull_seed, brush_snap, brush_reach, brush_reach_clusters;
+  cl::Kernel paint_dab, paint_patches, dab_weights, dab_weights_patches, move_points, move_points_patches, move_dab,
+    move_dab_patches, move_dab_lanes;
   cl::Kernel dab_pickup;
   cl::Kernel spray_pick, spray_points;
   cl::Buffer counters, dab, weights; // dab: the BrushDab of the dab under way

@@ -43,6 +43,8 @@ PaintSurface::PaintSurface(std::shared_ptr<Runtime> runtime, const BaseMesh& mes
     d.brush_cull_seed = cl::Kernel(d.positions.program, "brush_cull_seed");
     d.brush_snap = cl::Kernel(d.positions.program, "brush_snap");
     d.brush_reach = cl::Kernel(d.positions.program, "brush_reach");
+    d.brush_cull_clusters = cl::Kernel(d.positions.program, "brush_cull_clusters");
+    d.brush_reach_clusters = cl::Kernel(d.positions.program, "brush_reach_clusters");
     d.paint_dab = cl::Kernel(d.positions.program, "paint_dab");
     d.paint_patches = cl::Kernel(d.positions.program, "paint_patches");
     d.dab_weights = cl::Kernel(d.positions.program, "dab_weights");
