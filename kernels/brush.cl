@@ -33,8 +33,9 @@ inline float patch_distances(ATLAS_IN pos, int2 g, int p, float3 c, float4 *side
   return best;
 }
 
-/* Range: #patches. Finds the texel nearest to `centre` within `radius`,
- * in one pass over the patches: counters[1] holds the nearest distance found
+/* brush_cull (range: #patches; cull_patch() is its work on patch p) finds
+ * the texel nearest to `centre` within `radius`, in one pass over the
+ * patches: counters[1] holds the nearest distance found
  * so far (float bits, which order as ints for distances >= 0; the host sets
  * it to `radius`), and a patch appends a record of its closest texel when
  * that comes no further than it. The nearest patches are among the records
@@ -140,7 +141,8 @@ __kernel void brush_snap(__global const CullRecord *records, __global const int 
     *snap = vload4(0, records[best].closest_position);
 }
 
-/* Range: #patches. Per patch, in `open`: the sides that come within
+/* brush_reach (range: #patches; reach_patch() is its work on patch p).
+ * Per patch, in `open`: the sides that come within
  * `reach` of `*at` (bits 0-3) when a texel of it does, else
  * REACH_NONE; from these the host finds the patches connected to the
  * centre along the surface. A patch whose bounding sphere lies inside the
