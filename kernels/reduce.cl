@@ -8,6 +8,12 @@
 
 #define BINOMIAL5(k) ((k) == 0 ? 0.375f : ((k) == 1 || (k) == -1) ? 0.25f : 0.0625f)
 
+/* A ring's interior corner weighs, per slot, the texels of that slot's
+ * sector: its outgoing axis and the texels between the two axes, as the
+ * separable filter would. */
+#define SECTOR_SUM(LOAD) \
+  (24.0f * LOAD(1, 0) + 6.0f * LOAD(2, 0) + 16.0f * LOAD(1, 1) + 4.0f * (LOAD(2, 1) + LOAD(1, 2)) + LOAD(2, 2))
+
 /* Texel ij strictly inside patch p at the destination level. */
 TEXEL_INLINE float4 reduced_inside(ATLAS_IN src, int2 sg, int p, int2 ij)
 {
@@ -112,7 +118,8 @@ __kernel void reduce_patches(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, int 
 __kernel void reduce_second_step(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, int count,
                                  __global const int4 *restrict patch_sides, __global const int4 *restrict patch_rings,
                                  __global const int4 *restrict patch_across, __global const PatchEdge *edges,
-                                 __global const float4 *restrict corners)
+                                 __global const float4 *restrict corners, __global const int4 *restrict patch_slots,
+                                 __global float4 *restrict sectors)
 {
   PATCH_ITEM((__global const int *)0, count, NO_SKIP);
   const int4 ps = patch_sides[p], pr = patch_rings[p];
@@ -149,26 +156,67 @@ __kernel void reduce_second_step(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, 
         acc[s] += (lo[s] < 0 ? BINOMIAL5(b) : 1.0f) * row[s];
     acc[4] += BINOMIAL5(b) * row[4];
   }
+  float4 corner[4];
 #pragma unroll
   for (int c = 0; c < 4; ++c) {
     const Frame f = side_frame(p, c, 2);
-    ATLAS_STORE(dst, dg, p, f.o, corners[int4_at(pr, c)]);
+    corner[c] = corners[int4_at(pr, c)];
+    ATLAS_STORE(dst, dg, p, f.o, corner[c]);
     ATLAS_STORE(dst, dg, p, f.o + f.dt, acc[c]);
   }
   ATLAS_STORE(dst, dg, p, (int2)(1, 1), acc[4]);
+  if (!sectors)
+    return;
+  /* The step on to level 1 (reduce_corners) reads the sectors of this
+   * 3 x 3 tile, as reduce_sectors would take them from it: seen from
+   * corner c, (1, 0) is the middle of side c, (2, 0) the next corner, (2, 1)
+   * the middle of side c + 1 and (1, 2) of side c + 2. */
+  const int4 at = patch_slots[p];
+#pragma unroll
+  for (int c = 0; c < 4; ++c) {
+#define TILE_TEXEL(a, b)                                                                                  \
+  ((a) == 1 && (b) == 0   ? acc[c]                                                                        \
+   : (a) == 2 && (b) == 0 ? corner[(c + 1) & 3]                                                           \
+   : (a) == 1 && (b) == 1 ? acc[4]                                                                        \
+   : (a) == 2 && (b) == 1 ? acc[(c + 1) & 3]                                                              \
+   : (a) == 1 && (b) == 2 ? acc[(c + 2) & 3]                                                              \
+                          : corner[(c + 2) & 3])
+    sectors[int4_at(at, c)] = SECTOR_SUM(TILE_TEXEL);
+#undef TILE_TEXEL
+  }
+}
+
+/* Range: count; every patch. Its four sectors, each into
+ * sectors[patch_slots[p][c]]: the slots of a ring lie in a row in the
+ * order reduce_corners sums them, so that it reads them in order instead
+ * of gathering a tile per slot. */
+__kernel void reduce_sectors(ATLAS_IN src, int2 sg, int count, __global const int4 *restrict patch_slots,
+                             __global float4 *restrict sectors)
+{
+  PATCH_ITEM((__global const int *)0, count, NO_SKIP);
+  const int4 at = patch_slots[p];
+#pragma unroll
+  for (int c = 0; c < 4; ++c) {
+    const FrameSteps f = frame_steps(sg, side_frame(p, c, sg.x - 1));
+#define SECTOR_LOAD(a, b) STEPS_LOAD(src, f, a, b)
+    sectors[int4_at(at, c)] = SECTOR_SUM(SECTOR_LOAD);
+#undef SECTOR_LOAD
+  }
 }
 
 /* Range: #rings; each ring's corner into corners[ring], or with `corners`
- * null every copy of it into its tile. */
+ * null every copy of it into its tile. With `sectors` (reduce_sectors) an
+ * interior ring sums those instead of its slots' tiles. */
 __kernel void reduce_corners(ATLAS_IN src, ATLAS_OUT dst, __global const CornerRing *rings,
                              __global const CornerSlot *slots, int ring_count, int2 sg, int2 dg,
-                             __global float4 *restrict corners)
+                             __global float4 *restrict corners, __global const float4 *restrict sectors)
 {
   const int k = get_global_id(0);
   if (k >= ring_count)
     return;
   const CornerRing ring = rings[k];
-  PREFETCH_RING_AHEAD(src, sg, rings, slots, (__global const int *)0, k, ring_count);
+  if (!sectors)
+    PREFETCH_RING_AHEAD(src, sg, rings, slots, (__global const int *)0, k, ring_count);
   const CornerSlot first = slots[ring.first], last = slots[ring.first + ring.count - 1];
   const float4 v = CORNER_LOAD(src, sg, first, 0, 0);
   float4 r;
@@ -179,17 +227,14 @@ __kernel void reduce_corners(ATLAS_IN src, ATLAS_OUT dst, __global const CornerR
               0.25f * (CORNER_LOAD(src, sg, first, 1, 0) + CORNER_LOAD(src, sg, last, 0, 1)) +
               0.0625f * (CORNER_LOAD(src, sg, first, 2, 0) + CORNER_LOAD(src, sg, last, 0, 2));
   } else {
-    /* Sector of one patch seen from the corner: its outgoing axis and the
-     * texels between the two axes, weighted as the separable filter would. */
-    float4 sectors = (float4)(0.0f);
+    float4 sum = (float4)(0.0f);
     for (int m = 0; m < ring.count; ++m) {
       const CornerSlot s = slots[ring.first + m];
-      sectors += 24.0f * CORNER_LOAD(src, sg, s, 1, 0) + 6.0f * CORNER_LOAD(src, sg, s, 2, 0) +
-                 16.0f * CORNER_LOAD(src, sg, s, 1, 1) +
-                 4.0f * (CORNER_LOAD(src, sg, s, 2, 1) + CORNER_LOAD(src, sg, s, 1, 2)) +
-                 CORNER_LOAD(src, sg, s, 2, 2);
+#define SECTOR_LOAD(a, b) CORNER_LOAD(src, sg, s, a, b)
+      sum += sectors ? sectors[ring.first + m] : SECTOR_SUM(SECTOR_LOAD);
+#undef SECTOR_LOAD
     }
-    r = (36.0f * v + (4.0f / (float)ring.count) * sectors) * (1.0f / 256.0f);
+    r = (36.0f * v + (4.0f / (float)ring.count) * sum) * (1.0f / 256.0f);
   }
   if (corners) {
     corners[k] = r;

@@ -130,6 +130,13 @@ TEST_P(StoragePaths, ReductionPerSideAgreesWithPerTexel)
   }
   for (int l = 1; l < level; ++l)
     EXPECT_EQ(differing_texels(walks.read_positions(l), texels.read_positions(l)), 0u) << "reduced level " << l;
+  // A reduction that starts at level 2 takes its sectors from the tiles
+  // (reduce_sectors), one from further up from the step into level 2.
+  for (Atlas* a : {&walks, &texels}) {
+    a->subdivide(1, 2);
+    a->reduce(2, 1);
+  }
+  EXPECT_EQ(differing_texels(walks.read_positions(1), texels.read_positions(1)), 0u) << "level 1 reduced from 2";
 }
 
 // Signed zeros: the one-pass kernel cannot see the zero-weighted taps that

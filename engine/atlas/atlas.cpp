@@ -78,8 +78,7 @@ void Atlas::reduce(int from_level, int to_level)
   if (to_level < 1 || from_level > max_level_ || to_level > from_level)
     throw InputError("cannot reduce from level " + std::to_string(from_level) + " to " +
                      std::to_string(to_level) + " (atlas levels 1.." + std::to_string(max_level_) + ")");
-  for (int l = from_level; l > to_level; --l)
-    evaluator_->reduce(l, levels_[l - 1], levels_[l - 2]);
+  evaluator_->reduce(from_level, to_level, levels_);
 }
 
 void Atlas::compute_limit()

@@ -61,6 +61,7 @@ AtlasEvaluator::AtlasEvaluator(Runtime& runtime, const AtlasTables& tables, Atla
   reduce_patches_ = cl::Kernel(program, "reduce_patches");
   reduce_corners_ = cl::Kernel(program, "reduce_corners");
   reduce_second_step_ = cl::Kernel(program, "reduce_second_step");
+  reduce_sectors_ = cl::Kernel(program, "reduce_sectors");
 
   const AtlasTopology& topo = tables_.topology();
   const cl::Context& context = runtime_.context();
@@ -173,36 +174,46 @@ void AtlasEvaluator::subdivide(int from_level, const std::vector<cl::Memory>& la
   // and the host goes on with its next sets while they run.
 }
 
-void AtlasEvaluator::reduce(int level, const cl::Memory& in, const cl::Memory& out)
+void AtlasEvaluator::reduce(int from, int to, const std::vector<cl::Memory>& levels)
 {
   const AtlasTopology& topo = tables_.topology();
   cl::CommandQueue& q = runtime_.queue();
   const int edges = int(topo.edges.size()), rings = int(topo.rings.size()), patches = topo.patch_count;
-  const LevelLayout s = level_layout(patches, level), d = level_layout(patches, level - 1);
-  if (patch_items_) { // sides and corners into the compact arrays, then whole tiles
-    const bool second_step = d.n == 2; // its sides in the per-patch kernel
-    if (d.n > 1 && !second_step)
+  for (int level = from; level > to; --level) {
+    const cl::Memory &in = levels[std::size_t(level - 1)], &out = levels[std::size_t(level - 2)];
+    const LevelLayout s = level_layout(patches, level), d = level_layout(patches, level - 1);
+    if (!patch_items_) {
+      if (d.n > 1) {
+        const auto inside = range_interiors(d, d.patches);
+        launch(q, reduce_interior_, inside.first, inside.second, in, out, grid(s), grid(d), patches);
+        launch(q, reduce_edges_, range_edges(d.n - 1, edges), kLocalEdges, in, out, tables_.edges(), edges,
+               grid(s), grid(d));
+      }
+      launch(q, reduce_corners_, range1d(rings), kLocal1D, in, out, tables_.rings(), tables_.slots(), rings,
+             grid(s), grid(d), cl::Buffer(), cl::Buffer());
+      continue;
+    }
+    // Sides and corners into the compact arrays, then whole tiles. Into
+    // level 1 the rings sum each patch's sector of them in the order of
+    // their slots (the side array is free there): left by the step into
+    // level 2 when this call took it, else from level 2's tiles.
+    const bool second_step = d.n == 2, into_first = d.n == 1;
+    if (d.n > 2)
       launch(q, reduce_edge_walks_, range1d(edges), kLocal1D, in, side_work_, tables_.edges(), edges, grid(s),
              grid(d));
+    if (into_first && level == from)
+      launch(q, reduce_sectors_, range1d(patches), kLocal1D, in, grid(s), patches, tables_.patch_slots(),
+             side_work_);
     launch(q, reduce_corners_, range1d(rings), kLocal1D, in, out, tables_.rings(), tables_.slots(), rings, grid(s),
-           grid(d), corner_work_);
-    if (second_step) {
+           grid(d), corner_work_, into_first ? side_work_ : cl::Buffer());
+    if (second_step)
       launch(q, reduce_second_step_, range1d(patches), kLocal1D, in, out, grid(s), grid(d), patches,
-             tables_.patch_sides(), tables_.patch_rings(), tables_.patch_across(), tables_.edges(), corner_work_);
-      return;
-    }
-    launch(q, reduce_patches_, range1d(patches), kLocal1D, in, out, grid(s), grid(d), patches,
-           tables_.patch_sides(), tables_.patch_rings(), side_work_, corner_work_);
-    return;
+             tables_.patch_sides(), tables_.patch_rings(), tables_.patch_across(), tables_.edges(), corner_work_,
+             tables_.patch_slots(), to == 1 ? side_work_ : cl::Buffer());
+    else
+      launch(q, reduce_patches_, range1d(patches), kLocal1D, in, out, grid(s), grid(d), patches,
+             tables_.patch_sides(), tables_.patch_rings(), side_work_, corner_work_);
   }
-  if (d.n > 1) {
-    const auto inside = range_interiors(d, d.patches);
-    launch(q, reduce_interior_, inside.first, inside.second, in, out, grid(s), grid(d), patches);
-    launch(q, reduce_edges_, range_edges(d.n - 1, edges), kLocalEdges, in, out, tables_.edges(), edges, grid(s),
-           grid(d));
-  }
-  launch(q, reduce_corners_, range1d(rings), kLocal1D, in, out, tables_.rings(), tables_.slots(), rings, grid(s),
-         grid(d), cl::Buffer());
 }
 
 void AtlasEvaluator::limit(int level, const cl::Memory& in, const cl::Memory& pos, const cl::Memory& nrm,

@@ -58,8 +58,9 @@ public:
   //! layers[k], the whole tiles of the set's patches, which needs every
   //! side and corner of them among its edges and rings (Reach::Any).
   void subdivide(int from_level, const std::vector<cl::Memory>& layers, const PatchSet& set);
-  //! One Gaussian reduction step: level l - 1 (`out`) from level l (`in`).
-  void reduce(int level, const cl::Memory& in, const cl::Memory& out);
+  //! Gaussian reduction steps from level `from` down to level `to`:
+  //! levels[l - 2] (level l - 1) from levels[l - 1].
+  void reduce(int from, int to, const std::vector<cl::Memory>& levels);
   //! Limit positions and normals of `level`'s control points `in` on the
   //! whole tiles of the set's patches (Reach::Any); with `bounds`, also
   //! each computed patch's bounding sphere (centre xyz, radius w; float4
@@ -95,7 +96,7 @@ private:
   cl::Kernel subdivide_tiles_, subdivide_patches_, subdivide_edges_, subdivide_corners_, subdivide_corner_levels_;
   cl::Kernel subdivide_first_step_, subdivide_second_step_;
   cl::Kernel limit_tiles_, limit_patches_, limit_edges_, limit_corners_, patch_bounds_, cluster_bounds_;
-  cl::Kernel reduce_interior_, reduce_edges_, reduce_edge_walks_, reduce_corners_, reduce_patches_,
+  cl::Kernel reduce_interior_, reduce_edges_, reduce_edge_walks_, reduce_corners_, reduce_sectors_, reduce_patches_,
       reduce_second_step_;
   cl::Kernel flag_corners_, flag_ring_patches_, flag_borders_;
   cl::Buffer side_work_, corner_work_;

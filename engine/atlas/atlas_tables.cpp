@@ -59,16 +59,29 @@ AtlasTables::AtlasTables(Runtime& runtime, AtlasTopology topology) : topology_(s
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
     return topology_.slots[topology_.rings[a].first].patch < topology_.slots[topology_.rings[b].first].patch;
   });
+  // The slots follow in that order too, a ring's in a row, so that a
+  // kernel writing per patch corner (reduce_sectors) lays out what a ring
+  // kernel then reads in order; patch_slots says where each corner went.
   std::vector<CornerRing> rings;
+  std::vector<CornerSlot> slots;
+  std::vector<std::array<int, 4>> patch_slots(std::size_t(topology_.patch_count));
   device_ring_.assign(order.size(), -1);
   for (std::size_t k = 0; k < order.size(); ++k) {
-    rings.push_back(topology_.rings[order[k]]);
+    CornerRing r = topology_.rings[order[k]];
+    for (int m = 0; m < r.count; ++m) {
+      const CornerSlot& s = topology_.slots[std::size_t(r.first + m)];
+      patch_slots[std::size_t(s.patch)][std::size_t(s.corner)] = int(slots.size());
+      slots.push_back(s);
+    }
+    r.first = int(slots.size()) - r.count;
+    rings.push_back(r);
     device_ring_[order[k]] = int(k);
   }
   edges_ = device_copy(runtime.context(), topology_.edges);
   rings_ = device_copy(runtime.context(), rings);
   valences_ = device_copy(runtime.context(), limit_constants(topology_));
-  slots_ = device_copy(runtime.context(), topology_.slots);
+  slots_ = device_copy(runtime.context(), slots);
+  patch_slots_ = device_copy(runtime.context(), patch_slots);
   const auto [patch_sides, patch_rings] = border_tables(topology_, device_ring_);
   patch_sides_ = device_copy(runtime.context(), patch_sides);
   patch_rings_ = device_copy(runtime.context(), patch_rings);

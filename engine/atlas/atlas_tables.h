@@ -24,7 +24,8 @@ public:
   const cl::Buffer& edges() const { return edges_; } //!< PatchEdge per level-1 edge
   //! CornerRing per level-1 vertex, in the order of their first patch.
   const cl::Buffer& rings() const { return rings_; }
-  const cl::Buffer& slots() const { return slots_; } //!< CornerSlot, sum of ring counts
+  //! CornerSlot, sum of ring counts: a ring's in a row, in the rings' order.
+  const cl::Buffer& slots() const { return slots_; }
   //! limit_corners' constants: two float4 per valence up to the largest
   //! (interior, boundary).
   const cl::Buffer& valences() const { return valences_; }
@@ -36,11 +37,13 @@ public:
   //! int4 per patch: across each side, 4 * patch + its side there; -1 on a
   //! mesh boundary.
   const cl::Buffer& patch_across() const { return patch_across_; }
+  //! int4 per patch: where each of its corners sits in slots().
+  const cl::Buffer& patch_slots() const { return patch_slots_; }
 
 private:
   AtlasTopology topology_;
   std::vector<int> device_ring_; // level-1 vertex -> index in the device's ring table
-  cl::Buffer edges_, rings_, slots_, valences_, patch_sides_, patch_rings_, patch_across_;
+  cl::Buffer edges_, rings_, slots_, valences_, patch_sides_, patch_rings_, patch_across_, patch_slots_;
 };
 
 } // namespace meshpaint

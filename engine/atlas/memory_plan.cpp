@@ -12,7 +12,7 @@ namespace {
 //! side and corner kernels at a level (AtlasTables, AtlasEvaluator).
 std::size_t border_work_bytes(const AtlasTopology& topo, const LevelLayout& l)
 {
-  return std::size_t(topo.patch_count) * 3 * sizeof(cl_int4) + // patch_sides, patch_rings, patch_across
+  return std::size_t(topo.patch_count) * 4 * sizeof(cl_int4) + // patch_sides, _rings, _across, _slots
          (topo.edges.size() * std::size_t(l.n - 1) * 2 + topo.rings.size() * corner_work_layers(l.level)) *
              sizeof(cl_float4) +
          topo.rings.size(); // a mark per ring
