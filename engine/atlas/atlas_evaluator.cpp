@@ -246,8 +246,10 @@ void AtlasEvaluator::limit(int level, const cl::Memory& in, const cl::Memory& po
 void AtlasEvaluator::cluster_bounds(const cl::Buffer& bounds, const cl::Buffer& clusters, const PatchSet& set)
 {
   const int patches = tables_.topology().patch_count;
-  const Arguments a = arguments(set); // flags, if the set has them
-  std::vector<int> touched;           // a list's clusters, in order: its patches are sorted
+  // Only a flagged set's arguments: a listed one's own lists would be
+  // uploaded for nothing, since the kernel takes its clusters instead.
+  const Arguments a = set.form == PatchSet::Form::Flags ? arguments(set) : Arguments();
+  std::vector<int> touched; // a list's clusters, in order: its patches are sorted
   const bool listed = set.form == PatchSet::Form::Lists;
   if (listed)
     for (const int p : set.patches)
