@@ -205,8 +205,9 @@ __kernel void reduce_sectors(ATLAS_IN src, int2 sg, int count, __global const in
 }
 
 /* Range: #rings; each ring's corner into corners[ring], or with `corners`
- * null every copy of it into its tile. With `sectors` (reduce_sectors) an
- * interior ring sums those instead of its slots' tiles. */
+ * null every copy of it into its tile. With `sectors` (reduce_sectors or
+ * reduce_second_step) an interior ring sums those instead of its slots'
+ * tiles. */
 __kernel void reduce_corners(ATLAS_IN src, ATLAS_OUT dst, __global const CornerRing *rings,
                              __global const CornerSlot *slots, int ring_count, int2 sg, int2 dg,
                              __global float4 *restrict corners, __global const float4 *restrict sectors)

@@ -179,6 +179,7 @@ void AtlasEvaluator::reduce(int from, int to, const std::vector<cl::Memory>& lev
   const AtlasTopology& topo = tables_.topology();
   cl::CommandQueue& q = runtime_.queue();
   const int edges = int(topo.edges.size()), rings = int(topo.rings.size()), patches = topo.patch_count;
+  bool sectors_left = false; // by this call's step into level 2, for the step into level 1
   for (int level = from; level > to; --level) {
     const cl::Memory &in = levels[std::size_t(level - 1)], &out = levels[std::size_t(level - 2)];
     const LevelLayout s = level_layout(patches, level), d = level_layout(patches, level - 1);
@@ -201,16 +202,17 @@ void AtlasEvaluator::reduce(int from, int to, const std::vector<cl::Memory>& lev
     if (d.n > 2)
       launch(q, reduce_edge_walks_, range1d(edges), kLocal1D, in, side_work_, tables_.edges(), edges, grid(s),
              grid(d));
-    if (into_first && level == from)
+    if (into_first && !sectors_left)
       launch(q, reduce_sectors_, range1d(patches), kLocal1D, in, grid(s), patches, tables_.patch_slots(),
              side_work_);
     launch(q, reduce_corners_, range1d(rings), kLocal1D, in, out, tables_.rings(), tables_.slots(), rings, grid(s),
            grid(d), corner_work_, into_first ? side_work_ : cl::Buffer());
-    if (second_step)
+    if (second_step) {
+      sectors_left = to == 1;
       launch(q, reduce_second_step_, range1d(patches), kLocal1D, in, out, grid(s), grid(d), patches,
              tables_.patch_sides(), tables_.patch_rings(), tables_.patch_across(), tables_.edges(), corner_work_,
-             tables_.patch_slots(), to == 1 ? side_work_ : cl::Buffer());
-    else
+             tables_.patch_slots(), sectors_left ? side_work_ : cl::Buffer());
+    } else
       launch(q, reduce_patches_, range1d(patches), kLocal1D, in, out, grid(s), grid(d), patches,
              tables_.patch_sides(), tables_.patch_rings(), side_work_, corner_work_);
   }
