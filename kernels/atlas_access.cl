@@ -299,6 +299,14 @@ inline int int4_at(int4 v, int c)
   return c == 0 ? v.x : c == 1 ? v.y : c == 2 ? v.z : v.w;
 }
 
+/* The side (x) of texel ij on a side of the tile, corners excluded, and
+ * its place t along that side in the patch's own frame (y). */
+inline int2 side_place(int2 ij, int n)
+{
+  const int s = tile_part(ij, n) - UNFOLD_SIDE;
+  return (int2)(s, s == 0 ? ij.x : s == 1 ? ij.y : s == 2 ? n - ij.x : n - ij.y);
+}
+
 /* Whole-tile kernels that copy their sides and corners from the compact
  * results of a side and a corner kernel (an entry per side texel, edge by
  * edge, and per ring): where texel ij on the border of a tile (n = tile - 1)
@@ -312,11 +320,9 @@ inline int border_entry(int2 ij, int n, int4 sides, int4 rings, int *corner)
   *corner = part >= UNFOLD_CORNER;
   if (*corner)
     return int4_at(rings, part - UNFOLD_CORNER);
-  /* Side s and the position t along it in the patch's own frame. */
-  const int s = part - UNFOLD_SIDE;
-  const int t = s == 0 ? ij.x : s == 1 ? ij.y : s == 2 ? n - ij.x : n - ij.y;
-  const int code = int4_at(sides, s);
-  return (code >> 1) * (n - 1) + ((code & 1) ? n - t : t) - 1;
+  const int2 st = side_place(ij, n);
+  const int code = int4_at(sides, st.x);
+  return (code >> 1) * (n - 1) + ((code & 1) ? n - st.y : st.y) - 1;
 }
 
 /* Entry of texel t along side s of a patch with side table ps. */

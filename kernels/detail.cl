@@ -197,13 +197,17 @@ __kernel void encode_patches(ATLAS_IN fine, ATLAS_IN smooth, int2 g, int count, 
   }
 }
 
+/* s + the details d in the frame (t, b, n). */
+inline float4 detailed(float4 s, float4 d, float3 t, float3 b, float3 n)
+{
+  return (float4)(s.xyz + (d.x * t + d.y * b + d.z * n), s.w);
+}
+
 /* U + frame(U) details at texel ij of patch p. */
 TEXEL_INLINE float4 with_detail(ATLAS_IN smooth, int2 g, int p, int2 ij, __global const float4 *details, float3 t,
                                 float3 b, float3 n)
 {
-  const float4 s = ATLAS_LOAD(smooth, g, p, ij);
-  const float4 d = details[PATCH_MAJOR_INDEX(g, p, ij)];
-  return (float4)(s.xyz + (d.x * t + d.y * b + d.z * n), s.w);
+  return detailed(ATLAS_LOAD(smooth, g, p, ij), details[PATCH_MAJOR_INDEX(g, p, ij)], t, b, n);
 }
 
 TEXEL_INLINE float4 decoded(ATLAS_IN smooth, int2 g, int p, int2 ij, __global const float4 *details)
@@ -299,6 +303,65 @@ __kernel void decode_corners(ATLAS_IN smooth, int2 g, __global const CornerRing 
   }
   const CornerSlot first = slots[ring.first];
   corners[list[k]] = decoded(smooth, g, first.patch, side_frame(first.patch, first.corner, g.x - 1).o, details);
+}
+
+/* Decoding at level 3 as the step 2 -> 3 makes U (CPUs, a work item per
+ * listed patch): SECOND_STEP_TILE() keeps the patch's tile of U in
+ * registers, and each texel the patch decodes is decoded from there, so U
+ * never goes through memory. A side or corner is decoded by the patch
+ * holding its details (`owned`), which stores it into every tile holding
+ * a copy; the parts in `outside` keep S. Each tile texel is stored by one
+ * work item, and gets decoded()'s operations on the same values: the bits
+ * of decode_edges, decode_corners and decode_patches. */
+
+/* decoded() at texel (i, j) of a level-3 tile of U held as u[j][i]:
+ * detail_frame()'s clamped differences. */
+TEXEL_INLINE float4 tile_decoded(float4 u[5][5], int i, int j, __global const float4 *details, int2 g, int p)
+{
+  float3 t, b, n;
+  frame_of(u[j][min(i + 1, 4)].xyz - u[j][max(i - 1, 0)].xyz, u[min(j + 1, 4)][i].xyz - u[max(j - 1, 0)][i].xyz,
+           &t, &b, &n);
+  return detailed(u[j][i], details[PATCH_MAJOR_INDEX(g, p, (int2)(i, j))], t, b, n);
+}
+
+/* Range: count; src level 2, fine level 3 (grid g). */
+__kernel void subdivide_decode(ATLAS_IN src, int2 sg, int2 g, __global const int *list, int count,
+                               __global const int4 *restrict patch_rings, __global const int4 *restrict patch_across,
+                               __global const float4 *restrict corners, int corner_base,
+                               __global const float4 *restrict details, ATLAS_OUT fine,
+                               __global const CornerRing *restrict rings, __global const CornerSlot *restrict slots,
+                               __global const uchar *restrict owned, __global const uchar *restrict outside)
+{
+  PATCH_ITEM(list, count, NO_SKIP);
+  const int4 pr = patch_rings[p], pa = patch_across[p];
+  PREFETCH_ACROSS_AHEAD(src, sg, patch_across, list, item, count);
+  float4 u[5][5];
+#define KEEP_TEXEL(ij, v) u[(ij).y][(ij).x] = (v)
+  SECOND_STEP_TILE(src, sg, p, pr, pa, corners, corner_base, KEEP_TEXEL);
+#undef KEEP_TEXEL
+  const int decodes = owned[p] & ~outside[item];
+#pragma unroll
+  for (int j = 0; j < 5; ++j)
+#pragma unroll
+    for (int i = 0; i < 5; ++i) {
+      const int2 ij = (int2)(i, j);
+      const int bit = part_bit(ij, 4);
+      if (bit != 0 && !(decodes & bit))
+        continue;
+      const float4 s = tile_decoded(u, i, j, details, g, p);
+      ATLAS_STORE(fine, g, p, ij, s);
+      if (bit >= 16) { /* a corner: the ring's other slots */
+        const CornerRing ring = rings[int4_at(pr, tile_part(ij, 4) - UNFOLD_CORNER)];
+        for (int m = 1; m < ring.count; ++m) {
+          const CornerSlot o = slots[ring.first + m];
+          ATLAS_STORE(fine, g, o.patch, kCornerUnit[o.corner] * 4, s);
+        }
+      } else if (bit != 0) { /* a side: the patch across, if any */
+        const int2 st = side_place(ij, 4), other = across_side(pa, st.x);
+        if (other.x >= 0)
+          FRAME_STORE(fine, g, across_frame(other.x, other.y, 4), st.y, 0, s);
+      }
+    }
 }
 
 /* Range: count. tile_extent() of each listed patch (null: every patch). */

@@ -364,6 +364,51 @@ __kernel void subdivide_first_step(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg
 }
 #undef LEVEL1_TEXEL
 
+/* The step 2 -> 3 of patch p as subdivide_second_step takes it, each new
+ * texel ij given to EMIT(ij, value): corners, then each side, then the
+ * inside. Shared with the kernel that decodes level 3 as it makes it
+ * (subdivide_decode, detail.cl), so that both give the same bits. */
+#define SECOND_STEP_TILE(src, sg, p, pr, pa, corners, corner_base, EMIT)                                          \
+  do {                                                                                                             \
+    float4 t2[3][3]; /* the old tile, [j][i] */                                                                    \
+    _Pragma("unroll") for (int j = 0; j < 3; ++j)                                                                  \
+    {                                                                                                              \
+      _Pragma("unroll") for (int i = 0; i < 3; ++i) { t2[j][i] = ATLAS_LOAD(src, sg, p, (int2)(i, j)); }          \
+    }                                                                                                              \
+    _Pragma("unroll") for (int c = 0; c < 4; ++c) { EMIT(kCornerUnit[c] * 4, corners[corner_base + int4_at(pr, c)]); } \
+    /* Each side from the old row along it, the row inside and the row                                            \
+     * across, in the neighbour's tile. */                                                                         \
+    _Pragma("unroll") for (int s = 0; s < 4; ++s)                                                                  \
+    {                                                                                                              \
+      const Frame f = side_frame(p, s, 2);                                                                         \
+      float4 row[3], in[3], out[3];                                                                                \
+      _Pragma("unroll") for (int t = 0; t < 3; ++t)                                                                \
+      {                                                                                                            \
+        const int2 r = f.o + t * f.dt, i = r + f.dd;                                                               \
+        row[t] = t2[r.y][r.x];                                                                                     \
+        in[t] = t2[i.y][i.x];                                                                                      \
+      }                                                                                                            \
+      const int2 other = across_side(pa, s);                                                                       \
+      const int interior = other.x >= 0;                                                                           \
+      const Frame fq = across_frame(max(other.x, 0), other.y, 2);                                                  \
+      _Pragma("unroll") for (int t = 0; t < 3; ++t) { out[t] = interior ? FRAME_LOAD(src, sg, fq, t, -1) : row[t]; } \
+      const Frame g = side_frame(p, s, 4);                                                                         \
+      const int2 a = g.o + g.dt, b = a + g.dt, c = b + g.dt;                                                       \
+      EMIT(a, side_edge_point(row[0], row[1], in[0], in[1], out[0], out[1], interior));                            \
+      EMIT(b, side_vertex_point(row[0], row[1], row[2], in[0], in[1], in[2], out[0], out[1], out[2], interior));   \
+      EMIT(c, side_edge_point(row[1], row[2], in[1], in[2], out[1], out[2], interior));                            \
+    }                                                                                                              \
+    _Pragma("unroll") for (int j = 1; j < 4; ++j)                                                                  \
+    {                                                                                                              \
+      _Pragma("unroll") for (int i = 1; i < 4; ++i)                                                                \
+      {                                                                                                            \
+        REFINE_INSIDE(v, 2, (int2)(i, j), SECOND_STEP_OLD);                                                        \
+        EMIT((int2)(i, j), v);                                                                                     \
+      }                                                                                                            \
+    }                                                                                                              \
+  } while (0)
+#define SECOND_STEP_OLD(i, j) t2[j][i]
+
 __kernel void subdivide_second_step(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, __global const int *list,
                                     int patches, __global const uchar *flags, int generation,
                                     __global const int4 *restrict patch_rings,
@@ -373,47 +418,7 @@ __kernel void subdivide_second_step(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 d
   PATCH_ITEM(list, patches, SUBDIVIDE_SKIP);
   const int4 pr = patch_rings[p], pa = patch_across[p];
   PREFETCH_ACROSS_AHEAD(src, sg, patch_across, list, item, patches);
-  float4 t2[3][3]; /* the old tile, [j][i] */
-#pragma unroll
-  for (int j = 0; j < 3; ++j)
-#pragma unroll
-    for (int i = 0; i < 3; ++i)
-      t2[j][i] = ATLAS_LOAD(src, sg, p, (int2)(i, j));
-#pragma unroll
-  for (int c = 0; c < 4; ++c)
-    ATLAS_STORE(dst, dg, p, kCornerUnit[c] * 4, corners[corner_base + int4_at(pr, c)]);
-  /* Each side from the old row along it, the row inside and the row across,
-   * in the neighbour's tile. */
-#pragma unroll
-  for (int s = 0; s < 4; ++s) {
-    const Frame f = side_frame(p, s, 2);
-    float4 row[3], in[3], out[3];
-#pragma unroll
-    for (int t = 0; t < 3; ++t) {
-      const int2 r = f.o + t * f.dt, i = r + f.dd;
-      row[t] = t2[r.y][r.x];
-      in[t] = t2[i.y][i.x];
-    }
-    const int2 other = across_side(pa, s);
-    const int interior = other.x >= 0;
-    const Frame fq = across_frame(max(other.x, 0), other.y, 2);
-#pragma unroll
-    for (int t = 0; t < 3; ++t)
-      out[t] = interior ? FRAME_LOAD(src, sg, fq, t, -1) : row[t];
-    const Frame g = side_frame(p, s, 4);
-    const int2 a = g.o + g.dt, b = a + g.dt, c = b + g.dt;
-    ATLAS_STORE(dst, dg, p, a, side_edge_point(row[0], row[1], in[0], in[1], out[0], out[1], interior));
-    ATLAS_STORE(dst, dg, p, b,
-                side_vertex_point(row[0], row[1], row[2], in[0], in[1], in[2], out[0], out[1], out[2], interior));
-    ATLAS_STORE(dst, dg, p, c, side_edge_point(row[1], row[2], in[1], in[2], out[1], out[2], interior));
-  }
-#define LEVEL2_TEXEL(i, j) t2[j][i]
-#pragma unroll
-  for (int j = 1; j < 4; ++j)
-#pragma unroll
-    for (int i = 1; i < 4; ++i) {
-      REFINE_INSIDE(v, 2, (int2)(i, j), LEVEL2_TEXEL);
-      ATLAS_STORE(dst, dg, p, (int2)(i, j), v);
-    }
-#undef LEVEL2_TEXEL
+#define SECOND_STEP_STORE(ij, v) ATLAS_STORE(dst, dg, p, ij, v)
+  SECOND_STEP_TILE(src, sg, p, pr, pa, corners, corner_base, SECOND_STEP_STORE);
+#undef SECOND_STEP_STORE
 }

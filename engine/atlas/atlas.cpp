@@ -73,6 +73,15 @@ void Atlas::subdivide(int from_level, int to_level, const PatchSet& set, const c
   evaluator_->subdivide(from_level, layers, set);
 }
 
+int Atlas::subdivide_but_last_tiles(int from_level, const PatchSet& set)
+{
+  if (from_level < 1 || from_level >= max_level_)
+    throw InputError("cannot subdivide from level " + std::to_string(from_level) + " to " +
+                     std::to_string(max_level_) + " (atlas levels 1.." + std::to_string(max_level_) + ")");
+  const std::vector<cl::Memory> layers(levels_.begin() + (from_level - 1), levels_.end());
+  return evaluator_->subdivide(from_level, layers, set, false);
+}
+
 void Atlas::reduce(int from_level, int to_level)
 {
   if (to_level < 1 || from_level > max_level_ || to_level > from_level)

@@ -69,6 +69,11 @@ public:
   //! layer (of its layout) instead, and the atlas's own layer of that level
   //! stays as it is.
   void subdivide(int from_level, int to_level, const PatchSet& set, const cl::Memory* last = nullptr);
+  //! The same up to the finest level, but for the last step's tiles: the
+  //! level below the finest is made, and the finest level's corners, which
+  //! start at the returned entry of evaluator().corner_work(); the caller
+  //! makes the finest tiles (Multires decodes them as it makes them).
+  int subdivide_but_last_tiles(int from_level, const PatchSet& set);
   //! Gaussian reduction kernels: each level l-1 from level l, to <= l-1 < from.
   void reduce(int from_level, int to_level);
   //! Limit positions and normals of the surface at max_level.

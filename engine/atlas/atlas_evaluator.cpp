@@ -129,7 +129,8 @@ AtlasEvaluator::Arguments AtlasEvaluator::arguments(const PatchSet& set) const
   return a;
 }
 
-void AtlasEvaluator::subdivide(int from_level, const std::vector<cl::Memory>& layers, const PatchSet& set)
+int AtlasEvaluator::subdivide(int from_level, const std::vector<cl::Memory>& layers, const PatchSet& set,
+                              bool last_tiles)
 {
   const Arguments a = arguments(set);
   cl::CommandQueue& q = runtime_.queue();
@@ -139,11 +140,12 @@ void AtlasEvaluator::subdivide(int from_level, const std::vector<cl::Memory>& la
   // the rings it marks are taken again from each level.
   const bool corner_levels = corners_in_one_pass() && steps > 1 && steps <= corner_layers_ && a.ring_count > 0;
   const cl_uchar mark = 1;
+  cl_int corner_base = 0;
   for (int k = 0; k < steps; ++k) {
     const int l = from_level + k;
     const LevelLayout s = level_layout(patch_count, l), d = level_layout(patch_count, l + 1);
     const cl::Memory &in = layers[k], &out = layers[k + 1];
-    const cl_int corner_base = corner_levels ? k * stride : 0;
+    corner_base = corner_levels ? k * stride : 0;
     // Small tiles on CPUs: a kernel per step that walks each tile's own
     // sides, no side kernel.
     cl::Kernel* small_step = !tiles_walk_sides(l) ? nullptr : l == 1 ? &subdivide_first_step_ : &subdivide_second_step_;
@@ -161,6 +163,8 @@ void AtlasEvaluator::subdivide(int from_level, const std::vector<cl::Memory>& la
     else if (corner_levels && wide_rings_)
       launch(q, subdivide_corners_, range1d(a.ring_count), kLocal1D, in, corner_work_, corner_base, tables_.rings(),
              tables_.slots(), a.rings, a.ring_count, ring_marks_, cl_int(mark), grid(s));
+    if (k == steps - 1 && !last_tiles)
+      break;
     if (a.patch_count > 0 && small_step)
       launch(q, *small_step, range1d(a.patch_count), kLocal1D, in, out, grid(s), grid(d), a.patches, a.patch_count,
              a.patch_flags, a.generation, tables_.patch_rings(), tables_.patch_across(), corner_work_, corner_base);
@@ -172,6 +176,7 @@ void AtlasEvaluator::subdivide(int from_level, const std::vector<cl::Memory>& la
   }
   // No wait: a list released here lives on until the kernels using it end,
   // and the host goes on with its next sets while they run.
+  return corner_base;
 }
 
 void AtlasEvaluator::reduce(int from, int to, const std::vector<cl::Memory>& levels)

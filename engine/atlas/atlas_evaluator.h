@@ -57,7 +57,10 @@ public:
   //! Catmull-Clark steps on `set`: layers[k + 1] (level from + k + 1) from
   //! layers[k], the whole tiles of the set's patches, which needs every
   //! side and corner of them among its edges and rings (Reach::Any).
-  void subdivide(int from_level, const std::vector<cl::Memory>& layers, const PatchSet& set);
+  //! With `last_tiles` false, the last step makes its corners but not its
+  //! tiles (layers.back() is not written): the caller makes them from the
+  //! corners, which start at the returned entry of corner_work().
+  int subdivide(int from_level, const std::vector<cl::Memory>& layers, const PatchSet& set, bool last_tiles = true);
   //! Gaussian reduction steps from level `from` down to level `to`:
   //! levels[l - 2] (level l - 1) from levels[l - 1].
   void reduce(int from, int to, const std::vector<cl::Memory>& levels);

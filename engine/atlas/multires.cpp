@@ -20,6 +20,7 @@ struct Multires::Device
 {
   cl::Program program;
   cl::Kernel encode_details, encode_patches, decode_tiles, decode_patches, decode_edges, decode_corners, patch_extent;
+  cl::Kernel subdivide_decode;
   cl::Memory smooth;    // U = up(base) at the finest level, where it is needed
   cl::Buffer details;   // per finest texel: (t, b, n) coordinates of S - U
   cl::Buffer weights;   // edit-level weights
@@ -61,6 +62,7 @@ Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Devic
     d.decode_edges = cl::Kernel(d.program, "decode_edges");
     d.decode_corners = cl::Kernel(d.program, "decode_corners");
     d.patch_extent = cl::Kernel(d.program, "patch_extent");
+    d.subdivide_decode = cl::Kernel(d.program, "subdivide_decode");
     d.smooth = allocate_layer(rt, f, atlas_.storage());
     d.positions = allocate_layer(rt, f, atlas_.storage());
     d.normals = allocate_layer(rt, f, atlas_.storage());
@@ -201,13 +203,28 @@ void Multires::reconstruct(const std::vector<int>& affected, const PatchSet& aro
   // writes S' from there into the finest level, whose other texels keep S
   // as it is now, whatever changed it since the encoding (an undo, a stroke
   // elsewhere).
-  atlas_.subdivide(level_, finest, around, &d.smooth);
+  // On CPUs a finest level 3 is decoded as its tiles are made, the listed
+  // patches' only: the other patches of `around` need level 2, not U.
+  const AtlasEvaluator& work = atlas_.evaluator();
+  const bool as_made = finest == 3 && work.tiles_walk_sides(2);
+  const int corner_base = as_made ? atlas_.subdivide_but_last_tiles(level_, around) : 0;
+  if (!as_made)
+    atlas_.subdivide(level_, finest, around, &d.smooth);
   // Made while the subdivision runs.
   const PatchSet set = atlas_.patch_set(affected, Reach::All);
+  const AtlasTables& tables = atlas_.tables();
+  if (as_made) {
+    if (set.patches.empty())
+      return;
+    const cl::Buffer patches = device_ints(rt.context(), set.patches), kept = device_copy(rt.context(), set.outside);
+    launch(q, d.subdivide_decode, cl::NDRange(round_up(set.patches.size(), kGroup)), cl::NDRange(kGroup),
+           atlas_.level_layer(2), grid(atlas_.layout(2)), grid(f), patches, cl_int(set.patches.size()),
+           tables.patch_rings(), tables.patch_across(), work.corner_work(), cl_int(corner_base), d.details, fine,
+           tables.rings(), tables.slots(), d.owned, kept);
+    return;
+  }
   const cl::Buffer patches = device_ints(rt.context(), set.patches), edges = device_ints(rt.context(), set.edges),
                    rings = device_ints(rt.context(), set.rings);
-  const AtlasTables& tables = atlas_.tables();
-  const AtlasEvaluator& work = atlas_.evaluator();
   if (f.n > 1 && !set.edges.empty())
     launch(q, d.decode_edges, cl::NDRange(round_up(set.edges.size(), kGroup)), cl::NDRange(kGroup), d.smooth,
            grid(f), tables.edges(), edges, int(set.edges.size()), d.details, work.side_work());

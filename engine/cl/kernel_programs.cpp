@@ -26,7 +26,7 @@ const std::vector<KernelFile>& registry()
     {"select.cl", {"atlas_types.h"}},
     {"reduce.cl", {"atlas_access.cl"}},
     {"lanes.cl", {"atlas_access.cl"}},
-    {"detail.cl", {"lanes.cl"}},
+    {"detail.cl", {"subdivide.cl", "lanes.cl"}},
     {"brush_space.cl", {"atlas_access.cl"}},
     {"brush.cl", {"brush_space.cl", "lanes.cl"}},
     {"geometry.cl", {"brush_space.cl", "lanes.cl"}},

@@ -14,7 +14,7 @@ namespace meshpaint {
 enum class KernelProgram
 {
   Atlas,   //!< subdivide.cl, limit.cl, select.cl, reduce.cl (AtlasEvaluator)
-  Detail,  //!< detail.cl (Multires)
+  Detail,  //!< detail.cl and the subdivide.cl it builds on (Multires)
   Brush,   //!< brush.cl, geometry.cl, lighting.cl (PaintSurface)
   Display, //!< display.cl (PaintSurface's display arrays)
   Copy     //!< copy.cl (the benchmarks' copy-bandwidth probe)
