@@ -305,64 +305,68 @@ __kernel void decode_corners(ATLAS_IN smooth, int2 g, __global const CornerRing 
   corners[list[k]] = decoded(smooth, g, first.patch, side_frame(first.patch, first.corner, g.x - 1).o, details);
 }
 
-/* Decoding at level 3 as the step 2 -> 3 makes U (CPUs, a work item per
- * listed patch): SECOND_STEP_TILE() keeps the patch's tile of U in
- * registers, and each texel the patch decodes is decoded from there, so U
- * never goes through memory. A side or corner is decoded by the patch
- * holding its details (`owned`), which stores it into every tile holding
- * a copy; the parts in `outside` keep S. Each tile texel is stored by one
- * work item, and gets decoded()'s operations on the same values: the bits
- * of decode_edges, decode_corners and decode_patches. */
+/* Decoding as the last step of subdivision makes U (CPUs, a finest level
+ * 2 or 3, a work item per listed patch): FIRST_STEP_TILE() or
+ * SECOND_STEP_TILE() keeps the patch's tile of U in registers, and each
+ * texel the patch decodes is decoded from there, so U never goes through
+ * memory. A side or corner is decoded by the patch holding its details
+ * (`owned`), which stores it into every tile holding a copy; the parts in
+ * `outside` keep S. Each tile texel is stored by one work item, and gets
+ * decoded()'s operations on the same values: the bits of decode_edges,
+ * decode_corners and decode_patches. */
 
-/* decoded() at texel (i, j) of a level-3 tile of U held as u[j][i]:
- * detail_frame()'s clamped differences. */
-TEXEL_INLINE float4 tile_decoded(float4 u[5][5], int i, int j, __global const float4 *details, int2 g, int p)
+/* decoded() at texel (i, j) of a tile of n + 1 texels a side held as
+ * u[j][i]: detail_frame()'s clamped differences. */
+TEXEL_INLINE float4 tile_decoded(float4 u[5][5], int n, int i, int j, __global const float4 *details, int2 g, int p)
 {
-  float3 t, b, n;
-  frame_of(u[j][min(i + 1, 4)].xyz - u[j][max(i - 1, 0)].xyz, u[min(j + 1, 4)][i].xyz - u[max(j - 1, 0)][i].xyz,
-           &t, &b, &n);
-  return detailed(u[j][i], details[PATCH_MAJOR_INDEX(g, p, (int2)(i, j))], t, b, n);
+  float3 t, b, nrm;
+  frame_of(u[j][min(i + 1, n)].xyz - u[j][max(i - 1, 0)].xyz, u[min(j + 1, n)][i].xyz - u[max(j - 1, 0)][i].xyz,
+           &t, &b, &nrm);
+  return detailed(u[j][i], details[PATCH_MAJOR_INDEX(g, p, (int2)(i, j))], t, b, nrm);
 }
 
-/* Range: count; src level 2, fine level 3 (grid g). */
-__kernel void subdivide_decode(ATLAS_IN src, int2 sg, int2 g, __global const int *list, int count,
-                               __global const int4 *restrict patch_rings, __global const int4 *restrict patch_across,
-                               __global const float4 *restrict corners, int corner_base,
-                               __global const float4 *restrict details, ATLAS_OUT fine,
-                               __global const CornerRing *restrict rings, __global const CornerSlot *restrict slots,
-                               __global const uchar *restrict owned, __global const uchar *restrict outside)
-{
-  PATCH_ITEM(list, count, NO_SKIP);
-  const int4 pr = patch_rings[p], pa = patch_across[p];
-  PREFETCH_ACROSS_AHEAD(src, sg, patch_across, list, item, count);
-  float4 u[5][5];
+/* The kernel body for tiles of N + 1 texels a side made by STEP_TILE. */
+#define SUBDIVIDE_DECODE(N, STEP_TILE)                                                           \
+  PATCH_ITEM(list, count, NO_SKIP);                                                              \
+  const int4 pr = patch_rings[p], pa = patch_across[p];                                          \
+  PREFETCH_ACROSS_AHEAD(src, sg, patch_across, list, item, count);                               \
+  float4 u[5][5];                                                                                \
+  STEP_TILE(src, sg, p, pr, pa, corners, corner_base, KEEP_TEXEL);                               \
+  const int decodes = owned[p] & ~outside[item];                                                 \
+  _Pragma("unroll") for (int j = 0; j <= (N); ++j)                                               \
+  {                                                                                              \
+    _Pragma("unroll") for (int i = 0; i <= (N); ++i)                                             \
+    {                                                                                            \
+      const int2 ij = (int2)(i, j);                                                              \
+      const int bit = part_bit(ij, (N));                                                         \
+      if (bit != 0 && !(decodes & bit))                                                          \
+        continue;                                                                                \
+      const float4 s = tile_decoded(u, (N), i, j, details, g, p);                                \
+      ATLAS_STORE(fine, g, p, ij, s);                                                            \
+      if (bit >= 16) { /* a corner: the ring's other slots */                                    \
+        const CornerRing ring = rings[int4_at(pr, tile_part(ij, (N)) - UNFOLD_CORNER)];          \
+        for (int m = 1; m < ring.count; ++m) {                                                   \
+          const CornerSlot o = slots[ring.first + m];                                            \
+          ATLAS_STORE(fine, g, o.patch, kCornerUnit[o.corner] * (N), s);                         \
+        }                                                                                        \
+      } else if (bit != 0) { /* a side: the patch across, if any */                              \
+        const int2 st = side_place(ij, (N)), other = across_side(pa, st.x);                      \
+        if (other.x >= 0)                                                                        \
+          FRAME_STORE(fine, g, across_frame(other.x, other.y, (N)), st.y, 0, s);                 \
+      }                                                                                          \
+    }                                                                                            \
+  }
 #define KEEP_TEXEL(ij, v) u[(ij).y][(ij).x] = (v)
-  SECOND_STEP_TILE(src, sg, p, pr, pa, corners, corner_base, KEEP_TEXEL);
-#undef KEEP_TEXEL
-  const int decodes = owned[p] & ~outside[item];
-#pragma unroll
-  for (int j = 0; j < 5; ++j)
-#pragma unroll
-    for (int i = 0; i < 5; ++i) {
-      const int2 ij = (int2)(i, j);
-      const int bit = part_bit(ij, 4);
-      if (bit != 0 && !(decodes & bit))
-        continue;
-      const float4 s = tile_decoded(u, i, j, details, g, p);
-      ATLAS_STORE(fine, g, p, ij, s);
-      if (bit >= 16) { /* a corner: the ring's other slots */
-        const CornerRing ring = rings[int4_at(pr, tile_part(ij, 4) - UNFOLD_CORNER)];
-        for (int m = 1; m < ring.count; ++m) {
-          const CornerSlot o = slots[ring.first + m];
-          ATLAS_STORE(fine, g, o.patch, kCornerUnit[o.corner] * 4, s);
-        }
-      } else if (bit != 0) { /* a side: the patch across, if any */
-        const int2 st = side_place(ij, 4), other = across_side(pa, st.x);
-        if (other.x >= 0)
-          FRAME_STORE(fine, g, across_frame(other.x, other.y, 4), st.y, 0, s);
-      }
-    }
-}
+
+/* Range: count; src level 1 or 2, fine the next level (grid g). */
+#define SUBDIVIDE_DECODE_ARGUMENTS                                                                                    \
+  ATLAS_IN src, int2 sg, int2 g, __global const int *list, int count, __global const int4 *restrict patch_rings,     \
+    __global const int4 *restrict patch_across, __global const float4 *restrict corners, int corner_base,            \
+    __global const float4 *restrict details, ATLAS_OUT fine, __global const CornerRing *restrict rings,              \
+    __global const CornerSlot *restrict slots, __global const uchar *restrict owned,                                  \
+    __global const uchar *restrict outside
+__kernel void subdivide_decode_first(SUBDIVIDE_DECODE_ARGUMENTS) { SUBDIVIDE_DECODE(2, FIRST_STEP_TILE) }
+__kernel void subdivide_decode_second(SUBDIVIDE_DECODE_ARGUMENTS) { SUBDIVIDE_DECODE(4, SECOND_STEP_TILE) }
 
 /* Range: count. tile_extent() of each listed patch (null: every patch). */
 __kernel void patch_extent(ATLAS_IN pos, int2 g, __global const int *list, int count, __global float *out)

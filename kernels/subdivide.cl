@@ -342,7 +342,21 @@ TEXEL_INLINE float4 first_side_point(ATLAS_IN src, int2 sg, int4 a, int x, int s
  *
  * Range: patches; level 1 or 2 src into the next level dst. */
 
-#define LEVEL1_TEXEL(i, j) ATLAS_LOAD(src, sg, p, (int2)((i), (j)))
+/* The step 1 -> 2 of patch p, each new texel ij given to EMIT(ij, value):
+ * its corners and the middles of its sides, then the face point. Shared
+ * with subdivide_decode_first (detail.cl), as SECOND_STEP_TILE() below. */
+#define FIRST_STEP_TILE(src, sg, p, pr, pa, corners, corner_base, EMIT)                                     \
+  do {                                                                                                       \
+    _Pragma("unroll") for (int c = 0; c < 4; ++c)                                                            \
+    {                                                                                                        \
+      const int2 at = kCornerUnit[c] * 2;                                                                    \
+      EMIT(at, corners[corner_base + int4_at(pr, c)]);                                                       \
+      EMIT(at + kSideDir[c], first_side_point(src, sg, pa, p, c));                                           \
+    }                                                                                                        \
+    REFINE_INSIDE(face, 1, (int2)(1, 1), FIRST_STEP_OLD);                                                    \
+    EMIT((int2)(1, 1), face);                                                                                \
+  } while (0)
+#define FIRST_STEP_OLD(i, j) ATLAS_LOAD(src, sg, p, (int2)((i), (j)))
 
 __kernel void subdivide_first_step(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg, __global const int *list,
                                    int patches, __global const uchar *flags, int generation,
@@ -353,21 +367,15 @@ __kernel void subdivide_first_step(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg
   PATCH_ITEM(list, patches, SUBDIVIDE_SKIP);
   const int4 pr = patch_rings[p], pa = patch_across[p];
   PREFETCH_ACROSS_AHEAD(src, sg, patch_across, list, item, patches);
-#pragma unroll
-  for (int c = 0; c < 4; ++c) {
-    const int2 at = kCornerUnit[c] * 2;
-    ATLAS_STORE(dst, dg, p, at, corners[corner_base + int4_at(pr, c)]);
-    ATLAS_STORE(dst, dg, p, at + kSideDir[c], first_side_point(src, sg, pa, p, c));
-  }
-  REFINE_INSIDE(face, 1, (int2)(1, 1), LEVEL1_TEXEL);
-  ATLAS_STORE(dst, dg, p, (int2)(1, 1), face);
+#define FIRST_STEP_STORE(ij, v) ATLAS_STORE(dst, dg, p, ij, v)
+  FIRST_STEP_TILE(src, sg, p, pr, pa, corners, corner_base, FIRST_STEP_STORE);
+#undef FIRST_STEP_STORE
 }
-#undef LEVEL1_TEXEL
 
 /* The step 2 -> 3 of patch p as subdivide_second_step takes it, each new
  * texel ij given to EMIT(ij, value): corners, then each side, then the
  * inside. Shared with the kernel that decodes level 3 as it makes it
- * (subdivide_decode, detail.cl), so that both give the same bits. */
+ * (subdivide_decode_second, detail.cl), so that both give the same bits. */
 #define SECOND_STEP_TILE(src, sg, p, pr, pa, corners, corner_base, EMIT)                                          \
   do {                                                                                                             \
     float4 t2[3][3]; /* the old tile, [j][i] */                                                                    \

@@ -20,7 +20,7 @@ struct Multires::Device
 {
   cl::Program program;
   cl::Kernel encode_details, encode_patches, decode_tiles, decode_patches, decode_edges, decode_corners, patch_extent;
-  cl::Kernel subdivide_decode;
+  cl::Kernel subdivide_decode_first, subdivide_decode_second;
   cl::Memory smooth;    // U = up(base) at the finest level, where it is needed
   cl::Buffer details;   // per finest texel: (t, b, n) coordinates of S - U
   cl::Buffer weights;   // edit-level weights
@@ -62,7 +62,8 @@ Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Devic
     d.decode_edges = cl::Kernel(d.program, "decode_edges");
     d.decode_corners = cl::Kernel(d.program, "decode_corners");
     d.patch_extent = cl::Kernel(d.program, "patch_extent");
-    d.subdivide_decode = cl::Kernel(d.program, "subdivide_decode");
+    d.subdivide_decode_first = cl::Kernel(d.program, "subdivide_decode_first");
+    d.subdivide_decode_second = cl::Kernel(d.program, "subdivide_decode_second");
     d.smooth = allocate_layer(rt, f, atlas_.storage());
     d.positions = allocate_layer(rt, f, atlas_.storage());
     d.normals = allocate_layer(rt, f, atlas_.storage());
@@ -203,10 +204,11 @@ void Multires::reconstruct(const std::vector<int>& affected, const PatchSet& aro
   // writes S' from there into the finest level, whose other texels keep S
   // as it is now, whatever changed it since the encoding (an undo, a stroke
   // elsewhere).
-  // On CPUs a finest level 3 is decoded as its tiles are made, the listed
-  // patches' only: the other patches of `around` need level 2, not U.
+  // On CPUs a finest level 2 or 3 is decoded as its tiles are made, the
+  // listed patches' only: the other patches of `around` need the level
+  // below, not U.
   const AtlasEvaluator& work = atlas_.evaluator();
-  const bool as_made = finest == 3 && work.tiles_walk_sides(2);
+  const bool as_made = (finest == 2 || finest == 3) && work.tiles_walk_sides(finest - 1);
   const int corner_base = as_made ? atlas_.subdivide_but_last_tiles(level_, around) : 0;
   if (!as_made)
     atlas_.subdivide(level_, finest, around, &d.smooth);
@@ -217,8 +219,9 @@ void Multires::reconstruct(const std::vector<int>& affected, const PatchSet& aro
     if (set.patches.empty())
       return;
     const cl::Buffer patches = device_ints(rt.context(), set.patches), kept = device_copy(rt.context(), set.outside);
-    launch(q, d.subdivide_decode, cl::NDRange(round_up(set.patches.size(), kGroup)), cl::NDRange(kGroup),
-           atlas_.level_layer(2), grid(atlas_.layout(2)), grid(f), patches, cl_int(set.patches.size()),
+    launch(q, finest == 2 ? d.subdivide_decode_first : d.subdivide_decode_second,
+           cl::NDRange(round_up(set.patches.size(), kGroup)), cl::NDRange(kGroup), atlas_.level_layer(finest - 1),
+           grid(atlas_.layout(finest - 1)), grid(f), patches, cl_int(set.patches.size()),
            tables.patch_rings(), tables.patch_across(), work.corner_work(), cl_int(corner_base), d.details, fine,
            tables.rings(), tables.slots(), d.owned, kept);
     return;
