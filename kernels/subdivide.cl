@@ -400,8 +400,8 @@ __kernel void subdivide_first_step(ATLAS_IN src, ATLAS_OUT dst, int2 sg, int2 dg
       const int interior = other.x >= 0;                                                                           \
       const Frame fq = across_frame(max(other.x, 0), other.y, 2);                                                  \
       _Pragma("unroll") for (int t = 0; t < 3; ++t) { out[t] = interior ? FRAME_LOAD(src, sg, fq, t, -1) : row[t]; } \
-      const Frame g = side_frame(p, s, 4);                                                                         \
-      const int2 a = g.o + g.dt, b = a + g.dt, c = b + g.dt;                                                       \
+      const Frame fn = side_frame(p, s, 4);                                                                        \
+      const int2 a = fn.o + fn.dt, b = a + fn.dt, c = b + fn.dt;                                                   \
       EMIT(a, side_edge_point(row[0], row[1], in[0], in[1], out[0], out[1], interior));                            \
       EMIT(b, side_vertex_point(row[0], row[1], row[2], in[0], in[1], in[2], out[0], out[1], out[2], interior));   \
       EMIT(c, side_edge_point(row[1], row[2], in[1], in[2], out[1], out[2], interior));                            \

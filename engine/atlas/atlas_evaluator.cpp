@@ -149,7 +149,8 @@ int AtlasEvaluator::subdivide(int from_level, const std::vector<cl::Memory>& lay
     // Small tiles on CPUs: a kernel per step that walks each tile's own
     // sides, no side kernel.
     cl::Kernel* small_step = !tiles_walk_sides(l) ? nullptr : l == 1 ? &subdivide_first_step_ : &subdivide_second_step_;
-    if (a.edge_count > 0 && !small_step)
+    const bool tiles = last_tiles || k + 1 < steps; // else the caller makes them from the corners
+    if (a.edge_count > 0 && !small_step && tiles)
       launch(q, subdivide_edges_, range1d(a.edge_count), kLocal1D, in, side_work_, tables_.edges(), a.edges,
              a.edge_count, a.edge_flags, a.generation, grid(s), grid(d));
     // After the side kernel, which leaves the source level in the caches.
@@ -163,7 +164,7 @@ int AtlasEvaluator::subdivide(int from_level, const std::vector<cl::Memory>& lay
     else if (corner_levels && wide_rings_)
       launch(q, subdivide_corners_, range1d(a.ring_count), kLocal1D, in, corner_work_, corner_base, tables_.rings(),
              tables_.slots(), a.rings, a.ring_count, ring_marks_, cl_int(mark), grid(s));
-    if (k == steps - 1 && !last_tiles)
+    if (!tiles)
       break;
     if (a.patch_count > 0 && small_step)
       launch(q, *small_step, range1d(a.patch_count), kLocal1D, in, out, grid(s), grid(d), a.patches, a.patch_count,
