@@ -200,13 +200,12 @@ void Multires::reconstruct(const std::vector<int>& affected, const PatchSet& aro
   // Levels above the edit level hold up(base) (encode() made them so, and
   // every reconstruction keeps them so on what it changes): subdividing the
   // affected set and the patches holding copies of its sides and corners
-  // is enough. U' at the finest level goes into `smooth`, and decoding
-  // writes S' from there into the finest level, whose other texels keep S
-  // as it is now, whatever changed it since the encoding (an undo, a stroke
-  // elsewhere).
-  // On CPUs a finest level 2 or 3 is decoded as its tiles are made, the
-  // listed patches' only: the other patches of `around` need the level
-  // below, not U.
+  // is enough. Decoding writes S' into the finest level, whose other texels
+  // keep S as it is now, whatever changed it since the encoding (an undo, a
+  // stroke elsewhere). On CPUs a finest level 2 or 3 is decoded as its
+  // tiles are made, the listed patches' only (the other patches of
+  // `around` need the level below, not U); otherwise U' at the finest
+  // level goes into `smooth` and is decoded from there.
   const AtlasEvaluator& work = atlas_.evaluator();
   const bool as_made = (finest == 2 || finest == 3) && work.tiles_walk_sides(finest - 1);
   const int corner_base = as_made ? atlas_.subdivide_but_last_tiles(level_, around) : 0;
