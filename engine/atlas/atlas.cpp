@@ -120,6 +120,11 @@ std::vector<std::uint8_t> Atlas::shared_outside(const std::vector<int>& patches)
   return sets_->shared_outside(patches);
 }
 
+std::vector<int> Atlas::corner_neighbourhood(const std::vector<int>& patches) const
+{
+  return sets_->corner_neighbourhood(patches);
+}
+
 PatchSet Atlas::neighbourhood(const std::vector<int>& changed, const cl::Buffer* list)
 {
   if (changed.size() == std::size_t(topology().patch_count))

@@ -112,6 +112,9 @@ public:
   //! Per patch of `patches`, the sides (bits 0-3) and corners (bits 4-7) it
   //! shares with a patch not listed (as PatchSet::outside).
   std::vector<std::uint8_t> shared_outside(const std::vector<int>& patches) const;
+  //! `patches` and every patch sharing a corner with one, in patch order,
+  //! each once.
+  std::vector<int> corner_neighbourhood(const std::vector<int>& patches) const;
   //! Recomputes the limit layers on a set only (after editing positions
   //! there): the whole tiles of the set's patches, as compute_limit_of().
   //! Every patch holding a copy of a moved texel's limit must be in the set:

@@ -103,39 +103,48 @@ AtlasTopology build_atlas_topology(const OpenSubdiv::Far::TopologyLevel& level1)
   return topo;
 }
 
-std::vector<int> AtlasTopology::corner_neighbourhood(const std::vector<int>& patches, int layers) const
-{
-  Marks in, ring_done;
-  return corner_neighbourhood(patches, layers, in, ring_done);
-}
-
-std::vector<int> AtlasTopology::corner_neighbourhood(const std::vector<int>& patches, int layers, Marks& in,
+std::vector<int> AtlasTopology::corner_neighbourhood(const std::vector<int>& patches, Marks& in,
                                                      Marks& ring_done) const
 {
   in.begin(std::size_t(patch_count));
-  ring_done.begin(rings.size()); // each corner ring once, not once per patch at it
+  ring_done.begin(rings.size());
+  if (patches.size() * 16 > std::size_t(patch_count)) {
+    // Many patches: their corners marked, then every patch tested at its
+    // four corners in patch order. The patches are along the surface, so
+    // the tests' outcomes come in runs, and the scan reads the corner
+    // table in order where walking the rings would gather from it.
+    for (const int p : patches)
+      for (const int v : patch_corners[std::size_t(p)])
+        ring_done.mark(std::size_t(v));
+    std::vector<int> out;
+    out.reserve(patches.size() + patches.size() / 4);
+    for (int q = 0; q < patch_count; ++q) {
+      const std::array<int, 4>& c = patch_corners[std::size_t(q)];
+      if (ring_done.marked(std::size_t(c[0])) | ring_done.marked(std::size_t(c[1])) |
+          ring_done.marked(std::size_t(c[2])) | ring_done.marked(std::size_t(c[3]))) {
+        in.mark(std::size_t(q));
+        out.push_back(q);
+      }
+    }
+    return out;
+  }
   std::vector<int> out;
   out.reserve(2 * patches.size());
   for (const int p : patches)
     if (in.mark(std::size_t(p)))
       out.push_back(p);
-  std::size_t from = 0;
-  for (int r = 0; r < layers; ++r) {
-    const std::size_t to = out.size();
-    for (std::size_t k = from; k < to; ++k)
-      for (int c = 0; c < 4; ++c) {
-        const int v = patch_corners[std::size_t(out[k])][c];
-        if (!ring_done.mark(std::size_t(v)))
-          continue;
-        const CornerRing& ring = rings[std::size_t(v)];
-        for (int m = 0; m < ring.count; ++m) {
-          const int q = slots[std::size_t(ring.first + m)].patch;
-          if (in.mark(std::size_t(q)))
-            out.push_back(q);
-        }
+  const std::size_t listed = out.size();
+  for (std::size_t k = 0; k < listed; ++k)
+    for (const int v : patch_corners[std::size_t(out[k])]) {
+      if (!ring_done.mark(std::size_t(v)))
+        continue; // each corner ring once, not once per patch at it
+      const CornerRing& ring = rings[std::size_t(v)];
+      for (int m = 0; m < ring.count; ++m) {
+        const int q = slots[std::size_t(ring.first + m)].patch;
+        if (in.mark(std::size_t(q)))
+          out.push_back(q);
       }
-    from = to;
-  }
+    }
   return marked_in_order(std::move(out), in, std::size_t(patch_count));
 }
 

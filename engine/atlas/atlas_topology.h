@@ -33,14 +33,10 @@ struct AtlasTopology
   }
   //! Vertices of the welded level-l surface (each stored copy counted once).
   std::size_t unique_vertices(int level) const;
-  //! `patches` and `layers` rings of patches around them (each sharing a
-  //! corner with the ring inside it), in patch order, each once.
-  std::vector<int> corner_neighbourhood(const std::vector<int>& patches, int layers) const;
-  //! The same with the caller's scratch, which a caller doing this often
-  //! keeps: afterwards `in` holds the result's patches (and `ring_done` the
-  //! rings visited).
-  std::vector<int> corner_neighbourhood(const std::vector<int>& patches, int layers, Marks& in,
-                                        Marks& ring_done) const;
+  //! `patches` and every patch sharing a corner with one, in patch order,
+  //! each once, on the caller's scratch, which a caller doing this often
+  //! keeps: afterwards `in` holds the result's patches.
+  std::vector<int> corner_neighbourhood(const std::vector<int>& patches, Marks& in, Marks& ring_done) const;
 };
 
 //! Builds the tables from OpenSubdiv's level-1 topology.

@@ -181,7 +181,7 @@ std::vector<int> Multires::reach(const std::vector<int>& patches) const
   // a face of its level, and the frames by a finest texel: less than one
   // patch in all, so one ring. The limit stencil is the caller's
   // neighbourhood().
-  return atlas_.topology().corner_neighbourhood(patches, 1);
+  return atlas_.corner_neighbourhood(patches);
 }
 
 void Multires::reconstruct(const std::vector<int>& affected)
@@ -211,20 +211,23 @@ void Multires::reconstruct(const std::vector<int>& affected, const PatchSet& aro
   const int corner_base = as_made ? atlas_.subdivide_but_last_tiles(level_, around) : 0;
   if (!as_made)
     atlas_.subdivide(level_, finest, around, &d.smooth);
-  // Made while the subdivision runs.
-  const PatchSet set = atlas_.patch_set(affected, Reach::All);
   const AtlasTables& tables = atlas_.tables();
   if (as_made) {
-    if (set.patches.empty())
+    // The kernel takes whole tiles: no edge or ring lists; what the
+    // patches share with others is made while the subdivision runs.
+    if (affected.empty())
       return;
-    const cl::Buffer patches = device_ints(rt.context(), set.patches), kept = device_copy(rt.context(), set.outside);
+    const cl::Buffer patches = device_ints(rt.context(), affected),
+                     kept = device_copy(rt.context(), atlas_.shared_outside(affected));
     launch(q, finest == 2 ? d.subdivide_decode_first : d.subdivide_decode_second,
-           cl::NDRange(round_up(set.patches.size(), kGroup)), cl::NDRange(kGroup), atlas_.level_layer(finest - 1),
-           grid(atlas_.layout(finest - 1)), grid(f), patches, cl_int(set.patches.size()),
+           cl::NDRange(round_up(affected.size(), kGroup)), cl::NDRange(kGroup), atlas_.level_layer(finest - 1),
+           grid(atlas_.layout(finest - 1)), grid(f), patches, cl_int(affected.size()),
            tables.patch_rings(), tables.patch_across(), work.corner_work(), cl_int(corner_base), d.details, fine,
            tables.rings(), tables.slots(), d.owned, kept);
     return;
   }
+  // Made while the subdivision runs.
+  const PatchSet set = atlas_.patch_set(affected, Reach::All);
   const cl::Buffer patches = device_ints(rt.context(), set.patches), edges = device_ints(rt.context(), set.edges),
                    rings = device_ints(rt.context(), set.rings);
   if (f.n > 1 && !set.edges.empty())

@@ -59,6 +59,9 @@ public:
 
   //! The edges and rings that go with `patches` by `reach`.
   PatchSet lists(const std::vector<int>& patches, Reach reach);
+  //! `patches` and every patch sharing a corner with one, in patch order,
+  //! each once (AtlasTopology::corner_neighbourhood() on this scratch).
+  std::vector<int> corner_neighbourhood(const std::vector<int>& patches);
   //! `changed` and every patch sharing a corner with one (each holds copies
   //! of moved texels' limit), by Reach::Any.
   PatchSet neighbourhood(const std::vector<int>& changed);
@@ -69,16 +72,13 @@ public:
 private:
   //! The set of `patches` (in patch order, and the ones patch_marks_ holds).
   PatchSet marked_set(std::vector<int> patches, Reach reach);
-  //! PatchSet::outside of patch p, the set being what patch_marks_ holds
-  //! (after begin_outside()).
-  std::uint8_t outside_bits(int p);
-  //! Whether a patch at corner v lies outside that set (kept per ring).
-  bool ring_outside(int v);
-  void begin_outside();
+  //! PatchSet::outside of each of `patches` (each once), the set being what
+  //! patch_marks_ holds.
+  std::vector<std::uint8_t> outside_of(const std::vector<int>& patches);
 
   const AtlasTables& tables_;
-  Marks patch_marks_, edge_marks_, ring_marks_, ring_seen_, ring_known_;
-  std::vector<std::uint8_t> ring_outside_; // ring_outside(), where ring_known_
+  Marks patch_marks_, edge_marks_, ring_marks_, ring_seen_;
+  std::vector<int> ring_held_; // outside_of(): per ring, its slots held by the set's patches
 };
 
 } // namespace meshpaint
