@@ -35,11 +35,11 @@ std::vector<std::uint8_t> PatchSetMaker::outside_of(const std::vector<int>& patc
   // the set than it has slots: each patch counts itself at its four
   // corners, instead of a walk of every ring with a branch per slot.
   const AtlasTopology& topo = tables_.topology();
-  ring_held_.resize(topo.rings.size()); // zeros between calls
+  std::vector<std::uint8_t> out(patches.size());
+  ring_held_.resize(topo.rings.size()); // zeros between calls: nothing below throws
   for (const int p : patches)
     for (const int v : topo.patch_corners[std::size_t(p)])
       ++ring_held_[std::size_t(v)];
-  std::vector<std::uint8_t> out(patches.size());
   for (std::size_t k = 0; k < patches.size(); ++k) {
     const int p = patches[k];
     const std::array<int, 4>& corner = topo.patch_corners[std::size_t(p)];
