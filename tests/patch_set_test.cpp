@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm> // for std::sort
+#include <algorithm> // for std::sort, std::reverse
 #include <cstdint>   // for std::uint8_t, std::uint32_t
 #include <string>    // for std::string, std::to_string
 #include <vector>    // for std::vector
@@ -45,12 +45,13 @@ void expect_sets_as_defined(const BaseMesh& mesh, const std::string& name)
     std::vector<bool> in(std::size_t(patches), false);
     for (int p = 0; p < patches; ++p) {
       random = random * 1664525u + 1013904223u;
-      if (int(random >> 8) % 100 < percent || set.empty() && p == patches - 1) {
+      if (int(random >> 8) % 100 < percent || (set.empty() && p == patches - 1)) {
         set.push_back(p);
         in[std::size_t(p)] = true;
       }
     }
     std::reverse(set.begin(), set.end());
+    const std::vector<int> once = set;
     set.push_back(set.front());
 
     std::vector<int> around;
@@ -80,7 +81,9 @@ void expect_sets_as_defined(const BaseMesh& mesh, const std::string& name)
     std::vector<std::uint8_t> outside;
     for (const int p : set)
       outside.push_back(outside_bits(p));
-    EXPECT_EQ(atlas.shared_outside(set), outside) << what;
+    EXPECT_EQ(atlas.shared_outside(set), outside) << what << ", a patch listed twice";
+    outside.pop_back();
+    EXPECT_EQ(atlas.shared_outside(once), outside) << what;
 
     // By Reach::All, the sides and corners shared with no patch outside.
     const PatchSet all = atlas.patch_set(set, Reach::All);

@@ -154,7 +154,9 @@ private:
   std::vector<int> base_face_order_;
   std::unique_ptr<AtlasTables> tables_;
   std::unique_ptr<AtlasEvaluator> evaluator_;
-  std::unique_ptr<PatchSetMaker> sets_; // its scratch makes patch_set() and shared_outside() const in name only
+  // Its scratch makes patch_set(), shared_outside() and corner_neighbourhood() const in name only: calls on one
+  // atlas must not overlap.
+  std::unique_ptr<PatchSetMaker> sets_;
   std::vector<cl::Memory> levels_;      // index l - 1
   cl::Memory limit_positions_, limit_normals_; // null until first computed
   cl::Buffer limit_bounds_;

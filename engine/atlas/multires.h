@@ -72,9 +72,9 @@ public:
   std::vector<int> reach(const std::vector<int>& patches) const;
 
   //! Rebuilds the finest level from the edit level on `affected` (from
-  //! reach(): in patch order, each once): up(), then the details in the new frames. Texels elsewhere
-  //! keep their values bit for bit; the limit layers on `affected` are left
-  //! to the caller (Atlas::update_limit).
+  //! reach(), so in patch order, each once): up(), then the details in the
+  //! new frames. Texels elsewhere keep their values bit for bit; the limit
+  //! layers on `affected` are left to the caller (Atlas::update_limit).
   void reconstruct(const std::vector<int>& affected);
   //! The same, given Atlas::neighbourhood(affected), which the caller's
   //! limit update takes too (this makes no set of its own).
