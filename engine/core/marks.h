@@ -41,11 +41,12 @@ private:
 //! The items i < n for which marked(i) holds, in increasing order, given
 //! that `listed` holds them in any order, each once (the result has at most
 //! as many): for a few a sort of `listed`, for many a scan, which writes
-//! every item and keeps it by a count, no branch on the mark.
+//! every item and keeps it by a count, no branch on the mark. The sort costs
+//! about a scan's time at n / 32 items on this project's CPU hosts.
 template <class Marked>
 std::vector<int> in_order(std::vector<int> listed, std::size_t n, Marked marked)
 {
-  if (listed.size() * 16 <= n) {
+  if (listed.size() * 32 <= n) {
     std::sort(listed.begin(), listed.end());
     return listed;
   }
