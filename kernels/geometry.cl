@@ -101,7 +101,8 @@ inline float4 umbrella(float4 x, float4 mean, float step)
 
 /* Range: (tile, tile * count). Every copy of a vertex holds the same bits,
  * so copies write the same value; both arrays get it, so that vertices no
- * pass moves read alike from either. The weight is the vertex's own texel's. */
+ * pass moves read alike from either. The weight is the vertex's own texel's;
+ * with null `weights` they are left to welded_listed_weights. */
 __kernel void welded_gather(ATLAS_IN layer, int2 g, __global const int *restrict list, int count,
                             __global const int *restrict vertex_of, __global const int *restrict texel,
                             __global const float *restrict weights, __global float4 *restrict a,
@@ -116,8 +117,18 @@ __kernel void welded_gather(ATLAS_IN layer, int2 g, __global const int *restrict
   const float4 x = ATLAS_LOAD(layer, g, p, ij);
   a[v] = x;
   b[v] = x;
-  if (texel[v] == t)
+  if (weights && texel[v] == t)
     welded_weights[v] = weights[t];
+}
+
+/* Range: count; the weights of the listed vertices (list[k]), each its own
+ * texel's, as welded_gather gives them. */
+__kernel void welded_listed_weights(__global const int *restrict list, int count, __global const int *restrict texel,
+                                    __global const float *restrict weights, __global float *restrict welded_weights)
+{
+  const int k = get_global_id(0);
+  if (k < count)
+    welded_weights[list[k]] = weights[texel[list[k]]];
 }
 
 /* Range: (tile, tile * count). */

@@ -3,6 +3,7 @@
 
 #include "atlas/weld.h"
 #include "atlas/welded_neighbours.h"
+#include "paint/paint_device.h"
 #include "paint/paint_surface.h"
 #include "support/copies.h"
 #include "support/runtime.h"
@@ -440,6 +441,55 @@ TEST(GeometryBrush, AStaleDeviceSetIsRefused)
   EXPECT_NO_THROW(atlas.update_limit(newer));
   EXPECT_THROW(atlas.update_limit(older), std::logic_error);
   EXPECT_THROW(atlas.subdivide(1, 4, older), std::logic_error);
+}
+
+TEST(GeometryBrush, DensePassesSmoothAsListedOnesDo)
+{
+  // Smoothing over every vertex with the unmoved weighing 0 against passes
+  // over a list of the moved (WeldedSmoothing::set_dense_share()), under
+  // each storage, on a closed surface and one with a border: small and large
+  // brushes (a dense pass then reads vertices no tile of the set gave it),
+  // Taubin and Laplacian, colours, and at an edit level.
+  for (const AtlasStorage storage : {AtlasStorage::Buffer, AtlasStorage::Image})
+    for (const char* name : {"genus two", "open grid"}) {
+      const bool closed = std::string(name) == "genus two";
+      const BaseMesh mesh = closed ? test::genus_two() : test::open_grid();
+      const Vec3 at = closed ? Vec3{0.5f, 0.5f, 1.f} : Vec3{1.5f, 1.5f, 0.4f};
+      std::vector<std::vector<Float4>> results[2];
+      for (const bool dense : {false, true}) {
+        PaintSurface surface(test::runtime(), mesh, 4, storage);
+        surface.state().device.smoothing->set_dense_share(dense ? std::size_t(1) << 30 : 0);
+        Stroke dot = brush(Tool::Paint, at, 0.5f);
+        dot.paint().value[CHANNEL_DIFFUSE] = {1.f, 0.f, 0.f, 1.f};
+        dot.paint().alpha[CHANNEL_DIFFUSE] = 1.f;
+        surface.apply(dot);
+        for (const float radius : {0.4f, 1.2f, 10.f}) {
+          Stroke s = brush(Tool::Smooth, at, radius);
+          s.brush.falloff = FALLOFF_SMOOTHSTEP;
+          s.smooth().iterations = 3;
+          s.smooth().taubin = radius < 1.f;
+          EXPECT_GT(surface.apply(s).dabs_applied, 0u) << name << " radius " << radius;
+        }
+        Stroke blur = brush(Tool::Blur, at, 0.8f);
+        blur.smooth().target_colour = true;
+        blur.smooth().taubin = false;
+        surface.apply(blur);
+        Stroke coarse = brush(Tool::Smooth, at, 0.7f);
+        coarse.set_edit_level(2);
+        EXPECT_GT(surface.apply(coarse).dabs_applied, 0u);
+        results[dense] = {surface.atlas().read_positions(4), surface.atlas().read_limit_positions(),
+                          surface.read_channels().diffuse};
+      }
+      expect_same_bits(results[0], results[1],
+                       std::string(name) + (storage == AtlasStorage::Image ? ", image" : ", buffer"));
+      EXPECT_NE(std::memcmp(results[0][0].data(), PaintSurface(test::runtime(), mesh, 4, storage)
+                                                     .atlas()
+                                                     .read_positions(4)
+                                                     .data(),
+                            results[0][0].size() * sizeof(Float4)),
+                0)
+        << name << ": the strokes moved nothing";
+    }
 }
 
 TEST(GeometryBrush, TaubinSmoothingRemovesNoiseAndKeepsTheVolume)

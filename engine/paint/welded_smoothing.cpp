@@ -15,7 +15,7 @@ constexpr std::size_t kGroup = 256;
 
 WeldedSmoothing::WeldedSmoothing(Runtime& runtime, const AtlasTopology& topology, const cl::Program& program)
   : runtime_(runtime), topology_(topology), smooth_texels_(program, "welded_smooth_texels"),
-    smooth_corners_(program, "welded_smooth_corners")
+    smooth_corners_(program, "welded_smooth_corners"), listed_weights_(program, "welded_listed_weights")
 {
 }
 
@@ -60,15 +60,29 @@ const cl::Buffer& WeldedSmoothing::passes(const LayerKernels& k, const cl::Memor
   // Null lists: every patch, every vertex.
   const int count = set ? int(set->patches.size()) : l.patches;
   // The moved vertices: corners first, then the others.
-  const int corners = set ? int(set->corners.size()) : w.numbering.edge_base;
-  const int others = set ? int(w.numbering.moved_count(set->patches.size(), set->edges.size(), 0))
-                         : int(w.vertices) - w.numbering.edge_base;
-  const cl::Buffer moved =
+  int corners = set ? int(set->corners.size()) : w.numbering.edge_base;
+  int others = set ? int(w.numbering.moved_count(set->patches.size(), set->edges.size(), 0))
+                   : int(w.vertices) - w.numbering.edge_base;
+  cl::Buffer moved =
     set ? device_ints(runtime_.context(), w.numbering.moved(set->patches, set->edges, set->corners)) : cl::Buffer();
+  // A set that moves many of the vertices passes over all of them, the
+  // others weighing 0: a pass then reads no list, which made an item on a
+  // list cost up to twice as much. Vertices outside the gathered tiles hold
+  // stale values, which no moved vertex reads and none is scattered.
+  const bool dense = set && std::size_t(corners + others) * dense_share_ >= w.vertices;
   const auto tiles = range_tiles(l, count);
   cl::Kernel gather = k.gather;
-  launch(q, gather, tiles.first, tiles.second, layer, grid(l), list, count, w.vertex_of, w.texel, weights, a_, b_,
-         weights_);
+  launch(q, gather, tiles.first, tiles.second, layer, grid(l), list, count, w.vertex_of, w.texel,
+         dense ? cl::Buffer() : weights, a_, b_, weights_);
+  if (dense) {
+    q.enqueueFillBuffer(weights_, 0.f, 0, w.vertices * sizeof(float));
+    const int listed = corners + others;
+    launch(q, listed_weights_, cl::NDRange(round_up(std::size_t(listed), kGroup)), cl::NDRange(kGroup), moved, listed,
+           w.texel, weights, weights_);
+    corners = w.numbering.edge_base;
+    others = int(w.vertices) - w.numbering.edge_base;
+    moved = cl::Buffer();
+  }
   const cl::Buffer* from = &a_;
   const cl::Buffer* to = &b_;
   for (const float step : steps) {

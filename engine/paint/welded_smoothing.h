@@ -39,6 +39,15 @@ public:
   std::vector<Float4> run_welded(const LayerKernels& kernels, const cl::Memory& layer, const LevelLayout& l,
                                  const cl::Buffer& weights, const std::vector<float>& steps);
 
+  //! From 1 / dense_share() of a level's vertices moved on, run() passes
+  //! over every vertex, those not moved weighing 0, instead of a list of
+  //! the moved. The two give the same bits; the setter is for tests that
+  //! compare them (0: lists always; a share past the vertex count: every
+  //! vertex always).
+  static constexpr std::size_t kDenseShare = 2;
+  std::size_t dense_share() const { return dense_share_; }
+  void set_dense_share(std::size_t share) { dense_share_ = share; }
+
   //! Device memory that run() allocates for a level of `texels` and
   //! `vertices` (the finest level's bounds every level's).
   static std::size_t bytes(std::size_t texels, std::size_t vertices);
@@ -57,10 +66,11 @@ private:
 
   Runtime& runtime_;
   const AtlasTopology& topology_;
-  cl::Kernel smooth_texels_, smooth_corners_;
+  cl::Kernel smooth_texels_, smooth_corners_, listed_weights_;
   std::map<int, Level> levels_;
   cl::Buffer a_, b_, weights_;
   std::size_t capacity_ = 0;
+  std::size_t dense_share_ = kDenseShare;
 };
 
 } // namespace meshpaint
