@@ -446,7 +446,7 @@ TEST(GeometryBrush, AStaleDeviceSetIsRefused)
 TEST(GeometryBrush, DensePassesSmoothAsListedOnesDo)
 {
   // Smoothing over every vertex with the unmoved weighing 0 against passes
-  // over a list of the moved (WeldedSmoothing::set_dense_share()), under
+  // over a list of the moved (WeldedSmoothing::set_dense_from()), under
   // each storage, on a closed surface and one with a border: small and large
   // brushes (a dense pass then reads vertices no tile of the set gave it),
   // Taubin and Laplacian, colours, and at an edit level.
@@ -458,7 +458,7 @@ TEST(GeometryBrush, DensePassesSmoothAsListedOnesDo)
       std::vector<std::vector<Float4>> results[2];
       for (const bool dense : {false, true}) {
         PaintSurface surface(test::runtime(), mesh, 4, storage);
-        surface.state().device.smoothing->set_dense_share(dense ? std::size_t(1) << 30 : 0);
+        surface.state().device.smoothing->set_dense_from(dense ? 0. : 2.);
         Stroke dot = brush(Tool::Paint, at, 0.5f);
         dot.paint().value[CHANNEL_DIFFUSE] = {1.f, 0.f, 0.f, 1.f};
         dot.paint().alpha[CHANNEL_DIFFUSE] = 1.f;

@@ -65,11 +65,11 @@ const cl::Buffer& WeldedSmoothing::passes(const LayerKernels& k, const cl::Memor
                    : int(w.vertices) - w.numbering.edge_base;
   cl::Buffer moved =
     set ? device_ints(runtime_.context(), w.numbering.moved(set->patches, set->edges, set->corners)) : cl::Buffer();
-  // A set that moves many of the vertices passes over all of them, the
+  // A set that moves most of the vertices passes over all of them, the
   // others weighing 0: a pass then reads no list, which made an item on a
-  // list cost up to twice as much. Vertices outside the gathered tiles hold
-  // stale values, which no moved vertex reads and none is scattered.
-  const bool dense = set && std::size_t(corners + others) * dense_share_ >= w.vertices;
+  // list cost 1.2-1.6 times as much. Vertices outside the gathered tiles
+  // hold stale values, which no moved vertex reads and none is scattered.
+  const bool dense = set && corners + others > 0 && double(corners + others) >= dense_from_ * double(w.vertices);
   const auto tiles = range_tiles(l, count);
   cl::Kernel gather = k.gather;
   launch(q, gather, tiles.first, tiles.second, layer, grid(l), list, count, w.vertex_of, w.texel,

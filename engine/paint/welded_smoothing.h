@@ -39,14 +39,13 @@ public:
   std::vector<Float4> run_welded(const LayerKernels& kernels, const cl::Memory& layer, const LevelLayout& l,
                                  const cl::Buffer& weights, const std::vector<float>& steps);
 
-  //! From 1 / dense_share() of a level's vertices moved on, run() passes
-  //! over every vertex, those not moved weighing 0, instead of a list of
-  //! the moved. The two give the same bits; the setter is for tests that
-  //! compare them (0: lists always; a share past the vertex count: every
-  //! vertex always).
-  static constexpr std::size_t kDenseShare = 2;
-  std::size_t dense_share() const { return dense_share_; }
-  void set_dense_share(std::size_t share) { dense_share_ = share; }
+  //! From dense_from() of a level's vertices moved on, run() passes over
+  //! every vertex, those not moved weighing 0, instead of a list of the
+  //! moved. The two give the same bits; the setter is for tests that compare
+  //! them (0: every vertex always; above 1: lists always).
+  static constexpr double kDenseFrom = 0.75;
+  double dense_from() const { return dense_from_; }
+  void set_dense_from(double share) { dense_from_ = share; }
 
   //! Device memory that run() allocates for a level of `texels` and
   //! `vertices` (the finest level's bounds every level's).
@@ -70,7 +69,7 @@ private:
   std::map<int, Level> levels_;
   cl::Buffer a_, b_, weights_;
   std::size_t capacity_ = 0;
-  std::size_t dense_share_ = kDenseShare;
+  double dense_from_ = kDenseFrom;
 };
 
 } // namespace meshpaint
