@@ -315,48 +315,60 @@ __kernel void decode_corners(ATLAS_IN smooth, int2 g, __global const CornerRing 
  * decoded()'s operations on the same values: the bits of decode_edges,
  * decode_corners and decode_patches. */
 
-/* decoded() at texel (i, j) of a tile of n + 1 texels a side held as
- * u[j][i]: detail_frame()'s clamped differences. */
+/* detail_frame() at texel (i, j) of a tile of n + 1 texels a side held as
+ * u[j][i]: its clamped differences. */
+#define TILE_FRAME(u, n, i, j, t, b, nrm)                                                                   \
+  frame_of((u)[j][min((i) + 1, (n))].xyz - (u)[j][max((i) - 1, 0)].xyz,                                    \
+           (u)[min((j) + 1, (n))][i].xyz - (u)[max((j) - 1, 0)][i].xyz, (t), (b), (nrm))
+
+/* decoded() at texel (i, j) of such a tile. */
 TEXEL_INLINE float4 tile_decoded(float4 u[5][5], int n, int i, int j, __global const float4 *details, int2 g, int p)
 {
   float3 t, b, nrm;
-  frame_of(u[j][min(i + 1, n)].xyz - u[j][max(i - 1, 0)].xyz, u[min(j + 1, n)][i].xyz - u[max(j - 1, 0)][i].xyz,
-           &t, &b, &nrm);
+  TILE_FRAME(u, n, i, j, &t, &b, &nrm);
   return detailed(u[j][i], details[PATCH_MAJOR_INDEX(g, p, (int2)(i, j))], t, b, nrm);
 }
 
 /* The kernel body for tiles of N + 1 texels a side made by STEP_TILE. */
-#define SUBDIVIDE_DECODE(N, STEP_TILE)                                                           \
+/* The start of such a kernel: patch p (the item-th listed) and its tile
+ * of U made by STEP_TILE in u[j][i]. */
+#define TILE_OF_U(list, STEP_TILE)                                                               \
   PATCH_ITEM(list, count, NO_SKIP);                                                              \
   const int4 pr = patch_rings[p], pa = patch_across[p];                                          \
   PREFETCH_ACROSS_AHEAD(src, sg, patch_across, list, item, count);                               \
   float4 u[5][5];                                                                                \
-  STEP_TILE(src, sg, p, pr, pa, corners, corner_base, KEEP_TEXEL);                               \
-  const int decodes = owned[p] & ~outside[item];                                                 \
+  STEP_TILE(src, sg, p, pr, pa, corners, corner_base, KEEP_TEXEL)
+#define KEEP_TEXEL(ij, v) u[(ij).y][(ij).x] = (v)
+
+/* The texels ij = (i, j) of a tile of N + 1 a side, each with its
+ * part_bit() `bit`; the loop's body follows. */
+#define EACH_TILE_TEXEL(N)                                                                       \
   _Pragma("unroll") for (int j = 0; j <= (N); ++j)                                               \
+    _Pragma("unroll") for (int i = 0, bit = part_bit((int2)(0, j), (N)); i <= (N);               \
+                           ++i, bit = part_bit((int2)(i, j), (N)))
+
+#define SUBDIVIDE_DECODE(N, STEP_TILE)                                                           \
+  TILE_OF_U(list, STEP_TILE);                                                                    \
+  const int decodes = owned[p] & ~outside[item];                                                 \
+  EACH_TILE_TEXEL(N)                                                                             \
   {                                                                                              \
-    _Pragma("unroll") for (int i = 0; i <= (N); ++i)                                             \
-    {                                                                                            \
-      const int2 ij = (int2)(i, j);                                                              \
-      const int bit = part_bit(ij, (N));                                                         \
-      if (bit != 0 && !(decodes & bit))                                                          \
-        continue;                                                                                \
-      const float4 s = tile_decoded(u, (N), i, j, details, g, p);                                \
-      ATLAS_STORE(fine, g, p, ij, s);                                                            \
-      if (bit >= 16) { /* a corner: the ring's other slots */                                    \
-        const CornerRing ring = rings[int4_at(pr, tile_part(ij, (N)) - UNFOLD_CORNER)];          \
-        for (int m = 1; m < ring.count; ++m) {                                                   \
-          const CornerSlot o = slots[ring.first + m];                                            \
-          ATLAS_STORE(fine, g, o.patch, kCornerUnit[o.corner] * (N), s);                         \
-        }                                                                                        \
-      } else if (bit != 0) { /* a side: the patch across, if any */                              \
-        const int2 st = side_place(ij, (N)), other = across_side(pa, st.x);                      \
-        if (other.x >= 0)                                                                        \
-          FRAME_STORE(fine, g, across_frame(other.x, other.y, (N)), st.y, 0, s);                 \
+    const int2 ij = (int2)(i, j);                                                                \
+    if (bit != 0 && !(decodes & bit))                                                            \
+      continue;                                                                                  \
+    const float4 s = tile_decoded(u, (N), i, j, details, g, p);                                  \
+    ATLAS_STORE(fine, g, p, ij, s);                                                              \
+    if (bit >= 16) { /* a corner: the ring's other slots */                                      \
+      const CornerRing ring = rings[int4_at(pr, tile_part(ij, (N)) - UNFOLD_CORNER)];            \
+      for (int m = 1; m < ring.count; ++m) {                                                     \
+        const CornerSlot o = slots[ring.first + m];                                              \
+        ATLAS_STORE(fine, g, o.patch, kCornerUnit[o.corner] * (N), s);                           \
       }                                                                                          \
+    } else if (bit != 0) { /* a side: the patch across, if any */                                \
+      const int2 st = side_place(ij, (N)), other = across_side(pa, st.x);                        \
+      if (other.x >= 0)                                                                          \
+        FRAME_STORE(fine, g, across_frame(other.x, other.y, (N)), st.y, 0, s);                   \
     }                                                                                            \
   }
-#define KEEP_TEXEL(ij, v) u[(ij).y][(ij).x] = (v)
 
 /* Range: count; src level 1 or 2, fine the next level (grid g). */
 #define SUBDIVIDE_DECODE_ARGUMENTS                                                                                    \
@@ -367,6 +379,38 @@ TEXEL_INLINE float4 tile_decoded(float4 u[5][5], int n, int i, int j, __global c
     __global const uchar *restrict outside
 __kernel void subdivide_decode_first(SUBDIVIDE_DECODE_ARGUMENTS) { SUBDIVIDE_DECODE(2, FIRST_STEP_TILE) }
 __kernel void subdivide_decode_second(SUBDIVIDE_DECODE_ARGUMENTS) { SUBDIVIDE_DECODE(4, SECOND_STEP_TILE) }
+
+/* Encoding as the last step of subdivision, the same way (CPUs, a finest
+ * level 2 or 3, a work item per patch): the tile of U stays in registers
+ * and S is read once, so U never goes through memory. Each texel whose
+ * details the patch holds (`owned`) gets encode_texel()'s operations on the
+ * same values, and the copies held elsewhere are stored as the 0 they are
+ * (as encode_patches stores them): encode_details' bits. Each tile's
+ * tile_extent() goes into `extent` while the tile of S is in the cache. */
+#define SUBDIVIDE_ENCODE(N, STEP_TILE)                                                           \
+  TILE_OF_U((__global const int *)0, STEP_TILE);                                                 \
+  const int own = owned[p];                                                                      \
+  EACH_TILE_TEXEL(N)                                                                             \
+  {                                                                                              \
+    float4 e = (float4)(0.0f);                                                                   \
+    if (bit == 0 || (own & bit)) {                                                               \
+      float3 t, b, nrm;                                                                          \
+      TILE_FRAME(u, (N), i, j, &t, &b, &nrm);                                                    \
+      const float3 d = ATLAS_LOAD(fine, g, p, (int2)(i, j)).xyz - u[j][i].xyz;                   \
+      e = (float4)(dot(d, t), dot(d, b), dot(d, nrm), 0.0f);                                     \
+    }                                                                                            \
+    details[PATCH_MAJOR_INDEX(g, p, (int2)(i, j))] = e;                                          \
+  }                                                                                              \
+  extent[p] = tile_extent(fine, g, p)
+
+/* Range: count, every patch; src level 1 or 2, fine the next level (grid g). */
+#define SUBDIVIDE_ENCODE_ARGUMENTS                                                                                    \
+  ATLAS_IN src, int2 sg, int2 g, int count, __global const int4 *restrict patch_rings,                                \
+    __global const int4 *restrict patch_across, __global const float4 *restrict corners, int corner_base,            \
+    ATLAS_IN fine, __global const uchar *restrict owned, __global float4 *restrict details,                          \
+    __global float *restrict extent
+__kernel void subdivide_encode_first(SUBDIVIDE_ENCODE_ARGUMENTS) { SUBDIVIDE_ENCODE(2, FIRST_STEP_TILE); }
+__kernel void subdivide_encode_second(SUBDIVIDE_ENCODE_ARGUMENTS) { SUBDIVIDE_ENCODE(4, SECOND_STEP_TILE); }
 
 /* Range: count. tile_extent() of each listed patch (null: every patch). */
 __kernel void patch_extent(ATLAS_IN pos, int2 g, __global const int *list, int count, __global float *out)

@@ -376,9 +376,11 @@ TEST(Multires, StretchRightAfterEncodingIsOne)
   }
 }
 
-// CPUs encode eight patches per work item (encode_patches, a patch per
-// lane) and decode a patch per work item (decode_patches), GPUs a work item
-// per texel (encode_details with patch_extent, decode_tiles): the same details,
+// CPUs encode a finest level 2 or 3 as its last subdivision step makes it
+// (subdivide_encode_*), a finer one eight patches per work item
+// (encode_patches, a patch per lane), and decode a patch per work item
+// (decode_patches), GPUs a work item per texel (encode_details with
+// patch_extent, decode_tiles): the same details,
 // extents and rebuilt texels, bit for bit, on every test shape (patch
 // counts that leave lanes over) and tile size. Positions with x > 0 are
 // scaled down to where a frame's normal is too short to divide by, so that

@@ -20,8 +20,8 @@ struct Multires::Device
 {
   cl::Program program;
   cl::Kernel encode_details, encode_patches, decode_tiles, decode_patches, decode_edges, decode_corners, patch_extent;
-  cl::Kernel subdivide_decode_first, subdivide_decode_second;
-  cl::Memory smooth;    // U = up(base) at the finest level, where it is needed
+  cl::Kernel subdivide_decode_first, subdivide_decode_second, subdivide_encode_first, subdivide_encode_second;
+  cl::Memory smooth;    // U = up(base) at the finest level, unless tiles_as_made()
   cl::Buffer details;   // per finest texel: (t, b, n) coordinates of S - U
   cl::Buffer weights;   // edit-level weights
   cl::Memory positions, normals; // edit-level limit (layers of the finest size, used in part)
@@ -64,7 +64,10 @@ Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Devic
     d.patch_extent = cl::Kernel(d.program, "patch_extent");
     d.subdivide_decode_first = cl::Kernel(d.program, "subdivide_decode_first");
     d.subdivide_decode_second = cl::Kernel(d.program, "subdivide_decode_second");
-    d.smooth = allocate_layer(rt, f, atlas_.storage());
+    d.subdivide_encode_first = cl::Kernel(d.program, "subdivide_encode_first");
+    d.subdivide_encode_second = cl::Kernel(d.program, "subdivide_encode_second");
+    if (!tiles_as_made())
+      d.smooth = allocate_layer(rt, f, atlas_.storage());
     d.positions = allocate_layer(rt, f, atlas_.storage());
     d.normals = allocate_layer(rt, f, atlas_.storage());
     d.details = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, f.texels() * sizeof(cl_float4));
@@ -79,6 +82,12 @@ Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Devic
 }
 
 Multires::~Multires() = default;
+
+bool Multires::tiles_as_made() const
+{
+  const int finest = atlas_.max_level();
+  return (finest == 2 || finest == 3) && atlas_.evaluator().tiles_walk_sides(finest - 1);
+}
 
 std::size_t Multires::Memo::bytes() const
 {
@@ -150,19 +159,29 @@ void Multires::encode(int level)
   const LevelLayout f = atlas_.layout(finest);
   const cl::Memory& fine = atlas_.level_layer(finest);
   try {
-    // U goes into a layer of its own: the finest level keeps S, and so
-    // does its limit.
+    // The finest level keeps S, and so does its limit: the details are
+    // taken from U as the last step makes it (tiles_as_made()), else from U
+    // in a layer of its own.
     atlas_.reduce(finest, level);
-    atlas_.subdivide(level, finest, PatchSet(), &d.smooth);
-    const Atlas::TileLaunch t = atlas_.tile_launch(d.encode_details, d.encode_patches, f, f.patches, PATCH_LANES);
-    // The per-patch kernel measures each tile's extent as it goes.
-    const bool measures = &t.kernel == &d.encode_patches;
-    if (measures)
-      d.encode_patches.setArg(6, d.extent); // its last, beyond encode_details' own
-    launch(q, t.kernel, t.global, t.local, fine, d.smooth, grid(f), f.patches, d.owned, d.details);
-    if (!measures)
-      launch(q, d.patch_extent, cl::NDRange(round_up(f.patches, kGroup)), cl::NDRange(kGroup), fine, grid(f),
-             cl::Buffer(), f.patches, d.extent);
+    if (tiles_as_made()) {
+      const int corner_base = atlas_.subdivide_but_last_tiles(level, PatchSet());
+      const AtlasTables& tables = atlas_.tables();
+      launch(q, finest == 2 ? d.subdivide_encode_first : d.subdivide_encode_second,
+             cl::NDRange(round_up(f.patches, kGroup)), cl::NDRange(kGroup), atlas_.level_layer(finest - 1),
+             grid(atlas_.layout(finest - 1)), grid(f), cl_int(f.patches), tables.patch_rings(), tables.patch_across(),
+             atlas_.evaluator().corner_work(), cl_int(corner_base), fine, d.owned, d.details, d.extent);
+    } else {
+      atlas_.subdivide(level, finest, PatchSet(), &d.smooth);
+      const Atlas::TileLaunch t = atlas_.tile_launch(d.encode_details, d.encode_patches, f, f.patches, PATCH_LANES);
+      // The per-patch kernel measures each tile's extent as it goes.
+      const bool measures = &t.kernel == &d.encode_patches;
+      if (measures)
+        d.encode_patches.setArg(6, d.extent); // its last, beyond encode_details' own
+      launch(q, t.kernel, t.global, t.local, fine, d.smooth, grid(f), f.patches, d.owned, d.details);
+      if (!measures)
+        launch(q, d.patch_extent, cl::NDRange(round_up(f.patches, kGroup)), cl::NDRange(kGroup), fine, grid(f),
+               cl::Buffer(), f.patches, d.extent);
+    }
     extent_.resize(std::size_t(f.patches));
     q.enqueueReadBuffer(d.extent, CL_TRUE, 0, extent_.size() * sizeof(float), extent_.data());
   } catch (const cl::Error& e) {
@@ -207,7 +226,7 @@ void Multires::reconstruct(const std::vector<int>& affected, const PatchSet& aro
   // `around` need the level below, not U); otherwise U' at the finest
   // level goes into `smooth` and is decoded from there.
   const AtlasEvaluator& work = atlas_.evaluator();
-  const bool as_made = (finest == 2 || finest == 3) && work.tiles_walk_sides(finest - 1);
+  const bool as_made = tiles_as_made();
   const int corner_base = as_made ? atlas_.subdivide_but_last_tiles(level_, around) : 0;
   if (!as_made)
     atlas_.subdivide(level_, finest, around, &d.smooth);

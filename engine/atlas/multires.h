@@ -100,6 +100,11 @@ public:
 private:
   struct Device;
 
+  //! Whether the finest level's tiles are encoded and decoded as the last
+  //! step of subdivision makes them (CPUs, a finest level 2 or 3), so that U
+  //! at the finest level never goes through memory.
+  bool tiles_as_made() const;
+
   Atlas& atlas_;
   int level_ = -1;         // in use
   int encoded_level_ = -1; // in place
