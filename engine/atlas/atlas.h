@@ -53,6 +53,7 @@ public:
   //! The tables on the device, for kernels of other families.
   const AtlasTables& tables() const { return *tables_; }
   AtlasEvaluator& evaluator() { return *evaluator_; }
+  const AtlasEvaluator& evaluator() const { return *evaluator_; }
   const BaseMesh& base_mesh() const { return base_; }
   const std::vector<int>& base_face_order() const { return base_face_order_; }
   LevelLayout layout(int level) const;

@@ -2,6 +2,7 @@
 
 #include "cl/launch.h"
 #include "cl/kernel_programs.h"
+#include "atlas/memory_plan.h"
 #include "atlas_types.h" // for PATCH_LANES
 #include "core/errors.h"
 
@@ -24,7 +25,7 @@ struct Multires::Device
   cl::Memory smooth;    // U = up(base) at the finest level, unless tiles_as_made()
   cl::Buffer details;   // per finest texel: (t, b, n) coordinates of S - U
   cl::Buffer weights;   // edit-level weights
-  cl::Memory positions, normals; // edit-level limit (layers of the finest size, used in part)
+  cl::Memory positions, normals; // edit-level limit (layers of the level below the finest, used in part)
   cl::Buffer extent;    // per patch
   cl::Buffer owned;     // per patch: the parts whose details it holds (encode_details)
 };
@@ -46,7 +47,30 @@ std::vector<std::uint8_t> owned_parts(const AtlasTopology& topo)
   return owned;
 }
 
+//! Whether the finest level's tiles are encoded and decoded as the last
+//! step of subdivision makes them (CPUs, a finest level 2 or 3), so that U
+//! at the finest level never goes through memory and has no layer.
+bool tiles_as_made(const Atlas& atlas)
+{
+  const int finest = atlas.max_level();
+  return (finest == 2 || finest == 3) && atlas.evaluator().tiles_walk_sides(finest - 1);
+}
+
+//! The layout of the edit level's limit and weights: every level's tiles
+//! sit in the same rows of tiles (tiles_x), so the level below the finest
+//! holds any edit level's.
+LevelLayout edit_layout(const Atlas& atlas) { return atlas.layout(std::max(1, atlas.max_level() - 1)); }
+
 } // namespace
+
+std::size_t Multires::device_bytes(const Atlas& atlas)
+{
+  const LevelLayout f = atlas.layout(atlas.max_level()), edit = edit_layout(atlas);
+  const AtlasStorage storage = atlas.storage();
+  return (tiles_as_made(atlas) ? 0 : layer_bytes(f, storage)) + 2 * layer_bytes(edit, storage) +
+         f.texels() * sizeof(cl_float4) + edit.texels() * sizeof(float) +
+         std::size_t(std::max(f.patches, 1)) * (sizeof(float) + 1);
+}
 
 Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Device>())
 {
@@ -66,15 +90,16 @@ Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Devic
     d.subdivide_decode_second = cl::Kernel(d.program, "subdivide_decode_second");
     d.subdivide_encode_first = cl::Kernel(d.program, "subdivide_encode_first");
     d.subdivide_encode_second = cl::Kernel(d.program, "subdivide_encode_second");
-    if (!tiles_as_made())
+    if (!tiles_as_made(atlas_))
       d.smooth = allocate_layer(rt, f, atlas_.storage());
-    d.positions = allocate_layer(rt, f, atlas_.storage());
-    d.normals = allocate_layer(rt, f, atlas_.storage());
+    const LevelLayout edit = edit_layout(atlas_);
+    d.positions = allocate_layer(rt, edit, atlas_.storage());
+    d.normals = allocate_layer(rt, edit, atlas_.storage());
     d.details = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, f.texels() * sizeof(cl_float4));
     // Encoding leaves the copies that decoding never reads: they hold 0.
     rt.queue().enqueueFillBuffer(d.details, cl_float4{}, 0, f.texels() * sizeof(cl_float4));
     d.owned = device_copy(rt.context(), owned_parts(atlas_.topology()));
-    d.weights = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, f.texels() * sizeof(float));
+    d.weights = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, edit.texels() * sizeof(float));
     d.extent = cl::Buffer(rt.context(), CL_MEM_READ_WRITE, std::max(f.patches, 1) * sizeof(float));
   } catch (const cl::Error& e) {
     throw DeviceError("cannot set up multiresolution editing on " + rt.info().name + ": " + describe(e));
@@ -82,12 +107,6 @@ Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Devic
 }
 
 Multires::~Multires() = default;
-
-bool Multires::tiles_as_made() const
-{
-  const int finest = atlas_.max_level();
-  return (finest == 2 || finest == 3) && atlas_.evaluator().tiles_walk_sides(finest - 1);
-}
 
 std::size_t Multires::Memo::bytes() const
 {
@@ -163,7 +182,7 @@ void Multires::encode(int level)
     // taken from U as the last step makes it (tiles_as_made()), else from U
     // in a layer of its own.
     atlas_.reduce(finest, level);
-    if (tiles_as_made()) {
+    if (tiles_as_made(atlas_)) {
       const int corner_base = atlas_.subdivide_but_last_tiles(level, PatchSet());
       const AtlasTables& tables = atlas_.tables();
       launch(q, finest == 2 ? d.subdivide_encode_first : d.subdivide_encode_second,
@@ -226,7 +245,7 @@ void Multires::reconstruct(const std::vector<int>& affected, const PatchSet& aro
   // `around` need the level below, not U); otherwise U' at the finest
   // level goes into `smooth` and is decoded from there.
   const AtlasEvaluator& work = atlas_.evaluator();
-  const bool as_made = tiles_as_made();
+  const bool as_made = tiles_as_made(atlas_);
   const int corner_base = as_made ? atlas_.subdivide_but_last_tiles(level_, around) : 0;
   if (!as_made)
     atlas_.subdivide(level_, finest, around, &d.smooth);

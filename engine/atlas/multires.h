@@ -97,13 +97,13 @@ public:
 
   const cl::Buffer& base_weights() const;
 
+  //! Device bytes a Multires on `atlas` allocates (the details, the edit
+  //! level's limit and weights, U where it has a layer, per-patch values),
+  //! to be checked before one is made.
+  static std::size_t device_bytes(const Atlas& atlas);
+
 private:
   struct Device;
-
-  //! Whether the finest level's tiles are encoded and decoded as the last
-  //! step of subdivision makes them (CPUs, a finest level 2 or 3), so that U
-  //! at the finest level never goes through memory.
-  bool tiles_as_made() const;
 
   Atlas& atlas_;
   int level_ = -1;         // in use

@@ -3,6 +3,7 @@
 #include "paint/coarse_edit.h"
 
 #include "core/timer.h"
+#include "paint/paint_memory.h"
 #include "paint/reshape.h"
 
 #include <memory> // for std::make_unique
@@ -20,8 +21,10 @@ std::vector<int> CoarseEdits::prepare(const DabContext& context, const std::vect
                                       bool reweigh)
 {
   const PaintState& s = context.state;
-  if (!s.multires)
+  if (!s.multires) {
+    check_coarse_edits_fit(s.atlas);
     s.multires = std::make_unique<Multires>(s.atlas);
+  }
   // Details persist across strokes at the same level; a stroke at the
   // finest level or at another level has them made again. Undo puts back
   // the encoding a step replaced, so a replay of what remains applied

@@ -1,6 +1,7 @@
 #include "paint/paint_memory.h"
 
 #include "atlas/atlas.h"
+#include "atlas/multires.h"
 #include "cl/runtime.h"
 #include "core/errors.h"
 #include "core/format.h"
@@ -19,14 +20,20 @@ std::size_t paint_bytes(const LevelLayout& l, AtlasStorage storage)
          l.texels() * sizeof(float) + std::size_t(l.patches) * (sizeof(cl_float4) + 1);
 }
 
+//! Device bytes of the atlas up to `level` with its painting layers.
+std::size_t painting_bytes(const AtlasTopology& topology, int level, AtlasStorage storage)
+{
+  const MemoryPlan plan = plan_memory(topology, level, storage);
+  return plan.total + paint_bytes(plan.finest, storage) +
+         WeldedSmoothing::bytes(plan.finest.texels(), topology.unique_vertices(level));
+}
+
 //! Why the atlas and the painting layers at `level` do not fit the device,
 //! or "" when they do.
 std::string paint_fit_problem(const AtlasTopology& topology, int level, const DeviceInfo& device,
                               AtlasStorage storage)
 {
-  const MemoryPlan plan = plan_memory(topology, level, storage);
-  const std::size_t total = plan.total + paint_bytes(plan.finest, storage) +
-                            WeldedSmoothing::bytes(plan.finest.texels(), topology.unique_vertices(level));
+  const std::size_t total = painting_bytes(topology, level, storage);
   if (total > device.global_memory)
     return format_bytes(total) + " with its paint layers, more than " + device.memory_name() + " (" +
            format_bytes(device.global_memory) + ")";
@@ -47,6 +54,18 @@ void check_paint_fits(Atlas& atlas, int level, const std::string& name)
   throw ResourceError("painting level " + std::to_string(level) + " of '" + name + "' needs " + why + "; " +
                       (fits ? "the largest level that fits for painting is " + std::to_string(fits)
                             : std::string("not even level 1 fits for painting")));
+}
+
+void check_coarse_edits_fit(const Atlas& atlas)
+{
+  const DeviceInfo& device = atlas.shared_runtime()->info();
+  const int level = atlas.max_level();
+  const std::size_t total = painting_bytes(atlas.topology(), level, atlas.storage()) + Multires::device_bytes(atlas);
+  if (total <= device.global_memory)
+    return;
+  throw ResourceError("editing below painting level " + std::to_string(level) + " needs " + format_bytes(total) +
+                      " with the multiresolution layers, more than " + device.memory_name() + " (" +
+                      format_bytes(device.global_memory) + "); edit at the painting level, or paint at a lower one");
 }
 
 } // namespace meshpaint

@@ -13,4 +13,10 @@ class Atlas;
 //! \throw ResourceError naming the largest level that fits for painting.
 void check_paint_fits(Atlas& atlas, int level, const std::string& name);
 
+//! Refuses the first edit below the painting level where the
+//! multiresolution layers (Multires::device_bytes()) would not fit beside
+//! the atlas and its paint layers, before they are allocated.
+//! \throw ResourceError
+void check_coarse_edits_fit(const Atlas& atlas);
+
 } // namespace meshpaint

@@ -119,6 +119,28 @@ def test_memory_cap_counts_the_paint_layers(tmp_path):
     assert (out / "surface.vtp").exists()
 
 
+def test_memory_cap_counts_the_multiresolution_layers(tmp_path):
+    # Level 2 of the bunny paints under 380 MiB (354 MiB with its paint layers), but an edit at
+    # level 1 needs its details and that level's limit beside them: refused before they are
+    # allocated, and nothing is written.
+    stroke = {"tool": "sculpt", "points": [[-0.03, 0.12, 0.03]], "radius": 0.03, "amount": 0.002}
+    coarse, fine = tmp_path / "coarse.json", tmp_path / "fine.json"
+    coarse.write_text(json.dumps({"strokes": [dict(stroke, edit_level=1)]}))
+    fine.write_text(json.dumps({"strokes": [stroke]}))
+    out = tmp_path / "painted"
+    r = run_with_memory("380M", "paint", os.path.join(SCANS, "bunny00.off"), "--strokes", str(coarse), "--level", "2",
+                        "-o", str(out))
+    assert r.returncode == 2, r.stderr
+    assert re.fullmatch(r"meshpaint paint: editing below painting level 2 needs .* with the multiresolution layers, "
+                        r"more than .* \(380\.0 MiB\); edit at the painting level, or paint at a lower one",
+                        r.stderr.strip().splitlines()[-1]), r.stderr
+    assert not out.exists()
+    r = run_with_memory("380M", "paint", os.path.join(SCANS, "bunny00.off"), "--strokes", str(fine), "--level", "2",
+                        "--model-level", "1", "-o", str(out))
+    assert r.returncode == 0, r.stderr
+    assert (out / "surface.vtp").exists()
+
+
 def test_memory_cap_must_be_a_size(tmp_path):
     r = run_with_memory("lots", "subdivide", os.path.join(SCANS, "bunny00.off"), "--level", "2",
                         "-o", str(tmp_path / "x.obj"))
