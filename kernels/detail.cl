@@ -329,7 +329,6 @@ TEXEL_INLINE float4 tile_decoded(float4 u[5][5], int n, int i, int j, __global c
   return detailed(u[j][i], details[PATCH_MAJOR_INDEX(g, p, (int2)(i, j))], t, b, nrm);
 }
 
-/* The kernel body for tiles of N + 1 texels a side made by STEP_TILE. */
 /* The start of such a kernel: patch p (the item-th listed) and its tile
  * of U made by STEP_TILE in u[j][i]. */
 #define TILE_OF_U(list, STEP_TILE)                                                               \
@@ -347,6 +346,7 @@ TEXEL_INLINE float4 tile_decoded(float4 u[5][5], int n, int i, int j, __global c
     _Pragma("unroll") for (int i = 0, bit = part_bit((int2)(0, j), (N)); i <= (N);               \
                            ++i, bit = part_bit((int2)(i, j), (N)))
 
+/* The kernel body for tiles of N + 1 texels a side made by STEP_TILE. */
 #define SUBDIVIDE_DECODE(N, STEP_TILE)                                                           \
   TILE_OF_U(list, STEP_TILE);                                                                    \
   const int decodes = owned[p] & ~outside[item];                                                 \
