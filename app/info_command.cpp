@@ -7,6 +7,7 @@
 #include "core/host_memory.h"
 #include "mesh/decimate.h"
 #include "mesh/mesh_stats.h"
+#include "paint/paint_memory.h"
 #include "project/fit_memory.h"
 #include "project/project_surface.h"
 
@@ -117,7 +118,13 @@ int info_command(const Argv& argv)
 
   if (topo) {
     os << "\n";
-    Table table({"level", "patch", "atlas texels", "vertices", "faces", "layer", "atlas 1..L", "fits"});
+    Table table({"level", "patch", "atlas texels", "vertices", "faces", "layer", "atlas 1..L", "painting",
+                 "coarse edits", "fits"});
+    // Without a device, the plans are a CPU's (buffer storage, a work item per patch).
+    const DeviceInfo device = runtime ? runtime->info() : DeviceInfo();
+    const auto within = [&](std::size_t bytes) {
+      return format_bytes(bytes) + (runtime && bytes > device.global_memory ? " (over)" : "");
+    };
     const int top = runtime ? std::min(kMaxLevel, largest_fitting_level(*topo, runtime->info(), storage) + 1) : 6;
     for (int l = 1; l <= std::max(top, 1); ++l) {
       const MemoryPlan plan = plan_memory(*topo, l, storage);
@@ -125,7 +132,8 @@ int info_command(const Argv& argv)
       table.add({std::to_string(l), std::to_string(lay.tile) + "x" + std::to_string(lay.tile),
                  std::to_string(lay.width) + "x" + std::to_string(lay.height), grouped(topo->unique_vertices(l)),
                  grouped(std::size_t(topo->patch_count) * lay.n * lay.n), format_bytes(layer_bytes(lay, storage)),
-                 format_bytes(plan.total),
+                 format_bytes(plan.total), within(painting_bytes(*topo, l, storage)),
+                 l > 1 ? within(coarse_edits_bytes(*topo, l, storage, device)) : std::string("-"),
                  runtime ? (fit_problem(*topo, l, runtime->info(), storage).empty() ? "yes" : "no") : "?"});
     }
     table.print(os);

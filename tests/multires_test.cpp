@@ -313,6 +313,22 @@ TEST(Multires, CoarseEditsKeepTheEditLevelsCopiesEqual)
   }
 }
 
+TEST(Multires, DeviceBytesAreWhatItAllocates)
+{
+  // The plan checked before the first coarse edit, against the driver's
+  // sizes of what the constructor allocates: at levels 2 and 3 (on CPUs
+  // without a layer for U) and at level 4.
+  for (const int level : {2, 3, 4}) {
+    Atlas atlas(test::runtime(), test::noisy_sphere(2, 0.f), level, AtlasStorage::Buffer);
+    const Multires multires(atlas);
+    EXPECT_EQ(multires.allocated_bytes(), Multires::device_bytes(atlas)) << "level " << level;
+    EXPECT_EQ(Multires::device_bytes(atlas),
+              Multires::device_bytes(atlas.topology().patch_count, level, atlas.storage(),
+                                     AtlasEvaluator::patch_items_on(atlas.runtime().info())))
+      << "level " << level;
+  }
+}
+
 TEST(Multires, BufferAndImageStorageAgreeBitForBit)
 {
   std::vector<Float4> result[2];

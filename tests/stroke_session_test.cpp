@@ -188,6 +188,7 @@ void expect_drawn_stroke_refused(PaintScene& scene, const Stroke& stroke)
   EXPECT_NE(message.find("refused: "), std::string::npos) << message;
   EXPECT_FALSE(session.drawing());
   EXPECT_TRUE(session.recording(3).strokes.empty());
+  EXPECT_TRUE(scene.undone().empty()); // taken back for good: a redo would bring the refused result back
   for (std::size_t o = 0; o < scene.size(); ++o)
     EXPECT_TRUE(same_bits(scene.surface(o).atlas().read_positions(3), before[o])) << "object " << o;
   // The session goes on: the next stroke paints.

@@ -23,6 +23,7 @@
 
 #include "atlas/atlas.h"
 #include "mesh/base_mesh.h"
+#include "paint/paint_memory.h"
 #include "paint/paint_scene.h"
 #include "paint/paint_surface.h"
 #include "project/project.h"
@@ -327,6 +328,46 @@ private Q_SLOTS:
       QVERIFY2(view->GetScene().history()[0].points.size() >= 5, qPrintable(mesh)); // went on with the drag
       QVERIFY2(red_texels(view) > 5, qPrintable(mesh));
     }
+  }
+
+  void a_failure_while_dragging_says_why()
+  {
+    // A sculpt at edit level 1 under a memory cap that holds the painting
+    // but not the multiresolution layers: the first dabs, mid-drag, are
+    // refused, and the status line says why after the button is let go.
+    QTemporaryDir dir;
+    std::size_t cap = 0;
+    {
+      vtkNew<vtkPaintView> plain;
+      plain->SetLevel(4);
+      QVERIFY(plain->LoadMesh(kCube.toStdString().c_str()));
+      const meshpaint::Atlas& atlas = plain->GetScene().surface(0).atlas();
+      const meshpaint::DeviceInfo& device = atlas.shared_runtime()->info();
+      const std::size_t painting = meshpaint::painting_bytes(atlas.topology(), 4, atlas.storage());
+      cap = (painting + meshpaint::coarse_edits_bytes(atlas.topology(), 4, atlas.storage(), device)) / 2;
+    }
+    qputenv("MESHPAINT_DEVICE_MEMORY", QByteArray::number(qulonglong(cap)));
+    vtkNew<vtkPaintView> view;
+    auto w = open_studio(view, kCube, dir.filePath("session"));
+    qunsetenv("MESHPAINT_DEVICE_MEMORY");
+    view->GetBrush()->set_tool("sculpt");
+    view->GetBrush()->set_edit_level(1);
+    const std::vector<meshpaint::Float4> unchanged = view->GetScene().surface(0).atlas().read_positions(4);
+    drag(w->render_widget(), {0.4, 0.45}, {0.6, 0.55});
+    // Taken back: no step in the history, whose replay would sculpt.
+    QVERIFY(view->GetScene().history().empty());
+    QVERIFY(view->GetScene().undone().empty()); // nor one to redo
+    QVERIFY(view->GetScene().surface(0).atlas().read_positions(4) == unchanged);
+    QVERIFY(!view->IsPainting());
+    const QString message = view->GetMessage();
+    QVERIFY2(message.startsWith("editing below painting level 4 needs"), qPrintable(message));
+    QCOMPARE(QString(view->GetLastError()), message);
+    // The surface is as it was, and the next stroke at the painting level paints.
+    view->GetBrush()->set_edit_level(4);
+    drag(w->render_widget(), {0.4, 0.45}, {0.6, 0.55});
+    QVERIFY2(view->GetScene().history().size() == 1, view->GetMessage());
+    QVERIFY(view->GetScene().surface(0).atlas().read_positions(4) != unchanged);
+    QCOMPARE(QString(view->GetMessage()), QString());
   }
 
   void a_label_class_chosen_in_the_list_paints_its_id_in_its_colour()

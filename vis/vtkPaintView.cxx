@@ -190,16 +190,25 @@ vtkPolyData* vtkPaintView::Surface(std::size_t object, int level)
 void vtkPaintView::Show()
 {
   Internals& in = *this->Impl;
+  // Drawing is not a call of its own: its failures go to the status line,
+  // and a success leaves the reason the call before it failed in LastError.
+  std::string error;
+  const auto attempt = [&](auto&& f) {
+    const int ok = meshpaint::guarded(error, f);
+    if (!ok)
+      this->LastError = this->Message = error;
+    return ok;
+  };
   const int level = in.moving ? this->CoarseLevel() : this->Level;
   const bool lit = this->SubsurfacePasses > 0 && level == this->Level && in.initialized &&
                    in.shown == meshpaint::ShownChannel::diffuse;
   for (std::size_t o = 0; o < in.drawings.size(); ++o) {
     meshpaint::ObjectDrawing& d = *in.drawings[o];
     vtkPolyData* poly = nullptr;
-    if (!meshpaint::guarded(this->LastError, [&] { poly = this->Surface(o, level); }))
+    if (!attempt([&] { poly = this->Surface(o, level); }))
       return;
     if (lit) { // at rest only: the light follows the camera
-      meshpaint::guarded(this->LastError, [&] {
+      attempt([&] {
         vtkCamera* camera = in.renderer->GetActiveCamera();
         double eye[3], focus[3];
         camera->GetPosition(eye);
@@ -211,7 +220,7 @@ void vtkPaintView::Show()
       meshpaint::show_scattered_light(d.actor, poly);
     } else if (in.shown != meshpaint::ShownChannel::diffuse && in.initialized) {
       // Colours made from the channel: again after every change.
-      meshpaint::guarded(this->LastError, [&] { meshpaint::show_channel(d.actor, poly, in.shown, in.labels, in.hidden_labels); });
+      attempt([&] { meshpaint::show_channel(d.actor, poly, in.shown, in.labels, in.hidden_labels); });
     } else if ((in.lit || in.channel_drawn) && in.initialized) {
       poly->GetPointData()->RemoveArray("scattered_light");
       meshpaint::show_materials(d.actor, poly);
@@ -222,7 +231,7 @@ void vtkPaintView::Show()
   }
   in.renderer->SetUseFXAA(this->AntiAliasing && !in.moving);
   if (in.initialized && !in.drawings.empty())
-    meshpaint::guarded(this->LastError, [&] {
+    attempt([&] {
       // Hidden classes are not in the legend; ids painted without a class are, by their number.
       const std::vector<meshpaint::LabelClass> shown_classes =
         in.shown == meshpaint::ShownChannel::label && !lit

@@ -85,6 +85,7 @@ int vtkPaintView::BeginStroke(int x, int y)
   }
   in.painting = true;
   in.ended = false;
+  in.stroke_error.clear();
   in.moving = true;
   this->Refresh(false);
   return 1;
@@ -108,8 +109,11 @@ int vtkPaintView::ContinueStroke(int x, int y)
   bool on = true;
   const auto start = std::chrono::steady_clock::now();
   this->HintSnap();
-  if (!meshpaint::guarded(this->LastError, [&] { on = in.session.extend(q); }))
+  if (!meshpaint::guarded(this->LastError, [&] { on = in.session.extend(q); })) {
     on = false; // the session has closed the stroke; EndStroke() says why
+    in.stroke_error = this->LastError;
+    this->Message = this->LastError;
+  }
   in.ended = !on;
   this->PlaceCursor(x, y);
   this->Refresh(false); // renders
@@ -125,8 +129,11 @@ int vtkPaintView::EndStroke()
   in.painting = false;
   in.moving = false;
   // A failure while drawing has closed the stroke already (as one undo
-  // step), and LastError says why.
+  // step), and stroke_error says why.
   const int ok = in.session.drawing() && meshpaint::guarded(this->LastError, [&] { in.session.end(); });
+  if (!ok && !in.stroke_error.empty())
+    this->LastError = in.stroke_error;
+  in.stroke_error.clear();
   this->Message = ok ? "" : this->LastError;
   this->Refresh(true);
   return ok;

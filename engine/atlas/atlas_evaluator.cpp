@@ -36,7 +36,7 @@ struct AtlasEvaluator::Arguments
 
 AtlasEvaluator::AtlasEvaluator(Runtime& runtime, const AtlasTables& tables, AtlasStorage storage,
                                const LevelLayout& finest)
-  : runtime_(runtime), tables_(tables), storage_(storage), patch_items_(!runtime.info().gpu)
+  : runtime_(runtime), tables_(tables), storage_(storage), patch_items_(patch_items_on(runtime.info()))
 {
   const cl::Program& program = kernel_program(runtime_, KernelProgram::Atlas, storage_options(storage, runtime_.info()));
   subdivide_tiles_ = cl::Kernel(program, "subdivide_tiles");

@@ -37,6 +37,8 @@ public:
   //! atlas_access.cl) or per texel; both give the same bits, and the setter
   //! is there to compare them.
   bool patch_items() const { return patch_items_; }
+  //! patch_items() of a new evaluator on `device`.
+  static bool patch_items_on(const DeviceInfo& device) { return !device.gpu; }
   void set_patch_items(bool on) { patch_items_ = on; }
   //! Whether subdivide() takes the corners of all its steps from one gather
   //! of the first level's rings (CPU devices: subdivide_corner_levels), or
@@ -46,7 +48,10 @@ public:
   //! Whether the step from `level` to the next runs no side kernel, its
   //! tile kernel walking each tile's own sides (CPU devices, the first two
   //! steps: subdivide_first_step, subdivide_second_step). The same bits.
-  bool tiles_walk_sides(int level) const { return patch_items_ && level <= 2; }
+  bool tiles_walk_sides(int level) const { return walks_sides(patch_items_, level); }
+  //! tiles_walk_sides() of an evaluator with patch_items() `patch_items`,
+  //! for plans made before there is one.
+  static bool walks_sides(bool patch_items, int level) { return patch_items && level <= 2; }
   //! A whole-tile kernel over `count` patches of a level: the per-patch
   //! kernel over count items (count / patches_per_item, rounded up, for
   //! one that takes a patch per lane: lanes.cl), or the per-texel one over

@@ -50,26 +50,32 @@ std::vector<std::uint8_t> owned_parts(const AtlasTopology& topo)
 //! Whether the finest level's tiles are encoded and decoded as the last
 //! step of subdivision makes them (CPUs, a finest level 2 or 3), so that U
 //! at the finest level never goes through memory and has no layer.
-bool tiles_as_made(const Atlas& atlas)
+bool tiles_as_made(int finest, bool patch_items)
 {
-  const int finest = atlas.max_level();
-  return (finest == 2 || finest == 3) && atlas.evaluator().tiles_walk_sides(finest - 1);
+  return (finest == 2 || finest == 3) && AtlasEvaluator::walks_sides(patch_items, finest - 1);
 }
+bool tiles_as_made(const Atlas& atlas) { return tiles_as_made(atlas.max_level(), atlas.evaluator().patch_items()); }
 
 //! The layout of the edit level's limit and weights: every level's tiles
 //! sit in the same rows of tiles (tiles_x), so the level below the finest
 //! holds any edit level's.
-LevelLayout edit_layout(const Atlas& atlas) { return atlas.layout(std::max(1, atlas.max_level() - 1)); }
+LevelLayout edit_layout(int patches, int finest) { return level_layout(patches, std::max(1, finest - 1)); }
+LevelLayout edit_layout(const Atlas& atlas) { return edit_layout(atlas.topology().patch_count, atlas.max_level()); }
 
 } // namespace
 
-std::size_t Multires::device_bytes(const Atlas& atlas)
+std::size_t Multires::device_bytes(int patches, int finest, AtlasStorage storage, bool patch_items)
 {
-  const LevelLayout f = atlas.layout(atlas.max_level()), edit = edit_layout(atlas);
-  const AtlasStorage storage = atlas.storage();
-  return (tiles_as_made(atlas) ? 0 : layer_bytes(f, storage)) + 2 * layer_bytes(edit, storage) +
+  const LevelLayout f = level_layout(patches, finest), edit = edit_layout(patches, finest);
+  return (tiles_as_made(finest, patch_items) ? 0 : layer_bytes(f, storage)) + 2 * layer_bytes(edit, storage) +
          f.texels() * sizeof(cl_float4) + edit.texels() * sizeof(float) +
          std::size_t(std::max(f.patches, 1)) * (sizeof(float) + 1);
+}
+
+std::size_t Multires::device_bytes(const Atlas& atlas)
+{
+  return device_bytes(atlas.topology().patch_count, atlas.max_level(), atlas.storage(),
+                      atlas.evaluator().patch_items());
 }
 
 Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Device>())
@@ -107,6 +113,18 @@ Multires::Multires(Atlas& atlas) : atlas_(atlas), device_(std::make_unique<Devic
 }
 
 Multires::~Multires() = default;
+
+std::size_t Multires::allocated_bytes() const
+{
+  const Device& d = *device_;
+  std::size_t total = 0;
+  for (const cl::Memory* m : {&d.smooth, &d.positions, &d.normals, static_cast<const cl::Memory*>(&d.details),
+                              static_cast<const cl::Memory*>(&d.owned), static_cast<const cl::Memory*>(&d.weights),
+                              static_cast<const cl::Memory*>(&d.extent)})
+    if ((*m)())
+      total += m->getInfo<CL_MEM_SIZE>();
+  return total;
+}
 
 std::size_t Multires::Memo::bytes() const
 {

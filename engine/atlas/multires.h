@@ -101,6 +101,12 @@ public:
   //! level's limit and weights, U where it has a layer, per-patch values),
   //! to be checked before one is made.
   static std::size_t device_bytes(const Atlas& atlas);
+  //! The same for an atlas of `patches` patches up to `finest` that is yet
+  //! to be made, its evaluator's patch_items() being `patch_items`.
+  static std::size_t device_bytes(int patches, int finest, AtlasStorage storage, bool patch_items);
+  //! Bytes of the device objects this Multires holds, as the driver reports
+  //! them (CL_MEM_SIZE): what device_bytes() plans, where nothing pads.
+  std::size_t allocated_bytes() const;
 
 private:
   struct Device;

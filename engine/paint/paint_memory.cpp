@@ -20,14 +20,6 @@ std::size_t paint_bytes(const LevelLayout& l, AtlasStorage storage)
          l.texels() * sizeof(float) + std::size_t(l.patches) * (sizeof(cl_float4) + 1);
 }
 
-//! Device bytes of the atlas up to `level` with its painting layers.
-std::size_t painting_bytes(const AtlasTopology& topology, int level, AtlasStorage storage)
-{
-  const MemoryPlan plan = plan_memory(topology, level, storage);
-  return plan.total + paint_bytes(plan.finest, storage) +
-         WeldedSmoothing::bytes(plan.finest.texels(), topology.unique_vertices(level));
-}
-
 //! Why the atlas and the painting layers at `level` do not fit the device,
 //! or "" when they do.
 std::string paint_fit_problem(const AtlasTopology& topology, int level, const DeviceInfo& device,
@@ -41,6 +33,19 @@ std::string paint_fit_problem(const AtlasTopology& topology, int level, const De
 }
 
 } // namespace
+
+std::size_t painting_bytes(const AtlasTopology& topology, int level, AtlasStorage storage)
+{
+  const MemoryPlan plan = plan_memory(topology, level, storage);
+  return plan.total + paint_bytes(plan.finest, storage) +
+         WeldedSmoothing::bytes(plan.finest.texels(), topology.unique_vertices(level));
+}
+
+std::size_t coarse_edits_bytes(const AtlasTopology& topology, int level, AtlasStorage storage, const DeviceInfo& device)
+{
+  return painting_bytes(topology, level, storage) +
+         Multires::device_bytes(topology.patch_count, level, storage, AtlasEvaluator::patch_items_on(device));
+}
 
 void check_paint_fits(Atlas& atlas, int level, const std::string& name)
 {

@@ -162,6 +162,14 @@ bool PaintScene::undo()
   return any;
 }
 
+bool PaintScene::take_back()
+{
+  bool any = false;
+  for (Object& o : objects_)
+    any = o.surface->take_back() || any;
+  return any;
+}
+
 bool PaintScene::redo()
 {
   bool any = false;

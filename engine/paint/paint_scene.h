@@ -48,6 +48,8 @@ public:
   //! Undo and redo whole strokes on every object.
   bool undo();
   bool redo();
+  //! PaintSurface::take_back() on every object.
+  bool take_back();
   //! The strokes applied so far: every object records every stroke, also
   //! one that did not reach it, so the first object's history is the
   //! scene's. Empty for an empty scene.

@@ -584,6 +584,15 @@ bool PaintSurface::undo()
   return true;
 }
 
+bool PaintSurface::take_back()
+{
+  if (!undo_.recording() || !undo())
+    return false;
+  undone_.pop_back();
+  undo_.forget_redo(); // the newest stroke was the last: nothing else could be redone
+  return true;
+}
+
 bool PaintSurface::redo()
 {
   if (!step(false))

@@ -178,6 +178,9 @@ public:
   //! (redo). Undoing everything gives back the channels bit for bit.
   bool undo();
   bool redo();
+  //! Undoes the last stroke for good (one that failed or was refused): it
+  //! leaves history() and cannot be redone. False when nothing was undone.
+  bool take_back();
   UndoLog& undo_log() { return undo_; }
   //! Times each phase of a dab into StrokeReport::phases, waiting for the
   //! device at the end of each (for benchmarks: the waits cost a little).

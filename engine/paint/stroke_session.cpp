@@ -67,7 +67,7 @@ void StrokeSession::preview(const Stroke& piece)
       continue;
     // The whole stroke so far is taken back, as apply() takes back one.
     drawing_.reset();
-    for (; previews_ > 0 && scene_.surface(o).undo_log().recording() && scene_.undo(); --previews_) {
+    for (; previews_ > 0 && scene_.take_back(); --previews_) {
     }
     throw InputError("refused: " + problem);
   }
@@ -81,7 +81,14 @@ void StrokeSession::paint_new_dabs()
   try {
     ended_ = !scene_.paint_dabs(stroke_samples(*drawing_));
   } catch (...) {
-    drawing_.reset(); // the scene has closed the stroke
+    // The scene has closed the stroke as one step, with the path as it was
+    // begun: taken back, as a refused stroke is, so that the history holds
+    // no step whose replay would paint what this one did not.
+    drawing_.reset();
+    try {
+      scene_.take_back();
+    } catch (...) { // a device that failed may fail the undo too: the first error says why
+    }
     throw;
   }
   check_drawn_result();
@@ -108,8 +115,7 @@ void StrokeSession::check_drawn_result()
     drawing_.reset();
     checked_.clear();
     scene_.end_stroke(stroke);
-    if (scene_.surface(o).undo_log().recording())
-      scene_.undo();
+    scene_.take_back();
     throw InputError("refused: " + problem);
   }
   checked_ = change_counts();
@@ -182,8 +188,7 @@ std::vector<StrokeReport> StrokeSession::apply(const Stroke& stroke)
     const std::string problem = surface_result_problem(scene_.surface(o), before[o]);
     if (problem.empty())
       continue;
-    if (scene_.surface(o).undo_log().recording())
-      scene_.undo();
+    scene_.take_back();
     throw InputError("refused: " + problem);
   }
   return reports;

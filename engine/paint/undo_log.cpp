@@ -18,11 +18,16 @@ void UndoLog::set_budget(std::size_t bytes)
   trim();
 }
 
-void UndoLog::record(Snapshot before)
+void UndoLog::forget_redo()
 {
   for (const Snapshot& s : redo_)
     bytes_ -= s.bytes();
   redo_.clear();
+}
+
+void UndoLog::record(Snapshot before)
+{
+  forget_redo();
   bytes_ += before.bytes();
   undo_.push_back(std::move(before));
   trim();

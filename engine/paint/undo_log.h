@@ -55,6 +55,8 @@ public:
   const Snapshot& next_redo() const { return redo_.back(); }
   void undone(Snapshot current);
   void redone(Snapshot current);
+  //! Forgets what could be redone.
+  void forget_redo();
 
   //! Notes for the user since the last call ("undo budget: forgot ...").
   std::vector<std::string> take_messages();

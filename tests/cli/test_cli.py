@@ -141,6 +141,24 @@ def test_memory_cap_counts_the_multiresolution_layers(tmp_path):
     assert (out / "surface.vtp").exists()
 
 
+def test_info_reports_what_painting_and_coarse_edits_need():
+    # The levels of the test above: under 380 MiB level 2 of the bunny paints, but its
+    # coarse edits are over; with no cap both fit.
+    def level_row(cap, level):
+        r = run_with_memory(cap, "info", os.path.join(SCANS, "bunny00.off"))
+        assert r.returncode == 0, r.stderr
+        header = next(l for l in r.stdout.splitlines() if l.lstrip().startswith("level"))
+        assert re.search(r"atlas 1\.\.L\s+painting\s+coarse edits\s+fits$", header), header
+        row = next(l for l in r.stdout.splitlines() if re.match(r"\s*%d\s" % level, l))
+        return row
+
+    capped = level_row("380M", 2)
+    painting, coarse = re.search(r"(\S+ [KMG]?i?B)\s+(\S+ [KMG]?i?B \(over\))\s+yes$", capped).groups()
+    assert "(over)" not in painting
+    assert "(over)" not in level_row("4G", 2)
+    assert re.search(r"\s-\s+yes$", level_row("4G", 1))  # nothing below level 1 to edit
+
+
 def test_memory_cap_must_be_a_size(tmp_path):
     r = run_with_memory("lots", "subdivide", os.path.join(SCANS, "bunny00.off"), "--level", "2",
                         "-o", str(tmp_path / "x.obj"))
