@@ -207,10 +207,13 @@ __kernel void reduce_sectors(ATLAS_IN src, int2 sg, int count, __global const in
 /* Range: #rings; each ring's corner into corners[ring], or with `corners`
  * null every copy of it into its tile. With `sectors` (reduce_sectors or
  * reduce_second_step) an interior ring sums those instead of its slots'
- * tiles. */
+ * tiles. With `corners_known`, corners[ring] holds the source level's
+ * corner on entry (the step before made it, and its tiles hold copies):
+ * read in order there instead of gathered from a tile, and overwritten. */
 __kernel void reduce_corners(ATLAS_IN src, ATLAS_OUT dst, __global const CornerRing *rings,
                              __global const CornerSlot *slots, int ring_count, int2 sg, int2 dg,
-                             __global float4 *restrict corners, __global const float4 *restrict sectors)
+                             __global float4 *restrict corners, __global const float4 *restrict sectors,
+                             int corners_known)
 {
   const int k = get_global_id(0);
   if (k >= ring_count)
@@ -219,7 +222,7 @@ __kernel void reduce_corners(ATLAS_IN src, ATLAS_OUT dst, __global const CornerR
   if (!sectors)
     PREFETCH_RING_AHEAD(src, sg, rings, slots, (__global const int *)0, k, ring_count);
   const CornerSlot first = slots[ring.first], last = slots[ring.first + ring.count - 1];
-  const float4 v = CORNER_LOAD(src, sg, first, 0, 0);
+  const float4 v = corners_known ? corners[k] : CORNER_LOAD(src, sg, first, 0, 0);
   float4 r;
   if (ring.boundary) {
     r = ring.count == 1

@@ -197,13 +197,14 @@ void AtlasEvaluator::reduce(int from, int to, const std::vector<cl::Memory>& lev
                grid(s), grid(d));
       }
       launch(q, reduce_corners_, range1d(rings), kLocal1D, in, out, tables_.rings(), tables_.slots(), rings,
-             grid(s), grid(d), cl::Buffer(), cl::Buffer());
+             grid(s), grid(d), cl::Buffer(), cl::Buffer(), cl_int(0));
       continue;
     }
     // Sides and corners into the compact arrays, then whole tiles. Into
     // level 1 the rings sum each patch's sector of them in the order of
     // their slots (the side array is free there): left by the step into
-    // level 2 when this call took it, else from level 2's tiles.
+    // level 2 when this call took it, with level 2's corners in the corner
+    // array, else from level 2's tiles.
     const bool second_step = d.n == 2, into_first = d.n == 1;
     if (d.n > 2)
       launch(q, reduce_edge_walks_, range1d(edges), kLocal1D, in, side_work_, tables_.edges(), edges, grid(s),
@@ -212,7 +213,7 @@ void AtlasEvaluator::reduce(int from, int to, const std::vector<cl::Memory>& lev
       launch(q, reduce_sectors_, range1d(patches), kLocal1D, in, grid(s), patches, tables_.patch_slots(),
              side_work_);
     launch(q, reduce_corners_, range1d(rings), kLocal1D, in, out, tables_.rings(), tables_.slots(), rings, grid(s),
-           grid(d), corner_work_, into_first ? side_work_ : cl::Buffer());
+           grid(d), corner_work_, into_first ? side_work_ : cl::Buffer(), cl_int(into_first && sectors_left));
     if (second_step) {
       sectors_left = to == 1;
       launch(q, reduce_second_step_, range1d(patches), kLocal1D, in, out, grid(s), grid(d), patches,
