@@ -43,7 +43,12 @@ const std::vector<Stroke>& PaintScene::undone() const
 std::vector<StrokeReport> PaintScene::apply(const Stroke& stroke)
 {
   begin_stroke(stroke);
-  paint_dabs(stroke_samples(stroke));
+  try {
+    paint_dabs(stroke_samples(stroke));
+  } catch (...) {
+    take_back_failed(); // every object has closed the stroke as a step
+    throw;
+  }
   return end_stroke(stroke);
 }
 
@@ -168,6 +173,14 @@ bool PaintScene::take_back()
   for (Object& o : objects_)
     any = o.surface->take_back() || any;
   return any;
+}
+
+void PaintScene::take_back_failed() noexcept
+{
+  try {
+    take_back();
+  } catch (...) { // a device that failed may fail the undo too: the first error says why
+  }
 }
 
 bool PaintScene::redo()

@@ -33,7 +33,8 @@ public:
   //! across objects in contact; a parameter-space dab goes to the nearest
   //! object only. The stroke ends where no object is under the brush.
   //! Strokes that cover everything (wash, dip) go to every object. Returns
-  //! a report per object.
+  //! a report per object. A stroke that fails while painting is taken back
+  //! (take_back_failed()) before the error goes on.
   std::vector<StrokeReport> apply(const Stroke& stroke);
   //! The same in three steps, for a stroke painted while it is drawn (as
   //! PaintSurface::begin_stroke(), paint_dabs(), end_stroke()). Each call of
@@ -50,6 +51,10 @@ public:
   bool redo();
   //! PaintSurface::take_back() on every object.
   bool take_back();
+  //! take_back() of a stroke that failed while painting, which every object
+  //! has closed: a stroke that failed is neither in the history nor in its
+  //! replay. Its own failure is ignored, so the first error is the one told.
+  void take_back_failed() noexcept;
   //! The strokes applied so far: every object records every stroke, also
   //! one that did not reach it, so the first object's history is the
   //! scene's. Empty for an empty scene.

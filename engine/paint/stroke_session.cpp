@@ -85,10 +85,7 @@ void StrokeSession::paint_new_dabs()
     // begun: taken back, as a refused stroke is, so that the history holds
     // no step whose replay would paint what this one did not.
     drawing_.reset();
-    try {
-      scene_.take_back();
-    } catch (...) { // a device that failed may fail the undo too: the first error says why
-    }
+    scene_.take_back_failed();
     throw;
   }
   check_drawn_result();

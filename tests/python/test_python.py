@@ -1,6 +1,7 @@
 """meshpaint from Python: the VTK classes, errors as exceptions, numpy, pipelines."""
 import json
 import os
+import re
 import subprocess
 import sys
 
@@ -596,3 +597,35 @@ def test_rgb_bytes_as_other_tools_write_them_become_the_diffuse_channel(tmp_path
     r = subprocess.run([binary, "info", str(tmp_path / "coloured.vtp")], capture_output=True, text=True, timeout=600)
     assert r.returncode == 0, r.stderr
     assert "took the file's colours as the diffuse channel" in r.stdout + r.stderr
+
+
+def test_a_stroke_that_fails_while_painting_leaves_no_step():
+    # A coarse sculpt under a memory cap that holds the painting at level 4
+    # but not the multiresolution layers: the error is raised, and the
+    # history (what a saved project replays) has no step for it.
+    cube = os.path.join(SOURCE, "tests", "support", "cube.obj")
+    bin_path = os.path.join(os.path.dirname(meshpaint.__file__), "..", "..", "bin", "meshpaint")
+    r = subprocess.run([bin_path, "info", cube], capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0, r.stderr
+    row = next(l for l in r.stdout.splitlines() if re.match(r"\s*4\s", l))
+    units = {"B": 1, "KiB": 1 << 10, "MiB": 1 << 20, "GiB": 1 << 30}
+    sizes = [float(v) * units[u] for v, u in re.findall(r"([0-9.]+) (B|KiB|MiB|GiB)", row)]
+    painting, coarse = sizes[-2], sizes[-1]
+    child = (
+        "import json, sys, vtk, meshpaint\n"
+        "reader = vtk.vtkOBJReader(); reader.SetFileName(sys.argv[1]); reader.Update()\n"
+        "s = meshpaint.vtkPaintSurface(); s.SetInputData(reader.GetOutput()); s.SetLevel(4); s.Update()\n"
+        "s.ApplyStrokes(json.dumps({'strokes': [{'tool': 'sculpt', 'points': [[0.5, 0.5, 1]], 'radius': 0.3,\n"
+        "                                        'amount': 0.05, 'edit_level': 1}]}))\n"
+        "try:\n"
+        "    s.Update()\n"
+        "    print('painted')\n"
+        "except meshpaint.Error as e:\n"
+        "    print('error:', e)\n"
+        "print(len(json.loads(s.GetHistoryJSON())['strokes']))\n")
+    env = dict(os.environ, MESHPAINT_DEVICE_MEMORY=str(int((painting + coarse) / 2)))
+    r = subprocess.run([sys.executable, "-c", child, cube], capture_output=True, text=True, timeout=600, env=env)
+    assert r.returncode == 0, r.stderr
+    message, strokes = r.stdout.strip().splitlines()[-2:]
+    assert message.startswith("error: editing below painting level 4 needs"), r.stdout
+    assert strokes == "0", r.stdout
