@@ -85,9 +85,6 @@ struct vtkPaintView::Internals
   // The stroke being drawn (its path is the session's).
   bool painting = false;
   bool ended = false; // reached a silhouette or left the surface
-  // Why the session closed the stroke while it was drawn: kept apart from
-  // LastError, which the renders that follow overwrite.
-  std::string stroke_error;
   std::string recording;
 };
 

@@ -85,7 +85,6 @@ int vtkPaintView::BeginStroke(int x, int y)
   }
   in.painting = true;
   in.ended = false;
-  in.stroke_error.clear();
   in.moving = true;
   this->Refresh(false);
   return 1;
@@ -110,8 +109,7 @@ int vtkPaintView::ContinueStroke(int x, int y)
   const auto start = std::chrono::steady_clock::now();
   this->HintSnap();
   if (!meshpaint::guarded(this->LastError, [&] { on = in.session.extend(q); })) {
-    on = false; // the session has closed the stroke; EndStroke() says why
-    in.stroke_error = this->LastError;
+    on = false; // the session has closed the stroke; LastError says why, and EndStroke() again
     this->Message = this->LastError;
   }
   in.ended = !on;
@@ -128,12 +126,9 @@ int vtkPaintView::EndStroke()
     return 0;
   in.painting = false;
   in.moving = false;
-  // A failure while drawing has closed the stroke already (as one undo
-  // step), and stroke_error says why.
+  // A failure while drawing has closed the stroke and taken it back
+  // already, and LastError says why: the renders since leave it (Show()).
   const int ok = in.session.drawing() && meshpaint::guarded(this->LastError, [&] { in.session.end(); });
-  if (!ok && !in.stroke_error.empty())
-    this->LastError = in.stroke_error;
-  in.stroke_error.clear();
   this->Message = ok ? "" : this->LastError;
   this->Refresh(true);
   return ok;
