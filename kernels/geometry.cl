@@ -94,10 +94,10 @@ inline float4 umbrella(float4 x, float4 mean, float step)
 
 /* Smoothing on the welded quad mesh: the listed tiles are gathered into
  * arrays with one entry per vertex (welded_gather), passes read each
- * neighbour from there (welded_smooth_corners and welded_smooth_texels), and
- * every stored copy is written back (welded_scatter). Patch corners and the
- * other vertices have a kernel each: a corner has a ring of any size, the
- * others four neighbours, which keeps their kernel free of branches. */
+ * neighbour from there (welded_smooth), and every stored copy is written
+ * back (welded_scatter). Patch corners and the other vertices take
+ * work-groups of their own: a corner has a ring of any size, the others
+ * four neighbours, which keeps their items free of its branches. */
 
 /* Range: (tile, tile * count). Every copy of a vertex holds the same bits,
  * so copies write the same value; both arrays get it, so that vertices no
@@ -141,61 +141,74 @@ __kernel void welded_scatter(__global const float4 *restrict welded, ATLAS_OUT l
     ATLAS_STORE(layer, g, p, ij, welded[vertex_of[PATCH_MAJOR_INDEX(g, p, ij)]]);
 }
 
-/* Range: count; one patch corner each (list[k], or k with a null list). Its
- * ring's neighbours are summed one after another; two neighbours: a border
- * corner, smoothed along the border; none: the corner of a single face,
- * which stays. Rings of three and four (the face and edge points of a
- * triangle base) are summed spelt out, in the loop's order: the same bits. */
-__kernel void welded_smooth_corners(__global const float4 *restrict src, __global float4 *restrict dst,
-                                    __global const int *restrict list, int count, __global const int *restrict first,
-                                    __global const int *restrict ring, __global const float *restrict weights,
-                                    float lambda)
+/* Patch corner v: its ring's neighbours summed one after another; two
+ * neighbours: a border corner, smoothed along the border; none: the corner
+ * of a single face, which stays. Rings of three and four (the face and
+ * edge points of a triangle base) are summed spelt out, in the loop's
+ * order: the same bits. */
+inline float4 welded_corner(__global const float4 *restrict src, int v, __global const int *restrict first,
+                            __global const int *restrict ring, __global const float *restrict weights, float lambda)
 {
-  const int k = get_global_id(0);
-  if (k >= count)
-    return;
-  const int v = LISTED(list, k);
   const float4 x = src[v];
   const float w = weights[v];
   const int f = first[v], m = first[v + 1] - f;
-  float4 r = x;
-  if (w != 0.0f && m > 0) {
-    float4 mean;
-    if (m == 2) {
-      mean = 0.5f * (src[ring[f]] + src[ring[f + 1]]);
-    } else if (m == 3) {
-      mean = ((((float4)(0.0f) + src[ring[f]]) + src[ring[f + 1]]) + src[ring[f + 2]]) / 3.0f;
-    } else if (m == 4) {
-      mean = (((((float4)(0.0f) + src[ring[f]]) + src[ring[f + 1]]) + src[ring[f + 2]]) + src[ring[f + 3]]) / 4.0f;
-    } else {
-      float4 sum = (float4)(0.0f);
-      for (int i = 0; i < m; ++i)
-        sum += src[ring[f + i]];
-      mean = sum / (float)m;
-    }
-    r = umbrella(x, mean, lambda * w);
+  if (w == 0.0f || m == 0)
+    return x;
+  float4 mean;
+  if (m == 2) {
+    mean = 0.5f * (src[ring[f]] + src[ring[f + 1]]);
+  } else if (m == 3) {
+    mean = ((((float4)(0.0f) + src[ring[f]]) + src[ring[f + 1]]) + src[ring[f + 2]]) / 3.0f;
+  } else if (m == 4) {
+    mean = (((((float4)(0.0f) + src[ring[f]]) + src[ring[f + 1]]) + src[ring[f + 2]]) + src[ring[f + 3]]) / 4.0f;
+  } else {
+    float4 sum = (float4)(0.0f);
+    for (int i = 0; i < m; ++i)
+      sum += src[ring[f + i]];
+    mean = sum / (float)m;
   }
-  dst[v] = r;
+  return umbrella(x, mean, lambda * w);
 }
 
-/* Range: count; one vertex inside a patch or on a patch side each:
- * list[offset + k], or base + k with a null list. Its four neighbours are
- * summed in pairs; on a mesh-boundary side they are its two along the side,
- * each twice, which gives their mean exactly. */
-__kernel void welded_smooth_texels(__global const float4 *restrict src, __global float4 *restrict dst,
-                                   __global const int *restrict list, int offset, int count, int base,
-                                   __global const int4 *restrict around, __global const float *restrict weights,
-                                   float lambda)
+/* Vertex v inside a patch or on a patch side: its four neighbours (entry
+ * v - base of `around`) summed in pairs; on a mesh-boundary side they are
+ * its two along the side, each twice, which gives their mean exactly. */
+inline float4 welded_texel(__global const float4 *restrict src, int v, int base, __global const int4 *restrict around,
+                           __global const float *restrict weights, float lambda)
 {
-  const int k = get_global_id(0);
-  if (k >= count)
-    return;
-  const int v = list ? list[offset + k] : base + k;
   const int4 nb = around[v - base];
   const float4 x = src[v];
   const float w = weights[v];
   const float4 mean = 0.25f * ((src[nb.x] + src[nb.y]) + (src[nb.z] + src[nb.w]));
-  dst[v] = w != 0.0f ? umbrella(x, mean, lambda * w) : x;
+  return w != 0.0f ? umbrella(x, mean, lambda * w) : x;
+}
+
+/* Range: (corner_groups + groups of others) x local size. One pass: the
+ * first corner_groups work-groups take the `corners` patch corners
+ * (list[k], or k with a null list), the others the `others` vertices after
+ * them (list[corners + k], or base + k). One launch a pass, not one per
+ * kind: a launch costs about as much as a small level's corners
+ * themselves. Whole work-groups take one kind, so neither kind's items
+ * wait on the other's branch. */
+__kernel void welded_smooth(__global const float4 *restrict src, __global float4 *restrict dst,
+                            __global const int *restrict list, int corners, int others, int corner_groups, int base,
+                            __global const int *restrict first, __global const int *restrict ring,
+                            __global const int4 *restrict around, __global const float *restrict weights,
+                            float lambda)
+{
+  if ((int)get_group_id(0) < corner_groups) {
+    const int k = get_global_id(0);
+    if (k < corners) {
+      const int v = LISTED(list, k);
+      dst[v] = welded_corner(src, v, first, ring, weights, lambda);
+    }
+  } else {
+    const int k = get_global_id(0) - corner_groups * (int)get_local_size(0);
+    if (k < others) {
+      const int v = list ? list[corners + k] : base + k;
+      dst[v] = welded_texel(src, v, base, around, weights, lambda);
+    }
+  }
 }
 
 /* Range: (tile, tile * count). Moves control points: x + amount * w * dir,

@@ -14,8 +14,8 @@ constexpr std::size_t kGroup = 256;
 } // namespace
 
 WeldedSmoothing::WeldedSmoothing(Runtime& runtime, const AtlasTopology& topology, const cl::Program& program)
-  : runtime_(runtime), topology_(topology), smooth_texels_(program, "welded_smooth_texels"),
-    smooth_corners_(program, "welded_smooth_corners"), listed_weights_(program, "welded_listed_weights")
+  : runtime_(runtime), topology_(topology), smooth_(program, "welded_smooth"),
+    listed_weights_(program, "welded_listed_weights")
 {
 }
 
@@ -85,13 +85,12 @@ const cl::Buffer& WeldedSmoothing::passes(const LayerKernels& k, const cl::Memor
   }
   const cl::Buffer* from = &a_;
   const cl::Buffer* to = &b_;
+  const std::size_t corner_groups = (std::size_t(corners) + kGroup - 1) / kGroup;
+  const std::size_t items = kGroup * corner_groups + round_up(std::size_t(others), kGroup);
   for (const float step : steps) {
-    if (corners > 0)
-      launch(q, smooth_corners_, cl::NDRange(round_up(std::size_t(corners), kGroup)), cl::NDRange(kGroup), *from,
-             *to, moved, corners, w.first, w.ring, weights_, step);
-    if (others > 0)
-      launch(q, smooth_texels_, cl::NDRange(round_up(std::size_t(others), kGroup)), cl::NDRange(kGroup), *from, *to,
-             moved, corners, others, w.numbering.edge_base, w.around, weights_, step);
+    if (items > 0)
+      launch(q, smooth_, cl::NDRange(items), cl::NDRange(kGroup), *from, *to, moved, corners, others,
+             cl_int(corner_groups), w.numbering.edge_base, w.first, w.ring, w.around, weights_, step);
     std::swap(from, to);
   }
   return *from;

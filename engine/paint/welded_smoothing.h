@@ -65,7 +65,7 @@ private:
 
   Runtime& runtime_;
   const AtlasTopology& topology_;
-  cl::Kernel smooth_texels_, smooth_corners_, listed_weights_;
+  cl::Kernel smooth_, listed_weights_;
   std::map<int, Level> levels_;
   cl::Buffer a_, b_, weights_;
   std::size_t capacity_ = 0;
